@@ -1,0 +1,91 @@
+
+from .scemlmodel import getEClassifier, eClassifiers
+from .scemlmodel import name, nsURI, nsPrefix, eClass
+from .scemlmodel import AbstractionLevel, JoinPolicy, LaneChangeDirection, ComparisonRule, CloudState, PrecipitationType, ActorKind, NamedElement, Graph, Scenario, Library, Flow, GraphElement, RootNode, EndNode, ModuleElement, ActionNode, Maneuver, LongitudinalManeuver, LateralManeuver, CompositeManeuver, Condition, Accelerate, Decelerate, Stop, KeepVelocity, DriveDistance, Follow, Approach, LaneChange, RoutedManeuver, TurnLeft, TurnRight, Cross, FollowTrajectory, Overtake, InLocationRadius, InVehicleRadius, TimeElapsed, SpeedCondition, TimeToCollision, JoiningPolicy, JoinAllFinished, JoinOneFinished, ModuleDefinition, InPort, OutPort, ModuleUse, RoleBinding, ParameterOverride, ModuleParameter, Participant, ActorRole, AllowedKind, Actor, Pedestrian, TwoWheeler, Bicycle, Motorcycle, FourWheeler, Car, Van, Truck, Bus, Position, WorldPosition, LanePosition, Environment, ParameterValue, Value, Range, Distribution, UniformDistribution, NormalDistribution, DiscreteDistribution, WeightedValue, ParameterRef
+
+
+from . import scemlmodel
+
+__all__ = ['AbstractionLevel', 'JoinPolicy', 'LaneChangeDirection', 'ComparisonRule', 'CloudState', 'PrecipitationType', 'ActorKind', 'NamedElement', 'Graph', 'Scenario', 'Library', 'Flow', 'GraphElement', 'RootNode', 'EndNode', 'ModuleElement', 'ActionNode', 'Maneuver', 'LongitudinalManeuver', 'LateralManeuver', 'CompositeManeuver', 'Condition', 'Accelerate', 'Decelerate', 'Stop', 'KeepVelocity', 'DriveDistance', 'Follow', 'Approach', 'LaneChange', 'RoutedManeuver', 'TurnLeft', 'TurnRight', 'Cross', 'FollowTrajectory', 'Overtake', 'InLocationRadius', 'InVehicleRadius',
+           'TimeElapsed', 'SpeedCondition', 'TimeToCollision', 'JoiningPolicy', 'JoinAllFinished', 'JoinOneFinished', 'ModuleDefinition', 'InPort', 'OutPort', 'ModuleUse', 'RoleBinding', 'ParameterOverride', 'ModuleParameter', 'Participant', 'ActorRole', 'AllowedKind', 'Actor', 'Pedestrian', 'TwoWheeler', 'Bicycle', 'Motorcycle', 'FourWheeler', 'Car', 'Van', 'Truck', 'Bus', 'Position', 'WorldPosition', 'LanePosition', 'Environment', 'ParameterValue', 'Value', 'Range', 'Distribution', 'UniformDistribution', 'NormalDistribution', 'DiscreteDistribution', 'WeightedValue', 'ParameterRef']
+
+eSubpackages = []
+eSuperPackage = None
+scemlmodel.eSubpackages = eSubpackages
+scemlmodel.eSuperPackage = eSuperPackage
+
+Graph.nodes.eType = GraphElement
+Graph.flows.eType = Flow
+Library.modules.eType = ModuleDefinition
+RootNode.maxDuration.eType = ParameterValue
+RootNode.environment.eType = Environment
+RootNode.actors.eType = Actor
+ActionNode.referenceActor.eType = Participant
+ActionNode.targetActor.eType = Participant
+Accelerate.targetSpeed.eType = ParameterValue
+Accelerate.rate.eType = ParameterValue
+Decelerate.targetSpeed.eType = ParameterValue
+Decelerate.rate.eType = ParameterValue
+Stop.rate.eType = ParameterValue
+KeepVelocity.duration.eType = ParameterValue
+DriveDistance.distance.eType = ParameterValue
+DriveDistance.speed.eType = ParameterValue
+Follow.distance.eType = ParameterValue
+Approach.distance.eType = ParameterValue
+LaneChange.distance.eType = ParameterValue
+RoutedManeuver.destination.eType = Position
+RoutedManeuver.tolerance.eType = ParameterValue
+FollowTrajectory.waypoints.eType = Position
+FollowTrajectory.tolerance.eType = ParameterValue
+Overtake.speed.eType = ParameterValue
+Overtake.gap.eType = ParameterValue
+Overtake.laneChangeDistance.eType = ParameterValue
+InLocationRadius.position.eType = Position
+InLocationRadius.radius.eType = ParameterValue
+InVehicleRadius.radius.eType = ParameterValue
+TimeElapsed.duration.eType = ParameterValue
+SpeedCondition.speed.eType = ParameterValue
+TimeToCollision.time.eType = ParameterValue
+ModuleDefinition.roles.eType = ActorRole
+ModuleDefinition.parameters.eType = ModuleParameter
+ModuleUse.definition.eType = ModuleDefinition
+ModuleUse.bindings.eType = RoleBinding
+ModuleUse.overrides.eType = ParameterOverride
+RoleBinding.actor.eType = Participant
+ParameterOverride.value.eType = ParameterValue
+ModuleParameter.default.eType = ParameterValue
+ActorRole.allowedKinds.eType = AllowedKind
+Actor.startPosition.eType = Position
+Actor.initialSpeed.eType = ParameterValue
+Actor.length.eType = ParameterValue
+Actor.width.eType = ParameterValue
+Actor.height.eType = ParameterValue
+WorldPosition.x.eType = ParameterValue
+WorldPosition.y.eType = ParameterValue
+WorldPosition.z.eType = ParameterValue
+WorldPosition.h.eType = ParameterValue
+LanePosition.s.eType = ParameterValue
+LanePosition.offset.eType = ParameterValue
+Environment.precipitationIntensity.eType = ParameterValue
+Environment.fogVisualRange.eType = ParameterValue
+DiscreteDistribution.options.eType = WeightedValue
+ParameterRef.parameter.eType = ModuleParameter
+Flow.source.eType = GraphElement
+Flow.target.eType = GraphElement
+GraphElement.incoming.eType = Flow
+GraphElement.incoming.eOpposite = Flow.target
+GraphElement.outgoing.eType = Flow
+GraphElement.outgoing.eOpposite = Flow.source
+
+otherClassifiers = [AbstractionLevel, JoinPolicy, LaneChangeDirection,
+                    ComparisonRule, CloudState, PrecipitationType, ActorKind]
+
+for classif in otherClassifiers:
+    eClassifiers[classif.name] = classif
+    classif.ePackage = eClass
+
+for classif in eClassifiers.values():
+    eClass.eClassifiers.append(classif.eClass)
+
+for subpack in eSubpackages:
+    eClass.eSubpackages.append(subpack.eClass)

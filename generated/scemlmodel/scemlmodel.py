@@ -1,0 +1,1014 @@
+"""Definition of meta model 'scemlmodel'."""
+from functools import partial
+import pyecore.ecore as Ecore
+from pyecore.ecore import *
+
+
+name = 'scemlmodel'
+nsURI = 'https://sceml.org/metamodel/1.0'
+nsPrefix = 'scemlmodel'
+
+eClass = EPackage(name=name, nsURI=nsURI, nsPrefix=nsPrefix)
+
+eClassifiers = {}
+getEClassifier = partial(Ecore.getEClassifier, searchspace=eClassifiers)
+AbstractionLevel = EEnum('AbstractionLevel', literals=['functional', 'logical', 'concrete'])
+
+JoinPolicy = EEnum('JoinPolicy', literals=['joinAll', 'joinOne'])
+
+LaneChangeDirection = EEnum('LaneChangeDirection', literals=['left', 'right'])
+
+ComparisonRule = EEnum('ComparisonRule', literals=['greaterThan', 'lessThan', 'equalTo'])
+
+CloudState = EEnum('CloudState', literals=['free', 'cloudy', 'overcast', 'rainy'])
+
+PrecipitationType = EEnum('PrecipitationType', literals=['dry', 'rain', 'snow'])
+
+ActorKind = EEnum('ActorKind', literals=[
+                  'Pedestrian', 'TwoWheeler', 'Bicycle', 'Motorcycle', 'FourWheeler', 'Car', 'Van', 'Truck', 'Bus'])
+
+
+@abstract
+class NamedElement(EObject, metaclass=MetaEClass):
+
+    name = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+
+    def __init__(self, *, name=None):
+        # if kwargs:
+        #    raise AttributeError('unexpected arguments: {}'.format(kwargs))
+
+        super().__init__()
+
+        if name is not None:
+            self.name = name
+
+
+@abstract
+class Graph(EObject, metaclass=MetaEClass):
+    """A directed acyclic graph of nodes joined by flows: a scenario, or the inside of a module definition."""
+    nodes = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+    flows = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+
+    def __init__(self, *, nodes=None, flows=None):
+        # if kwargs:
+        #    raise AttributeError('unexpected arguments: {}'.format(kwargs))
+
+        super().__init__()
+
+        if nodes:
+            self.nodes.extend(nodes)
+
+        if flows:
+            self.flows.extend(flows)
+
+
+class Flow(EObject, metaclass=MetaEClass):
+    """A directed edge: the target is activated when the source has finished."""
+    source = EReference(ordered=True, unique=True, containment=False, derived=False)
+    target = EReference(ordered=True, unique=True, containment=False, derived=False)
+
+    def __init__(self, *, source=None, target=None):
+        # if kwargs:
+        #    raise AttributeError('unexpected arguments: {}'.format(kwargs))
+
+        super().__init__()
+
+        if source is not None:
+            self.source = source
+
+        if target is not None:
+            self.target = target
+
+
+class RoleBinding(EObject, metaclass=MetaEClass):
+
+    role = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    actor = EReference(ordered=True, unique=True, containment=False, derived=False)
+
+    def __init__(self, *, role=None, actor=None):
+        # if kwargs:
+        #    raise AttributeError('unexpected arguments: {}'.format(kwargs))
+
+        super().__init__()
+
+        if role is not None:
+            self.role = role
+
+        if actor is not None:
+            self.actor = actor
+
+
+class ParameterOverride(EObject, metaclass=MetaEClass):
+
+    parameter = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    value = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, parameter=None, value=None):
+        # if kwargs:
+        #    raise AttributeError('unexpected arguments: {}'.format(kwargs))
+
+        super().__init__()
+
+        if parameter is not None:
+            self.parameter = parameter
+
+        if value is not None:
+            self.value = value
+
+
+class AllowedKind(EObject, metaclass=MetaEClass):
+    """One actor kind a role accepts. An object rather than a many-valued enum attribute, because pyecore writes an empty many-valued attribute as text that no reader accepts."""
+    kind = EAttribute(eType=ActorKind, unique=True, derived=False, changeable=True)
+
+    def __init__(self, *, kind=None):
+        # if kwargs:
+        #    raise AttributeError('unexpected arguments: {}'.format(kwargs))
+
+        super().__init__()
+
+        if kind is not None:
+            self.kind = kind
+
+
+@abstract
+class Position(EObject, metaclass=MetaEClass):
+
+    def __init__(self):
+        # if kwargs:
+        #    raise AttributeError('unexpected arguments: {}'.format(kwargs))
+
+        super().__init__()
+
+
+class Environment(EObject, metaclass=MetaEClass):
+
+    timeOfDay = EAttribute(eType=EString, unique=True, derived=False,
+                           changeable=True, default_value='12:00:00')
+    cloudState = EAttribute(eType=CloudState, unique=True, derived=False,
+                            changeable=True, default_value=CloudState.free)
+    precipitation = EAttribute(eType=PrecipitationType, unique=True,
+                               derived=False, changeable=True, default_value=PrecipitationType.dry)
+    precipitationIntensity = EReference(ordered=True, unique=True, containment=True, derived=False)
+    fogVisualRange = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, timeOfDay=None, cloudState=None, precipitation=None, precipitationIntensity=None, fogVisualRange=None):
+        # if kwargs:
+        #    raise AttributeError('unexpected arguments: {}'.format(kwargs))
+
+        super().__init__()
+
+        if timeOfDay is not None:
+            self.timeOfDay = timeOfDay
+
+        if cloudState is not None:
+            self.cloudState = cloudState
+
+        if precipitation is not None:
+            self.precipitation = precipitation
+
+        if precipitationIntensity is not None:
+            self.precipitationIntensity = precipitationIntensity
+
+        if fogVisualRange is not None:
+            self.fogVisualRange = fogVisualRange
+
+
+@abstract
+class ParameterValue(EObject, metaclass=MetaEClass):
+    """What a numeric parameter holds. An absent value means unset: the language default applies, or nothing at the functional level."""
+
+    def __init__(self):
+        # if kwargs:
+        #    raise AttributeError('unexpected arguments: {}'.format(kwargs))
+
+        super().__init__()
+
+
+class WeightedValue(EObject, metaclass=MetaEClass):
+
+    value = EAttribute(eType=EDouble, unique=True, derived=False, changeable=True)
+    weight = EAttribute(eType=EDoubleObject, unique=True, derived=False, changeable=True)
+
+    def __init__(self, *, value=None, weight=None):
+        # if kwargs:
+        #    raise AttributeError('unexpected arguments: {}'.format(kwargs))
+
+        super().__init__()
+
+        if value is not None:
+            self.value = value
+
+        if weight is not None:
+            self.weight = weight
+
+
+class Scenario(Graph):
+    """The document root of a scenario file. Its nodes hold exactly one RootNode and one EndNode."""
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
+class Library(NamedElement):
+    """The document root of a module library file."""
+    description = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    modules = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+
+    def __init__(self, *, description=None, modules=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if description is not None:
+            self.description = description
+
+        if modules:
+            self.modules.extend(modules)
+
+
+@abstract
+class GraphElement(NamedElement):
+
+    incoming = EReference(ordered=True, unique=True, containment=False,
+                          derived=False, upper=-1, transient=True)
+    outgoing = EReference(ordered=True, unique=True, containment=False,
+                          derived=False, upper=-1, transient=True)
+
+    def __init__(self, *, incoming=None, outgoing=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if incoming:
+            self.incoming.extend(incoming)
+
+        if outgoing:
+            self.outgoing.extend(outgoing)
+
+
+class ModuleDefinition(Graph):
+    """A reusable sub-scenario stored in a library: actor roles, parameters, and a graph from one InPort to one OutPort. Its name is its ID, so uses in other files refer to it by name."""
+    name = EAttribute(eType=EString, unique=True, derived=False, changeable=True, iD=True)
+    description = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    roles = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+    parameters = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+
+    def __init__(self, *, name=None, description=None, roles=None, parameters=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if name is not None:
+            self.name = name
+
+        if description is not None:
+            self.description = description
+
+        if roles:
+            self.roles.extend(roles)
+
+        if parameters:
+            self.parameters.extend(parameters)
+
+
+class ModuleParameter(NamedElement):
+
+    unit = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    description = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    default = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, unit=None, description=None, default=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if unit is not None:
+            self.unit = unit
+
+        if description is not None:
+            self.description = description
+
+        if default is not None:
+            self.default = default
+
+
+@abstract
+class Participant(NamedElement):
+    """Who an action node refers to: an actor of a scenario, or an actor role of a module definition."""
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
+class WorldPosition(Position):
+
+    x = EReference(ordered=True, unique=True, containment=True, derived=False)
+    y = EReference(ordered=True, unique=True, containment=True, derived=False)
+    z = EReference(ordered=True, unique=True, containment=True, derived=False)
+    h = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, x=None, y=None, z=None, h=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if x is not None:
+            self.x = x
+
+        if y is not None:
+            self.y = y
+
+        if z is not None:
+            self.z = z
+
+        if h is not None:
+            self.h = h
+
+
+class LanePosition(Position):
+
+    roadId = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    laneId = EAttribute(eType=EInt, unique=True, derived=False, changeable=True)
+    s = EReference(ordered=True, unique=True, containment=True, derived=False)
+    offset = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, roadId=None, laneId=None, s=None, offset=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if roadId is not None:
+            self.roadId = roadId
+
+        if laneId is not None:
+            self.laneId = laneId
+
+        if s is not None:
+            self.s = s
+
+        if offset is not None:
+            self.offset = offset
+
+
+class Value(ParameterValue):
+
+    value = EAttribute(eType=EDouble, unique=True, derived=False, changeable=True)
+
+    def __init__(self, *, value=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if value is not None:
+            self.value = value
+
+
+class Range(ParameterValue):
+
+    min = EAttribute(eType=EDouble, unique=True, derived=False, changeable=True)
+    max = EAttribute(eType=EDouble, unique=True, derived=False, changeable=True)
+    step = EAttribute(eType=EDoubleObject, unique=True, derived=False, changeable=True)
+
+    def __init__(self, *, min=None, max=None, step=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if min is not None:
+            self.min = min
+
+        if max is not None:
+            self.max = max
+
+        if step is not None:
+            self.step = step
+
+
+@abstract
+class Distribution(ParameterValue):
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
+class ParameterRef(ParameterValue):
+    """Inside a module definition: take the value of one of the module's parameters (its override, or else its default)."""
+    parameter = EReference(ordered=True, unique=True, containment=False, derived=False)
+
+    def __init__(self, *, parameter=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if parameter is not None:
+            self.parameter = parameter
+
+
+class RootNode(GraphElement):
+    """Where the scenario starts: its name, map, environment, abstraction level, maximum duration and actors."""
+    scenarioName = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    description = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    author = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    date = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    map = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    level = EAttribute(eType=AbstractionLevel, unique=True, derived=False,
+                       changeable=True, default_value=AbstractionLevel.functional)
+    maxDuration = EReference(ordered=True, unique=True, containment=True, derived=False)
+    environment = EReference(ordered=True, unique=True, containment=True, derived=False)
+    actors = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+
+    def __init__(self, *, scenarioName=None, description=None, author=None, date=None, map=None, level=None, maxDuration=None, environment=None, actors=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if scenarioName is not None:
+            self.scenarioName = scenarioName
+
+        if description is not None:
+            self.description = description
+
+        if author is not None:
+            self.author = author
+
+        if date is not None:
+            self.date = date
+
+        if map is not None:
+            self.map = map
+
+        if level is not None:
+            self.level = level
+
+        if maxDuration is not None:
+            self.maxDuration = maxDuration
+
+        if environment is not None:
+            self.environment = environment
+
+        if actors:
+            self.actors.extend(actors)
+
+
+class EndNode(GraphElement):
+    """Where all paths end. It finishes when all (joinAll) or the first (joinOne) of its predecessors have finished, and then the scenario stops."""
+    policy = EAttribute(eType=JoinPolicy, unique=True, derived=False,
+                        changeable=True, default_value=JoinPolicy.joinAll)
+
+    def __init__(self, *, policy=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if policy is not None:
+            self.policy = policy
+
+
+@abstract
+class ModuleElement(GraphElement):
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
+class InPort(GraphElement):
+    """Where a module's internal flow starts when its use is activated."""
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
+class OutPort(GraphElement):
+    """Where a module's internal flow ends; the module use finishes when its single predecessor has finished."""
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
+class ModuleUse(GraphElement):
+    """One use of a module definition inside a scenario or another module. It refers to the definition, usually in a library file, binds each role to an actor of its context and may override parameters."""
+    definition = EReference(ordered=True, unique=True, containment=False, derived=False)
+    bindings = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+    overrides = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+
+    def __init__(self, *, definition=None, bindings=None, overrides=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if definition is not None:
+            self.definition = definition
+
+        if bindings:
+            self.bindings.extend(bindings)
+
+        if overrides:
+            self.overrides.extend(overrides)
+
+
+class ActorRole(Participant):
+
+    allowedKinds = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+
+    def __init__(self, *, allowedKinds=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if allowedKinds:
+            self.allowedKinds.extend(allowedKinds)
+
+
+@abstract
+class Actor(Participant):
+
+    isEgo = EAttribute(eType=EBoolean, unique=True, derived=False,
+                       changeable=True, default_value=False)
+    model = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    startPosition = EReference(ordered=True, unique=True, containment=True, derived=False)
+    initialSpeed = EReference(ordered=True, unique=True, containment=True, derived=False)
+    length = EReference(ordered=True, unique=True, containment=True, derived=False)
+    width = EReference(ordered=True, unique=True, containment=True, derived=False)
+    height = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, isEgo=None, model=None, startPosition=None, initialSpeed=None, length=None, width=None, height=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if isEgo is not None:
+            self.isEgo = isEgo
+
+        if model is not None:
+            self.model = model
+
+        if startPosition is not None:
+            self.startPosition = startPosition
+
+        if initialSpeed is not None:
+            self.initialSpeed = initialSpeed
+
+        if length is not None:
+            self.length = length
+
+        if width is not None:
+            self.width = width
+
+        if height is not None:
+            self.height = height
+
+
+class UniformDistribution(Distribution):
+
+    min = EAttribute(eType=EDouble, unique=True, derived=False, changeable=True)
+    max = EAttribute(eType=EDouble, unique=True, derived=False, changeable=True)
+
+    def __init__(self, *, min=None, max=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if min is not None:
+            self.min = min
+
+        if max is not None:
+            self.max = max
+
+
+class NormalDistribution(Distribution):
+
+    mean = EAttribute(eType=EDouble, unique=True, derived=False, changeable=True)
+    standardDeviation = EAttribute(eType=EDouble, unique=True, derived=False, changeable=True)
+    lowerBound = EAttribute(eType=EDoubleObject, unique=True, derived=False, changeable=True)
+    upperBound = EAttribute(eType=EDoubleObject, unique=True, derived=False, changeable=True)
+
+    def __init__(self, *, mean=None, standardDeviation=None, lowerBound=None, upperBound=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if mean is not None:
+            self.mean = mean
+
+        if standardDeviation is not None:
+            self.standardDeviation = standardDeviation
+
+        if lowerBound is not None:
+            self.lowerBound = lowerBound
+
+        if upperBound is not None:
+            self.upperBound = upperBound
+
+
+class DiscreteDistribution(Distribution):
+
+    options = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+
+    def __init__(self, *, options=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if options:
+            self.options.extend(options)
+
+
+@abstract
+class ActionNode(ModuleElement):
+    """A maneuver or condition. The reference actor performs the maneuver or must fulfil the condition; some kinds also need a target actor."""
+    referenceActor = EReference(ordered=True, unique=True, containment=False, derived=False)
+    targetActor = EReference(ordered=True, unique=True, containment=False, derived=False)
+
+    def __init__(self, *, referenceActor=None, targetActor=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if referenceActor is not None:
+            self.referenceActor = referenceActor
+
+        if targetActor is not None:
+            self.targetActor = targetActor
+
+
+@abstract
+class JoiningPolicy(ModuleElement):
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
+class Pedestrian(Actor):
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
+@abstract
+class TwoWheeler(Actor):
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
+@abstract
+class FourWheeler(Actor):
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
+@abstract
+class Maneuver(ActionNode):
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
+@abstract
+class Condition(ActionNode):
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
+class JoinAllFinished(JoiningPolicy):
+    """Finishes when all of its predecessors have finished."""
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
+class JoinOneFinished(JoiningPolicy):
+    """Finishes when the first of its predecessors has finished; the other branches keep running."""
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
+class Bicycle(TwoWheeler):
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
+class Motorcycle(TwoWheeler):
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
+class Car(FourWheeler):
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
+class Van(FourWheeler):
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
+class Truck(FourWheeler):
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
+class Bus(FourWheeler):
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
+@abstract
+class LongitudinalManeuver(Maneuver):
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
+@abstract
+class LateralManeuver(Maneuver):
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
+@abstract
+class CompositeManeuver(Maneuver):
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
+class InLocationRadius(Condition):
+
+    position = EReference(ordered=True, unique=True, containment=True, derived=False)
+    radius = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, position=None, radius=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if position is not None:
+            self.position = position
+
+        if radius is not None:
+            self.radius = radius
+
+
+class InVehicleRadius(Condition):
+
+    radius = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, radius=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if radius is not None:
+            self.radius = radius
+
+
+class TimeElapsed(Condition):
+
+    duration = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, duration=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if duration is not None:
+            self.duration = duration
+
+
+class SpeedCondition(Condition):
+
+    rule = EAttribute(eType=ComparisonRule, unique=True, derived=False,
+                      changeable=True, default_value=ComparisonRule.greaterThan)
+    speed = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, rule=None, speed=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if rule is not None:
+            self.rule = rule
+
+        if speed is not None:
+            self.speed = speed
+
+
+class TimeToCollision(Condition):
+
+    rule = EAttribute(eType=ComparisonRule, unique=True, derived=False,
+                      changeable=True, default_value=ComparisonRule.lessThan)
+    time = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, rule=None, time=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if rule is not None:
+            self.rule = rule
+
+        if time is not None:
+            self.time = time
+
+
+class Accelerate(LongitudinalManeuver):
+
+    targetSpeed = EReference(ordered=True, unique=True, containment=True, derived=False)
+    rate = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, targetSpeed=None, rate=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if targetSpeed is not None:
+            self.targetSpeed = targetSpeed
+
+        if rate is not None:
+            self.rate = rate
+
+
+class Decelerate(LongitudinalManeuver):
+
+    targetSpeed = EReference(ordered=True, unique=True, containment=True, derived=False)
+    rate = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, targetSpeed=None, rate=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if targetSpeed is not None:
+            self.targetSpeed = targetSpeed
+
+        if rate is not None:
+            self.rate = rate
+
+
+class Stop(LongitudinalManeuver):
+
+    rate = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, rate=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if rate is not None:
+            self.rate = rate
+
+
+class KeepVelocity(LongitudinalManeuver):
+
+    duration = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, duration=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if duration is not None:
+            self.duration = duration
+
+
+class DriveDistance(LongitudinalManeuver):
+
+    distance = EReference(ordered=True, unique=True, containment=True, derived=False)
+    speed = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, distance=None, speed=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if distance is not None:
+            self.distance = distance
+
+        if speed is not None:
+            self.speed = speed
+
+
+class Follow(LongitudinalManeuver):
+
+    distance = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, distance=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if distance is not None:
+            self.distance = distance
+
+
+class Approach(LongitudinalManeuver):
+
+    distance = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, distance=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if distance is not None:
+            self.distance = distance
+
+
+class LaneChange(LateralManeuver):
+
+    direction = EAttribute(eType=LaneChangeDirection, unique=True, derived=False,
+                           changeable=True, default_value=LaneChangeDirection.left)
+    distance = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, direction=None, distance=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if direction is not None:
+            self.direction = direction
+
+        if distance is not None:
+            self.distance = distance
+
+
+@abstract
+class RoutedManeuver(LateralManeuver):
+    """A lateral maneuver whose goal is a destination; it finishes when the actor is within the arrival tolerance of it."""
+    destination = EReference(ordered=True, unique=True, containment=True, derived=False)
+    tolerance = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, destination=None, tolerance=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if destination is not None:
+            self.destination = destination
+
+        if tolerance is not None:
+            self.tolerance = tolerance
+
+
+class FollowTrajectory(CompositeManeuver):
+
+    waypoints = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+    tolerance = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, waypoints=None, tolerance=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if waypoints:
+            self.waypoints.extend(waypoints)
+
+        if tolerance is not None:
+            self.tolerance = tolerance
+
+
+class Overtake(CompositeManeuver):
+
+    side = EAttribute(eType=LaneChangeDirection, unique=True, derived=False,
+                      changeable=True, default_value=LaneChangeDirection.left)
+    speed = EReference(ordered=True, unique=True, containment=True, derived=False)
+    gap = EReference(ordered=True, unique=True, containment=True, derived=False)
+    laneChangeDistance = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, side=None, speed=None, gap=None, laneChangeDistance=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if side is not None:
+            self.side = side
+
+        if speed is not None:
+            self.speed = speed
+
+        if gap is not None:
+            self.gap = gap
+
+        if laneChangeDistance is not None:
+            self.laneChangeDistance = laneChangeDistance
+
+
+class TurnLeft(RoutedManeuver):
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
+class TurnRight(RoutedManeuver):
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
+class Cross(RoutedManeuver):
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)

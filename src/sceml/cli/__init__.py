@@ -1,0 +1,29 @@
+"""The `sceml` command line: one module per subcommand, registered on one click group."""
+
+from __future__ import annotations
+
+import click
+
+from .. import __version__
+from .common import SceMLGroup
+from .dev import dev
+from .info import info
+
+
+@click.group(cls=SceMLGroup, context_settings={"help_option_names": ["-h", "--help"]})
+@click.version_option(__version__, "--version", prog_name="sceml")
+def cli() -> None:
+    """SceML: model, check, draw and export driving scenarios.
+
+    Scenarios are XMI files in the SceML notation: a root node with actors and map, maneuver and
+    condition nodes joined by flows, joins, an end node, and modules from libraries.
+    """
+
+
+cli.add_command(info)
+cli.add_command(dev)
+
+
+def main() -> None:
+    """Console-script entry point."""
+    cli()

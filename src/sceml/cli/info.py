@@ -1,0 +1,52 @@
+"""`sceml info FILE`: summarise a scenario or module library."""
+
+from __future__ import annotations
+
+import json
+from dataclasses import asdict
+from pathlib import Path
+
+import click
+
+from ..info import Summary, summarize
+from ..io import load
+
+
+@click.command()
+@click.argument("file", type=click.Path(exists=True, dir_okay=False, path_type=Path))
+@click.option("--json", "as_json", is_flag=True, help="Print the summary as JSON.")
+def info(file: Path, as_json: bool) -> None:
+    """Summarise FILE: its level, map, actors, node counts and module uses.
+
+    FILE is a scenario or a module library (.xmi).
+    """
+    summary = summarize(load(file).root)
+    if as_json:
+        click.echo(json.dumps(asdict(summary), indent=2))
+        return
+    for line in _text(summary, file):
+        click.echo(line)
+
+
+def _text(summary: Summary, file: Path) -> list[str]:
+    if summary.kind == "library":
+        lines = [f"{file}: module library {summary.name!r}"]
+        lines.append(f"  modules ({len(summary.modules)}): {', '.join(summary.modules)}")
+        lines.append(f"  nodes: {_counts(summary.node_counts)}; flows: {summary.flows}")
+        return lines
+    lines = [f"{file}: scenario {summary.name!r}"]
+    lines.append(f"  level: {summary.level}")
+    lines.append(f"  map: {summary.map or '(none)'}")
+    lines.append(f"  actors ({len(summary.actors)}):")
+    for actor in summary.actors:
+        lines.append(f"    {actor.name}: {actor.kind}{' (ego)' if actor.ego else ''}")
+    lines.append(f"  nodes: {_counts(summary.node_counts)}; flows: {summary.flows}")
+    lines.append(f"  module uses ({len(summary.uses)}):")
+    for use in summary.uses:
+        bound = ", ".join(f"{role}={actor}" for role, actor in use.bindings.items())
+        lines.append(f"    {use.name}: {use.definition} from {use.source} [{bound}]")
+    return lines
+
+
+def _counts(counts: dict[str, int]) -> str:
+    return ", ".join(f"{count} {kind}" for kind, count in counts.items())
