@@ -1,0 +1,311 @@
+"""A small typed API for building scenarios and module libraries in code, without pyecore plumbing.
+
+b = ScenarioBuilder("UIS1", map="../maps/intersection.xodr", level="concrete")
+ego = b.actor("Car", "ego", ego=True, start=world(10, -30, h=1.57), speed=8)
+turn = b.add("TurnRight", ego, destination=world(30, 5))
+b.chain(b.root, turn, b.end)
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from collections.abc import Mapping
+
+import scemlmodel as scm
+from pyecore.ecore import EObject
+
+from . import catalog
+from .copying import detached
+from .errors import BuildError
+from .params import ParameterInput, as_parameter
+
+
+def world(
+    x: ParameterInput, y: ParameterInput, z: ParameterInput = 0.0, h: ParameterInput = 0.0
+) -> scm.WorldPosition:
+    """A world position (m, m, m, rad)."""
+    return scm.WorldPosition(
+        x=as_parameter(x), y=as_parameter(y), z=as_parameter(z), h=as_parameter(h)
+    )
+
+
+def lane(
+    road_id: str | int, lane_id: int, s: ParameterInput, offset: ParameterInput = 0.0
+) -> scm.LanePosition:
+    """A lane position: road, lane, distance along the road and lateral offset (m)."""
+    return scm.LanePosition(
+        roadId=str(road_id), laneId=int(lane_id), s=as_parameter(s), offset=as_parameter(offset)
+    )
+
+
+def _kind_class(kind: str | type, base: str) -> type:
+    name = catalog.class_name(kind)
+    cls = getattr(scm, name, None)
+    if cls is None or not catalog.is_kind_of(name, base) or cls.eClass.abstract:
+        options = ", ".join(c.__name__ for c in catalog.concrete_subclasses(base))
+        raise BuildError(f"unknown {base} kind {name!r}; choose one of: {options}")
+    return cls
+
+
+class GraphBuilder:
+    """Adds nodes and flows to a graph (a scenario or a module definition)."""
+
+    def __init__(self, graph: scm.Graph) -> None:
+        self.graph = graph
+        self._counts: Counter[str] = Counter(
+            node.eClass.name for node in graph.nodes if isinstance(node, scm.ModuleElement)
+        )
+
+    def _auto_name(self, kind: str) -> str:
+        self._counts[kind] += 1
+        return f"{kind}_{self._counts[kind]}"
+
+    def _adopt(self, node: scm.GraphElement) -> scm.GraphElement:
+        self.graph.nodes.append(node)
+        return node
+
+    def add(
+        self,
+        kind: str | type,
+        actor: scm.Participant,
+        *,
+        target: scm.Participant | None = None,
+        name: str | None = None,
+        **parameters: object,
+    ) -> scm.ActionNode:
+        """Add a maneuver or condition performed by `actor`.
+
+        Numeric parameters take numbers or parameter values (see `sceml.params`); positions take
+        `world(...)` or `lane(...)`; other attributes (e.g. `direction="right"`) take their literal.
+        """
+        cls = _kind_class(kind, "ActionNode")
+        node = cls(name=name or self._auto_name(cls.__name__))
+        node.referenceActor = actor
+        if target is not None:
+            node.targetActor = target
+        numeric = {spec.name for spec in catalog.parameters(cls)}
+        for key, given in parameters.items():
+            feature = node.eClass.findEStructuralFeature(key)
+            if feature is None:
+                raise BuildError(f"{cls.__name__} has no parameter {key!r}")
+            if key in numeric:
+                node.eSet(key, as_parameter(given))
+            elif feature.many:
+                node.eGet(key).extend(detached(item) for item in given)  # type: ignore[attr-defined]
+            elif hasattr(feature.eType, "getEEnumLiteral"):
+                literal = feature.eType.getEEnumLiteral(str(given))
+                if literal is None:
+                    raise BuildError(f"{cls.__name__}.{key} does not accept {given!r}")
+                node.eSet(key, literal)
+            elif isinstance(given, EObject):
+                node.eSet(key, detached(given))
+            else:
+                node.eSet(key, given)
+        self._adopt(node)
+        return node
+
+    def join_all(
+        self, *predecessors: scm.GraphElement, name: str | None = None
+    ) -> scm.JoinAllFinished:
+        """A join that finishes when all predecessors have; flows from each are added."""
+        join = scm.JoinAllFinished(name=name or self._auto_name("JoinAllFinished"))
+        self._adopt(join)
+        for node in predecessors:
+            self.flow(node, join)
+        return join
+
+    def join_one(
+        self, *predecessors: scm.GraphElement, name: str | None = None
+    ) -> scm.JoinOneFinished:
+        """A join that finishes when the first predecessor has; flows from each are added."""
+        join = scm.JoinOneFinished(name=name or self._auto_name("JoinOneFinished"))
+        self._adopt(join)
+        for node in predecessors:
+            self.flow(node, join)
+        return join
+
+    def use(
+        self,
+        definition: scm.ModuleDefinition,
+        bindings: Mapping[str, scm.Participant],
+        overrides: Mapping[str, ParameterInput] | None = None,
+        *,
+        name: str | None = None,
+    ) -> scm.ModuleUse:
+        """Use a module definition, binding each of its roles to an actor (or outer role)."""
+        use = scm.ModuleUse(name=name or self._auto_name(str(definition.name)))
+        use.definition = definition
+        for role, actor in bindings.items():
+            use.bindings.append(scm.RoleBinding(role=role, actor=actor))
+        for parameter, given in (overrides or {}).items():
+            use.overrides.append(
+                scm.ParameterOverride(parameter=parameter, value=as_parameter(given))
+            )
+        self._adopt(use)
+        return use
+
+    def flow(self, source: scm.GraphElement, target: scm.GraphElement) -> scm.Flow:
+        """A flow: `target` is activated when `source` has finished."""
+        flow = scm.Flow(source=source, target=target)
+        self.graph.flows.append(flow)
+        return flow
+
+    def chain(self, *nodes: scm.GraphElement) -> None:
+        """Flows from each node to the next."""
+        for source, target in zip(nodes, nodes[1:], strict=False):
+            self.flow(source, target)
+
+
+class ScenarioBuilder(GraphBuilder):
+    """Builds a Scenario with its root node, end node and actors."""
+
+    def __init__(
+        self,
+        name: str,
+        *,
+        map: str | None = None,
+        level: str = "functional",
+        max_duration: ParameterInput | None = None,
+        date: str | None = None,
+        description: str | None = None,
+        end_policy: str = "joinAll",
+    ) -> None:
+        super().__init__(scm.Scenario())
+        self.root = scm.RootNode(name="Root", scenarioName=name, map=map, date=date)
+        self.root.description = description
+        self.root.level = scm.AbstractionLevel.getEEnumLiteral(level)
+        if self.root.level is None:
+            raise BuildError(f"unknown abstraction level {level!r}")
+        if max_duration is not None:
+            self.root.maxDuration = as_parameter(max_duration)
+        self.end = scm.EndNode(name="End", policy=scm.JoinPolicy.getEEnumLiteral(end_policy))
+        self._adopt(self.root)
+        self._adopt(self.end)
+
+    @property
+    def scenario(self) -> scm.Scenario:
+        """The scenario built so far."""
+        return self.graph
+
+    def environment(
+        self,
+        *,
+        time_of_day: str = "12:00:00",
+        cloud_state: str = "free",
+        precipitation: str = "dry",
+        precipitation_intensity: ParameterInput | None = None,
+        fog_visual_range: ParameterInput | None = None,
+    ) -> scm.Environment:
+        """Set the environment of the root node."""
+        environment = scm.Environment(
+            timeOfDay=time_of_day,
+            cloudState=scm.CloudState.getEEnumLiteral(cloud_state),
+            precipitation=scm.PrecipitationType.getEEnumLiteral(precipitation),
+        )
+        if precipitation_intensity is not None:
+            environment.precipitationIntensity = as_parameter(precipitation_intensity)
+        if fog_visual_range is not None:
+            environment.fogVisualRange = as_parameter(fog_visual_range)
+        self.root.environment = environment
+        return environment
+
+    def actor(
+        self,
+        kind: str | type,
+        name: str,
+        *,
+        ego: bool = False,
+        start: scm.Position | None = None,
+        speed: ParameterInput | None = None,
+        model: str | None = None,
+        **dimensions: ParameterInput,
+    ) -> scm.Actor:
+        """Add an actor of a kind (Car, Bicycle, Pedestrian, ...) to the root node."""
+        cls = _kind_class(kind, "Actor")
+        actor = cls(name=name, isEgo=ego, model=model)
+        if start is not None:
+            actor.startPosition = detached(start)
+        if speed is not None:
+            actor.initialSpeed = as_parameter(speed)
+        for key, given in dimensions.items():
+            if key not in ("length", "width", "height"):
+                raise BuildError(f"actors have no parameter {key!r}")
+            actor.eSet(key, as_parameter(given))
+        self.root.actors.append(actor)
+        return actor
+
+
+class ModuleBuilder(GraphBuilder):
+    """Builds a module definition: roles, parameters and a graph from in-port to out-port."""
+
+    def __init__(self, definition: scm.ModuleDefinition) -> None:
+        super().__init__(definition)
+        self.definition = definition
+        self.in_port = scm.InPort(name="In")
+        self.out_port = scm.OutPort(name="Out")
+        self._adopt(self.in_port)
+        self._adopt(self.out_port)
+
+    def role(self, name: str, *kinds: str) -> scm.ActorRole:
+        """Declare an actor role and the actor kinds it accepts (e.g. "Bicycle", "Pedestrian")."""
+        role = scm.ActorRole(name=name)
+        for kind in kinds:
+            literal = scm.ActorKind.getEEnumLiteral(kind)
+            if literal is None:
+                raise BuildError(f"unknown actor kind {kind!r}")
+            role.allowedKinds.append(scm.AllowedKind(kind=literal))
+        self.definition.roles.append(role)
+        return role
+
+    def parameter(
+        self, name: str, unit: str = "", default: ParameterInput | None = None
+    ) -> scm.ModuleParameter:
+        """Declare a module parameter; pass it as a node parameter to refer to it."""
+        declared = scm.ModuleParameter(name=name, unit=unit)
+        if default is not None:
+            declared.default = as_parameter(default)
+        self.definition.parameters.append(declared)
+        return declared
+
+
+class LibraryBuilder:
+    """Builds a module library."""
+
+    def __init__(self, name: str, description: str | None = None) -> None:
+        self.library = scm.Library(name=name, description=description)
+
+    def module(self, name: str, description: str | None = None) -> ModuleBuilder:
+        """Start a new module definition in the library."""
+        definition = scm.ModuleDefinition(name=name, description=description)
+        self.library.modules.append(definition)
+        return ModuleBuilder(definition)
+
+
+def node_named(graph: scm.Graph, name: str) -> scm.GraphElement:
+    """The node of a graph with this name; KeyError lists the names there are."""
+    for node in graph.nodes:
+        if node.name == name:
+            return node
+    raise KeyError(f"no node {name!r}; nodes are: {', '.join(str(n.name) for n in graph.nodes)}")
+
+
+def actor_named(scenario: scm.Scenario, name: str) -> scm.Actor:
+    """The actor of a scenario with this name."""
+    for node in scenario.nodes:
+        if isinstance(node, scm.RootNode):
+            for actor in node.actors:
+                if actor.name == name:
+                    return actor
+    raise KeyError(f"no actor {name!r}")
+
+
+__all__ = [
+    "GraphBuilder",
+    "LibraryBuilder",
+    "ModuleBuilder",
+    "ScenarioBuilder",
+    "actor_named",
+    "lane",
+    "node_named",
+    "world",
+]

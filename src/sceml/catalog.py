@@ -1,0 +1,163 @@
+"""What the metamodel says about each kind: categories, parameters, units and language defaults.
+
+The generated classes carry no EAnnotations, so these facts are read from the shipped `.ecore`,
+which stays the single source of truth.
+"""
+
+from __future__ import annotations
+
+import importlib.resources
+from dataclasses import dataclass
+from functools import cache
+
+import scemlmodel as scm
+from pyecore.ecore import EClass, EObject, EReference
+from pyecore.resources import URI, ResourceSet
+
+NODE_ANNOTATION = "http://sceml.org/node"
+PARAMETER_ANNOTATION = "http://sceml.org/parameter"
+ACTOR_ANNOTATION = "http://sceml.org/actor"
+
+#: A parameter whose default depends on the actor kind (its bounding box).
+ACTOR_DEFAULT = "actor"
+
+CATEGORIES = ("longitudinal", "lateral", "composite", "condition")
+
+
+@dataclass(frozen=True)
+class ParameterSpec:
+    """One numeric parameter of a kind: its feature name, SI unit and language default."""
+
+    name: str
+    unit: str
+    default: float | None
+    per_actor_default: bool = False
+
+    @property
+    def required(self) -> bool:
+        """A parameter without a language default must be given at the logical and concrete levels."""
+        return self.default is None and not self.per_actor_default
+
+
+@cache
+def _ecore_classes() -> dict[str, EClass]:
+    """The EClasses of the shipped .ecore, by name, with their annotations."""
+    resource_set = ResourceSet()
+    ecore_file = importlib.resources.files("sceml.metamodel") / "scemlmodel.ecore"
+    with importlib.resources.as_file(ecore_file) as path:
+        resource = resource_set.get_resource(URI(str(path)))
+    package = resource.contents[0]
+    return {c.name: c for c in package.eClassifiers if isinstance(c, EClass)}
+
+
+def _annotation(eclass: EClass, source: str) -> dict[str, str]:
+    for annotation in eclass.eAnnotations:
+        if annotation.source == source:
+            return dict(annotation.details.items())
+    return {}
+
+
+def _inherited_annotation(class_name: str, source: str) -> dict[str, str]:
+    """Annotation details merged along the superclass chain; the most specific class wins."""
+    eclass = _ecore_classes()[class_name]
+    merged: dict[str, str] = {}
+    for ancestor in reversed([eclass, *eclass.eAllSuperTypes()]):
+        merged.update(_annotation(ancestor, source))
+    return merged
+
+
+def class_name(kind: EObject | EClass | type | str) -> str:
+    """The metaclass name of an object, an EClass, a generated class or a name."""
+    if isinstance(kind, str):
+        return kind
+    if isinstance(kind, EClass):
+        return str(kind.name)
+    if isinstance(kind, type):
+        return kind.__name__
+    return str(kind.eClass.name)
+
+
+@cache
+def category(kind: EObject | EClass | type | str) -> str | None:
+    """`longitudinal`, `lateral`, `composite` or `condition` for action nodes, else None."""
+    return _inherited_annotation(class_name(kind), NODE_ANNOTATION).get("category")
+
+
+@cache
+def complexity(kind: EObject | EClass | type | str) -> int | None:
+    """The read-only complexity level the paper shows in a node's properties."""
+    value = _inherited_annotation(class_name(kind), NODE_ANNOTATION).get("complexity")
+    return int(value) if value is not None else None
+
+
+@cache
+def needs_target(kind: EObject | EClass | type | str) -> bool:
+    """Whether the node kind needs a target actor besides its reference actor."""
+    details = _inherited_annotation(class_name(kind), NODE_ANNOTATION)
+    return details.get("needsTarget") == "true"
+
+
+@cache
+def parameters(kind: EObject | EClass | type | str) -> tuple[ParameterSpec, ...]:
+    """The numeric parameters of a kind, inherited ones first, in metamodel order."""
+    eclass = _ecore_classes()[class_name(kind)]
+    specs = []
+    for feature in eclass.eAllStructuralFeatures():
+        if not isinstance(feature, EReference) or feature.eType.name != "ParameterValue":
+            continue
+        details = next(
+            (
+                dict(a.details.items())
+                for a in feature.eAnnotations
+                if a.source == PARAMETER_ANNOTATION
+            ),
+            {},
+        )
+        raw_default = details.get("default")
+        per_actor = raw_default == ACTOR_DEFAULT
+        default = None if raw_default is None or per_actor else float(raw_default)
+        specs.append(ParameterSpec(feature.name, details.get("unit", ""), default, per_actor))
+    return tuple(specs)
+
+
+def parameter(kind: EObject | EClass | type | str, name: str) -> ParameterSpec:
+    """One parameter spec by name; KeyError if the kind has no such parameter."""
+    for spec in parameters(kind):
+        if spec.name == name:
+            return spec
+    raise KeyError(f"{class_name(kind)} has no parameter {name!r}")
+
+
+@cache
+def actor_dimensions(kind: EObject | EClass | type | str) -> dict[str, float]:
+    """Default bounding box (length, width, height in m) of an actor kind."""
+    details = _inherited_annotation(class_name(kind), ACTOR_ANNOTATION)
+    return {key: float(value) for key, value in details.items()}
+
+
+def concrete_subclasses(base: str) -> tuple[type, ...]:
+    """Generated classes of every non-abstract kind below `base` (itself included)."""
+    classes = _ecore_classes()
+    result = []
+    for name, eclass in classes.items():
+        if eclass.abstract:
+            continue
+        if name == base or base in {s.name for s in eclass.eAllSuperTypes()}:
+            result.append(getattr(scm, name))
+    return tuple(result)
+
+
+def action_node_kinds() -> tuple[type, ...]:
+    """Every maneuver and condition kind."""
+    return concrete_subclasses("ActionNode")
+
+
+def actor_kinds() -> tuple[type, ...]:
+    """Every concrete actor kind."""
+    return concrete_subclasses("Actor")
+
+
+def is_kind_of(obj_or_class: EObject | str, kind_name: str) -> bool:
+    """Whether a metaclass (by object or name) is `kind_name` or one of its subclasses."""
+    eclass = _ecore_classes()[class_name(obj_or_class)]
+    return eclass.name == kind_name or kind_name in {s.name for s in eclass.eAllSuperTypes()}

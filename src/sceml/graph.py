@@ -1,0 +1,83 @@
+"""Graph queries over scenarios and module definitions, shared by validation, export and render."""
+
+from __future__ import annotations
+
+from collections import deque
+from collections.abc import Iterable, Iterator
+
+import scemlmodel as scm
+
+
+def predecessors(node: scm.GraphElement) -> list[scm.GraphElement]:
+    """Nodes with a flow into `node`, in flow order; dangling flows are skipped."""
+    return [flow.source for flow in node.incoming if flow.source is not None]
+
+
+def successors(node: scm.GraphElement) -> list[scm.GraphElement]:
+    """Nodes `node` has a flow to, in flow order; dangling flows are skipped."""
+    return [flow.target for flow in node.outgoing if flow.target is not None]
+
+
+def nodes_of(graph: scm.Graph, kind: type) -> list:
+    """The nodes of a graph that are instances of `kind`."""
+    return [node for node in graph.nodes if isinstance(node, kind)]
+
+
+def root_node(scenario: scm.Scenario) -> scm.RootNode | None:
+    """The scenario's first RootNode, or None."""
+    return next(iter(nodes_of(scenario, scm.RootNode)), None)
+
+
+def end_node(scenario: scm.Scenario) -> scm.EndNode | None:
+    """The scenario's first EndNode, or None."""
+    return next(iter(nodes_of(scenario, scm.EndNode)), None)
+
+
+def actors(scenario: scm.Scenario) -> list[scm.Actor]:
+    """The actors declared in the scenario's root node."""
+    root = root_node(scenario)
+    return list(root.actors) if root is not None else []
+
+
+def reachable(
+    starts: Iterable[scm.GraphElement], *, backwards: bool = False
+) -> set[scm.GraphElement]:
+    """Every node reachable from `starts` along flows (against them if `backwards`), starts included."""
+    step = predecessors if backwards else successors
+    seen = set(starts)
+    queue = deque(seen)
+    while queue:
+        for neighbour in step(queue.popleft()):
+            if neighbour not in seen:
+                seen.add(neighbour)
+                queue.append(neighbour)
+    return seen
+
+
+def topological_order(graph: scm.Graph) -> tuple[list[scm.GraphElement], set[scm.GraphElement]]:
+    """Kahn's order of the graph's nodes, and the nodes left over because they lie on cycles."""
+    members = set(graph.nodes)
+    indegree = {node: 0 for node in graph.nodes}
+    for node in graph.nodes:
+        for successor in successors(node):
+            if successor in members:
+                indegree[successor] += 1
+    queue = deque(node for node in graph.nodes if indegree[node] == 0)
+    order = []
+    while queue:
+        node = queue.popleft()
+        order.append(node)
+        for successor in successors(node):
+            if successor in members:
+                indegree[successor] -= 1
+                if indegree[successor] == 0:
+                    queue.append(successor)
+    return order, members - set(order)
+
+
+def all_graphs(root: scm.Scenario | scm.Library) -> Iterator[scm.Graph]:
+    """The scenario itself, or every module definition of a library."""
+    if isinstance(root, scm.Library):
+        yield from root.modules
+    else:
+        yield root

@@ -1,0 +1,354 @@
+"""Load and save scenarios and module libraries as XMI, safely, atomically and with locations."""
+
+from __future__ import annotations
+
+import io as _io
+import os
+import re
+import tempfile
+from collections.abc import Iterable, Iterator
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import scemlmodel as scm
+from lxml import etree
+from pyecore.ecore import EObject, EProxy
+from pyecore.resources import URI, ResourceSet
+from pyecore.resources.xmi import XMIOptions, XMIResource
+
+from .errors import LoadError, SaveError
+
+#: Files larger than this are refused before parsing (bytes); a scenario of 50,000 nodes is ~15 MB.
+DEFAULT_MAX_BYTES = 64 * 1024 * 1024
+
+#: lxml refuses trees deeper than this itself (libxml2's limit without huge_tree is 256).
+_LINE_IN_MESSAGE = re.compile(r"line (\d+)")
+
+
+def _hardened_parser() -> etree.XMLParser:
+    # No DTD, no entities, no network: a scenario file never needs them, and they are how
+    # billion-laughs and XXE attacks get in. Comments are dropped because pyecore cannot decode them.
+    return etree.XMLParser(
+        resolve_entities=False,
+        no_network=True,
+        load_dtd=False,
+        dtd_validation=False,
+        huge_tree=False,
+        remove_comments=True,
+        remove_pis=True,
+    )
+
+
+def parse_xml_safely(path: Path, max_bytes: int = DEFAULT_MAX_BYTES) -> etree._ElementTree:
+    """Parse an XML file with every dangerous feature off; LoadError names the file and line."""
+    try:
+        size = path.stat().st_size
+    except FileNotFoundError:
+        raise LoadError("no such file", file=path) from None
+    except OSError as error:
+        raise LoadError(f"cannot read file: {error.strerror}", file=path) from None
+    if size > max_bytes:
+        raise LoadError(
+            f"file is {size / 1e6:.1f} MB, above the {max_bytes / 1e6:.0f} MB limit", file=path
+        )
+    try:
+        data = path.read_bytes()
+    except OSError as error:
+        raise LoadError(f"cannot read file: {error.strerror}", file=path) from None
+    if b"<!DOCTYPE" in data or b"<!ENTITY" in data:
+        line = data[: data.find(b"<!")].count(b"\n") + 1
+        raise LoadError("DTDs and entity declarations are not accepted", file=path, line=line)
+    try:
+        return etree.parse(_io.BytesIO(data), parser=_hardened_parser(), base_url=None)
+    except etree.XMLSyntaxError as error:
+        raise LoadError(f"malformed XML: {error.msg}", file=path, line=error.lineno) from None
+
+
+class SafeXMIResource(XMIResource):
+    """An XMI resource that parses with the hardened parser and only reads allowed local files."""
+
+    def load(self, options: dict | None = None) -> None:
+        path = _local_path(self.uri)
+        resource_set = self.resource_set
+        allowed = getattr(resource_set, "sceml_allowed_roots", None)
+        named = path.resolve() in getattr(resource_set, "sceml_named_files", ())
+        if allowed is not None and not named and not any(_is_within(path, r) for r in allowed):
+            roots = ", ".join(str(r) for r in allowed)
+            raise LoadError(f"reference leaves the allowed folders ({roots})", file=path)
+        tree = parse_xml_safely(path, getattr(resource_set, "sceml_max_bytes", DEFAULT_MAX_BYTES))
+        self.sceml_tree = tree
+        try:
+            self._decode_tree(tree, options)
+        except LoadError:
+            raise
+        except RecursionError:
+            raise LoadError("model nesting is too deep", file=path) from None
+        except Exception as error:  # pyecore signals bad content with bare exceptions
+            message = str(error) or type(error).__name__
+            found = _LINE_IN_MESSAGE.search(message)
+            raise LoadError(
+                f"not a valid SceML model: {message}",
+                file=path,
+                line=int(found.group(1)) if found else None,
+            ) from None
+
+    def _decode_tree(self, tree: etree._ElementTree, options: dict | None) -> None:
+        # Mirrors XMIResource.load, but decodes the tree parsed above instead of re-reading the file.
+        self.options = options or {}
+        self.cache_enabled = True
+        xmlroot = tree.getroot()
+        self.prefixes.update(xmlroot.nsmap)
+        self.reverse_nsmap = {v: k for k, v in self.prefixes.items()}
+        xsi, xmi = self.prefixes.get("xsi"), self.prefixes.get("xmi")
+        self.xsitype = f"{{{xsi}}}type"
+        self.xmiid = f"{{{xmi}}}id"
+        self.schema_tag = f"{{{xsi}}}schemaLocation"
+        self.schema_locations: dict[str, object] = {}
+        roots = xmlroot if xmlroot.tag == f"{{{xmi}}}XMI" else [xmlroot]
+        for root in roots:
+            model_root = self._init_modelroot(root)
+            for child in root:
+                self._decode_eobject(child, model_root)
+        if self.contents:
+            self._decode_ereferences()
+        self._clean_registers()
+
+
+def _local_path(uri: URI) -> Path:
+    if uri.protocol not in (None, "file"):
+        raise LoadError(f"only local files are read, not {uri.protocol}: URIs", file=uri.plain)
+    return Path(uri.normalize())
+
+
+def _is_within(path: Path, root: Path) -> bool:
+    try:
+        path.resolve().relative_to(root.resolve())
+    except ValueError:
+        return False
+    return True
+
+
+def new_resource_set(
+    allowed_roots: Iterable[str | Path] | None = None, max_bytes: int = DEFAULT_MAX_BYTES
+) -> ResourceSet:
+    """A fresh resource set that knows the SceML metamodel and reads files safely.
+
+    `allowed_roots`, when given, are the only folders files may be read from, cross-file
+    references included.
+    """
+    resource_set = ResourceSet()
+    resource_set.metamodel_registry[scm.nsURI] = scm
+    resource_set.resource_factory["xmi"] = SafeXMIResource
+    resource_set.resource_factory["*"] = SafeXMIResource
+    resource_set.sceml_allowed_roots = (
+        None if allowed_roots is None else [Path(r).resolve() for r in allowed_roots]
+    )
+    resource_set.sceml_max_bytes = max_bytes
+    return resource_set
+
+
+@dataclass
+class Document:
+    """A loaded model file: its root object and where each element was written."""
+
+    path: Path
+    root: EObject
+    resource: XMIResource
+    resource_set: ResourceSet = field(repr=False)
+
+    def line_of(self, obj: EObject) -> int | None:
+        """The line of the element that holds `obj` in this file, if it comes from it."""
+        tree = getattr(obj.eResource, "sceml_tree", None) if obj.eResource else None
+        if tree is None:
+            return None
+        element = _element_of(tree.getroot(), obj)
+        return element.sourceline if element is not None else None
+
+    def file_of(self, obj: EObject) -> Path | None:
+        """The file an object was read from (a library, for module internals)."""
+        resource = obj.eResource
+        return Path(resource.uri.normalize()) if resource is not None else None
+
+
+def _containment_steps(obj: EObject) -> list[tuple[str, int]]:
+    steps: list[tuple[str, int]] = []
+    while obj.eContainer() is not None and obj.eContainmentFeature() is not None:
+        feature = obj.eContainmentFeature()
+        container = obj.eContainer()
+        index = container.eGet(feature).index(obj) if feature.many else 0
+        steps.append((feature.name, index))
+        obj = container
+    return list(reversed(steps))
+
+
+def _element_of(root: etree._Element, obj: EObject) -> etree._Element | None:
+    element = root
+    for name, index in _containment_steps(obj):
+        children = [child for child in element if child.tag == name]
+        if index >= len(children):
+            return None
+        element = children[index]
+    return element
+
+
+def model_path(obj: EObject) -> str:
+    """A readable path of element names from the document root, e.g. `CrossingManeuver/Accelerate_1`."""
+    names = []
+    current: EObject | None = obj
+    while current is not None:
+        label = _label(current)
+        if label:
+            names.append(label)
+        current = current.eContainer()
+    return "/".join(reversed(names))
+
+
+def _label(obj: EObject) -> str:
+    name = getattr(obj, "name", None)
+    if name:
+        return str(name)
+    feature = obj.eContainmentFeature()
+    if feature is None:
+        return ""
+    if feature.many:
+        return f"{feature.name}[{obj.eContainer().eGet(feature).index(obj)}]"
+    return str(feature.name)
+
+
+def uri_fragment(obj: EObject) -> str:
+    """The EMF URI fragment of an object inside its file, e.g. `//@nodes.3/@targetSpeed`."""
+    return str(obj.eURIFragment())
+
+
+def load(
+    path: str | Path,
+    *,
+    resource_set: ResourceSet | None = None,
+    allowed_roots: Iterable[str | Path] | None = None,
+) -> Document:
+    """Load a scenario or library XMI file; references to other files load on first use."""
+    path = Path(path)
+    if resource_set is None:
+        roots = allowed_roots if allowed_roots is not None else [path.resolve().parent]
+        resource_set = new_resource_set(roots)
+    # The file the user names is always read; allowed_roots govern what it refers to.
+    named: set[Path] = getattr(resource_set, "sceml_named_files", set())
+    named.add(path.resolve())
+    resource_set.sceml_named_files = named
+    resource = resource_set.get_resource(URI(str(path)))
+    if not resource.contents:
+        raise LoadError("the file holds no model", file=path)
+    root = resource.contents[0]
+    if not isinstance(root, scm.Scenario | scm.Library):
+        raise LoadError(
+            f"expected a Scenario or Library, found {root.eClass.name}", file=path, line=1
+        )
+    return Document(path=path, root=root, resource=resource, resource_set=resource_set)
+
+
+def load_scenario(path: str | Path, **kwargs: object) -> Document:
+    """Load a file that must hold a Scenario."""
+    document = load(path, **kwargs)  # type: ignore[arg-type]
+    if not isinstance(document.root, scm.Scenario):
+        raise LoadError("expected a scenario, found a module library", file=path, line=1)
+    return document
+
+
+def load_library(path: str | Path, **kwargs: object) -> Document:
+    """Load a file that must hold a module Library."""
+    document = load(path, **kwargs)  # type: ignore[arg-type]
+    if not isinstance(document.root, scm.Library):
+        raise LoadError("expected a module library, found a scenario", file=path, line=1)
+    return document
+
+
+def unresolved_references(root: EObject) -> Iterator[tuple[EObject, str, str]]:
+    """Every cross-file reference below `root` that cannot be loaded: (holder, href, reason)."""
+    for obj in [root, *root.eAllContents()]:
+        if not isinstance(obj, scm.ModuleUse):
+            continue
+        target = obj.definition
+        if not isinstance(target, EProxy):
+            continue
+        href = target._proxy_path
+        try:
+            target.force_resolve()
+        except LoadError as error:
+            yield obj, href, str(error)
+        except Exception as error:  # pyecore raises KeyError/ValueError for bad fragments
+            yield obj, href, f"cannot resolve {href!r}: {error or type(error).__name__}"
+
+
+def save(root: EObject, path: str | Path) -> Path:
+    """Write a model atomically: to a temporary file beside `path`, then renamed over it.
+
+    Cross-file references are written relative to `path`. On any failure the previous file, if
+    any, is left as it was.
+    """
+    path = Path(path)
+    resource = root.eResource
+    if resource is None:
+        resource_set = new_resource_set()
+        resource = resource_set.create_resource(URI(str(path)))
+        resource.append(root)
+    _resolve_before_moving(root, resource, path)
+    buffer = _MemoryURI(str(path))
+    original_uri = resource.uri
+    resource.uri = URI(str(path))
+    try:
+        # Defaults are written out: `kind="Pedestrian"` and `value="0.0"` read better than an
+        # empty element, and no reader has to know the metamodel's defaults.
+        resource.save(output=buffer, options={XMIOptions.SERIALIZE_DEFAULT_VALUES: True})
+    except Exception as error:
+        raise SaveError(f"cannot serialise the model: {error}", file=path) from None
+    finally:
+        resource.uri = original_uri
+    write_atomically(path, buffer.data.getvalue())
+    return path
+
+
+class _MemoryURI(URI):
+    """A URI pyecore can save into that keeps the bytes in memory, for the atomic write."""
+
+    def __init__(self, uri: str) -> None:
+        super().__init__(uri)
+        self.data = _io.BytesIO()
+
+    def create_outstream(self) -> _io.BytesIO:
+        return self.data
+
+    def close_stream(self) -> None:
+        pass  # the bytes are read after pyecore is done
+
+
+def _resolve_before_moving(root: EObject, resource: XMIResource, path: Path) -> None:
+    # An unresolved proxy keeps its href text verbatim, which would be wrong relative to a new
+    # folder; resolving it first lets pyecore write a correct relative href.
+    same_folder = Path(resource.uri.normalize()).parent == path.resolve().parent
+    if same_folder:
+        return
+    for holder, href, reason in unresolved_references(root):
+        raise SaveError(
+            f"cannot save into another folder: reference {href!r} does not resolve ({reason})",
+            file=path,
+            element=model_path(holder),
+        )
+
+
+def write_atomically(path: str | Path, data: bytes) -> None:
+    """Write bytes to `path` through a temporary file in the same folder and an atomic rename."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    try:
+        with os.fdopen(handle, "wb") as stream:
+            # No fsync: the rename alone guarantees readers never see a half-written file, and
+            # batch export of thousands of files would pay for a disk flush on every one.
+            stream.write(data)
+        os.chmod(temporary, 0o644)
+        os.replace(temporary, path)
+    except BaseException as error:
+        Path(temporary).unlink(missing_ok=True)
+        if isinstance(error, OSError):
+            raise SaveError(f"cannot write file: {error.strerror}", file=path) from None
+        raise

@@ -1,0 +1,183 @@
+"""Loading and saving XMI: equal content after a round trip, relative cross-file references,
+located errors, refused hostile input and atomic writes."""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import pytest
+import scemlmodel as scm
+
+from sceml import io
+from sceml.compare import differences
+from sceml.errors import LoadError, SaveError
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+EXAMPLE_FILES = sorted(EXAMPLES.glob("*.xmi")) + sorted((EXAMPLES / "library").glob("*.xmi"))
+
+
+def test_there_are_seven_example_files() -> None:
+    assert len(EXAMPLE_FILES) == 7
+
+
+@pytest.mark.parametrize("path", EXAMPLE_FILES, ids=lambda p: p.name)
+def test_every_example_loads_saves_and_reloads_equal(path: Path, examples_copy: Path) -> None:
+    source = examples_copy / path.relative_to(EXAMPLES)
+    original = io.load(source)
+    resaved = source.with_name("resaved-" + source.name)
+    io.save(original.root, resaved)
+    reloaded = io.load(resaved)
+    assert differences(original.root, reloaded.root) == []
+
+
+def test_round_trip_sees_a_real_change(examples_copy: Path) -> None:
+    # The comparison itself must be able to fail.
+    source = examples_copy / "uis1-concrete.xmi"
+    first, second = io.load(source), io.load(source)
+    second.root.nodes[2].targetSpeed.value = 9.5
+    assert differences(first.root, second.root) == ["//nodes[2]/targetSpeed/value: 8.0 != 9.5"]
+
+
+def test_cross_file_reference_resolves_relative_to_the_referring_file(examples_copy: Path) -> None:
+    document = io.load(examples_copy / "uis2-concrete.xmi")
+    use = next(n for n in document.root.nodes if isinstance(n, scm.ModuleUse))
+    assert use.definition.name == "CrossingManeuver"
+    assert (
+        document.file_of(use.definition) == (examples_copy / "library/sceml-library.xmi").resolve()
+    )
+
+
+def test_moving_scenario_and_library_together_keeps_references(
+    examples_copy: Path, tmp_path: Path
+) -> None:
+    moved = tmp_path / "elsewhere" / "deeper"
+    shutil.copytree(examples_copy, moved)
+    use = next(
+        n for n in io.load(moved / "uis2-logical.xmi").root.nodes if isinstance(n, scm.ModuleUse)
+    )
+    assert [r.name for r in use.definition.roles] == ["crosser", "trigger"]
+
+
+def test_save_elsewhere_rewrites_relative_hrefs(examples_copy: Path, tmp_path: Path) -> None:
+    document = io.load(examples_copy / "uis2-concrete.xmi")
+    target = tmp_path / "out" / "nested" / "copy.xmi"
+    io.save(document.root, target)
+    assert 'href="../../examples/library/sceml-library.xmi#CrossingManeuver"' in target.read_text()
+    reloaded = io.load(target, allowed_roots=[tmp_path])
+    use = next(n for n in reloaded.root.nodes if isinstance(n, scm.ModuleUse))
+    assert use.definition.name == "CrossingManeuver"
+
+
+def test_library_change_is_seen_by_the_scenario(examples_copy: Path) -> None:
+    library = io.load(examples_copy / "library" / "sceml-library.xmi")
+    library.root.modules[0].description = "changed in the library"
+    io.save(library.root, examples_copy / "library" / "sceml-library.xmi")
+    use = next(
+        n
+        for n in io.load(examples_copy / "uis2-concrete.xmi").root.nodes
+        if isinstance(n, scm.ModuleUse)
+    )
+    assert use.definition.description == "changed in the library"
+
+
+def test_line_of_elements(examples_copy: Path) -> None:
+    path = examples_copy / "uis1-concrete.xmi"
+    document = io.load(path)
+    lines = path.read_text().splitlines()
+    for node in document.root.nodes:
+        line = document.line_of(node)
+        assert line is not None and f'name="{node.name}"' in lines[line - 1]
+
+
+def test_model_path_and_fragment(examples_copy: Path) -> None:
+    document = io.load(examples_copy / "uis2-concrete.xmi")
+    ego = document.root.nodes[0].actors[0]
+    assert io.model_path(ego.initialSpeed) == "Root/ego/initialSpeed"
+    assert io.uri_fragment(ego) == "//@nodes.0/@actors.0"
+
+
+def test_missing_file(tmp_path: Path) -> None:
+    with pytest.raises(LoadError, match="no such file"):
+        io.load(tmp_path / "absent.xmi")
+
+
+def test_malformed_xml_names_file_and_line(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.xmi"
+    bad.write_text(
+        '<?xml version="1.0"?>\n<scemlmodel:Scenario xmlns:scemlmodel="https://sceml.org/metamodel/1.0">\n<nodes>\n'
+    )
+    with pytest.raises(LoadError) as caught:
+        io.load(bad)
+    assert caught.value.file == str(bad) and caught.value.line is not None
+    assert str(caught.value).startswith(f"{bad}:")
+
+
+def test_doctype_is_refused_without_expansion(tmp_path: Path) -> None:
+    bomb = tmp_path / "bomb.xmi"
+    entities = "".join(f'<!ENTITY e{i} "&e{i - 1};&e{i - 1};">' for i in range(1, 30))
+    bomb.write_text(
+        f'<?xml version="1.0"?>\n<!DOCTYPE x [<!ENTITY e0 "ha">{entities}]>\n<x>&e29;</x>'
+    )
+    with pytest.raises(LoadError, match="DTD") as caught:
+        io.load(bomb)
+    assert caught.value.line == 2
+
+
+def test_wrong_root_element(tmp_path: Path) -> None:
+    other = tmp_path / "flow.xmi"
+    other.write_text(
+        '<?xml version="1.0"?>\n<scemlmodel:Flow xmlns:xmi="http://www.omg.org/XMI" '
+        'xmlns:scemlmodel="https://sceml.org/metamodel/1.0" xmi:version="2.0"/>\n'
+    )
+    with pytest.raises(LoadError, match="expected a Scenario or Library"):
+        io.load(other)
+
+
+def test_load_scenario_refuses_a_library() -> None:
+    with pytest.raises(LoadError, match="expected a scenario"):
+        io.load_scenario(EXAMPLES / "library" / "sceml-library.xmi")
+
+
+def test_reference_outside_allowed_folders_is_refused(examples_copy: Path, tmp_path: Path) -> None:
+    document = io.load(examples_copy / "uis2-concrete.xmi", allowed_roots=[tmp_path / "nowhere"])
+    problems = list(io.unresolved_references(document.root))
+    assert len(problems) == 1 and "allowed folders" in problems[0][2]
+
+
+def test_network_reference_is_never_fetched(examples_copy: Path) -> None:
+    path = examples_copy / "uis2-concrete.xmi"
+    path.write_text(
+        path.read_text().replace("library/sceml-library.xmi", "http://192.0.2.1/lib.xmi")
+    )
+    problems = list(io.unresolved_references(io.load(path).root))
+    assert len(problems) == 1 and "only local files" in problems[0][2]
+
+
+def test_save_is_atomic_when_serialisation_fails(examples_copy: Path, monkeypatch) -> None:
+    path = examples_copy / "uis1-concrete.xmi"
+    before = path.read_bytes()
+    document = io.load(path)
+
+    def explode(*args, **kwargs):
+        raise RuntimeError("disk on fire")
+
+    monkeypatch.setattr(document.resource, "save", explode)
+    with pytest.raises(SaveError):
+        io.save(document.root, path)
+    assert path.read_bytes() == before
+    assert [p.name for p in path.parent.iterdir() if p.name.endswith(".tmp")] == []
+
+
+def test_write_atomically_leaves_no_partial_file(tmp_path: Path, monkeypatch) -> None:
+    target = tmp_path / "out.xmi"
+    target.write_bytes(b"good")
+
+    def failing_replace(source, destination):
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(io.os, "replace", failing_replace)
+    with pytest.raises(SaveError, match="No space left"):
+        io.write_atomically(target, b"new content")
+    assert target.read_bytes() == b"good"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out.xmi"]
