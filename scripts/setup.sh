@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Set up everything SceML and its test suite need on a fresh Debian/Ubuntu machine:
+# system packages (Graphviz, a JDK with Eclipse EMF, Chromium), a virtualenv in .venv, and SceML
+# installed into it in editable mode with its development extras. Safe to run again.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+APT_PACKAGES=(graphviz default-jdk-headless libeclipse-emf-ecore-xmi-java chromium fonts-dejavu-core)
+missing=()
+for package in "${APT_PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
+done
+if ((${#missing[@]})); then
+  sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  echo "setup: installing ${missing[*]}"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
+fi
+
+python=${PYTHON:-python3}
+"$python" -c 'import sys; sys.exit(sys.version_info < (3, 11))' \
+  || { echo "setup: SceML needs Python >= 3.11 (set PYTHON=...)" >&2; exit 2; }
+[ -x .venv/bin/python ] || "$python" -m venv .venv
+.venv/bin/python -m pip install -q --disable-pip-version-check -e '.[dev]'
+echo "setup: ready (.venv/bin/sceml)"

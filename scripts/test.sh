@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# The whole test suite, as CI runs it: set-up, lint, types, generated-code check, tests.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh
+echo "== ruff";   .venv/bin/ruff check . && .venv/bin/ruff format --check .
+echo "== mypy";   .venv/bin/mypy
+echo "== generated/ matches metamodel/"; .venv/bin/sceml dev generate --check
+echo "== pytest"; .venv/bin/pytest -q "$@"
