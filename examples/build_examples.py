@@ -20,7 +20,6 @@ from collections.abc import Callable
 from pathlib import Path
 
 import scemlmodel as scm
-
 from sceml import io
 from sceml.build import LibraryBuilder, ScenarioBuilder, lane, world
 from sceml.params import ParameterInput, discrete, normal, span, uniform

@@ -11,8 +11,9 @@ from __future__ import annotations
 from collections import Counter
 from collections.abc import Mapping
 
-import scemlmodel as scm
 from pyecore.ecore import EObject
+
+import scemlmodel as scm
 
 from . import catalog
 from .copying import detached

@@ -10,9 +10,10 @@ import importlib.resources
 from dataclasses import dataclass
 from functools import cache
 
-import scemlmodel as scm
 from pyecore.ecore import EClass, EObject, EReference
 from pyecore.resources import URI, ResourceSet
+
+import scemlmodel as scm
 
 NODE_ANNOTATION = "http://sceml.org/node"
 PARAMETER_ANNOTATION = "http://sceml.org/parameter"

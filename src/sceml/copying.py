@@ -1,7 +1,8 @@
-"""Deep copies of containment subtrees: a contained object can have only one container."""
+"""Deep copies of model subtrees, with references inside the copy pointing into the copy."""
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from typing import TypeVar
 
 from pyecore.ecore import EAttribute, EObject, EReference
@@ -9,27 +10,63 @@ from pyecore.ecore import EAttribute, EObject, EReference
 T = TypeVar("T", bound=EObject)
 
 
+class Copier:
+    """Copies containment trees like EMF's EcoreUtil.Copier.
+
+    `copy` duplicates objects and everything they contain; `copy_references` then points the
+    copies' non-containment references at the copies of their targets, or at the original target
+    when it was not copied (e.g. an actor outside a copied node).
+    """
+
+    def __init__(self) -> None:
+        self.copies: dict[EObject, EObject] = {}
+
+    def copy(self, obj: T) -> T:
+        """Copy `obj` and its containment tree (references are set by `copy_references`)."""
+        duplicate = obj.eClass.python_class()
+        self.copies[obj] = duplicate
+        for feature in obj.eClass.eAllStructuralFeatures():
+            if feature.derived or feature.transient or not obj.eIsSet(feature):
+                continue
+            held = obj.eGet(feature)
+            if isinstance(feature, EAttribute):
+                if feature.many:
+                    duplicate.eGet(feature).extend(held)
+                else:
+                    duplicate.eSet(feature, held)
+            elif isinstance(feature, EReference) and feature.containment:
+                if feature.many:
+                    duplicate.eGet(feature).extend(self.copy(child) for child in held)
+                elif held is not None:
+                    duplicate.eSet(feature, self.copy(held))
+        return duplicate
+
+    def copy_all(self, objects: Iterable[T]) -> list[T]:
+        """Copy several objects."""
+        return [self.copy(obj) for obj in objects]
+
+    def copy_references(self) -> None:
+        """Set every non-containment reference of the copies, mapped into the copies."""
+        for original, duplicate in list(self.copies.items()):
+            for feature in original.eClass.eAllReferences():
+                if feature.containment or feature.derived or feature.transient:
+                    continue
+                if feature.eOpposite is not None and feature.eOpposite.containment:
+                    continue  # the container link, set by containment
+                if not original.eIsSet(feature):
+                    continue
+                held = original.eGet(feature)
+                if feature.many:
+                    duplicate.eGet(feature).extend(self.copies.get(t, t) for t in held)
+                elif held is not None:
+                    duplicate.eSet(feature, self.copies.get(held, held))
+
+
 def copy_tree(obj: T) -> T:
-    """Copy `obj` and everything it contains; non-containment references keep their targets."""
-    duplicate = obj.eClass.python_class()
-    for feature in obj.eClass.eAllStructuralFeatures():
-        if feature.derived or feature.transient or not obj.eIsSet(feature):
-            continue
-        held = obj.eGet(feature)
-        if isinstance(feature, EAttribute):
-            if feature.many:
-                duplicate.eGet(feature).extend(held)
-            else:
-                duplicate.eSet(feature, held)
-        elif isinstance(feature, EReference) and feature.containment:
-            if feature.many:
-                duplicate.eGet(feature).extend(copy_tree(child) for child in held)
-            elif held is not None:
-                duplicate.eSet(feature, copy_tree(held))
-        elif feature.many:
-            duplicate.eGet(feature).extend(held)
-        else:
-            duplicate.eSet(feature, held)
+    """Copy `obj` and everything it contains; references leaving the tree keep their targets."""
+    copier = Copier()
+    duplicate = copier.copy(obj)
+    copier.copy_references()
     return duplicate
 
 

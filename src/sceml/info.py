@@ -5,8 +5,9 @@ from __future__ import annotations
 from collections import Counter
 from dataclasses import dataclass, field
 
-import scemlmodel as scm
 from pyecore.ecore import EProxy
+
+import scemlmodel as scm
 
 from . import catalog
 from .graph import actors, root_node

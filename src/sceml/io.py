@@ -10,11 +10,12 @@ from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 
-import scemlmodel as scm
 from lxml import etree
 from pyecore.ecore import EObject, EProxy
 from pyecore.resources import URI, ResourceSet
 from pyecore.resources.xmi import XMIOptions, XMIResource
+
+import scemlmodel as scm
 
 from .errors import LoadError, SaveError
 

@@ -5,8 +5,9 @@ from __future__ import annotations
 from collections.abc import Iterator, Sequence
 from typing import TypeAlias
 
-import scemlmodel as scm
 from pyecore.ecore import EObject
+
+import scemlmodel as scm
 
 from . import catalog
 from .copying import detached

@@ -7,8 +7,8 @@ import shutil
 from pathlib import Path
 
 import pytest
-import scemlmodel as scm
 
+import scemlmodel as scm
 from sceml import io
 from sceml.compare import differences
 from sceml.errors import LoadError, SaveError

@@ -6,8 +6,8 @@ import importlib.util
 from pathlib import Path
 
 import pytest
-import scemlmodel as scm
 
+import scemlmodel as scm
 from sceml import io
 from sceml.graph import actors, predecessors, root_node
 

@@ -1,0 +1,1 @@
+"""Abstraction levels: concretize, promote, and sample logical scenarios into concrete ones."""

@@ -1,0 +1,1 @@
+"""Modules and libraries: instantiate, flatten and extract reusable sub-scenarios."""

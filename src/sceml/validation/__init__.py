@@ -1,0 +1,1 @@
+"""Validation: constraint functions registered per metaclass, collected into diagnostics."""
