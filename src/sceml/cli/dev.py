@@ -35,3 +35,25 @@ def generate_command(check: bool, root: Path | None) -> None:
             click.echo(f"generated/{name} differs from a fresh generation", err=True)
         raise SystemExit(1)
     click.echo("generated/ is up to date" if check else "generated/ regenerated")
+
+
+@dev.command("class-diagram")
+@click.option(
+    "-o",
+    "--out",
+    type=click.Path(file_okay=False, path_type=Path),
+    default=Path("docs/metamodel"),
+    show_default=True,
+    help="Folder for <view>.svg and <view>.png, one per view of the metamodel.",
+)
+def class_diagram_command(out: Path) -> None:
+    """Draw the metamodel's class diagrams (graph, actions, actors, values) from the .ecore."""
+    from ..classdiagram import VIEWS, class_diagram
+    from ..io import write_atomically
+
+    for view in VIEWS:
+        graph = class_diagram(view)
+        for suffix in ("svg", "png"):
+            target = out / f"{view}.{suffix}"
+            write_atomically(target, graph.pipe(format=suffix))
+            click.echo(target)
