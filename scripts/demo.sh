@@ -6,3 +6,5 @@ bash scripts/setup.sh
 mkdir -p out
 run() { echo "\$ $*"; "$@"; }
 run .venv/bin/sceml info examples/uis1-concrete.xmi
+run .venv/bin/sceml render examples/uis1-concrete.xmi -o out/uis1.svg
+run .venv/bin/sceml report examples/uis1-concrete.xmi -o out/uis1-report.html

@@ -8,6 +8,8 @@ from .. import __version__
 from .common import SceMLGroup
 from .dev import dev
 from .info import info
+from .render import render
+from .report import report
 
 
 @click.group(cls=SceMLGroup, context_settings={"help_option_names": ["-h", "--help"]})
@@ -21,6 +23,8 @@ def cli() -> None:
 
 
 cli.add_command(info)
+cli.add_command(render)
+cli.add_command(report)
 cli.add_command(dev)
 
 

@@ -1,0 +1,81 @@
+"""`sceml render FILE -o OUT`: draw a scenario or library module as SVG, PNG or PDF."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import cast
+
+import click
+
+from ..errors import SceMLError
+from ..io import load, write_atomically
+from ..render import FORMATS, ModuleChoiceError, View, diagram, to_bytes
+from ..render.flow import Modules
+from .common import ReportedError
+
+
+def output_format(path: Path) -> str:
+    """The format named by an output file's suffix; a usage error for any other suffix."""
+    fmt = path.suffix.lower().lstrip(".")
+    if fmt not in FORMATS:
+        raise click.BadParameter(
+            f"cannot tell the format from {path.name!r}; use a .svg, .png or .pdf file",
+            param_hint="'-o' / '--output'",
+        )
+    return fmt
+
+
+@click.command()
+@click.argument("file", type=click.Path(exists=True, dir_okay=False, path_type=Path))
+@click.option(
+    "-o",
+    "--output",
+    required=True,
+    type=click.Path(dir_okay=False, path_type=Path),
+    help="File to write; its suffix (.svg, .png or .pdf) chooses the format.",
+)
+@click.option(
+    "--view",
+    type=click.Choice(["flow", "bt"]),
+    default="flow",
+    show_default=True,
+    help="flow: the SceML notation; bt: the same scenario as a behavior tree.",
+)
+@click.option(
+    "--modules",
+    type=click.Choice(["collapsed", "expanded"]),
+    default="collapsed",
+    show_default=True,
+    help="Draw each module use as one box, or as a frame with its nodes and in/out ports.",
+)
+@click.option("--legend", is_flag=True, help="Add the notation's legend beside the diagram.")
+@click.option(
+    "--module",
+    "module",
+    metavar="NAME",
+    default=None,
+    help="For a module library: the module definition to draw (required there).",
+)
+def render(
+    file: Path, output: Path, view: str, modules: str, legend: bool, module: str | None
+) -> None:
+    """Draw FILE, a scenario or a module library (.xmi), as a diagram.
+
+    Exits 0 when the diagram is written, 2 for usage errors or unreadable input.
+    """
+    fmt = output_format(output)
+    try:
+        root = load(file).root
+        graph = diagram(
+            root,
+            view=cast(View, view),
+            modules=cast(Modules, modules),
+            legend=legend,
+            module=module,
+        )
+        write_atomically(output, to_bytes(graph, fmt))
+    except ModuleChoiceError as error:
+        raise click.UsageError(error.message) from None
+    except SceMLError as error:
+        raise ReportedError(error) from None
+    click.echo(f"wrote {output}")

@@ -1,0 +1,66 @@
+"""`sceml report FILE -o OUT.html`: one self-contained review page for a scenario or library."""
+
+from __future__ import annotations
+
+import importlib
+from collections.abc import Sequence
+from pathlib import Path
+from typing import cast
+
+import click
+
+from ..diagnostics import Diagnostic, Severity
+from ..errors import SceMLError
+from ..io import Document, load, write_atomically
+from ..render.flow import Modules
+from ..render.report import build_report
+from .common import ReportedError
+
+
+def run_validation(document: Document) -> Sequence[Diagnostic] | None:
+    """The validator's diagnostics, or None when this installation has no validator yet."""
+    # Imported late and looked up by name: validation is built alongside and may be absent.
+    validate = getattr(importlib.import_module("sceml.validation"), "validate", None)
+    if validate is None:
+        return None
+    return list(validate(document.root, document=document))
+
+
+@click.command()
+@click.argument("file", type=click.Path(exists=True, dir_okay=False, path_type=Path))
+@click.option(
+    "-o",
+    "--output",
+    required=True,
+    type=click.Path(dir_okay=False, path_type=Path),
+    help="HTML file to write (.html).",
+)
+@click.option(
+    "--modules",
+    type=click.Choice(["collapsed", "expanded"]),
+    default="expanded",
+    show_default=True,
+    help="Draw module uses as one box, or expanded so diagnostics inside them can be shown.",
+)
+def report(file: Path, output: Path, modules: str) -> None:
+    """Write a review report of FILE: diagram, validation diagnostics, actors and parameters.
+
+    Clicking a diagnostic in the page highlights its element in the diagram. Exits 0 when the
+    model has no errors, 1 when it has errors (the report is written either way), 2 for usage
+    errors or unreadable input.
+    """
+    if output.suffix.lower() not in (".html", ".htm"):
+        raise click.BadParameter("the report is HTML; name a .html file", param_hint="'-o'")
+    try:
+        document = load(file)
+        diagnostics = run_validation(document)
+        html = build_report(document, diagnostics, modules=cast(Modules, modules))
+        write_atomically(output, html.encode("utf-8"))
+    except SceMLError as error:
+        raise ReportedError(error) from None
+    errors = sum(d.severity == Severity.ERROR for d in diagnostics or ())
+    click.echo(
+        f"wrote {output}" + (f" ({errors} error{'s' if errors != 1 else ''})" if errors else "")
+    )
+    if errors:
+        raise SystemExit(1)

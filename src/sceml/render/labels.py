@@ -1,0 +1,224 @@
+"""Node labels for the diagrams: kind, actors and key parameters, as the abstraction level has them.
+
+Labels show what is set in the model: values at the concrete level, ranges and distributions at
+the logical level, nothing at the functional level. Unset parameters (language defaults) are left
+out to keep boxes small; the HTML report's parameter table lists them. Inside an expanded module
+use, roles are shown with the actor bound to them and parameter references with the value the use
+gives them (override, else the module's default).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator, Mapping
+from dataclasses import dataclass, field
+
+from pyecore.ecore import EAttribute, EEnum, EObject, EReference
+
+import scemlmodel as scm
+
+from .. import catalog, params
+from ..errors import SceMLError
+from ..graph import actors, root_node
+from ..modules.flatten import resolved_definition
+
+#: Features every action node has that labels show in other ways, or never.
+_NOT_PARAMETERS = {"name", "referenceActor", "targetActor", "incoming", "outgoing"}
+
+
+@dataclass(frozen=True)
+class Scope:
+    """What a module use binds: its roles to actor names, its parameters to values.
+
+    The top level of a scenario has an empty scope; `chain` holds the definitions being expanded,
+    so a module that uses itself is drawn collapsed instead of looping.
+    """
+
+    roles: Mapping[EObject, str] = field(default_factory=dict)
+    parameters: Mapping[EObject, scm.ParameterValue | None] = field(default_factory=dict)
+    chain: tuple[EObject, ...] = ()
+    prefix: str = ""
+
+
+def participant_text(participant: EObject | None, scope: Scope) -> str:
+    """An actor's name, or a role's name with the actor bound to it where known."""
+    if participant is None:
+        return "(no actor)"
+    name = str(participant.name or "?")
+    if isinstance(participant, scm.ActorRole):
+        bound = scope.roles.get(participant)
+        return f"{bound} ({name})" if bound else name
+    return name
+
+
+def bound_actor(participant: EObject | None, scope: Scope) -> str | None:
+    """The actor name a participant stands for in this scope (a role resolves through bindings)."""
+    if isinstance(participant, scm.ActorRole):
+        return scope.roles.get(participant)
+    return str(participant.name) if participant is not None else None
+
+
+def actor_line(node: scm.ActionNode, scope: Scope) -> str:
+    """`bike` or `bike, target ego`: who performs the node, and whom it refers to."""
+    text = participant_text(node.referenceActor, scope)
+    if node.targetActor is not None:
+        text += f", target {participant_text(node.targetActor, scope)}"
+    return text
+
+
+def _resolve(value: scm.ParameterValue | None, scope: Scope) -> scm.ParameterValue | None:
+    if isinstance(value, scm.ParameterRef) and value.parameter in scope.parameters:
+        return scope.parameters[value.parameter]
+    return value
+
+
+def _kmh(value: scm.ParameterValue | None) -> str:
+    def k(number: float | None) -> str:
+        return "?" if number is None else f"{round(number * 3.6, 1):g}"
+
+    if isinstance(value, scm.Value):
+        return f"{k(value.value)} km/h"
+    if isinstance(value, scm.Range | scm.UniformDistribution):
+        return f"{k(value.min)}–{k(value.max)} km/h"
+    if isinstance(value, scm.NormalDistribution):
+        return f"mean {k(value.mean)} km/h"
+    return ""
+
+
+def unit_text(unit: str) -> str:
+    """A unit as people write it (`m/s2` -> `m/s²`)."""
+    return unit.replace("m/s2", "m/s²")
+
+
+def describe_value(value: scm.ParameterValue | None, unit: str, scope: Scope) -> str:
+    """A parameter as text with its unit; speeds also in km/h; references show what they get."""
+    resolved = _resolve(value, scope)
+    if isinstance(value, scm.ParameterRef) and resolved is not value:
+        reference = params.describe(value)
+        if resolved is None:
+            return f"{reference} (unset)"
+        return f"{describe_value(resolved, unit, scope)} ({reference})"
+    if isinstance(value, scm.ParameterRef):
+        parameter = value.parameter
+        default = getattr(parameter, "default", None)
+        unit = str(getattr(parameter, "unit", None) or unit)
+        text = params.describe(value)
+        return f"{text}, default {params.describe(default, unit)}" if default is not None else text
+    text = params.describe(value, unit_text(unit))
+    if unit == "m/s":
+        speed = _kmh(value)
+        if speed:
+            text += f" = {speed}"
+    return text
+
+
+def describe_position(position: EObject | None, scope: Scope) -> str:
+    """`(x, y) m, h 1.57 rad` for world positions, `road 3 lane 1 s 30 m` for lane positions."""
+    if isinstance(position, scm.WorldPosition):
+        x = describe_value(position.x, "", scope)
+        y = describe_value(position.y, "", scope)
+        text = f"({x}, {y}) m"
+        if position.h is not None and not _is_zero(_resolve(position.h, scope)):
+            text += f", h {describe_value(position.h, 'rad', scope)}"
+        return text
+    if isinstance(position, scm.LanePosition):
+        text = f"road {position.roadId} lane {position.laneId} s {describe_value(position.s, 'm', scope)}"
+        if position.offset is not None and not _is_zero(_resolve(position.offset, scope)):
+            text += f" offset {describe_value(position.offset, 'm', scope)}"
+        return text
+    return "(none)" if position is None else position.eClass.name
+
+
+def _is_zero(value: scm.ParameterValue | None) -> bool:
+    return isinstance(value, scm.Value) and value.value == 0.0
+
+
+def parameter_items(node: EObject, scope: Scope) -> Iterator[tuple[str, str]]:
+    """(name, text) for every parameter the model sets on a node: numbers, positions, literals."""
+    units = {spec.name: spec.unit for spec in catalog.parameters(node)}
+    for feature in node.eClass.eAllStructuralFeatures():
+        name = str(feature.name)
+        if name in _NOT_PARAMETERS or getattr(feature, "derived", False):
+            continue
+        held = node.eGet(feature)
+        if isinstance(feature, EAttribute):
+            if isinstance(feature.eType, EEnum) and held is not None:
+                yield name, str(held.name if hasattr(held, "name") else held)
+            elif held is not None and name != "description":
+                yield name, str(held)
+        elif isinstance(feature, EReference) and feature.containment:
+            yield from _reference_items(name, held, units.get(name, ""), scope)
+
+
+def _reference_items(name: str, held: object, unit: str, scope: Scope) -> Iterator[tuple[str, str]]:
+    if held is None:
+        return
+    if isinstance(held, scm.ParameterValue):
+        yield name, describe_value(held, unit, scope)
+    elif isinstance(held, scm.Position):
+        yield name, describe_position(held, scope)
+    elif isinstance(held, EObject):
+        yield name, held.eClass.name
+    else:
+        points = list(held)  # type: ignore[call-overload]
+        if points:
+            yield name, f"{len(points)} points"
+
+
+def action_lines(node: scm.ActionNode, scope: Scope) -> list[str]:
+    """The lines under an action node's kind: its actors, then `name: value` per set parameter."""
+    return [actor_line(node, scope), *(f"{k}: {v}" for k, v in parameter_items(node, scope))]
+
+
+def root_lines(root: scm.RootNode | None, scenario: scm.Scenario) -> list[str]:
+    """The root box: level, map, duration and one line per actor."""
+    if root is None:
+        return ["(no root node)"]
+    lines = [f"level: {root.level.name if root.level else '?'}"]
+    lines.append(f"map: {root.map or '(none)'}")
+    if root.maxDuration is not None:
+        lines.append(f"max duration: {params.describe(root.maxDuration, 's')}")
+    lines.append("actors:")
+    for actor in actors(scenario):
+        ego = ", ego" if actor.isEgo else ""
+        lines.append(f"  {actor.name}: {actor.eClass.name}{ego}")
+    return lines
+
+
+def scenario_title(scenario: scm.Scenario) -> str:
+    """The scenario's name as its root node gives it."""
+    root = root_node(scenario)
+    return str(root.scenarioName or root.name or "Scenario") if root else "Scenario"
+
+
+def loaded_definition(use: scm.ModuleUse) -> scm.ModuleDefinition | None:
+    """The definition a use refers to, or None when it cannot be loaded (drawn as broken)."""
+    try:
+        return resolved_definition(use)
+    except SceMLError:
+        return None
+
+
+def use_lines(use: scm.ModuleUse, scope: Scope) -> list[str]:
+    """Role bindings and parameter overrides of a module use, one per line."""
+    lines = [f"{b.role} = {participant_text(b.actor, scope)}" for b in use.bindings]
+    definition = loaded_definition(use)
+    parameters = definition.parameters if definition is not None else ()
+    units = {str(p.name): str(p.unit or "") for p in parameters}
+    for override in use.overrides:
+        unit = units.get(str(override.parameter), "")
+        lines.append(f"{override.parameter}: {describe_value(override.value, unit, scope)}")
+    return lines
+
+
+def definition_lines(definition: scm.ModuleDefinition) -> list[str]:
+    """Roles with their allowed kinds and parameters with units and defaults."""
+    lines = []
+    for role in definition.roles:
+        kinds = " | ".join(str(k.kind.name) for k in role.allowedKinds if k.kind is not None)
+        lines.append(f"role {role.name}: {kinds or 'any'}")
+    for parameter in definition.parameters:
+        default = parameter.default
+        unit = str(parameter.unit or "")
+        shown = params.describe(default, unit_text(unit)) if default is not None else "required"
+        lines.append(f"${parameter.name} ({unit or 'no unit'}): {shown}")
+    return lines

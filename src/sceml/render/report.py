@@ -1,0 +1,359 @@
+"""The review report: one self-contained HTML page with the diagram, diagnostics, actors and parameters.
+
+Each diagnostic links to the diagram elements that show the element it is about (or the nearest
+drawn container: a parameter of a node highlights the node, an actor the root box, a node inside
+a module definition every expanded use of it). Clicking a diagnostic adds the `sceml-highlight`
+class to those SVG groups. No network resource is used: CSS, JavaScript and SVG are inline.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+import jinja2
+from lxml import etree
+from pyecore.ecore import EObject
+
+import scemlmodel as scm
+
+from .. import catalog, params
+from ..diagnostics import Diagnostic, Severity
+from ..graph import actors, root_node
+from ..io import Document, model_path
+from . import labels, to_bytes
+from .flow import Modules, flow_diagram
+
+_SVG_NAMESPACE = "http://www.w3.org/2000/svg"
+
+
+@dataclass(frozen=True)
+class DiagnosticRow:
+    """One diagnostic as the report lists it, with the SVG ids it highlights."""
+
+    diagnostic: Diagnostic
+    targets: tuple[str, ...]
+
+    @property
+    def severity(self) -> str:
+        return str(self.diagnostic.severity)
+
+
+@dataclass(frozen=True)
+class ParameterRow:
+    """One parameter of one node: what the model holds, or the default it falls back to."""
+
+    name: str
+    shown: str
+    unit: str
+    status: str
+
+
+@dataclass(frozen=True)
+class NodeRow:
+    """A node of the parameter table."""
+
+    name: str
+    kind: str
+    category: str
+    actors: str
+    targets: tuple[str, ...]
+    parameters: tuple[ParameterRow, ...]
+
+
+def build_report(
+    document: Document,
+    diagnostics: Sequence[Diagnostic] | None,
+    *,
+    modules: Modules = "expanded",
+) -> str:
+    """The report as HTML text; `diagnostics` None means validation was not run."""
+    root = document.root
+    diagram = flow_diagram(root, modules=modules)
+    rows = [
+        DiagnosticRow(d, tuple(_targets(d, document, diagram.ids)))
+        for d in sorted(diagnostics or (), key=lambda d: (-d.severity, d.line or 0, d.code))
+    ]
+    svg = _mark(to_bytes(diagram.graph, "svg"), rows)
+    scenario = root if isinstance(root, scm.Scenario) else None
+    return _TEMPLATE.render(
+        title=_title(document),
+        file=document.path.name,
+        root=root_node(scenario) if scenario is not None else None,
+        svg=svg,
+        validated=diagnostics is not None,
+        rows=rows,
+        counts={s: sum(r.diagnostic.severity == s for r in rows) for s in reversed(Severity)},
+        actors=[_actor_row(actor) for actor in (actors(scenario) if scenario else [])],
+        nodes=list(_node_rows(root, diagram.ids)),
+    )
+
+
+def _title(document: Document) -> str:
+    root = document.root
+    if isinstance(root, scm.Scenario):
+        return f"Scenario {labels.scenario_title(root)}"
+    return f"Module library {root.name or document.path.name}"
+
+
+def _element_of(diagnostic: Diagnostic, document: Document) -> EObject | None:
+    if diagnostic.element is not None:
+        return diagnostic.element
+    if not diagnostic.fragment:
+        return None
+    resource = document.resource
+    if diagnostic.file and Path(diagnostic.file).resolve() != document.path.resolve():
+        wanted = Path(diagnostic.file).resolve()
+        resource = next(
+            (
+                r
+                for r in document.resource_set.resources.values()
+                if Path(r.uri.normalize()).resolve() == wanted
+            ),
+            None,
+        )
+    if resource is None:
+        return None
+    try:
+        return resource.resolve(diagnostic.fragment)
+    except Exception:  # pyecore raises assorted errors for fragments that do not resolve
+        return None
+
+
+def _targets(
+    diagnostic: Diagnostic, document: Document, ids: dict[EObject, list[str]]
+) -> Iterator[str]:
+    """The SVG ids of the nearest drawn element that holds the diagnostic's element."""
+    current = _element_of(diagnostic, document)
+    while current is not None:
+        if current in ids:
+            yield from ids[current]
+            return
+        if isinstance(current, scm.Actor):
+            current = root_node(current.eContainer().eContainer())
+            continue
+        current = current.eContainer()
+
+
+def _mark(svg_bytes: bytes, rows: list[DiagnosticRow]) -> str:
+    """The SVG element as text, with elements that carry diagnostics marked by severity."""
+    parser = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False)
+    svg = etree.fromstring(svg_bytes, parser=parser)
+    worst: dict[str, Severity] = {}
+    for row in rows:
+        for target in row.targets:
+            worst[target] = max(worst.get(target, Severity.INFO), row.diagnostic.severity)
+    for group in svg.iter(f"{{{_SVG_NAMESPACE}}}g"):
+        severity = worst.get(group.get("id", ""))
+        if severity is not None:
+            group.set("class", f"{group.get('class', '')} sceml-has-{severity}")
+    return etree.tostring(svg, encoding="unicode")
+
+
+def _actor_row(actor: scm.Actor) -> dict[str, str]:
+    scope = labels.Scope()
+    return {
+        "name": str(actor.name),
+        "kind": actor.eClass.name,
+        "ego": "yes" if actor.isEgo else "",
+        "model": str(actor.model or ""),
+        "start": labels.describe_position(actor.startPosition, scope),
+        "speed": labels.describe_value(actor.initialSpeed, "m/s", scope)
+        if actor.initialSpeed is not None
+        else "default 0 m/s",
+        "size": " × ".join(
+            params.describe(actor.eGet(d)) if actor.eGet(d) is not None else f"{v:g}"
+            for d, v in catalog.actor_dimensions(actor).items()
+        )
+        + " m",
+    }
+
+
+def _node_rows(root: EObject, ids: dict[EObject, list[str]]) -> Iterator[NodeRow]:
+    """Every action node and module use the diagram shows, in model order."""
+    for obj in [root, *root.eAllContents()]:
+        if not isinstance(obj, scm.ActionNode | scm.ModuleUse):
+            continue
+        scope = labels.Scope()
+        if isinstance(obj, scm.ModuleUse):
+            yield _use_row(obj, ids)
+            continue
+        yield NodeRow(
+            str(obj.name),
+            obj.eClass.name,
+            catalog.category(obj) or "",
+            labels.actor_line(obj, scope),
+            tuple(ids.get(obj, ())),
+            tuple(_parameter_rows(obj, scope)),
+        )
+
+
+def _use_row(use: scm.ModuleUse, ids: dict[EObject, list[str]]) -> NodeRow:
+    """A module use: its bindings as actors, its overrides and the defaults it leaves alone."""
+    scope = labels.Scope()
+    bindings = ", ".join(
+        f"{b.role} = {labels.participant_text(b.actor, scope)}" for b in use.bindings
+    )
+    definition = labels.loaded_definition(use)
+    declared = {str(p.name): p for p in (definition.parameters if definition else ())}
+    rows = []
+    for override in use.overrides:
+        parameter = declared.get(str(override.parameter))
+        unit = str(parameter.unit or "") if parameter is not None else ""
+        shown = labels.describe_value(override.value, unit, scope)
+        rows.append(ParameterRow(str(override.parameter), shown, unit, "override"))
+    overridden = {str(o.parameter) for o in use.overrides}
+    for name, parameter in declared.items():
+        if name not in overridden:
+            unit = str(parameter.unit or "")
+            default = parameter.default
+            shown = params.describe(default, unit) if default is not None else "—"
+            rows.append(ParameterRow(name, shown, unit, "default" if default else "missing"))
+    kind = f"module {definition.name}" if definition is not None else "module (not found)"
+    return NodeRow(str(use.name), kind, "module", bindings, tuple(ids.get(use, ())), tuple(rows))
+
+
+def _parameter_rows(node: scm.ActionNode, scope: labels.Scope) -> Iterator[ParameterRow]:
+    set_items = dict(labels.parameter_items(node, scope))
+    specs = {spec.name: spec for spec in catalog.parameters(node)}
+    for name, shown in set_items.items():
+        spec = specs.get(name)
+        yield ParameterRow(name, shown, labels.unit_text(spec.unit) if spec else "", "set")
+    for name, spec in specs.items():
+        if name in set_items:
+            continue
+        if spec.required:
+            yield ParameterRow(name, "—", labels.unit_text(spec.unit), "missing")
+        elif spec.per_actor_default:
+            yield ParameterRow(name, "actor's size", labels.unit_text(spec.unit), "default")
+        else:
+            unit = labels.unit_text(spec.unit)
+            yield ParameterRow(name, f"{spec.default:g} {unit}".strip(), unit, "default")
+
+
+def model_location(diagnostic: Diagnostic) -> str:
+    """`file:line` of a diagnostic, as far as known."""
+    where = Path(diagnostic.file).name if diagnostic.file else ""
+    return where + (f":{diagnostic.line}" if diagnostic.line else "")
+
+
+_ENVIRONMENT = jinja2.Environment(
+    autoescape=True, undefined=jinja2.StrictUndefined, trim_blocks=True, lstrip_blocks=True
+)
+_ENVIRONMENT.filters["location"] = model_location
+_ENVIRONMENT.globals["model_path"] = model_path
+
+_TEMPLATE = _ENVIRONMENT.from_string(
+    """<!DOCTYPE html>
+<html lang="en">
+<head>
+<meta charset="utf-8">
+<title>{{ title }} – SceML report</title>
+<style>
+/* Graphviz wraps a node's shapes in a link when it has a tooltip, hence descendant selectors. */
+body { font-family: "DejaVu Sans", sans-serif; margin: 1.5em; color: #202124; }
+h1 { font-size: 1.5em; } h2 { font-size: 1.2em; margin-top: 1.5em; }
+table { border-collapse: collapse; margin: .5em 0; font-size: .9em; }
+th, td { border: 1px solid #dadce0; padding: .25em .6em; text-align: left; vertical-align: top; }
+th { background: #f1f3f4; }
+#diagram { border: 1px solid #dadce0; padding: .5em; overflow: auto; max-height: 90vh; }
+#diagram svg { max-width: 100%; height: auto; }
+.severity-error { color: #b3261e; font-weight: bold; }
+.severity-warning { color: #b06000; font-weight: bold; }
+.severity-info { color: #1a56b0; }
+a[data-targets] { cursor: pointer; color: #1a56b0; text-decoration: underline; }
+tr.selected { background: #fef7e0; }
+.sceml-has-error polygon, .sceml-has-error ellipse, .sceml-has-error path { stroke: #d93025; stroke-width: 3px; }
+.sceml-has-warning polygon, .sceml-has-warning ellipse, .sceml-has-warning path { stroke: #f29900; stroke-width: 3px; }
+.sceml-highlight polygon, .sceml-highlight ellipse, .sceml-highlight path { stroke: #d500f9; stroke-width: 6px; stroke-dasharray: none; }
+.status-missing { color: #b3261e; } .status-default { color: #5f6368; }
+</style>
+</head>
+<body>
+<h1>{{ title }}</h1>
+<p>File <code>{{ file }}</code>
+{% if root %}
+ · level <b>{{ root.level.name if root.level else "?" }}</b> · map <code>{{ root.map or "(none)" }}</code>
+{% endif %}
+</p>
+
+<h2 id="diagnostics">Validation</h2>
+{% if not validated %}
+<p>Validation was not run: this installation has no validator.</p>
+{% elif not rows %}
+<p>No problems found.</p>
+{% else %}
+<p>{% for severity, count in counts.items() %}{{ count }} {{ severity }}{{ "s" if count != 1 }}{{ ", " if not loop.last }}{% endfor %}. Click a diagnostic to highlight its element in the diagram.</p>
+<table id="diagnostic-table">
+<tr><th>Severity</th><th>Code</th><th>Message</th><th>Element</th><th>Where</th></tr>
+{% for row in rows %}
+<tr class="diagnostic">
+<td class="severity-{{ row.severity }}">{{ row.severity }}</td>
+<td>{{ row.diagnostic.code }}</td>
+<td>{% if row.targets %}<a data-targets="{{ row.targets | join(' ') }}" href="#diagram">{{ row.diagnostic.message }}</a>{% else %}{{ row.diagnostic.message }} <i>(not in the diagram)</i>{% endif %}</td>
+<td>{{ row.diagnostic.path or "" }}</td>
+<td>{{ row.diagnostic | location }}</td>
+</tr>
+{% endfor %}
+</table>
+{% endif %}
+
+<h2>Diagram</h2>
+<div id="diagram">
+{{ svg | safe }}
+</div>
+
+{% if actors %}
+<h2>Actors</h2>
+<table id="actor-table">
+<tr><th>Name</th><th>Kind</th><th>Ego</th><th>Start position</th><th>Initial speed</th><th>Size (l × w × h)</th><th>Model</th></tr>
+{% for actor in actors %}
+<tr><td>{{ actor.name }}</td><td>{{ actor.kind }}</td><td>{{ actor.ego }}</td><td>{{ actor.start }}</td><td>{{ actor.speed }}</td><td>{{ actor.size }}</td><td>{{ actor.model }}</td></tr>
+{% endfor %}
+</table>
+{% endif %}
+
+<h2>Parameters</h2>
+<table id="parameter-table">
+<tr><th>Node</th><th>Kind</th><th>Actors</th><th>Parameter</th><th>Value, range or distribution</th><th></th></tr>
+{% for node in nodes %}
+{% set span = [node.parameters | length, 1] | max %}
+{% for parameter in node.parameters or [none] %}
+<tr>
+{% if loop.first %}
+<td rowspan="{{ span }}">{% if node.targets %}<a data-targets="{{ node.targets | join(' ') }}" href="#diagram">{{ node.name }}</a>{% else %}{{ node.name }}{% endif %}</td>
+<td rowspan="{{ span }}">{{ node.kind }}</td>
+<td rowspan="{{ span }}">{{ node.actors }}</td>
+{% endif %}
+{% if parameter %}
+<td>{{ parameter.name }}</td><td>{{ parameter.shown }}</td><td class="status-{{ parameter.status }}">{{ parameter.status }}</td>
+{% else %}
+<td colspan="3"><i>no parameters</i></td>
+{% endif %}
+</tr>
+{% endfor %}
+{% endfor %}
+</table>
+
+<script>
+function scemlHighlight(link) {
+  document.querySelectorAll(".sceml-highlight").forEach(e => e.classList.remove("sceml-highlight"));
+  document.querySelectorAll("tr.selected").forEach(e => e.classList.remove("selected"));
+  let first = null;
+  for (const id of link.dataset.targets.split(" ")) {
+    const element = document.getElementById(id);
+    if (element) { element.classList.add("sceml-highlight"); first = first || element; }
+  }
+  link.closest("tr").classList.add("selected");
+  if (first) first.scrollIntoView({block: "center"});
+}
+document.querySelectorAll("a[data-targets]").forEach(link => link.addEventListener("click", event => {
+  event.preventDefault();
+  scemlHighlight(link);
+}));
+</script>
+</body>
+</html>
+"""
+)
