@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import codecs
 import io as _io
+import math
 import os
 import re
 import tempfile
@@ -11,7 +13,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from lxml import etree
-from pyecore.ecore import EObject, EProxy
+from pyecore.ecore import EAttribute, EEnum, EObject, EProxy
 from pyecore.resources import URI, ResourceSet
 from pyecore.resources.xmi import XMIOptions, XMIResource
 
@@ -22,8 +24,33 @@ from .errors import LoadError, SaveError
 #: Files larger than this are refused before parsing (bytes); a scenario of 50,000 nodes is ~15 MB.
 DEFAULT_MAX_BYTES = 64 * 1024 * 1024
 
-#: lxml refuses trees deeper than this itself (libxml2's limit without huge_tree is 256).
+#: Environment variable that overrides DEFAULT_MAX_BYTES (a whole number of bytes).
+MAX_BYTES_VARIABLE = "SCEML_MAX_BYTES"
+
+# Deeper documents are refused by libxml2 itself (its limit without huge_tree is 256 levels), so
+# pyecore's recursive decoder never sees more than that and cannot overflow Python's stack.
 _LINE_IN_MESSAGE = re.compile(r"line (\d+)")
+# pyecore names a package by its Python repr, which shows the install path; keep the name only.
+_MODULE_REPR = re.compile(r"<module '([\w.]+)' from '[^']*'>")
+
+# EMF's own number syntax, minus what it alone accepts (hex floats, a trailing d or f): Python's
+# float() would also take "1_000", "inf" and "nan", which EMF refuses when it reads the file back.
+_DECIMAL = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?")
+_INTEGER = re.compile(r"[+-]?\d+")
+_INT_RANGE = (-(2**31), 2**31 - 1)  # EInt is a Java int
+_FLOAT_TYPES = frozenset({"EDouble", "EDoubleObject", "EFloat", "EFloatObject"})
+_INT_TYPES = frozenset({"EInt", "EIntegerObject", "EShort", "EShortObject", "EByte", "EByteObject"})
+_BOOLEAN_TYPES = frozenset({"EBoolean", "EBooleanObject"})
+
+
+def max_bytes_limit() -> int:
+    """The file size limit in bytes: $SCEML_MAX_BYTES if set, else DEFAULT_MAX_BYTES."""
+    given = os.environ.get(MAX_BYTES_VARIABLE, "").strip()
+    if not given:
+        return DEFAULT_MAX_BYTES
+    if not given.isdigit() or int(given) == 0:
+        raise LoadError(f"{MAX_BYTES_VARIABLE}={given!r} is not a positive whole number of bytes")
+    return int(given)
 
 
 def _hardened_parser() -> etree.XMLParser:
@@ -40,8 +67,12 @@ def _hardened_parser() -> etree.XMLParser:
     )
 
 
-def parse_xml_safely(path: Path, max_bytes: int = DEFAULT_MAX_BYTES) -> etree._ElementTree:
-    """Parse an XML file with every dangerous feature off; LoadError names the file and line."""
+def parse_xml_safely(path: Path, max_bytes: int | None = None) -> etree._ElementTree:
+    """Parse an XML file with every dangerous feature off; LoadError names the file and line.
+
+    Files above `max_bytes` (default: `max_bytes_limit()`) are refused before they are read.
+    """
+    max_bytes = max_bytes_limit() if max_bytes is None else max_bytes
     try:
         size = path.stat().st_size
     except FileNotFoundError:
@@ -56,17 +87,39 @@ def parse_xml_safely(path: Path, max_bytes: int = DEFAULT_MAX_BYTES) -> etree._E
         data = path.read_bytes()
     except OSError as error:
         raise LoadError(f"cannot read file: {error.strerror}", file=path) from None
-    if b"<!DOCTYPE" in data or b"<!ENTITY" in data:
-        line = data[: data.find(b"<!")].count(b"\n") + 1
+    scanned = data
+    if data.startswith((codecs.BOM_UTF16_LE, codecs.BOM_UTF16_BE)):
+        # The scan below reads ASCII; re-encoding keeps the newlines, so lines stay right.
+        scanned = data.decode("utf-16", errors="replace").encode("utf-8")
+    if b"<!DOCTYPE" in scanned or b"<!ENTITY" in scanned:
+        line = scanned[: scanned.find(b"<!")].count(b"\n") + 1
         raise LoadError("DTDs and entity declarations are not accepted", file=path, line=line)
     try:
-        return etree.parse(_io.BytesIO(data), parser=_hardened_parser(), base_url=None)
+        tree = etree.parse(_io.BytesIO(data), parser=_hardened_parser(), base_url=None)
     except etree.XMLSyntaxError as error:
         raise LoadError(f"malformed XML: {error.msg}", file=path, line=error.lineno) from None
+    # The byte scan above cannot see a DTD in UTF-16 or UTF-32; the parser, which did not expand
+    # it (resolve_entities is off), still reports it.
+    if tree.docinfo.doctype or tree.docinfo.internalDTD is not None:
+        raise LoadError("DTDs and entity declarations are not accepted", file=path, line=1)
+    return tree
+
+
+class _Located(Exception):
+    """A decoding failure tied to the XML element being decoded (internal to this module)."""
+
+    def __init__(self, error: BaseException, line: int | None) -> None:
+        super().__init__(str(error) or type(error).__name__)
+        self.line = line
 
 
 class SafeXMIResource(XMIResource):
-    """An XMI resource that parses with the hardened parser and only reads allowed local files."""
+    """An XMI resource that parses with the hardened parser and only reads allowed local files.
+
+    Besides what pyecore checks, it refuses what EMF would refuse or what no SceML tool writes:
+    values EMF cannot read back (non-finite or malformed numbers, ints beyond 32 bits, unknown
+    enum literals), duplicate ids, more than one root, and cross-file containment.
+    """
 
     def load(self, options: dict | None = None) -> None:
         path = _local_path(self.uri)
@@ -76,22 +129,33 @@ class SafeXMIResource(XMIResource):
         if allowed is not None and not named and not any(_is_within(path, r) for r in allowed):
             roots = ", ".join(str(r) for r in allowed)
             raise LoadError(f"reference leaves the allowed folders ({roots})", file=path)
-        tree = parse_xml_safely(path, getattr(resource_set, "sceml_max_bytes", DEFAULT_MAX_BYTES))
+        tree = parse_xml_safely(path, getattr(resource_set, "sceml_max_bytes", None))
+        _check_tree(tree, path)
         self.sceml_tree = tree
+        # iD attribute values seen so far: EMF fragments name elements by them, so they must be
+        # unique per file (ModuleDefinition.name is one).
+        self._sceml_ids: dict[tuple[str, str], tuple[EObject, int | None]] = {}
         try:
             self._decode_tree(tree, options)
         except LoadError:
             raise
+        except _Located as error:
+            message = _MODULE_REPR.sub(r"\1", str(error))
+            raise LoadError(
+                f"not a valid SceML model: {message}", file=path, line=error.line
+            ) from None
         except RecursionError:
             raise LoadError("model nesting is too deep", file=path) from None
         except Exception as error:  # pyecore signals bad content with bare exceptions
-            message = str(error) or type(error).__name__
+            message = _MODULE_REPR.sub(r"\1", str(error) or type(error).__name__)
             found = _LINE_IN_MESSAGE.search(message)
             raise LoadError(
                 f"not a valid SceML model: {message}",
                 file=path,
                 line=int(found.group(1)) if found else None,
             ) from None
+        finally:
+            self._clean_registers()
 
     def _decode_tree(self, tree: etree._ElementTree, options: dict | None) -> None:
         # Mirrors XMIResource.load, but decodes the tree parsed above instead of re-reading the file.
@@ -107,12 +171,130 @@ class SafeXMIResource(XMIResource):
         self.schema_locations: dict[str, object] = {}
         roots = xmlroot if xmlroot.tag == f"{{{xmi}}}XMI" else [xmlroot]
         for root in roots:
-            model_root = self._init_modelroot(root)
+            self._sceml_node = root
+            try:
+                model_root = self._init_modelroot(root)
+            except Exception as error:
+                raise _Located(error, root.sourceline) from None
             for child in root:
                 self._decode_eobject(child, model_root)
         if self.contents:
             self._decode_ereferences()
-        self._clean_registers()
+
+    def _decode_eobject(self, current_node: etree._Element, parent_eobj: EObject) -> None:
+        # The innermost element that fails names the line; outer levels pass it through.
+        self._sceml_node = current_node
+        try:
+            if current_node.get("href") is not None:
+                _refuse_containment_href(self, current_node, parent_eobj)
+            super()._decode_eobject(current_node, parent_eobj)
+        except (_Located, RecursionError):
+            raise
+        except Exception as error:
+            raise _Located(error, current_node.sourceline) from None
+
+    def _decode_eattribute_value(
+        self, eobject: EObject, eattribute: EAttribute, value: str, from_tag: bool = False
+    ) -> None:
+        _check_literal(eattribute, value)
+        super()._decode_eattribute_value(eobject, eattribute, value, from_tag)
+        if eattribute.iD:
+            key = (eobject.eClass.name, value)
+            first, line = self._sceml_ids.setdefault(key, (eobject, self._sceml_node.sourceline))
+            if first is not eobject:
+                raise ValueError(
+                    f"duplicate {eobject.eClass.name} {eattribute.name} {value!r} "
+                    f"(first on line {line})"
+                )
+
+    def _decode_ereferences(self) -> None:
+        # One holder at a time, so a reference that does not resolve is reported at its line.
+        pending: list[tuple[EObject, list]] = list(self._later)  # type: ignore[has-type]
+        for holder, references in pending:
+            self._later = [(holder, references)]
+            try:
+                super()._decode_ereferences()
+            except Exception as error:
+                hrefs = ", ".join(repr(value) for _, value in references)
+                raise _Located(
+                    ValueError(
+                        f"reference {hrefs} does not resolve to a suitable element ({error})"
+                    ),
+                    _line_in(self, holder),
+                ) from None
+        self._later = []
+
+
+def _check_tree(tree: etree._ElementTree, path: Path) -> None:
+    """Refuse, before decoding, a document that is not one SceML model or repeats an xmi:id."""
+    root = tree.getroot()
+    xmi_namespace = root.nsmap.get("xmi", "http://www.omg.org/XMI")
+    models = list(root) if root.tag == f"{{{xmi_namespace}}}XMI" else [root]
+    if len(models) != 1:
+        raise LoadError(
+            f"a SceML file holds one model per file, this one holds {len(models)}",
+            file=path,
+            line=root.sourceline,
+        )
+    namespace = etree.QName(models[0]).namespace
+    if namespace != scm.nsURI:
+        raise LoadError(
+            f"not a SceML model: root element <{etree.QName(models[0]).localname}> is in "
+            f"namespace {namespace!r}, not {scm.nsURI!r}",
+            file=path,
+            line=models[0].sourceline,
+        )
+    seen: dict[str, int | None] = {}
+    for element in root.iter(etree.Element):
+        identifier = element.get(f"{{{xmi_namespace}}}id")
+        if identifier is None:
+            continue
+        if identifier in seen:
+            raise LoadError(
+                f"duplicate xmi:id {identifier!r} (first on line {seen[identifier]})",
+                file=path,
+                line=element.sourceline,
+            )
+        seen[identifier] = element.sourceline
+
+
+def _refuse_containment_href(resource: XMIResource, node: etree._Element, parent: EObject) -> None:
+    # EMF can keep a contained element in another file ("cross-resource containment"); SceML
+    # never writes that, and a proxy in a containment is how a file could claim that an element
+    # contains itself.
+    feature = resource._find_feature(parent.eClass, etree.QName(node).localname)
+    if feature is not None and getattr(feature, "containment", False):
+        raise ValueError(
+            f"{parent.eClass.name}.{feature.name} is a containment and cannot refer to another "
+            f"element (href={node.get('href')!r})"
+        )
+
+
+def _check_literal(attribute: EAttribute, text: str) -> None:
+    """Refuse attribute text that EMF would not read back as the same value."""
+    kind = attribute.eType
+    name = kind.name
+    for word in text.split() if attribute.many else [text]:
+        if isinstance(kind, EEnum):
+            if kind.getEEnumLiteral(word) is None:
+                options = ", ".join(literal.name for literal in kind.eLiterals)
+                raise ValueError(f"{attribute.name}={word!r} is not one of: {options}")
+        elif name in _FLOAT_TYPES:
+            if not _DECIMAL.fullmatch(word):
+                raise ValueError(f"{attribute.name}={word!r} is not a finite decimal number")
+        elif name in _INT_TYPES:
+            if not _INTEGER.fullmatch(word):
+                raise ValueError(f"{attribute.name}={word!r} is not a whole number")
+            if not _INT_RANGE[0] <= int(word) <= _INT_RANGE[1]:
+                raise ValueError(f"{attribute.name}={word} does not fit a 32-bit int")
+        elif name in _BOOLEAN_TYPES and word.lower() not in ("true", "false"):
+            raise ValueError(f"{attribute.name}={word!r} is neither true nor false")
+
+
+def _line_in(resource: XMIResource, obj: EObject) -> int | None:
+    tree = getattr(resource, "sceml_tree", None)
+    element = _element_of(tree.getroot(), obj) if tree is not None else None
+    return element.sourceline if element is not None else None
 
 
 def _local_path(uri: URI) -> Path:
@@ -130,12 +312,12 @@ def _is_within(path: Path, root: Path) -> bool:
 
 
 def new_resource_set(
-    allowed_roots: Iterable[str | Path] | None = None, max_bytes: int = DEFAULT_MAX_BYTES
+    allowed_roots: Iterable[str | Path] | None = None, max_bytes: int | None = None
 ) -> ResourceSet:
     """A fresh resource set that knows the SceML metamodel and reads files safely.
 
     `allowed_roots`, when given, are the only folders files may be read from, cross-file
-    references included.
+    references included. `max_bytes` limits each file's size (default: `max_bytes_limit()`).
     """
     resource_set = ResourceSet()
     resource_set.metamodel_registry[scm.nsURI] = scm
@@ -226,12 +408,17 @@ def load(
     *,
     resource_set: ResourceSet | None = None,
     allowed_roots: Iterable[str | Path] | None = None,
+    max_bytes: int | None = None,
 ) -> Document:
-    """Load a scenario or library XMI file; references to other files load on first use."""
+    """Load a scenario or library XMI file; references to other files load on first use.
+
+    Files are read only from `allowed_roots` (default: the folder of `path`) and only up to
+    `max_bytes` each (default: $SCEML_MAX_BYTES, else DEFAULT_MAX_BYTES).
+    """
     path = Path(path)
     if resource_set is None:
         roots = allowed_roots if allowed_roots is not None else [path.resolve().parent]
-        resource_set = new_resource_set(roots)
+        resource_set = new_resource_set(roots, max_bytes)
     # The file the user names is always read; allowed_roots govern what it refers to.
     named: set[Path] = getattr(resource_set, "sceml_named_files", set())
     named.add(path.resolve())
@@ -274,10 +461,19 @@ def unresolved_references(root: EObject) -> Iterator[tuple[EObject, str, str]]:
         href = target._proxy_path
         try:
             target.force_resolve()
-        except LoadError as error:
-            yield obj, href, str(error)
-        except Exception as error:  # pyecore raises KeyError/ValueError for bad fragments
-            yield obj, href, f"cannot resolve {href!r}: {error or type(error).__name__}"
+        except Exception as error:  # pyecore wraps our LoadError, or raises its own for fragments
+            yield obj, href, _resolution_failure(href, error)
+
+
+def _resolution_failure(href: str, error: BaseException) -> str:
+    cause: BaseException | None = error
+    while cause is not None:
+        if isinstance(cause, LoadError):
+            return f"cannot resolve {href!r}: {cause}"
+        cause = cause.__cause__ or cause.__context__
+    # The file loaded, so what failed is the fragment after '#' (KeyError, IndexError, ...).
+    file, _, fragment = href.partition("#")
+    return f"cannot resolve {href!r}: {file or 'this file'} has no element {fragment!r}"
 
 
 def save(root: EObject, path: str | Path) -> Path:
@@ -293,6 +489,7 @@ def save(root: EObject, path: str | Path) -> Path:
         resource = resource_set.create_resource(URI(str(path)))
         resource.append(root)
     _resolve_before_moving(root, resource, path)
+    _refuse_unreadable_values(root, path)
     buffer = _MemoryURI(str(path))
     original_uri = resource.uri
     resource.uri = URI(str(path))
@@ -306,6 +503,27 @@ def save(root: EObject, path: str | Path) -> Path:
         resource.uri = original_uri
     write_atomically(path, buffer.data.getvalue())
     return path
+
+
+def _refuse_unreadable_values(root: EObject, path: Path) -> None:
+    # pyecore would write these as "inf", "nan" or a 64-bit number, and EMF refuses to read the
+    # file back; refusing here keeps a good file from being replaced by one EMF cannot open.
+    for obj in [root, *root.eAllContents()]:
+        for attribute in obj.eClass.eAllAttributes():
+            name = attribute.eType.name
+            if name not in _FLOAT_TYPES and name not in _INT_TYPES:
+                continue
+            value = obj.eGet(attribute)
+            for item in list(value) if attribute.many else [value]:
+                if item is None:
+                    continue
+                if name in _FLOAT_TYPES and not math.isfinite(item):
+                    problem = f"{attribute.name} is {item}, which EMF cannot read"
+                elif name in _INT_TYPES and not _INT_RANGE[0] <= item <= _INT_RANGE[1]:
+                    problem = f"{attribute.name}={item} does not fit a 32-bit int"
+                else:
+                    continue
+                raise SaveError(f"cannot save: {problem}", file=path, element=model_path(obj))
 
 
 class _MemoryURI(URI):

@@ -9,7 +9,7 @@ from pathlib import Path
 import click
 
 from ..info import Summary, summarize
-from ..io import load
+from ..io import load, model_path, unresolved_references
 
 
 @click.command()
@@ -18,14 +18,23 @@ from ..io import load
 def info(file: Path, as_json: bool) -> None:
     """Summarise FILE: its level, map, actors, node counts and module uses.
 
-    FILE is a scenario or a module library (.xmi).
+    FILE is a scenario or a module library (.xmi). Exits 1 when a cross-file reference (a module
+    use's definition) cannot be resolved, after printing the summary.
     """
-    summary = summarize(load(file).root)
+    document = load(file)
+    summary = summarize(document.root)
     if as_json:
         click.echo(json.dumps(asdict(summary), indent=2))
-        return
-    for line in _text(summary, file):
-        click.echo(line)
+    else:
+        for text in _text(summary, file):
+            click.echo(text)
+    broken = list(unresolved_references(document.root))
+    for holder, _href, reason in broken:
+        line = document.line_of(holder)
+        where = f"{file}:{line}" if line else str(file)
+        click.echo(f"Error: {where}: {reason} ({model_path(holder)})", err=True)
+    if broken:
+        raise SystemExit(1)
 
 
 def _text(summary: Summary, file: Path) -> list[str]:
