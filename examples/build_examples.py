@@ -6,6 +6,7 @@ Writes, into `examples/` unless told otherwise:
   library/sceml-library.xmi            CrossingManeuver (and the modules built on lane changes)
   uis1-{functional,logical,concrete}.xmi
   uis2-{functional,logical,concrete}.xmi
+  overtaking-{functional,logical,concrete}.xmi   Overtaking, three modules deep
 
 Start positions and destinations come from `maps/positions.json`, which the map script computes
 on real lanes of `maps/intersection.xodr`. The committed files must equal this script's output
@@ -93,7 +94,92 @@ def build_library() -> scm.Library:
         "InLocationRadius", crosser, position=world(dest_x, dest_y), radius=arrival
     )
     crossing.chain(crossing.in_port, wait, go, cross, arrived, crossing.out_port)
+    add_overtaking_modules(library)
     return library.library
+
+
+def add_overtaking_modules(library: LibraryBuilder) -> None:
+    """Overtaking uses PassVehicle, which uses ChangeLaneLeft and ChangeLaneRight: three deep."""
+    left = library.module(
+        "ChangeLaneLeft",
+        "Closes in on a lead vehicle; pulls out into the lane on the left when the time to "
+        "collision drops below a threshold.",
+    )
+    driver = left.role("driver", "FourWheeler", "Motorcycle")
+    lead = left.role("lead", "FourWheeler", "TwoWheeler")
+    closing = left.add(
+        "TimeToCollision",
+        driver,
+        target=lead,
+        rule="lessThan",
+        time=left.parameter("timeToCollision", "s", 3.0),
+    )
+    pull_out = left.add(
+        "LaneChange",
+        driver,
+        direction="left",
+        distance=left.parameter("laneChangeDistance", "m", 20.0),
+    )
+    left.chain(left.in_port, closing, pull_out, left.out_port)
+
+    right = library.module(
+        "ChangeLaneRight",
+        "Stays in the passing lane for a while, then changes back into the lane on the right.",
+    )
+    driver = right.role("driver", "FourWheeler", "Motorcycle")
+    hold = right.add("TimeElapsed", driver, duration=right.parameter("holdTime", "s", 3.0))
+    cut_in = right.add(
+        "LaneChange",
+        driver,
+        direction="right",
+        distance=right.parameter("laneChangeDistance", "m", 20.0),
+    )
+    right.chain(right.in_port, hold, cut_in, right.out_port)
+
+    passing = library.module(
+        "PassVehicle",
+        "Pulls out behind a slower vehicle, speeds up, drives past it and changes back.",
+    )
+    overtaker = passing.role("overtaker", "FourWheeler", "Motorcycle")
+    overtaken = passing.role("overtaken", "FourWheeler", "TwoWheeler")
+    speed = passing.parameter("passingSpeed", "m/s", 11.0)
+    time = passing.parameter("passingTime", "s", 3.0)
+    pull_out_use = passing.use(left.definition, {"driver": overtaker, "lead": overtaken})
+    speed_up = passing.add("Accelerate", overtaker, targetSpeed=speed)
+    cut_in_use = passing.use(right.definition, {"driver": overtaker}, {"holdTime": time})
+    passing.chain(passing.in_port, pull_out_use, speed_up, cut_in_use, passing.out_port)
+
+    overtaking = library.module(
+        "Overtaking",
+        "An overtaker passes a slower vehicle on the oncoming lane; an oncoming vehicle starts "
+        "towards it once the overtaker comes within a radius.",
+    )
+    overtaker = overtaking.role("overtaker", "FourWheeler", "Motorcycle")
+    overtaken = overtaking.role("overtaken", "FourWheeler", "TwoWheeler")
+    oncoming = overtaking.role("oncoming", "FourWheeler", "TwoWheeler")
+    pass_use = overtaking.use(
+        passing.definition,
+        {"overtaker": overtaker, "overtaken": overtaken},
+        {
+            "passingSpeed": overtaking.parameter("passingSpeed", "m/s", 11.0),
+            "passingTime": overtaking.parameter("passingTime", "s", 3.0),
+        },
+    )
+    sighted = overtaking.add(
+        "InVehicleRadius",
+        oncoming,
+        target=overtaker,
+        radius=overtaking.parameter("oncomingTriggerRadius", "m", 40.0),
+    )
+    approach = overtaking.add(
+        "DriveDistance",
+        oncoming,
+        distance=overtaking.parameter("oncomingDistance", "m", 60.0),
+        speed=overtaking.parameter("oncomingSpeed", "m/s", 8.0),
+    )
+    overtaking.chain(overtaking.in_port, pass_use)
+    overtaking.chain(overtaking.in_port, sighted, approach)
+    overtaking.chain(overtaking.join_all(pass_use, approach), overtaking.out_port)
 
 
 def build_uis1(level: str, where: dict) -> scm.Scenario:
@@ -238,6 +324,62 @@ def build_uis2(level: str, where: dict, library: scm.Library) -> scm.Scenario:
     return b.scenario
 
 
+def on_road(road_id: str, lane_id: int, s: float, level: str) -> scm.LanePosition | None:
+    """A lane position on a straight arm of the map, or none at the functional level."""
+    return None if level == "functional" else lane(road_id, lane_id, s)
+
+
+def build_overtaking(level: str, arm: dict, library: scm.Library) -> scm.Scenario:
+    """Overtaking on the east arm: the ego passes a slow truck using the oncoming lane."""
+    pick = chooser(level)
+    b = ScenarioBuilder(
+        "Overtaking",
+        map=MAP,
+        level=level,
+        date=DATE,
+        max_duration=pick(30.0),
+        description="Straight road: the ego overtakes a slow truck on the oncoming lane; an "
+        "oncoming car starts towards it during the manoeuvre.",
+    )
+    b.environment(time_of_day="12:00:00", cloud_state="free", precipitation="dry")
+    road, lanes = arm["roadId"], arm["driving"]
+    # Outbound traffic drives along s (away from the junction); the oncoming car comes back.
+    ego = b.actor(
+        "Car",
+        "ego",
+        ego=True,
+        start=on_road(road, lanes["outbound"], 2.0, level),
+        speed=pick(8.0, span(7.0, 9.0, 1.0)),
+        model="vehicle.tesla.model3",
+    )
+    truck = b.actor(
+        "Truck",
+        "truck",
+        start=on_road(road, lanes["outbound"], 22.0, level),
+        speed=pick(4.0, span(3.0, 5.0, 1.0)),
+        model="vehicle.carlamotors.carlacola",
+    )
+    oncoming = b.actor(
+        "Car",
+        "oncoming",
+        start=on_road(road, lanes["inbound"], 95.0, level),
+        speed=pick(0.0),
+        model="vehicle.audi.a2",
+    )
+    keep = b.add("KeepVelocity", truck, **given(duration=pick(12.0)))
+    overtaking = next(m for m in library.modules if m.name == "Overtaking")
+    overrides = given(
+        passingSpeed=pick(11.0, uniform(10.0, 12.0)),
+        oncomingTriggerRadius=pick(40.0, span(30.0, 50.0, 10.0)),
+        oncomingSpeed=pick(8.0, discrete([6.0, 8.0, 10.0])),
+    )
+    bindings = {"overtaker": ego, "overtaken": truck, "oncoming": oncoming}
+    manoeuvre = b.use(overtaking, bindings, overrides)
+    b.chain(b.root, manoeuvre, b.end)
+    b.chain(b.root, keep, b.end)
+    return b.scenario
+
+
 def build_all(out: Path) -> list[Path]:
     """Build and save every example under `out`; returns the files written."""
     where = positions()
@@ -247,6 +389,11 @@ def build_all(out: Path) -> list[Path]:
         written.append(io.save(build_uis1(level, where["uis1"]), out / f"uis1-{level}.xmi"))
         written.append(
             io.save(build_uis2(level, where["uis2"], library), out / f"uis2-{level}.xmi")
+        )
+    east = where["map"]["arms"]["east"]
+    for level in LEVELS:
+        written.append(
+            io.save(build_overtaking(level, east, library), out / f"overtaking-{level}.xmi")
         )
     return written
 

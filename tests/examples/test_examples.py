@@ -23,7 +23,7 @@ def build_module():
 
 def test_committed_examples_equal_the_script_output(tmp_path: Path) -> None:
     written = build_module().build_all(tmp_path)
-    assert len(written) == 7
+    assert len(written) == 10
     for path in written:
         relative = path.relative_to(tmp_path)
         assert path.read_bytes() == (EXAMPLES / relative).read_bytes(), f"{relative} is stale"
@@ -31,7 +31,7 @@ def test_committed_examples_equal_the_script_output(tmp_path: Path) -> None:
 
 @pytest.mark.parametrize("level", ["functional", "logical", "concrete"])
 def test_levels_are_declared(level: str) -> None:
-    for name in ("uis1", "uis2"):
+    for name in ("uis1", "uis2", "overtaking"):
         root = root_node(io.load(EXAMPLES / f"{name}-{level}.xmi").root)
         assert root.level.name == level
 
@@ -81,3 +81,31 @@ def test_logical_examples_hold_ranges_and_distributions() -> None:
     scenario = io.load(EXAMPLES / "uis2-logical.xmi").root
     kinds = {type(o).__name__ for o in scenario.eAllContents() if isinstance(o, scm.ParameterValue)}
     assert {"Range", "NormalDistribution", "UniformDistribution", "DiscreteDistribution"} <= kinds
+
+
+def test_overtaking_uses_a_module_three_deep() -> None:
+    scenario = io.load(EXAMPLES / "overtaking-concrete.xmi").root
+    use = next(n for n in scenario.nodes if isinstance(n, scm.ModuleUse))
+    assert use.definition.name == "Overtaking"
+    assert {b.role: b.actor.name for b in use.bindings} == {
+        "overtaker": "ego",
+        "overtaken": "truck",
+        "oncoming": "oncoming",
+    }
+    chain = []
+    definition = use.definition
+    while definition is not None:
+        chain.append(definition.name)
+        inner = [n for n in definition.nodes if isinstance(n, scm.ModuleUse)]
+        definition = inner[0].definition if inner else None
+    assert chain == ["Overtaking", "PassVehicle", "ChangeLaneLeft"]
+
+
+def test_overtaking_starts_on_the_lanes_of_one_straight_arm() -> None:
+    # East arm, road 2: outbound lane -1 runs along s, inbound lane 1 is the oncoming lane.
+    scenario = io.load(EXAMPLES / "overtaking-concrete.xmi").root
+    starts = {
+        a.name: (a.startPosition.roadId, a.startPosition.laneId, a.startPosition.s.value)
+        for a in actors(scenario)
+    }
+    assert starts == {"ego": ("2", -1, 2.0), "truck": ("2", -1, 22.0), "oncoming": ("2", 1, 95.0)}

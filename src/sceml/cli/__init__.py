@@ -7,7 +7,9 @@ import click
 from .. import __version__
 from .common import SceMLGroup
 from .dev import dev
+from .flatten import flatten
 from .info import info
+from .module import module
 from .render import render
 from .report import report
 
@@ -25,6 +27,8 @@ def cli() -> None:
 cli.add_command(info)
 cli.add_command(render)
 cli.add_command(report)
+cli.add_command(module)
+cli.add_command(flatten)
 cli.add_command(dev)
 
 

@@ -2,18 +2,29 @@
 
 from __future__ import annotations
 
-from pyecore.ecore import EObject, EProxy
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
 from ..copying import Copier, copy_tree
-from ..errors import SceMLError
 from ..graph import predecessors, successors
 from ..io import model_path
+from . import naming
+from .errors import FlattenError
+from .resolve import definition_key, location, resolved_definition, unwrap
+
+__all__ = ["FlattenError", "Flattened", "expand", "flatten"]
 
 
-class FlattenError(SceMLError):
-    """A module use cannot be expanded: unresolved definition, unbound role, or recursion."""
+@dataclass
+class Flattened:
+    """A flattened copy of a scenario and the uses that were expanded, outermost first."""
+
+    scenario: scm.Scenario
+    expanded: list[str] = field(default_factory=list)
 
 
 def flatten(scenario: scm.Scenario) -> scm.Scenario:
@@ -23,84 +34,150 @@ def flatten(scenario: scm.Scenario) -> scm.Scenario:
     replaced by the actors they are bound to, parameter references by the use's overrides or the
     module's defaults, and flows into and out of a use are rewired through its ports.
     """
+    return expand(scenario).scenario
+
+
+def expand(scenario: scm.Scenario) -> Flattened:
+    """Like `flatten`, and also report which uses were expanded."""
     copier = Copier()
     flat = copier.copy(scenario)
     copier.copy_references()
+    expansion = _Expansion(flat, {copy: original for original, copy in copier.copies.items()})
     for use in [node for node in flat.nodes if isinstance(node, scm.ModuleUse)]:
-        _inline(flat, use, ())
-    return flat
+        expansion.inline(use, ())
+    _check_self_contained(flat)
+    return Flattened(flat, expansion.expanded)
 
 
-def resolved_definition(use: scm.ModuleUse) -> scm.ModuleDefinition:
-    """The definition a use refers to, loaded if it lives in another file."""
-    definition = use.definition
-    if definition is None:
-        raise FlattenError("module use refers to no definition", element=model_path(use))
-    if isinstance(definition, EProxy):
-        try:
-            definition.force_resolve()
-        except Exception as error:
-            raise FlattenError(
-                f"module definition {definition._proxy_path!r} cannot be loaded: {error}",
-                element=model_path(use),
-            ) from None
-    return definition
+class _Expansion:
+    """The state of one flattening: the flat graph, its names, and where each copy came from."""
+
+    def __init__(self, graph: scm.Scenario, origins: dict[EObject, EObject]) -> None:
+        self.graph = graph
+        # Copies are not in any file; errors point at the element they were copied from.
+        self.origins = origins
+        self.taken = {str(node.name) for node in graph.nodes if node.name}
+        self.expanded: list[str] = []
+
+    def where(self, obj: EObject) -> dict:
+        """Location keywords of the element `obj` was copied from."""
+        return location(self.origins.get(obj, obj))
+
+    def inline(self, use: scm.ModuleUse, chain: tuple[tuple[tuple[str, str], str], ...]) -> None:
+        """Replace `use` by a copy of its definition's graph, then expand the uses inside it."""
+        definition = resolved_definition(self.origins.get(use, use), self.where)
+        key = definition_key(definition)
+        if any(seen == key for seen, _ in chain):
+            names = " -> ".join(name for _, name in (*chain, (key, str(definition.name))))
+            raise FlattenError(f"module uses itself: {names}", **self.where(use))
+        if not use.name:
+            use.name = naming.numbered(str(definition.name), self.taken)
+        copier = Copier()
+        nodes = copier.copy_all(definition.nodes)
+        flows = copier.copy_all(definition.flows)
+        copier.copy_references()
+        self.origins.update({copy: original for original, copy in copier.copies.items()})
+        in_port, out_port = _ports(definition, nodes)
+        _bind_roles(use, definition, nodes, self.where)
+        _bind_parameters(use, definition, nodes, self.where)
+        self._place(use, nodes, flows, in_port, out_port)
+        self.expanded.append(str(use.name))
+        inner = (*chain, (key, str(definition.name)))
+        for nested in [n for n in nodes if isinstance(n, scm.ModuleUse)]:
+            self.inline(nested, inner)
+
+    def _place(
+        self,
+        use: scm.ModuleUse,
+        nodes: list[scm.GraphElement],
+        flows: list[scm.Flow],
+        in_port: scm.InPort,
+        out_port: scm.OutPort,
+    ) -> None:
+        for node in nodes:
+            node.name = naming.unique(naming.scoped(str(use.name), str(node.name)), self.taken)
+            self.taken.add(node.name)
+        position = list(self.graph.nodes).index(use)
+        inner = [n for n in nodes if n is not in_port and n is not out_port]
+        for offset, node in enumerate(inner):
+            self.graph.nodes.insert(position + offset, node)
+        self.graph.flows.extend(flows)
+        _rewire(self.graph, use, in_port, out_port)
 
 
-def _inline(graph: scm.Graph, use: scm.ModuleUse, chain: tuple[scm.ModuleDefinition, ...]) -> None:
-    definition = resolved_definition(use)
-    if any(definition is seen for seen in chain):
-        names = " -> ".join(str(d.name) for d in (*chain, definition))
-        raise FlattenError(f"module uses itself: {names}", element=model_path(use))
-    copier = Copier()
-    nodes = copier.copy_all(definition.nodes)
-    flows = copier.copy_all(definition.flows)
-    copier.copy_references()
-    _bind_roles(use, definition, nodes)
-    _bind_parameters(use, definition, nodes)
-    for node in nodes:
-        node.name = f"{use.name}.{node.name}"
-    in_port = next(n for n in nodes if isinstance(n, scm.InPort))
-    out_port = next(n for n in nodes if isinstance(n, scm.OutPort))
-    position = list(graph.nodes).index(use)
-    for offset, node in enumerate(n for n in nodes if not isinstance(n, scm.InPort | scm.OutPort)):
-        graph.nodes.insert(position + offset, node)
-    for flow in flows:
-        graph.flows.append(flow)
-    _rewire(graph, use, in_port, out_port)
-    for nested in [n for n in nodes if isinstance(n, scm.ModuleUse)]:
-        _inline(graph, nested, (*chain, definition))
+def _ports(
+    definition: scm.ModuleDefinition, nodes: list[scm.GraphElement]
+) -> tuple[scm.InPort, scm.OutPort]:
+    in_ports = [n for n in nodes if isinstance(n, scm.InPort)]
+    out_ports = [n for n in nodes if isinstance(n, scm.OutPort)]
+    if len(in_ports) != 1 or len(out_ports) != 1:
+        raise FlattenError(
+            f"module {definition.name!r} needs one in-port and one out-port, "
+            f"has {len(in_ports)} and {len(out_ports)}",
+            **location(definition),
+        )
+    in_port, out_port = in_ports[0], out_ports[0]
+    if not successors(in_port) or not predecessors(out_port):
+        unwired = in_port.name if not successors(in_port) else out_port.name
+        raise FlattenError(
+            f"module {definition.name!r}: port {unwired!r} is not wired", **location(definition)
+        )
+    return in_port, out_port
 
 
-def _bind_roles(use: scm.ModuleUse, definition: scm.ModuleDefinition, nodes: list) -> None:
+def _bind_roles(
+    use: scm.ModuleUse,
+    definition: scm.ModuleDefinition,
+    nodes: list,
+    where: Callable[[EObject], dict],
+) -> None:
     bound = {binding.role: binding.actor for binding in use.bindings}
     actors: dict[EObject, EObject] = {}
     for role in definition.roles:
         if bound.get(role.name) is None:
-            raise FlattenError(f"role {role.name!r} is not bound", element=model_path(use))
+            raise FlattenError(
+                f"role {role.name!r} of module {definition.name!r} is not bound",
+                **where(use),
+            )
         actors[role] = bound[role.name]
     for obj in _with_contents(nodes):
-        for feature in ("referenceActor", "targetActor", "actor"):
-            if obj.eClass.findEStructuralFeature(feature) is None:
+        for feature in obj.eClass.eAllReferences():
+            if feature.containment or feature.many or feature.derived or feature.transient:
                 continue
             target = obj.eGet(feature)
-            if target in actors:
-                obj.eSet(feature, actors[target])
+            if target is not None and unwrap(target) in actors:
+                obj.eSet(feature, actors[unwrap(target)])
 
 
-def _bind_parameters(use: scm.ModuleUse, definition: scm.ModuleDefinition, nodes: list) -> None:
+def _bind_parameters(
+    use: scm.ModuleUse,
+    definition: scm.ModuleDefinition,
+    nodes: list,
+    where: Callable[[EObject], dict],
+) -> None:
     overrides = {override.parameter: override.value for override in use.overrides}
-    known = {parameter.name for parameter in definition.parameters}
-    unknown = sorted(set(overrides) - known)
+    declared = {parameter.name: parameter for parameter in definition.parameters}
+    unknown = sorted(set(overrides) - set(declared))
     if unknown:
-        raise FlattenError(f"unknown parameter override {unknown[0]!r}", element=model_path(use))
+        raise FlattenError(
+            f"module {definition.name!r} has no parameter {unknown[0]!r} "
+            f"(it has: {', '.join(declared) or 'none'})",
+            **where(use),
+        )
     for ref in [o for o in _with_contents(nodes) if isinstance(o, scm.ParameterRef)]:
         parameter = ref.parameter
-        chosen = overrides.get(parameter.name) if parameter is not None else None
-        if chosen is None and parameter is not None:
+        if parameter is None or declared.get(parameter.name) is not unwrap(parameter):
+            raise FlattenError(
+                f"a parameter reference in module {definition.name!r} names no parameter of it",
+                **location(ref),
+            )
+        chosen = overrides.get(parameter.name)
+        if chosen is None:
             chosen = parameter.default
-        container, feature = ref.eContainer(), ref.eContainmentFeature()
-        container.eSet(feature, copy_tree(chosen) if chosen is not None else None)
+        # An unset value means the language default, as everywhere else in a scenario.
+        ref.eContainer().eSet(
+            ref.eContainmentFeature(), copy_tree(chosen) if chosen is not None else None
+        )
 
 
 def _with_contents(nodes: list) -> list[EObject]:
@@ -112,14 +189,17 @@ def _rewire(
 ) -> None:
     entries = successors(in_port)
     exits = predecessors(out_port)
-    before = [flow.source for flow in use.incoming]
-    after = [flow.target for flow in use.outgoing]
-    sources = [*exits] + (before if out_port in entries else [])
+    before = predecessors(use)
+    after = successors(use)
+    # A module whose in-port leads straight to its out-port passes activation through.
+    sources = [*exits, *(before if out_port in entries else [])]
     for source in before:
         for entry in entries:
             if entry is not out_port:
                 graph.flows.append(scm.Flow(source=source, target=entry))
     for exit_ in sources:
+        if exit_ is in_port:
+            continue
         for target in after:
             graph.flows.append(scm.Flow(source=exit_, target=target))
     for node in (use, in_port, out_port):
@@ -133,3 +213,27 @@ def _remove_flow(graph: scm.Graph, flow: scm.Flow) -> None:
     flow.target = None
     if flow in graph.flows:
         graph.flows.remove(flow)
+
+
+def _check_self_contained(flat: scm.Scenario) -> None:
+    # Anything still pointing into a library (a role of another module, say) would make the
+    # flattened file depend on the library it is meant to replace.
+    for obj in flat.eAllContents():
+        for feature in obj.eClass.eAllReferences():
+            if feature.containment or feature.derived or feature.transient or feature.many:
+                continue
+            if feature.eOpposite is not None and feature.eOpposite.containment:
+                continue
+            target = obj.eGet(feature)
+            if target is not None and _root_of(unwrap(target)) is not flat:
+                raise FlattenError(
+                    f"{feature.name} still refers to {model_path(unwrap(target))} outside the "
+                    "scenario after expansion",
+                    element=model_path(obj),
+                )
+
+
+def _root_of(obj: EObject) -> EObject:
+    while obj.eContainer() is not None:
+        obj = obj.eContainer()
+    return obj

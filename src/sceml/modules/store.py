@@ -1,0 +1,129 @@
+"""Module operations on files: flatten a scenario file, extract into a library file, atomically."""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import tempfile
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+from pyecore.ecore import EObject
+from pyecore.resources import URI
+
+import scemlmodel as scm
+
+from .. import io
+from ..errors import SaveError
+from .errors import ExtractError
+from .extract import RoleSpec, extract
+from .flatten import expand
+
+
+@dataclass
+class FlattenReport:
+    """What `flatten_file` did."""
+
+    output: Path
+    expanded: list[str]
+    nodes: int
+
+
+@dataclass
+class ExtractReport:
+    """What `extract_file` did."""
+
+    scenario: Path
+    library: Path
+    module: str
+    use: str
+    roles: dict[str, str]
+    parameters: int
+    created_library: bool
+
+
+def flatten_file(
+    path: str | Path, output: str | Path, *, allowed_roots: Iterable[str | Path] = ()
+) -> FlattenReport:
+    """Flatten the scenario in `path` and save it, atomically, to `output`.
+
+    Referenced libraries may lie below the scenario's folder or any of `allowed_roots`.
+    """
+    path, output = Path(path), Path(output)
+    document = io.load_scenario(path, allowed_roots=[path.resolve().parent, *allowed_roots])
+    flattened = expand(document.root)
+    io.save(flattened.scenario, output)
+    return FlattenReport(output, flattened.expanded, len(flattened.scenario.nodes))
+
+
+def extract_file(
+    path: str | Path,
+    node_names: Sequence[str],
+    name: str,
+    library_path: str | Path,
+    *,
+    output: str | Path | None = None,
+    roles: Mapping[str, RoleSpec] | None = None,
+    parametrize: bool = False,
+    allowed_roots: Iterable[str | Path] = (),
+) -> ExtractReport:
+    """Extract nodes of the scenario in `path` into module `name` of the library file.
+
+    The library is created if it does not exist. The scenario is saved to `output` (default:
+    in place). Nothing is written unless both files can be.
+    """
+    path, library_path = Path(path).resolve(), Path(library_path).resolve()
+    target = Path(output).resolve() if output is not None else path
+    resource_set = io.new_resource_set([path.parent, library_path.parent, *allowed_roots])
+    scenario = io.load_scenario(path, resource_set=resource_set).root
+    created = not library_path.exists()
+    if created:
+        library = scm.Library(name=library_path.stem)
+        resource_set.create_resource(URI(str(library_path))).append(library)
+    else:
+        library = io.load_library(library_path, resource_set=resource_set).root
+    try:
+        use = extract(scenario, node_names, name, library, roles=roles, parametrize=parametrize)
+    except ExtractError as error:
+        error.file = error.file or str(path)
+        raise
+    save_together([(library, library_path), (scenario, target)])
+    definition = use.definition
+    return ExtractReport(
+        scenario=target,
+        library=library_path,
+        module=name,
+        use=str(use.name),
+        roles={str(b.role): str(b.actor.name) for b in use.bindings},
+        parameters=len(definition.parameters),
+        created_library=created,
+    )
+
+
+def save_together(models: Sequence[tuple[EObject, Path]]) -> None:
+    """Save several models so that either all files are replaced or none is.
+
+    Each model is first saved to a temporary file beside its target (so relative references come
+    out right), then the files are renamed in the given order. Put a library before the scenario
+    that uses it: if the second rename failed, the scenario would still be the old one.
+    """
+    temporaries: list[Path] = []
+    try:
+        for root, target in models:
+            target.parent.mkdir(parents=True, exist_ok=True)
+            handle, name = tempfile.mkstemp(
+                prefix=f".{target.name}.", suffix=".tmp", dir=target.parent
+            )
+            os.close(handle)
+            temporaries.append(Path(name))
+            io.save(root, name)
+        for temporary, (_, target) in zip(temporaries, models, strict=True):
+            try:
+                os.replace(temporary, target)
+            except OSError as error:
+                raise SaveError(f"cannot write file: {error.strerror}", file=target) from None
+    finally:
+        for temporary in temporaries:
+            with contextlib.suppress(FileNotFoundError):
+                temporary.unlink()

@@ -1,0 +1,289 @@
+"""Flattening: expanded uses behave like hand-inlined nodes, with readable unique names, and every
+way a use can fail to expand is a located FlattenError."""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import pytest
+from pyecore.resources import URI
+
+import scemlmodel as scm
+from sceml import io
+from sceml.build import GraphBuilder, LibraryBuilder, ScenarioBuilder, actor_named, world
+from sceml.compare import differences
+from sceml.graph import end_node, predecessors, root_node
+from sceml.modules import FlattenError, depth, expand, flatten, list_definitions
+from sceml.params import span, uniform
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+
+# UIS2's CrossingManeuver use, written out by hand from the module and the use's overrides.
+CROSSING_VALUES = {
+    "concrete": {"radius": 15.0, "speed": 1.5},
+    "logical": {"radius": span(10.0, 20.0, 5.0), "speed": uniform(1.0, 2.0)},
+}
+
+
+def hand_inlined_uis2(level: str) -> scm.Scenario:
+    scenario = io.load(EXAMPLES / f"uis2-{level}.xmi").root
+    use = next(n for n in scenario.nodes if isinstance(n, scm.ModuleUse))
+    for flow in [*use.incoming, *use.outgoing]:
+        flow.source = flow.target = None
+        scenario.flows.remove(flow)
+    scenario.nodes.remove(use)
+    pedestrian, car = actor_named(scenario, "pedestrian"), actor_named(scenario, "car")
+    values = CROSSING_VALUES[level]
+    b = GraphBuilder(scenario)
+    wait = b.add("InVehicleRadius", pedestrian, target=car, radius=values["radius"])
+    go = b.add("Accelerate", pedestrian, targetSpeed=values["speed"])
+    cross = b.add("Cross", pedestrian, destination=world(-10.0, 4.5, h=1.570796))
+    arrived = b.add("InLocationRadius", pedestrian, position=world(-10.0, 4.5), radius=2.0)
+    b.chain(root_node(scenario), wait, go, cross, arrived, end_node(scenario))
+    return scenario
+
+
+@pytest.mark.parametrize("level", ["concrete", "logical"])
+def test_flattened_uis2_behaves_like_hand_inlined_uis2(level: str, canonical) -> None:
+    flat = flatten(io.load(EXAMPLES / f"uis2-{level}.xmi").root)
+    assert canonical(flat) == canonical(hand_inlined_uis2(level))
+    assert not any(isinstance(n, scm.ModuleUse) for n in flat.nodes)
+
+
+def test_expanded_nodes_are_named_after_their_use() -> None:
+    flat = flatten(io.load(EXAMPLES / "uis2-concrete.xmi").root)
+    names = {str(n.name) for n in flat.nodes}
+    assert {
+        "CrossingManeuver_1.InVehicleRadius_1",
+        "CrossingManeuver_1.Accelerate_1",
+        "CrossingManeuver_1.Cross_1",
+        "CrossingManeuver_1.InLocationRadius_1",
+    } < names
+    by_name = {n.name: n for n in flat.nodes}
+    wait = by_name["CrossingManeuver_1.InVehicleRadius_1"]
+    assert (wait.referenceActor.name, wait.targetActor.name) == ("pedestrian", "car")
+    assert predecessors(wait) == [by_name["Root"]]
+
+
+def test_flatten_leaves_the_input_untouched_and_saves_a_self_contained_file(
+    examples_copy: Path, tmp_path: Path
+) -> None:
+    document = io.load(examples_copy / "uis2-logical.xmi")
+    flat = flatten(document.root)
+    assert differences(document.root, io.load(examples_copy / "uis2-logical.xmi").root) == []
+    target = tmp_path / "out" / "flat.xmi"
+    io.save(flat, target)
+    assert "href=" not in target.read_text()
+    reloaded = io.load(target, allowed_roots=[target.parent])
+    assert differences(flat, reloaded.root) == []
+
+
+def test_a_scenario_without_uses_flattens_to_an_equal_copy() -> None:
+    scenario = io.load(EXAMPLES / "uis1-concrete.xmi").root
+    assert differences(scenario, flatten(scenario)) == []
+
+
+OVERTAKING_NAMES = {
+    "Root",
+    "End",
+    "KeepVelocity_1",
+    "Overtaking_1.PassVehicle_1.ChangeLaneLeft_1.TimeToCollision_1",
+    "Overtaking_1.PassVehicle_1.ChangeLaneLeft_1.LaneChange_1",
+    "Overtaking_1.PassVehicle_1.Accelerate_1",
+    "Overtaking_1.PassVehicle_1.ChangeLaneRight_1.TimeElapsed_1",
+    "Overtaking_1.PassVehicle_1.ChangeLaneRight_1.LaneChange_1",
+    "Overtaking_1.InVehicleRadius_1",
+    "Overtaking_1.DriveDistance_1",
+    "Overtaking_1.JoinAllFinished_1",
+}
+
+
+def test_nesting_three_deep_flattens_with_scoped_names_roles_and_parameters() -> None:
+    result = expand(io.load(EXAMPLES / "overtaking-concrete.xmi").root)
+    assert result.expanded == [
+        "Overtaking_1",
+        "Overtaking_1.PassVehicle_1",
+        "Overtaking_1.PassVehicle_1.ChangeLaneLeft_1",
+        "Overtaking_1.PassVehicle_1.ChangeLaneRight_1",
+    ]
+    by_name = {n.name: n for n in result.scenario.nodes}
+    assert set(by_name) == OVERTAKING_NAMES
+    prefix = "Overtaking_1.PassVehicle_1."
+    closing = by_name[prefix + "ChangeLaneLeft_1.TimeToCollision_1"]
+    assert (closing.referenceActor.name, closing.targetActor.name) == ("ego", "truck")
+    assert closing.time.value == 3.0  # ChangeLaneLeft's default
+    # passingSpeed: overridden in the scenario, passed on by Overtaking to PassVehicle.
+    assert by_name[prefix + "Accelerate_1"].targetSpeed.value == 11.0
+    # passingTime: Overtaking's default, passed on twice, down to ChangeLaneRight's holdTime.
+    assert by_name[prefix + "ChangeLaneRight_1.TimeElapsed_1"].duration.value == 3.0
+    cut_in = by_name[prefix + "ChangeLaneRight_1.LaneChange_1"]
+    assert (cut_in.direction.name, cut_in.distance.value) == ("right", 20.0)
+    join = by_name["Overtaking_1.JoinAllFinished_1"]
+    assert {p.name for p in predecessors(join)} == {
+        "Overtaking_1.DriveDistance_1",
+        prefix + "ChangeLaneRight_1.LaneChange_1",
+    }
+    assert predecessors(by_name["End"]) == [by_name["KeepVelocity_1"], join]
+    assert {p.name for p in predecessors(closing)} == {"Root"}
+
+
+def test_an_override_reaches_the_innermost_node_at_the_logical_level() -> None:
+    flat = flatten(io.load(EXAMPLES / "overtaking-logical.xmi").root)
+    speed_up = next(n for n in flat.nodes if n.name == "Overtaking_1.PassVehicle_1.Accelerate_1")
+    assert isinstance(speed_up.targetSpeed, scm.UniformDistribution)
+    assert (speed_up.targetSpeed.min, speed_up.targetSpeed.max) == (10.0, 12.0)
+
+
+def test_a_library_change_is_seen_when_flattening(examples_copy: Path) -> None:
+    path = examples_copy / "library" / "sceml-library.xmi"
+    library = io.load(path)
+    crossing = next(m for m in library.root.modules if m.name == "CrossingManeuver")
+    arrival = next(p for p in crossing.parameters if p.name == "arrivalRadius")
+    arrival.default.value = 3.5
+    io.save(library.root, path)
+    flat = flatten(io.load(examples_copy / "uis2-concrete.xmi").root)
+    arrived = next(n for n in flat.nodes if n.name == "CrossingManeuver_1.InLocationRadius_1")
+    assert arrived.radius.value == 3.5
+
+
+def test_moving_scenario_and_library_together_keeps_flattening(
+    examples_copy: Path, tmp_path: Path
+) -> None:
+    moved = tmp_path / "elsewhere" / "deeper"
+    shutil.copytree(examples_copy, moved)
+    shutil.rmtree(examples_copy)
+    names = {n.name for n in flatten(io.load(moved / "overtaking-logical.xmi").root).nodes}
+    assert names == OVERTAKING_NAMES
+
+
+def _save_libraries(libraries: dict[Path, scm.Library]) -> None:
+    # Every library needs its file before any is saved, so cross-file references come out right.
+    resource_set = io.new_resource_set()
+    for path, library in libraries.items():
+        resource_set.create_resource(URI(str(path))).append(library)
+    for path, library in libraries.items():
+        io.save(library, path)
+
+
+def _scenario_using(definition: scm.ModuleDefinition, path: Path) -> Path:
+    b = ScenarioBuilder("Uses", level="functional")
+    car = b.actor("Car", "ego", ego=True)
+    b.chain(b.root, b.use(definition, {"driver": car}), b.end)
+    io.save(b.scenario, path)
+    return path
+
+
+def _module(library: LibraryBuilder, name: str):
+    module = library.module(name)
+    module.role("driver", "FourWheeler")
+    return module
+
+
+def test_direct_recursion_is_an_error(tmp_path: Path) -> None:
+    library = LibraryBuilder("lib")
+    looping = _module(library, "Loop")
+    inner = looping.use(looping.definition, {"driver": looping.definition.roles[0]})
+    looping.chain(looping.in_port, inner, looping.out_port)
+    _save_libraries({tmp_path / "lib.xmi": library.library})
+    scenario = _scenario_using(looping.definition, tmp_path / "scenario.xmi")
+    with pytest.raises(FlattenError, match="module uses itself: Loop -> Loop") as caught:
+        flatten(io.load(scenario).root)
+    assert caught.value.exit_code == 1
+    assert caught.value.file == str(tmp_path / "lib.xmi")  # where the looping use is written
+    assert caught.value.line is not None
+
+
+def test_transitive_recursion_across_files_is_an_error(tmp_path: Path) -> None:
+    first, second = LibraryBuilder("first"), LibraryBuilder("second")
+    a, b = _module(first, "A"), _module(second, "B")
+    a.chain(a.in_port, a.use(b.definition, {"driver": a.definition.roles[0]}), a.out_port)
+    b.chain(b.in_port, b.use(a.definition, {"driver": b.definition.roles[0]}), b.out_port)
+    _save_libraries(
+        {tmp_path / "first.xmi": first.library, tmp_path / "sub" / "second.xmi": second.library}
+    )
+    assert 'href="sub/second.xmi#B"' in (tmp_path / "first.xmi").read_text()
+    scenario = _scenario_using(a.definition, tmp_path / "scenario.xmi")
+    with pytest.raises(FlattenError, match="module uses itself: A -> B -> A"):
+        flatten(io.load(scenario).root)
+    reloaded = io.load(tmp_path / "first.xmi").root
+    with pytest.raises(FlattenError, match="A -> B -> A"):
+        depth(reloaded.modules[0])
+    (summary,) = list_definitions(reloaded)
+    assert summary.size.depth is None
+    assert "A -> B -> A" in str(summary.size.problem)
+
+
+def _edit(path: Path, old: str, new: str) -> Path:
+    text = path.read_text()
+    assert old in text
+    path.write_text(text.replace(old, new))
+    return path
+
+
+def test_unresolved_library_file_names_the_path_tried(examples_copy: Path) -> None:
+    path = _edit(examples_copy / "uis2-concrete.xmi", "library/sceml-library.xmi", "lib/x.xmi")
+    with pytest.raises(FlattenError) as caught:
+        flatten(io.load(path).root)
+    message = str(caught.value)
+    assert "'lib/x.xmi#CrossingManeuver' cannot be loaded" in message
+    assert f"{examples_copy / 'lib' / 'x.xmi'}: no such file" in message
+    assert caught.value.file == str(path)
+    assert caught.value.line is not None
+    assert caught.value.element == "CrossingManeuver_1"
+
+
+def test_unresolved_module_name_lists_the_modules_there_are(examples_copy: Path) -> None:
+    path = _edit(examples_copy / "uis2-concrete.xmi", "#CrossingManeuver", "#Crossing")
+    with pytest.raises(FlattenError, match=r"has no module 'Crossing' \(it has: CrossingManeuver,"):
+        flatten(io.load(path).root)
+
+
+def test_library_outside_the_allowed_folders_is_reported(examples_copy: Path) -> None:
+    document = io.load(examples_copy / "uis2-concrete.xmi", allowed_roots=[examples_copy / "none"])
+    with pytest.raises(FlattenError, match="reference leaves the allowed folders"):
+        flatten(document.root)
+
+
+def test_unbound_role_is_an_error(examples_copy: Path) -> None:
+    path = _edit(
+        examples_copy / "uis2-concrete.xmi",
+        '<bindings xsi:type="scemlmodel:RoleBinding" role="trigger" actor="//@nodes.0/@actors.1"/>',
+        "",
+    )
+    with pytest.raises(
+        FlattenError, match="role 'trigger' of module 'CrossingManeuver' is not bound"
+    ):
+        flatten(io.load(path).root)
+
+
+def test_unknown_override_is_an_error(examples_copy: Path) -> None:
+    path = _edit(
+        examples_copy / "uis2-concrete.xmi", 'parameter="crossingSpeed"', 'parameter="pace"'
+    )
+    with pytest.raises(FlattenError, match="module 'CrossingManeuver' has no parameter 'pace'"):
+        flatten(io.load(path).root)
+
+
+def test_unwired_port_is_an_error(tmp_path: Path) -> None:
+    library = LibraryBuilder("lib")
+    broken = _module(library, "Broken")
+    broken.add("Stop", broken.definition.roles[0])
+    _save_libraries({tmp_path / "lib.xmi": library.library})
+    scenario = _scenario_using(broken.definition, tmp_path / "scenario.xmi")
+    with pytest.raises(FlattenError, match="module 'Broken': port 'In' is not wired"):
+        flatten(io.load(scenario).root)
+
+
+def test_a_module_passing_activation_straight_through_keeps_the_flow(tmp_path: Path) -> None:
+    library = LibraryBuilder("lib")
+    empty = _module(library, "Empty")
+    empty.chain(empty.in_port, empty.out_port)
+    b = ScenarioBuilder("Uses", level="functional")
+    car = b.actor("Car", "ego", ego=True)
+    stop = b.add("Stop", car)
+    b.chain(b.root, b.use(empty.definition, {"driver": car}), stop, b.end)
+    flat = flatten(b.scenario)
+    by_name = {n.name: n for n in flat.nodes}
+    assert set(by_name) == {"Root", "End", "Stop_1"}
+    assert predecessors(by_name["Stop_1"]) == [by_name["Root"]]
