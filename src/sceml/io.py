@@ -492,6 +492,7 @@ def save(root: EObject, path: str | Path) -> Path:
     _refuse_unreadable_values(root, path)
     buffer = _MemoryURI(str(path))
     original_uri = resource.uri
+    moved_maps = _rebase_map_paths(root, Path(original_uri.normalize()).parent, path.parent)
     resource.uri = URI(str(path))
     try:
         # Defaults are written out: `kind="Pedestrian"` and `value="0.0"` read better than an
@@ -501,8 +502,31 @@ def save(root: EObject, path: str | Path) -> Path:
         raise SaveError(f"cannot serialise the model: {error}", file=path) from None
     finally:
         resource.uri = original_uri
+        for node, original in moved_maps:
+            node.map = original
     write_atomically(path, buffer.data.getvalue())
     return path
+
+
+def _rebase_map_paths(
+    root: EObject, old_folder: Path, new_folder: Path
+) -> list[tuple[scm.RootNode, str]]:
+    """Point relative OpenDRIVE map paths at the same file from the new folder, for this save.
+
+    The model in memory keeps its own paths: the changed values are returned to be restored. A
+    map that is a simulator town name (no `.xodr`) or an absolute path is left as it is.
+    """
+    if old_folder.resolve() == new_folder.resolve() or not isinstance(root, scm.Scenario):
+        return []
+    changed = []
+    for node in root.nodes:
+        mapped = node.map if isinstance(node, scm.RootNode) else None
+        if not mapped or not mapped.lower().endswith(".xodr") or Path(mapped).is_absolute():
+            continue
+        target = (old_folder / mapped).resolve()
+        node.map = Path(os.path.relpath(target, new_folder.resolve())).as_posix()
+        changed.append((node, mapped))
+    return changed
 
 
 def _refuse_unreadable_values(root: EObject, path: Path) -> None:

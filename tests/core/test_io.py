@@ -184,3 +184,16 @@ def test_write_atomically_leaves_no_partial_file(tmp_path: Path, monkeypatch) ->
         io.write_atomically(target, b"new content")
     assert target.read_bytes() == b"good"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["out.xmi"]
+
+
+def test_save_elsewhere_keeps_the_map_reachable(examples_copy: Path, tmp_path: Path) -> None:
+    document = io.load(examples_copy / "uis1-concrete.xmi")
+    target = tmp_path / "out" / "nested" / "uis1.xmi"
+    io.save(document.root, target)
+    saved = io.load(target, allowed_roots=[tmp_path]).root.nodes[0]
+    assert saved.map == "../../maps/intersection.xodr"
+    assert (target.parent / saved.map).resolve() == (tmp_path / "maps/intersection.xodr").resolve()
+    # The model in memory, and a save in place, keep the original path.
+    assert document.root.nodes[0].map == "../maps/intersection.xodr"
+    io.save(document.root, examples_copy / "uis1-concrete.xmi")
+    assert 'map="../maps/intersection.xodr"' in (examples_copy / "uis1-concrete.xmi").read_text()

@@ -16,7 +16,9 @@ from sceml.graph import predecessors
 def _content(obj: EObject) -> str:
     parts = []
     for feature in obj.eClass.eAllStructuralFeatures():
-        if feature.name == "name" or feature.derived or feature.transient:
+        # The map path is relative to the file it is saved in (io.save rebases it), so it is a
+        # location, not behaviour; tests/core/test_io.py checks that it still reaches the map.
+        if feature.name in ("name", "map") or feature.derived or feature.transient:
             continue
         held = obj.eGet(feature)
         items = list(held) if feature.many else [held]
