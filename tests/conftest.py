@@ -11,6 +11,16 @@ REPO = Path(__file__).resolve().parent.parent
 EXAMPLES = REPO / "examples"
 
 
+def pytest_addoption(parser: pytest.Parser) -> None:
+    """--update-golden rewrites golden files (e.g. tests/export/golden) instead of comparing."""
+    parser.addoption(
+        "--update-golden",
+        action="store_true",
+        default=False,
+        help="rewrite the golden files from the current code; review the diff before committing",
+    )
+
+
 @pytest.fixture
 def examples_copy(tmp_path: Path) -> Path:
     """A private copy of examples/ (and the map it refers to) that a test may change freely."""

@@ -1,0 +1,97 @@
+"""`sceml export FILE -o OUT.xosc`: write a concrete scenario as OpenSCENARIO 1.0-1.3."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from pathlib import Path
+
+import click
+
+from ..diagnostics import Diagnostic
+from ..errors import SceMLError
+from ..export import ExportError, export_to_file
+from ..export.support import PROFILES
+from ..export.versions import VERSIONS
+from ..io import load_scenario
+from .common import ReportedError
+
+
+@click.command()
+@click.argument("file", type=click.Path(exists=True, dir_okay=False, path_type=Path))
+@click.option(
+    "-o",
+    "--output",
+    required=True,
+    type=click.Path(dir_okay=False, path_type=Path),
+    help="The .xosc file to write (atomically; an existing file is only replaced on success).",
+)
+@click.option(
+    "--osc-version",
+    type=click.Choice(VERSIONS),
+    help="OpenSCENARIO version to write. Default: 1.3, or 1.0 with the carla profile (the only "
+    "version scenario_runner reads).",
+)
+@click.option(
+    "--profile",
+    type=click.Choice(PROFILES),
+    default="generic",
+    show_default=True,
+    help="generic: any OpenSCENARIO player (e.g. esmini); carla: what CARLA scenario_runner reads.",
+)
+@click.option(
+    "--date",
+    metavar="ISO",
+    help="FileHeader date (ISO 8601), e.g. 2026-01-01T00:00:00; default: the root node's date.",
+)
+@click.option(
+    "--town",
+    metavar="NAME",
+    help="CARLA town written as LogicFile (e.g. Town03); required by the carla profile unless "
+    "the model's map already is a town name.",
+)
+@click.option(
+    "--map",
+    "map_path",
+    type=click.Path(dir_okay=False, path_type=Path),
+    help="OpenDRIVE file to refer to instead of the model's map (written relative to OUTPUT).",
+)
+def export(
+    file: Path,
+    output: Path,
+    osc_version: str | None,
+    profile: str,
+    date: str | None,
+    town: str | None,
+    map_path: Path | None,
+) -> None:
+    """Export the concrete scenario FILE to OpenSCENARIO.
+
+    Module uses are flattened first. Functional and logical scenarios, invalid models and nodes
+    the chosen version or profile cannot express are refused with their diagnostics (exit 1);
+    the output is checked against the official XSD before it is written.
+    """
+    osc_version = osc_version or ("1.0" if profile == "carla" else "1.3")
+    try:
+        document = load_scenario(file)
+        export_to_file(
+            document.root,
+            output,
+            version=osc_version,
+            profile=profile,
+            date=date,
+            source_path=file,
+            map_path=map_path,
+            town=town,
+        )
+    except ExportError as error:
+        for diagnostic in error.diagnostics:
+            click.echo(str(_located(diagnostic, file)), err=True)
+        raise ReportedError(error) from None
+    except SceMLError as error:
+        raise ReportedError(error) from None
+    click.echo(f"{output}: OpenSCENARIO {osc_version} ({profile})")
+
+
+def _located(diagnostic: Diagnostic, file: Path) -> Diagnostic:
+    # Export diagnostics point at elements of the flattened copy, which has no file; name the input.
+    return diagnostic if diagnostic.file else replace(diagnostic, file=str(file))

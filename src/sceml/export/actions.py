@@ -1,0 +1,295 @@
+"""The events of each node kind: which actions it performs and which event marks it finished.
+
+Each planner takes the node's activation (ConditionGroups) and returns its events plus the name
+of its *finish event*, whose completeState its successors wait for. Planners are registered by
+metaclass name in PLANNERS; `support.py` derives the list of mapped kinds from it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import scemlmodel as scm
+
+from .context import Action, Context, Event
+from .speeds import speed_dynamics
+from .triggers import Condition, Group, delayed, finished, with_extra
+
+Plan = tuple[list[Event], str]
+Planner = Callable[[Context, scm.GraphElement, list[Group]], Plan]
+
+PLANNERS: dict[str, Planner] = {}
+
+
+def planner(*kinds: str) -> Callable[[Planner], Planner]:
+    """Register a planner for node kinds."""
+
+    def register(function: Planner) -> Planner:
+        for kind in kinds:
+            PLANNERS[kind] = function
+        return function
+
+    return register
+
+
+def _single(ctx: Context, node: scm.GraphElement, groups: list[Group], action: Action) -> Plan:
+    name = ctx.event_names[node]
+    return [Event(name, ctx.entity(node.referenceActor), [action], groups)], name
+
+
+def _marker(ctx: Context, node: scm.GraphElement, groups: list[Group], actor: str) -> Plan:
+    name = ctx.event_names[node]
+    return [Event(name, actor, [ctx.marker_action(name, name)], groups)], name
+
+
+def _finish_marker(
+    ctx: Context, node: scm.ActionNode, suffix: str, groups: list[Group], extra: Condition
+) -> Event:
+    """A marker event of `node` that fires once it is activated and `extra` holds."""
+    name = ctx.extra_event(node, suffix)
+    return Event(
+        name,
+        ctx.entity(node.referenceActor),
+        [ctx.marker_action(name, name)],
+        with_extra(groups, extra),
+    )
+
+
+@planner("JoinAllFinished", "JoinOneFinished", "InPort", "OutPort")
+def plan_join(ctx: Context, node: scm.GraphElement, groups: list[Group]) -> Plan:
+    """Joins and ports only pass activation on: a marker event in the ego's group."""
+    return _marker(ctx, node, groups, ctx.ego)
+
+
+@planner("Accelerate", "Decelerate", "Stop")
+def plan_speed(ctx: Context, node: scm.ActionNode, groups: list[Group]) -> Plan:
+    """A SpeedAction to the target speed at the given rate; it completes when the speed is reached."""
+    target = "0.0" if isinstance(node, scm.Stop) else ctx.values.text(node, "targetSpeed")
+    data = {"target": target, **speed_dynamics(ctx, node)}
+    return _single(ctx, node, groups, Action(ctx.action_name(ctx.event_names[node]), "speed", data))
+
+
+@planner("KeepVelocity")
+def plan_keep(ctx: Context, node: scm.ActionNode, groups: list[Group]) -> Plan:
+    """Nothing changes the speed: a marker whose activation is delayed by the duration."""
+    duration = ctx.values.text(node, "duration")
+    return _marker(ctx, node, delayed(groups, duration), ctx.entity(node.referenceActor))
+
+
+@planner("DriveDistance")
+def plan_drive_distance(ctx: Context, node: scm.DriveDistance, groups: list[Group]) -> Plan:
+    """A step SpeedAction to the speed; finished once TraveledDistance reaches the distance."""
+    name = ctx.event_names[node]
+    speed = Action(
+        ctx.action_name(name),
+        "speed",
+        {
+            "target": ctx.values.text(node, "speed"),
+            "shape": "step",
+            "dimension": "time",
+            "value": "0.0",
+        },
+    )
+    driven = Condition(
+        f"{name}_driven",
+        "traveled",
+        {"entity": ctx.entity(node.referenceActor), "value": ctx.values.text(node, "distance")},
+    )
+    event = Event(name, ctx.entity(node.referenceActor), [speed], groups)
+    done = _finish_marker(ctx, node, "driven", groups, driven)
+    return [event, done], done.name
+
+
+@planner("Follow", "Approach")
+def plan_distance_keeping(ctx: Context, node: scm.ActionNode, groups: list[Group]) -> Plan:
+    """LongitudinalDistanceAction to the target; Follow keeps it (continuous) and finishes when
+    the gap is first reached, Approach ends when the gap is reached."""
+    name = ctx.event_names[node]
+    follow = isinstance(node, scm.Follow)
+    data = {
+        "target": ctx.entity(node.targetActor),
+        "distance": ctx.values.text(node, "distance"),
+        "continuous": "true" if follow else "false",
+    }
+    event = Event(
+        name,
+        ctx.entity(node.referenceActor),
+        [Action(ctx.action_name(name), "long_distance", data)],
+        groups,
+    )
+    if not follow:
+        return [event], name
+    close = Condition(
+        f"{name}_gap_reached",
+        "relative_distance",
+        {
+            "entity": ctx.entity(node.referenceActor),
+            "target": ctx.entity(node.targetActor),
+            "value": ctx.values.text(node, "distance"),
+            "rule": "lessThan",
+            "type": "longitudinal",
+        },
+    )
+    done = _finish_marker(ctx, node, "gap_reached", groups, close)
+    return [event, done], done.name
+
+
+@planner("LaneChange")
+def plan_lane_change(ctx: Context, node: scm.LaneChange, groups: list[Group]) -> Plan:
+    """LaneChangeAction one lane to the left (+1) or right (-1) of the actor's own lane."""
+    name = ctx.event_names[node]
+    action = _lane_change(ctx, node, name, node.direction.name, ctx.values.text(node, "distance"))
+    return _single(ctx, node, groups, action)
+
+
+def _lane_change(
+    ctx: Context, node: scm.ActionNode, event: str, side: str, distance: str
+) -> Action:
+    # CARLA's parser only reads a distance and moves linearly; esmini shapes it sinusoidally.
+    shape = "linear" if ctx.profile == "carla" else "sinusoidal"
+    data = {
+        "entity": ctx.entity(node.referenceActor),
+        "lanes": "1" if side == "left" else "-1",
+        "shape": shape,
+        "dimension": "distance",
+        "value": distance,
+    }
+    return Action(ctx.action_name(event), "lane_change", data)
+
+
+def arrived(
+    ctx: Context, node: scm.ActionNode, name: str, position: dict, tolerance: str
+) -> Condition:
+    """The reference actor is within `tolerance` of `position` (version-specific element)."""
+    kind = "reach_position" if ctx.traits.reach_position else "distance"
+    data = {"entity": ctx.entity(node.referenceActor), "position": position, "value": tolerance}
+    return Condition(name, kind, data)
+
+
+@planner("TurnLeft", "TurnRight")
+def plan_turn(ctx: Context, node: scm.RoutedManeuver, groups: list[Group]) -> Plan:
+    """AcquirePositionAction to the destination; finished by an arrival marker, because players
+    complete routing actions as soon as the route is set (SPEC §7)."""
+    name = ctx.event_names[node]
+    destination = ctx.position(node.destination)
+    route = Action(ctx.action_name(name), "acquire", {"position": destination})
+    event = Event(name, ctx.entity(node.referenceActor), [route], groups)
+    here = arrived(ctx, node, f"{name}_arrived", destination, ctx.values.text(node, "tolerance"))
+    done = _finish_marker(ctx, node, "arrived", groups, here)
+    return [event, done], done.name
+
+
+@planner("Cross", "FollowTrajectory")
+def plan_trajectory(ctx: Context, node: scm.ActionNode, groups: list[Group]) -> Plan:
+    """FollowTrajectoryAction along a straight polyline from where the actor is (a position
+    relative to itself, frozen at start) through the waypoints; crossings are not routable lanes.
+    Finished by an arrival marker at the last point."""
+    name = ctx.event_names[node]
+    entity = ctx.entity(node.referenceActor)
+    points = [node.destination] if isinstance(node, scm.Cross) else list(node.waypoints)
+    here = {"kind": "relative_object", "entity": entity, "dx": "0.0", "dy": "0.0"}
+    vertices = [here, *(ctx.position(point) for point in points)]
+    data = {"trajectory": ctx.names.claim(f"{name}_path"), "vertices": vertices}
+    event = Event(name, entity, [Action(ctx.action_name(name), "trajectory", data)], groups)
+    end = arrived(ctx, node, f"{name}_arrived", vertices[-1], ctx.values.text(node, "tolerance"))
+    done = _finish_marker(ctx, node, "arrived", groups, end)
+    return [event, done], done.name
+
+
+@planner("Overtake")
+def plan_overtake(ctx: Context, node: scm.Overtake, groups: list[Group]) -> Plan:
+    """Change lane to `side` and speed up; once `gap` metres ahead of the target, change back."""
+    name = ctx.event_names[node]
+    entity = ctx.entity(node.referenceActor)
+    distance = ctx.values.text(node, "laneChangeDistance")
+    side = node.side.name
+    out = [
+        _lane_change(ctx, node, name, side, distance),
+        Action(
+            ctx.action_name(name),
+            "speed",
+            {
+                "target": ctx.values.text(node, "speed"),
+                "shape": "step",
+                "dimension": "time",
+                "value": "0.0",
+            },
+        ),
+    ]
+    back_name = ctx.extra_event(node, "back")
+    ahead_point = {
+        "kind": "relative_object",
+        "entity": ctx.entity(node.targetActor),
+        "dx": ctx.values.text(node, "gap"),
+        "dy": "0.0",
+    }
+    gap = ctx.values.raw(node, "gap")
+    ahead = arrived(ctx, node, f"{back_name}_ahead", ahead_point, repr(max(1.0, gap / 2)))
+    back_groups = [[finished(name, back_name), ahead]]
+    other = "right" if side == "left" else "left"
+    back = Event(
+        back_name, entity, [_lane_change(ctx, node, back_name, other, distance)], back_groups
+    )
+    return [Event(name, entity, out, groups), back], back_name
+
+
+@planner("InLocationRadius")
+def plan_in_location(ctx: Context, node: scm.InLocationRadius, groups: list[Group]) -> Plan:
+    """A marker that fires once activated and the actor is within the radius of the position."""
+    name = ctx.event_names[node]
+    inside = arrived(
+        ctx, node, f"{name}_inside", ctx.position(node.position), ctx.values.text(node, "radius")
+    )
+    return _marker(ctx, node, with_extra(groups, inside), ctx.entity(node.referenceActor))
+
+
+@planner("InVehicleRadius")
+def plan_in_vehicle(ctx: Context, node: scm.InVehicleRadius, groups: list[Group]) -> Plan:
+    """A marker on RelativeDistanceCondition (cartesian, not freespace) to the target actor."""
+    name = ctx.event_names[node]
+    close = Condition(
+        f"{name}_close",
+        "relative_distance",
+        {
+            "entity": ctx.entity(node.referenceActor),
+            "target": ctx.entity(node.targetActor),
+            "value": ctx.values.text(node, "radius"),
+            "rule": "lessThan",
+            "type": ctx.traits.euclidian,
+        },
+    )
+    return _marker(ctx, node, with_extra(groups, close), ctx.entity(node.referenceActor))
+
+
+@planner("TimeElapsed")
+def plan_time_elapsed(ctx: Context, node: scm.TimeElapsed, groups: list[Group]) -> Plan:
+    """A marker whose activation conditions carry the duration as their delay."""
+    duration = ctx.values.text(node, "duration")
+    return _marker(ctx, node, delayed(groups, duration), ctx.entity(node.referenceActor))
+
+
+@planner("SpeedCondition")
+def plan_speed_condition(ctx: Context, node: scm.SpeedCondition, groups: list[Group]) -> Plan:
+    """A marker on SpeedCondition."""
+    name = ctx.event_names[node]
+    data = {
+        "entity": ctx.entity(node.referenceActor),
+        "value": ctx.values.text(node, "speed"),
+        "rule": node.rule.name,
+    }
+    check = Condition(f"{name}_speed", "speed", data)
+    return _marker(ctx, node, with_extra(groups, check), ctx.entity(node.referenceActor))
+
+
+@planner("TimeToCollision")
+def plan_ttc(ctx: Context, node: scm.TimeToCollision, groups: list[Group]) -> Plan:
+    """A marker on TimeToCollisionCondition towards the target actor."""
+    name = ctx.event_names[node]
+    data = {
+        "entity": ctx.entity(node.referenceActor),
+        "target": ctx.entity(node.targetActor),
+        "value": ctx.values.text(node, "time"),
+        "rule": node.rule.name,
+    }
+    check = Condition(f"{name}_ttc", "ttc", data)
+    return _marker(ctx, node, with_extra(groups, check), ctx.entity(node.referenceActor))

@@ -1,0 +1,89 @@
+"""What every mapping function shares while one scenario is exported: names, values, version."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+from pyecore.ecore import EObject
+
+import scemlmodel as scm
+
+from .names import SEPARATOR, NameTable, sanitize
+from .triggers import Group
+from .values import Values
+from .versions import Traits
+
+
+@dataclass(frozen=True)
+class Action:
+    """One OpenSCENARIO Action; `kind` selects the template branch, `data` fills it."""
+
+    name: str
+    kind: str
+    data: dict[str, Any] = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class Event:
+    """One Event in its own Maneuver, in the ManeuverGroup of `actor`."""
+
+    name: str
+    actor: str
+    actions: list[Action]
+    groups: list[Group]
+
+
+@dataclass
+class Context:
+    """Export state for one scenario: traits, profile, values and the name table."""
+
+    traits: Traits
+    profile: str
+    values: Values
+    names: NameTable
+    ego: str
+    marker: str
+    entity_names: dict[EObject, str] = field(default_factory=dict)
+    event_names: dict[EObject, str] = field(default_factory=dict)
+
+    def entity(self, actor: scm.Participant | None) -> str:
+        """The ScenarioObject name of an actor."""
+        return self.entity_names[actor]
+
+    def extra_event(self, node: EObject, suffix: str) -> str:
+        """A further event of `node`, e.g. `TurnRight_1__arrived`."""
+        return self.names.claim(f"{self.event_names[node]}{SEPARATOR}{suffix}")
+
+    def action_name(self, event: str) -> str:
+        """The name of the (single) action of an event."""
+        return self.names.claim(f"{event}{SEPARATOR}action")
+
+    def position(self, position: scm.Position) -> dict[str, Any]:
+        """A Position as a small dict the `position` macro renders."""
+        text = self.values.text
+        if isinstance(position, scm.LanePosition):
+            return {
+                "kind": "lane",
+                "roadId": str(position.roadId),
+                "laneId": str(position.laneId),
+                "s": text(position, "s"),
+                "offset": text(position, "offset"),
+            }
+        return {
+            "kind": "world",
+            "x": text(position, "x"),
+            "y": text(position, "y"),
+            "z": text(position, "z"),
+            "h": text(position, "h"),
+        }
+
+    def marker_action(self, event: str, value: str) -> Action:
+        """The harmless set action a marker event performs."""
+        kind = "variable_set" if self.traits.variables else "parameter_set"
+        return Action(self.action_name(event), kind, {"ref": self.marker, "value": value})
+
+
+def node_name(node: EObject) -> str:
+    """The sanitized base name of a node's events."""
+    return sanitize(getattr(node, "name", None), fallback=node.eClass.name)

@@ -1,0 +1,101 @@
+"""Entities and Init: inline Vehicle/Pedestrian objects, start positions and initial speeds."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import scemlmodel as scm
+
+from .context import Context
+from .values import number
+
+#: OpenSCENARIO vehicleCategory of each SceML vehicle kind.
+VEHICLE_CATEGORIES = {
+    "Car": "car",
+    "Van": "van",
+    "Truck": "truck",
+    "Bus": "bus",
+    "Motorcycle": "motorbike",
+    "Bicycle": "bicycle",
+}
+#: Performance (maxSpeed m/s, maxAcceleration m/s2, maxDeceleration m/s2) per category.
+PERFORMANCE = {
+    "car": (69.444, 10.0, 10.0),
+    "van": (50.0, 6.0, 9.0),
+    "truck": (33.333, 3.0, 8.0),
+    "bus": (27.778, 3.0, 8.0),
+    "motorbike": (55.556, 8.0, 10.0),
+    "bicycle": (11.111, 2.0, 5.0),
+}
+PEDESTRIAN_MASS = "80.0"
+
+
+def entity(ctx: Context, actor: scm.Actor) -> dict[str, Any]:
+    """The ScenarioObject of an actor: an inline Vehicle or Pedestrian."""
+    name = ctx.entity(actor)
+    kind = actor.eClass.name
+    length, width, height = (ctx.values.raw(actor, f) for f in ("length", "width", "height"))
+    bbox = {
+        "x": number(0.0 if kind == "Pedestrian" else round(length * 0.3, 6)),
+        "z": number(round(height / 2, 6)),
+        "length": ctx.values.text(actor, "length"),
+        "width": ctx.values.text(actor, "width"),
+        "height": ctx.values.text(actor, "height"),
+    }
+    properties = [("type", "ego_vehicle")] if actor.isEgo else []
+    if kind == "Pedestrian":
+        model = actor.model or "pedestrian"
+        return {
+            "name": name,
+            "object": "pedestrian",
+            "model": model,
+            "model_name": model,
+            "mass": PEDESTRIAN_MASS,
+            "bbox": bbox,
+            "properties": properties,
+        }
+    category = VEHICLE_CATEGORIES[kind]
+    max_speed, max_acceleration, max_deceleration = PERFORMANCE[category]
+    wheel = (
+        0.7
+        if category in ("bicycle", "motorbike")
+        else 0.8
+        if category in ("truck", "bus")
+        else 0.6
+    )
+    track = 0.0 if category in ("bicycle", "motorbike") else round(width * 0.85, 6)
+    return {
+        "name": name,
+        "object": "vehicle",
+        # CARLA takes the blueprint from the Vehicle name; others read it as a label.
+        "model_name": actor.model or category,
+        "category": category,
+        "bbox": bbox,
+        "performance": {
+            "maxSpeed": number(max_speed),
+            "maxAcceleration": number(max_acceleration),
+            "maxDeceleration": number(max_deceleration),
+        },
+        "front_axle": _axle(0.5, wheel, track, round(length * 0.6, 6)),
+        "rear_axle": _axle(0.0, wheel, track, 0.0),
+        "properties": properties,
+    }
+
+
+def _axle(steering: float, wheel: float, track: float, position_x: float) -> dict[str, str]:
+    return {
+        "maxSteering": number(steering),
+        "wheelDiameter": number(wheel),
+        "trackWidth": number(track),
+        "positionX": number(position_x),
+        "positionZ": number(wheel / 2),
+    }
+
+
+def init_actions(ctx: Context, actor: scm.Actor) -> dict[str, Any]:
+    """The Private init block of an actor: teleport to the start, then its initial speed."""
+    return {
+        "entity": ctx.entity(actor),
+        "position": ctx.position(actor.startPosition),
+        "speed": ctx.values.text(actor, "initialSpeed"),
+    }

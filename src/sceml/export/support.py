@@ -1,0 +1,43 @@
+"""Which node kinds each OpenSCENARIO version and profile can express, and why not when not."""
+
+from __future__ import annotations
+
+from .actions import PLANNERS
+from .versions import VERSIONS
+
+PROFILES = ("generic", "carla")
+CARLA_VERSION = "1.0"
+
+#: Node kinds that never become events: the root starts the act, the end feeds the StopTrigger,
+#: module uses are flattened away before mapping.
+STRUCTURAL = ("RootNode", "EndNode", "ModuleUse")
+
+#: Kinds scenario_runner cannot run faithfully, with the reason (see docs/openscenario-mapping.md).
+CARLA_UNSUPPORTED = {
+    "TimeElapsed": "scenario_runner starts a condition delay when the act starts, not when the "
+    "node is activated, so a duration after activation cannot be expressed",
+    "KeepVelocity": "its duration is a condition delay, which scenario_runner starts when the act "
+    "starts, not when the node is activated",
+}
+
+
+def unsupported_reason(kind_name: str, version: str, profile: str = "generic") -> str | None:
+    """Why `kind_name` cannot be exported to `version` under `profile`; None when it can."""
+    if profile not in PROFILES:
+        return f"unknown export profile {profile!r}; use one of {', '.join(PROFILES)}"
+    if version not in VERSIONS:
+        return f"OpenSCENARIO {version} is not supported; use one of {', '.join(VERSIONS)}"
+    if profile == "carla" and version != CARLA_VERSION:
+        return f"the carla profile writes OpenSCENARIO {CARLA_VERSION} only (scenario_runner reads no other)"
+    if kind_name in STRUCTURAL:
+        return None
+    if kind_name not in PLANNERS:
+        return f"{kind_name} has no OpenSCENARIO mapping"
+    if profile == "carla" and kind_name in CARLA_UNSUPPORTED:
+        return f"{kind_name} is not supported by the carla profile: {CARLA_UNSUPPORTED[kind_name]}"
+    return None
+
+
+def supported_kinds(version: str, profile: str = "generic") -> tuple[str, ...]:
+    """The action, join and port kinds that map for a version and profile."""
+    return tuple(k for k in sorted(PLANNERS) if unsupported_reason(k, version, profile) is None)

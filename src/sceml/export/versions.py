@@ -1,0 +1,55 @@
+"""What differs between OpenSCENARIO 1.0, 1.1, 1.2 and 1.3, as flags the view model reads."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+VERSIONS = ("1.0", "1.1", "1.2", "1.3")
+
+
+@dataclass(frozen=True)
+class Traits:
+    """Per-version choices; templates only ever see these flags, never a version number test."""
+
+    version: str
+    rev_minor: int
+    #: Event priority that stops other events of the same maneuver (only ever one event there).
+    priority: str
+    #: ParameterSetAction (up to 1.1) or VariableSetAction (1.2 on) for marker events.
+    variables: bool
+    #: ReachPositionCondition (deprecated from 1.2) or DistanceCondition.
+    reach_position: bool
+    #: 1.0 requires `alongRoute` on DistanceCondition and TimeToCollisionCondition.
+    along_route: bool
+    #: 1.0 names it cartesianDistance; 1.1 deprecates that for euclidianDistance.
+    euclidian: str
+    #: 1.0 wants the Trajectory inline; 1.1 wraps it in TrajectoryRef.
+    trajectory_ref: bool
+    #: 1.2 replaces cloudState with fractionalCloudCover and Sun intensity with illuminance.
+    cloud_cover: bool
+    #: 1.1 replaces Precipitation intensity with precipitationIntensity.
+    precipitation_intensity: bool
+    #: 1.0 requires the Pedestrian `model` attribute.
+    pedestrian_model_required: bool
+
+
+def traits(version: str) -> Traits:
+    """The traits of a supported version; ValueError for any other."""
+    if version not in VERSIONS:
+        raise ValueError(
+            f"OpenSCENARIO {version!r} is not supported; use one of {', '.join(VERSIONS)}"
+        )
+    minor = int(version.split(".")[1])
+    return Traits(
+        version=version,
+        rev_minor=minor,
+        priority="override" if minor >= 2 else "overwrite",
+        variables=minor >= 2,
+        reach_position=minor <= 1,
+        along_route=minor == 0,
+        euclidian="cartesianDistance" if minor == 0 else "euclidianDistance",
+        trajectory_ref=minor >= 1,
+        cloud_cover=minor >= 2,
+        precipitation_intensity=minor >= 1,
+        pedestrian_model_required=minor == 0,
+    )

@@ -1,0 +1,174 @@
+"""The view model: every decision about the OpenSCENARIO document, made before any template runs.
+
+`build_view` turns a flattened, concrete scenario into plain data (dicts, lists, small
+dataclasses) that the templates only loop over: names, the trigger structure of SPEC §7,
+version differences (via `versions.Traits`) and profile differences.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+from typing import Any
+
+import scemlmodel as scm
+
+from .. import graph
+from ..errors import SceMLError
+from .actions import PLANNERS
+from .context import Context, Event, node_name
+from .entities import entity, init_actions
+from .environment import environment
+from .names import NameTable, sanitize
+from .triggers import Group, activation, simulation_started, simulation_time_over
+from .values import ParameterHook, Values
+from .versions import traits
+
+
+class MappingError(SceMLError):
+    """A node cannot be written in the chosen version and profile."""
+
+
+@dataclass
+class Options:
+    """What the caller decided: version, profile, header date, map text, parameter hook."""
+
+    version: str = "1.3"
+    profile: str = "generic"
+    date: str = "1970-01-01T00:00:00"
+    logic_file: str = ""
+    parameters: ParameterHook | None = None
+
+
+@dataclass
+class View:
+    """Everything the main template needs."""
+
+    traits: Any
+    header: dict[str, str]
+    marker: dict[str, str]
+    parameters: list[Any]
+    logic_file: str
+    entities: list[dict[str, Any]]
+    environment: dict[str, Any]
+    privates: list[dict[str, Any]]
+    story: str
+    act: str
+    act_start: list[Group]
+    groups: list[dict[str, Any]]
+    stop: list[Group]
+    #: node name -> (first event, finish event); not rendered, for callers and tests.
+    events_of: dict[str, tuple[str, str]] = field(default_factory=dict)
+
+
+def build_view(scenario: scm.Scenario, options: Options) -> View:
+    """The view model of a flattened concrete scenario."""
+    root, end = graph.root_node(scenario), graph.end_node(scenario)
+    if root is None or end is None:
+        raise MappingError("the scenario needs a root node and an end node")
+    names = NameTable()
+    actors = list(root.actors)
+    ctx = Context(
+        traits=traits(options.version),
+        profile=options.profile,
+        values=Values(options.parameters),
+        names=names,
+        ego="",
+        marker="",
+    )
+    for actor in actors:
+        ctx.entity_names[actor] = names.claim(sanitize(actor.name, "actor"))
+    ego = next((a for a in actors if a.isEgo), actors[0] if actors else None)
+    if ego is None:
+        raise MappingError("the scenario has no actors")
+    ctx.ego = ctx.entity(ego)
+    order, cyclic = graph.topological_order(scenario)
+    if cyclic:
+        raise MappingError("the graph has a cycle", element=sorted(n.name for n in cyclic)[0])
+    nodes = [n for n in order if not isinstance(n, scm.RootNode | scm.EndNode)]
+    for node in nodes:
+        ctx.event_names[node] = names.claim(node_name(node))
+    ctx.marker = names.claim("SceML_marker")
+    events, finishes = _plan(ctx, nodes)
+    story = names.claim(sanitize(root.scenarioName, "Scenario"))
+    act = names.claim(f"{story}_Act")
+    groups = _groups(ctx, actors, events)
+    stop = activation([finishes.get(p) for p in graph.predecessors(end)], _is_one(end), "End")
+    max_duration = ctx.values.text(root, "maxDuration")
+    stop = _unique(names, [*stop, [simulation_time_over(max_duration, "End")]])
+    env = environment(ctx, root, options.date)
+    entities = [entity(ctx, actor) for actor in actors]
+    privates = [init_actions(ctx, actor) for actor in actors]
+    # Declarations are complete only now that every value has been written.
+    return View(
+        traits=ctx.traits,
+        header=_header(root, options.date),
+        marker={"name": ctx.marker, "type": "string", "value": "none"},
+        parameters=sorted(ctx.values.declarations.values(), key=lambda spec: spec.name),
+        logic_file=options.logic_file,
+        entities=entities,
+        environment=env,
+        privates=privates,
+        story=story,
+        act=act,
+        act_start=_unique(names, [[simulation_started(act)]]),
+        groups=groups,
+        stop=stop,
+        events_of={str(node.name): (ctx.event_names[node], finishes[node]) for node in nodes},
+    )
+
+
+def _is_one(node: scm.GraphElement) -> bool:
+    if isinstance(node, scm.EndNode):
+        return node.policy is scm.JoinPolicy.joinOne
+    return isinstance(node, scm.JoinOneFinished)
+
+
+def _plan(ctx: Context, nodes: list[scm.GraphElement]) -> tuple[list[Event], dict[Any, str]]:
+    """Events of every node in topological order, and each node's finish event."""
+    finishes: dict[Any, str] = {}
+    events: list[Event] = []
+    for node in nodes:
+        kind = node.eClass.name
+        planner = PLANNERS.get(kind)
+        if planner is None:
+            raise MappingError(f"{kind} has no OpenSCENARIO mapping", element=str(node.name))
+        before = [finishes.get(p) for p in graph.predecessors(node)]
+        node_events, finish = planner(
+            ctx, node, activation(before, _is_one(node), ctx.event_names[node])
+        )
+        events.extend(node_events)
+        finishes[node] = finish
+    return events, finishes
+
+
+def _groups(ctx: Context, actors: list[scm.Actor], events: list[Event]) -> list[dict[str, Any]]:
+    """One ManeuverGroup per actor, each event in a Maneuver of its own."""
+    groups = []
+    for actor in actors:
+        entity_name = ctx.entity(actor)
+        maneuvers = [
+            {
+                "name": ctx.names.claim(f"{event.name}__maneuver"),
+                "event": replace(event, groups=_unique(ctx.names, event.groups)),
+            }
+            for event in events
+            if event.actor == entity_name
+        ]
+        groups.append(
+            {
+                "name": ctx.names.claim(f"{entity_name}_Group"),
+                "actor": entity_name,
+                "maneuvers": maneuvers,
+            }
+        )
+    return groups
+
+
+def _unique(names: NameTable, groups: list[Group]) -> list[Group]:
+    """The groups with every condition name made unique in the document."""
+    return [[replace(c, name=names.claim(c.name)) for c in group] for group in groups]
+
+
+def _header(root: scm.RootNode, date: str) -> dict[str, str]:
+    description = root.description or f"SceML scenario {root.scenarioName or ''}".strip()
+    return {"date": date, "description": description, "author": root.author or "SceML"}

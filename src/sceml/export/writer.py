@@ -1,0 +1,185 @@
+"""Export entry points: refuse what cannot be exported, map, render, validate, write atomically."""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass
+from datetime import datetime
+from pathlib import Path, PurePosixPath
+
+from lxml import etree
+
+import scemlmodel as scm
+
+from .. import graph, schema
+from ..diagnostics import Diagnostic
+from ..errors import SceMLError
+from ..io import write_atomically
+from ..modules.flatten import flatten
+from . import checks
+from .render import render_tree, serialise
+from .support import unsupported_reason
+from .values import ParameterHook
+from .viewmodel import MappingError, Options, build_view
+
+#: FileHeader date when neither the caller nor the model gives one: output stays deterministic.
+EPOCH = "1970-01-01T00:00:00"
+
+
+class ExportError(SceMLError):
+    """The scenario cannot be exported; `diagnostics` says why, element by element."""
+
+    exit_code = 1
+
+    def __init__(
+        self, message: str, diagnostics: list[Diagnostic] | None = None, **where: object
+    ) -> None:
+        super().__init__(message, **where)  # type: ignore[arg-type]
+        self.diagnostics = list(diagnostics or [])
+
+
+class InvalidOutputError(SceMLError):
+    """Internal error: the generated document fails its XSD; nothing is written."""
+
+    exit_code = 1
+
+
+@dataclass(frozen=True)
+class XoscDocument:
+    """An exported document: the bytes to write and the validated lxml tree they came from."""
+
+    data: bytes
+    tree: etree._ElementTree
+    #: SceML node name -> (its first event, its finish event).
+    events_of: dict[str, tuple[str, str]]
+
+
+def build_xosc(
+    scenario: scm.Scenario,
+    *,
+    version: str = "1.3",
+    profile: str = "generic",
+    date: str | None = None,
+    source_path: str | Path | None = None,
+    map_path: str | Path | None = None,
+    output_path: str | Path | None = None,
+    parameters: ParameterHook | None = None,
+    town: str | None = None,
+    check_model: bool = True,
+) -> XoscDocument:
+    """Map a concrete scenario to OpenSCENARIO bytes and tree, validated against the XSD.
+
+    Raises ExportError (with diagnostics) for anything that cannot be exported and
+    InvalidOutputError if the result fails the schema (a bug in the mapping).
+    """
+    request = unsupported_reason("RootNode", version, profile)
+    if request is not None:
+        raise ExportError(request, [checks.error(checks.PROFILE, request)], file=source_path)
+    _refuse(checks.level_problems(scenario), source_path)
+    flat = (
+        flatten(scenario) if any(isinstance(n, scm.ModuleUse) for n in scenario.nodes) else scenario
+    )
+    if check_model:
+        _refuse(checks.model_problems(scenario), source_path)
+    _refuse(list(checks.expressibility_problems(flat, version, profile)), source_path)
+    root = graph.root_node(flat)
+    assert root is not None  # level_problems refused scenarios without one
+    options = Options(
+        version=version,
+        profile=profile,
+        date=_header_date(date, root, source_path),
+        logic_file=logic_file(root.map, source_path, map_path, output_path, profile, town),
+        parameters=parameters,
+    )
+    try:
+        view = build_view(flat, options)
+    except (ValueError, MappingError) as problem:
+        message = problem.message if isinstance(problem, SceMLError) else str(problem)
+        raise ExportError(f"cannot map the scenario: {message}", file=source_path) from None
+    tree = render_tree(view)
+    issues = schema.validate_tree(tree, version)
+    if issues:
+        details = "; ".join(str(issue) for issue in issues[:5])
+        raise InvalidOutputError(
+            f"internal error: the OpenSCENARIO {version} output fails its XSD: {details}"
+        )
+    return XoscDocument(serialise(tree), tree, view.events_of)
+
+
+def export(scenario: scm.Scenario, **options: object) -> etree._ElementTree:
+    """The exported document as a validated lxml tree (see `build_xosc` for the options)."""
+    return build_xosc(scenario, **options).tree  # type: ignore[arg-type]
+
+
+def export_to_file(scenario: scm.Scenario, path: str | Path, **options: object) -> Path:
+    """Export and write atomically; a refused or failed export leaves any existing file as it was."""
+    path = Path(path)
+    options.setdefault("output_path", path)
+    document = build_xosc(scenario, **options)  # type: ignore[arg-type]
+    write_atomically(path, document.data)
+    return path
+
+
+def _refuse(problems: list[Diagnostic], source_path: str | Path | None) -> None:
+    if not problems:
+        return
+    first = problems[0]
+    more = f" (and {len(problems) - 1} more)" if len(problems) > 1 else ""
+    raise ExportError(
+        f"cannot export: [{first.code}] {first.message}{more}",
+        problems,
+        file=source_path,
+        element=first.path,
+    )
+
+
+def _header_date(date: str | None, root: scm.RootNode, source_path: str | Path | None) -> str:
+    """The FileHeader date: the option, else the root's date, else the epoch; always seconds."""
+    given = date or root.date or EPOCH
+    try:
+        parsed = datetime.fromisoformat(given)
+    except ValueError:
+        raise ExportError(f"date {given!r} is not an ISO 8601 date", file=source_path) from None
+    return parsed.isoformat(timespec="seconds")
+
+
+def is_town_name(map_text: str) -> bool:
+    """A simulator town (e.g. `Town03`) rather than an OpenDRIVE file."""
+    return not map_text.lower().endswith(".xodr") and "/" not in map_text and "\\" not in map_text
+
+
+def logic_file(
+    map_text: str | None,
+    source_path: str | Path | None,
+    map_path: str | Path | None,
+    output_path: str | Path | None,
+    profile: str,
+    town: str | None,
+) -> str:
+    """The LogicFile filepath: a town name as given, or the map file relative to the output.
+
+    The model's map is relative to the scenario file (`source_path`); `map_path` overrides it
+    (relative to the working directory). Without an output path the file is written as the
+    model gives it.
+    """
+    if town:
+        return town
+    if map_path is not None:
+        target: Path | None = Path(map_path).resolve()
+    elif map_text and not is_town_name(map_text) and source_path is not None:
+        target = (Path(source_path).resolve().parent / map_text).resolve()
+    else:
+        target = None
+    if profile == "carla" and (target is not None or not map_text or not is_town_name(map_text)):
+        raise ExportError(
+            f"the carla profile needs a CARLA town as map (e.g. Town03), not {str(map_text)!r}; "
+            "give one with --town",
+            [checks.error(checks.PROFILE, "the carla profile needs a CARLA town name as map")],
+            file=source_path,
+        )
+    if target is None:
+        return map_text or ""
+    if output_path is None:
+        return target.as_posix() if map_path is not None else str(map_text)
+    relative = os.path.relpath(target, Path(output_path).resolve().parent)
+    return PurePosixPath(*Path(relative).parts).as_posix()

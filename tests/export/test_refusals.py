@@ -1,0 +1,146 @@
+"""Refusals: wrong level, invalid model, inexpressible kinds and profile limits; nothing written."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+import scemlmodel as scm
+from sceml import io
+from sceml.build import ScenarioBuilder, lane, world
+from sceml.export import (
+    ExportError,
+    InvalidOutputError,
+    export,
+    export_to_file,
+    unsupported_reason,
+    writer,
+)
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+
+
+def small(kind: str = "Accelerate", **parameters: object) -> scm.Scenario:
+    """A concrete one-node scenario of the ego and a second car."""
+    b = ScenarioBuilder("Small", map="map.xodr", level="concrete", date="2026-01-01T00:00:00")
+    ego = b.actor("Car", "ego", ego=True, start=lane("3", 1, 30.0), speed=5.0)
+    other = b.actor("Car", "other", start=lane("1", 1, 30.0), speed=5.0)
+    needs_target = kind in ("Follow", "Approach", "InVehicleRadius", "TimeToCollision", "Overtake")
+    node = b.add(kind, ego, target=other if needs_target else None, **parameters)
+    b.chain(b.root, node, b.end)
+    return b.scenario
+
+
+def codes(error: ExportError) -> set[str]:
+    return {diagnostic.code for diagnostic in error.diagnostics}
+
+
+@pytest.mark.parametrize("level", ["functional", "logical"])
+def test_functional_and_logical_examples_are_refused_naming_the_level(level: str) -> None:
+    scenario = io.load_scenario(EXAMPLES / f"uis1-{level}.xmi").root
+    with pytest.raises(ExportError, match=f"a {level} scenario cannot be exported") as caught:
+        export(scenario)
+    assert codes(caught.value) == {"SCEML-X001"}
+
+
+def test_invalid_model_is_refused_with_validation_diagnostics() -> None:
+    scenario = small("Accelerate", targetSpeed=8.0, rate=30.0)  # above any car's acceleration
+    with pytest.raises(ExportError) as caught:
+        export(scenario)
+    assert any(code.startswith("SCEML-L") for code in codes(caught.value))
+
+
+@pytest.mark.parametrize("kind", ["TimeElapsed", "KeepVelocity"])
+def test_carla_refuses_delays_it_cannot_start_at_activation(kind: str) -> None:
+    parameters = {"duration": 2.0}
+    scenario = small(kind, **parameters)
+    with pytest.raises(
+        ExportError, match=f"{kind}_1: {kind} is not supported by the carla"
+    ) as caught:
+        export(scenario, version="1.0", profile="carla", town="Town03")
+    assert codes(caught.value) == {"SCEML-X002"}
+    assert "OpenSCENARIO 1.0, carla profile" in caught.value.diagnostics[0].message
+    export(scenario, version="1.0")  # the generic profile can express it
+
+
+@pytest.mark.parametrize("version", ["1.1", "1.2", "1.3"])
+def test_carla_refuses_versions_other_than_1_0(version: str) -> None:
+    with pytest.raises(ExportError, match="carla profile writes OpenSCENARIO 1.0 only"):
+        export(small(targetSpeed=8.0), version=version, profile="carla", town="Town03")
+
+
+def test_carla_needs_a_town() -> None:
+    with pytest.raises(ExportError, match="needs a CARLA town"):
+        export(small(targetSpeed=8.0), version="1.0", profile="carla")
+    tree = export(small(targetSpeed=8.0), version="1.0", profile="carla", town="Town03")
+    assert tree.find("RoadNetwork/LogicFile").get("filepath") == "Town03"
+
+
+def test_unknown_version_is_refused() -> None:
+    with pytest.raises(ExportError, match="OpenSCENARIO 2.0 is not supported"):
+        export(small(targetSpeed=8.0), version="2.0")
+
+
+def test_missing_destination_is_refused_naming_the_node() -> None:
+    scenario = small("TurnRight")
+    with pytest.raises(ExportError, match="TurnRight_1 has no destination"):
+        export(scenario, check_model=False)
+
+
+def test_every_kind_maps_in_every_version_of_the_generic_profile() -> None:
+    from sceml import catalog
+
+    for cls in catalog.action_node_kinds():
+        for version in ("1.0", "1.1", "1.2", "1.3"):
+            assert unsupported_reason(cls.__name__, version) is None, (cls.__name__, version)
+    assert unsupported_reason("Teleport", "1.3") == "Teleport has no OpenSCENARIO mapping"
+
+
+def test_refused_export_keeps_the_existing_file(tmp_path: Path) -> None:
+    target = tmp_path / "out.xosc"
+    target.write_text("good", encoding="utf-8")
+    logical = io.load_scenario(EXAMPLES / "uis2-logical.xmi").root
+    with pytest.raises(ExportError):
+        export_to_file(logical, target)
+    assert target.read_text(encoding="utf-8") == "good"
+
+
+def test_schema_invalid_output_is_an_internal_error_and_not_written(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    real = writer.render_tree
+
+    def broken(view: object) -> object:
+        tree = real(view)  # type: ignore[arg-type]
+        tree.getroot().remove(tree.getroot().find("Storyboard"))  # required by every XSD
+        return tree
+
+    monkeypatch.setattr(writer, "render_tree", broken)
+    target = tmp_path / "out.xosc"
+    with pytest.raises(InvalidOutputError, match="fails its XSD"):
+        export_to_file(small(targetSpeed=8.0), target)
+    assert not target.exists()
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_world_positions_and_every_maneuver_export(tmp_path: Path) -> None:
+    b = ScenarioBuilder("All", map="map.xodr", level="concrete")
+    ego = b.actor("Car", "ego", ego=True, start=world(1.75, -39.0, h=1.570796), speed=5.0)
+    car = b.actor("Car", "car", start=lane("1", 1, 30.0))
+    walker = b.actor("Pedestrian", "walker", start=world(-10.0, -4.5, h=1.570796))
+    chain = [
+        b.add("Follow", ego, target=car),
+        b.add("Overtake", ego, target=car, speed=12.0),
+        b.add("LaneChange", ego, direction="right"),
+        b.add("FollowTrajectory", ego, waypoints=[world(30, -1.75), world(34, -1.75)]),
+        b.add("Approach", ego, target=car),
+        b.add("SpeedCondition", ego, speed=3.0, rule="lessThan"),
+        b.add("TimeToCollision", ego, target=walker),
+        b.add("Stop", ego),
+    ]
+    b.chain(b.root, *chain, b.end)
+    for version in ("1.0", "1.3"):
+        tree = export(b.scenario, version=version)
+        names = [event.get("name") for event in tree.iter("Event")]
+        assert "Overtake_1__back" in names and "Follow_1__gap_reached" in names
