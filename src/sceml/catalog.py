@@ -160,5 +160,12 @@ def actor_kinds() -> tuple[type, ...]:
 
 def is_kind_of(obj_or_class: EObject | str, kind_name: str) -> bool:
     """Whether a metaclass (by object or name) is `kind_name` or one of its subclasses."""
-    eclass = _ecore_classes()[class_name(obj_or_class)]
+    return _is_kind_of(class_name(obj_or_class), kind_name)
+
+
+@cache
+def _is_kind_of(name: str, kind_name: str) -> bool:
+    # Cached by name: pyecore recomputes eAllSuperTypes on every call, and validation asks this
+    # for every node of every sample in a batch.
+    eclass = _ecore_classes()[name]
     return eclass.name == kind_name or kind_name in {s.name for s in eclass.eAllSuperTypes()}

@@ -5,13 +5,19 @@ from __future__ import annotations
 import click
 
 from .. import __version__
+from .check_xosc import check_xosc
 from .common import SceMLGroup
+from .concretize import concretize
 from .dev import dev
+from .export import export
+from .export_logical import export_distribution_command
 from .flatten import flatten
 from .info import info
 from .module import module
+from .promote import promote
 from .render import render
 from .report import report
+from .sample import sample
 
 
 @click.group(cls=SceMLGroup, context_settings={"help_option_names": ["-h", "--help"]})
@@ -27,6 +33,12 @@ def cli() -> None:
 cli.add_command(info)
 cli.add_command(render)
 cli.add_command(report)
+cli.add_command(export)
+cli.add_command(check_xosc)
+cli.add_command(concretize)
+cli.add_command(promote)
+cli.add_command(sample)
+cli.add_command(export_distribution_command)
 cli.add_command(module)
 cli.add_command(flatten)
 cli.add_command(dev)

@@ -1,0 +1,257 @@
+"""Batch export benchmark (issue 6): `sceml sample` vs scenariogeneration's ScenarioGenerator.
+
+    .venv/bin/python benchmarks/batch_export.py [--n 10000] [--workers W] [--keep DIR]
+
+Three figures, all on this machine in one run:
+
+1. `sceml sample examples/uis2-logical.xmi --strategy random --n N --format xosc`: N concrete
+   UIS2 scenarios, each flattened, checked (parameter and plausibility rules), exported, XSD
+   validated and written atomically. Whole process, run as a subprocess and timed from outside.
+2. scenariogeneration 0.16.7's ScenarioGenerator writing an N-file cartesian sweep of a
+   hand-written UIS2-like scenario (3 entities, init, 12 events with conditions, like our UIS2
+   export), without validation. Whole process, also a subprocess. Benchmark-only dependency.
+3. The floor: lxml serialise + XSD validate alone on the documents of run 1 (parsed beforehand,
+   not timed), in one process; divided by the worker count for the same cores as run 1.
+
+Targets: run 1 at least 2x run 2 in files/s, and within 1.5x of the floor.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import subprocess
+import sys
+import tempfile
+import textwrap
+import time
+from pathlib import Path
+
+from lxml import etree
+
+REPO = Path(__file__).resolve().parent.parent
+LOGICAL = REPO / "examples" / "uis2-logical.xmi"
+
+SCENARIOGENERATION_SCRIPT = textwrap.dedent(
+    """
+    import sys
+    from scenariogeneration import ScenarioGenerator, xosc
+
+    SIZES = [int(s) for s in sys.argv[2].split(",")]
+
+
+    def speed(value):
+        dynamics = xosc.TransitionDynamics(xosc.DynamicsShapes.step, xosc.DynamicsDimension.time, 0)
+        return xosc.AbsoluteSpeedAction(value, dynamics)
+
+
+    def after(name, element):
+        return xosc.ValueTrigger(
+            f"after_{name}", 0, xosc.ConditionEdge.none,
+            xosc.StoryboardElementStateCondition(
+                xosc.StoryboardElementType.event, element, xosc.StoryboardElementState.completeState
+            ),
+        )
+
+
+    def near(name, actor, x, y, radius):
+        return xosc.EntityTrigger(
+            f"near_{name}", 0, xosc.ConditionEdge.none,
+            xosc.DistanceCondition(radius, xosc.Rule.lessThan, xosc.WorldPosition(x, y, 0, 0), freespace=False), actor,
+        )
+
+
+    def marker(name, trigger):
+        event = xosc.Event(name, xosc.Priority.override)
+        event.add_action(f"{name}_action", xosc.VariableSetAction("SceML_marker", name))
+        event.add_trigger(trigger)
+        return event
+
+
+    def maneuver_group(actor, events):
+        maneuver = xosc.Maneuver(f"{actor}_maneuver")
+        for event in events:
+            maneuver.add_event(event)
+        group = xosc.ManeuverGroup(f"{actor}_group")
+        group.add_actor(actor)
+        group.add_maneuver(maneuver)
+        return group
+
+
+    class UIS2(ScenarioGenerator):
+        def __init__(self):
+            super().__init__()
+            values = [[float(i) for i in range(size)] for size in SIZES]
+            names = ["ego_speed", "target_speed", "radius", "car_speed"][: len(values)]
+            self.parameters = dict(zip(names, values))
+            self.naming = "numerical"
+
+        def scenario(self, **p):
+            ego_speed = 3 + p.get("ego_speed", 0.0)
+            target = 5 + p.get("target_speed", 0.0) / 10
+            radius = 3 + p.get("radius", 0.0) / 10
+            car_speed = 8 + p.get("car_speed", 0.0) / 10
+            box = xosc.BoundingBox(1.8, 4.5, 1.5, 1.35, 0, 0.75)
+            front = xosc.Axle(0.5, 0.6, 1.53, 2.7, 0.3)
+            rear = xosc.Axle(0, 0.6, 1.53, 0, 0.3)
+            entities = xosc.Entities()
+            ego = xosc.Vehicle("vehicle.tesla.model3", xosc.VehicleCategory.car, box, front, rear, 69.4, 10, 10)
+            ego.add_property("type", "ego_vehicle")
+            entities.add_scenario_object("ego", ego)
+            car = xosc.Vehicle("vehicle.audi.a2", xosc.VehicleCategory.car, box, front, rear, 69.4, 10, 10)
+            entities.add_scenario_object("car", car)
+            walker_box = xosc.BoundingBox(0.5, 0.5, 1.8, 0, 0, 0.9)
+            walker = xosc.Pedestrian("walker.pedestrian.0001", 80, xosc.PedestrianCategory.pedestrian, walker_box)
+            entities.add_scenario_object("pedestrian", walker)
+
+            init = xosc.Init()
+            for actor, road, lane, s, v in (("ego", "3", 1, 30, ego_speed), ("car", "1", 1, 30, 0), ("pedestrian", "4", 2, 1, 0)):
+                init.add_init_action(actor, xosc.TeleportAction(xosc.LanePosition(s, 0, lane, road)))
+                init.add_init_action(actor, speed(v))
+            init.add_global_action(xosc.EnvironmentAction(xosc.Environment(
+                "env", xosc.TimeOfDay(False, 2026, 1, 1, 12, 0, 0),
+                xosc.Weather(xosc.FractionalCloudCover.zeroOktas,
+                             precipitation=xosc.Precipitation(xosc.PrecipitationType.dry, 0)),
+                xosc.RoadCondition(1.0),
+            )))
+
+            start = xosc.ValueTrigger("start", 0, xosc.ConditionEdge.none, xosc.SimulationTimeCondition(0, xosc.Rule.greaterThan))
+            accelerate = xosc.Event("Accelerate_1", xosc.Priority.override)
+            accelerate.add_action("accelerate", speed(target))
+            accelerate.add_trigger(start)
+            turn = xosc.Event("TurnLeft_1", xosc.Priority.override)
+            turn.add_action("route", xosc.AcquirePositionAction(xosc.WorldPosition(-34, 1.75, 0, 3.14)))
+            turn.add_trigger(after("accelerate", "Accelerate_1"))
+            arrived = marker("TurnLeft_1_arrived", near("turn", "ego", -34, 1.75, 3))
+            reached = marker("InLocationRadius_1", near("sync1", "ego", -34, 1.75, 3))
+            sync2 = marker("InLocationRadius_2", near("sync2", "ego", -0.8, -0.8, radius))
+            drive = xosc.Event("DriveDistance_1", xosc.Priority.override)
+            drive.add_action("drive", speed(car_speed))
+            drive.add_trigger(after("sync2", "InLocationRadius_2"))
+            driven = marker("DriveDistance_1_done", xosc.EntityTrigger(
+                "driven", 0, xosc.ConditionEdge.none, xosc.TraveledDistanceCondition(60), "car"))
+            close = marker("InVehicleRadius_1", xosc.EntityTrigger(
+                "close", 0, xosc.ConditionEdge.none,
+                xosc.RelativeDistanceCondition(15, xosc.Rule.lessThan, xosc.RelativeDistanceType.euclidianDistance, "car", freespace=False),
+                "pedestrian"))
+            walk = xosc.Event("Accelerate_2", xosc.Priority.override)
+            walk.add_action("walk", speed(1.5))
+            walk.add_trigger(after("close", "InVehicleRadius_1"))
+            cross = xosc.Event("Cross_1", xosc.Priority.override)
+            cross.add_action("cross", xosc.AcquirePositionAction(xosc.WorldPosition(-10, 4.5, 0, 1.57)))
+            cross.add_trigger(after("walk", "Accelerate_2"))
+            crossed = marker("Cross_1_arrived", near("crossed", "pedestrian", -10, 4.5, 2))
+            sync4 = marker("InLocationRadius_3", near("sync4", "pedestrian", -10, 4.5, 2))
+
+            act = xosc.Act("UIS2_Act", start)
+            act.add_maneuver_group(maneuver_group("ego", [accelerate, turn, arrived, reached, sync2]))
+            act.add_maneuver_group(maneuver_group("car", [drive, driven]))
+            act.add_maneuver_group(maneuver_group("pedestrian", [close, walk, cross, crossed, sync4]))
+            story = xosc.Story("UIS2")
+            story.add_act(act)
+            stop = xosc.ValueTrigger("stop", 0, xosc.ConditionEdge.none, xosc.SimulationTimeCondition(60, xosc.Rule.greaterThan), "stop")
+            board = xosc.StoryBoard(init, stop)
+            board.add_story(story)
+            declarations = xosc.ParameterDeclarations()
+            road = xosc.RoadNetwork(roadfile="../maps/intersection.xodr")
+            return xosc.Scenario("UIS2", "bench", declarations, entities, board, road, xosc.Catalog(), osc_minor_version=3)
+
+
+    UIS2().generate(sys.argv[1])
+    """
+)
+
+
+def factors(n: int) -> list[int]:
+    """Split n into up to four factors (10s where possible) for a cartesian sweep of n files."""
+    sizes = []
+    while n % 10 == 0 and len(sizes) < 3 and n > 10:
+        sizes.append(10)
+        n //= 10
+    return [n, *sizes]
+
+
+def run_sceml(n: int, workers: int, out: Path) -> float:
+    command = [
+        sys.executable,
+        "-c",
+        "from sceml.cli.sample import sample; sample()",
+        str(LOGICAL),
+        "--strategy",
+        "random",
+        "--n",
+        str(n),
+        "--seed",
+        "1",
+        "--format",
+        "xosc",
+        "--workers",
+        str(workers),
+        "-o",
+        str(out),
+    ]
+    started = time.perf_counter()
+    done = subprocess.run(command, capture_output=True, text=True, check=True)
+    elapsed = time.perf_counter() - started
+    print("  sceml:", done.stdout.strip().splitlines()[-1])
+    return elapsed
+
+
+def run_scenariogeneration(n: int, out: Path) -> tuple[float, int]:
+    script = out.parent / "sg_uis2.py"
+    script.write_text(SCENARIOGENERATION_SCRIPT, encoding="utf-8")
+    sizes = ",".join(str(s) for s in factors(n))
+    started = time.perf_counter()
+    subprocess.run([sys.executable, str(script), str(out), sizes], check=True, capture_output=True)
+    elapsed = time.perf_counter() - started
+    return elapsed, len(list(out.rglob("*.xosc")))
+
+
+def floor(files: list[Path]) -> float:
+    from sceml import schema
+
+    trees = [etree.parse(str(f)) for f in files]
+    version = schema.declared_version(trees[0])
+    schema.is_valid_tree(trees[0], version)  # load the schema outside the timing
+    started = time.perf_counter()
+    for tree in trees:
+        etree.tostring(tree, pretty_print=True, xml_declaration=True, encoding="UTF-8")
+        if not schema.is_valid_tree(tree, version):
+            raise SystemExit("a document of the sceml run fails the XSD")
+    return time.perf_counter() - started
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--n", type=int, default=10_000, help="files per run (default 10000)")
+    parser.add_argument("--workers", type=int, default=os.cpu_count() or 1)
+    parser.add_argument("--keep", type=Path, help="keep the outputs in this folder")
+    args = parser.parse_args()
+    base = args.keep or Path(tempfile.mkdtemp(prefix="sceml-bench-"))
+    base.mkdir(parents=True, exist_ok=True)
+    print(f"N = {args.n}, workers = {args.workers}, output under {base}")
+
+    sceml_time = run_sceml(args.n, args.workers, base / "sceml")
+    sceml_files = sorted((base / "sceml").glob("*.xosc"))
+    sg_time, sg_count = run_scenariogeneration(args.n, base / "scenariogeneration")
+    floor_time = floor(sceml_files)
+
+    sceml_rate = len(sceml_files) / sceml_time
+    sg_rate = sg_count / sg_time
+    floor_rate = len(sceml_files) / floor_time * args.workers
+    print(
+        f"sceml sample (validated), whole process: {len(sceml_files)} files in {sceml_time:.2f} s = {sceml_rate:.0f} files/s"
+    )
+    print(
+        f"scenariogeneration (no validation), whole process: {sg_count} files in {sg_time:.2f} s = {sg_rate:.0f} files/s"
+    )
+    print(f"ratio sceml / scenariogeneration: {sceml_rate / sg_rate:.2f}x (target >= 2)")
+    print(
+        f"floor, lxml serialise + XSD validate only: {floor_time / len(sceml_files) * 1000:.3f} ms/file per core "
+        f"= {floor_rate:.0f} files/s on {args.workers} cores"
+    )
+    print(f"sceml / floor: {floor_rate / sceml_rate:.1f}x slower than the floor (target <= 1.5)")
+
+
+if __name__ == "__main__":
+    main()

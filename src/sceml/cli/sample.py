@@ -1,0 +1,187 @@
+"""`sceml sample LOGICAL --strategy grid|random|lhs ... -o DIR`: many concrete scenarios at once."""
+
+from __future__ import annotations
+
+import os
+import sys
+import time
+from collections import Counter
+from pathlib import Path
+
+import click
+import numpy as np
+
+import scemlmodel as scm
+
+from .. import io
+from ..diagnostics import Severity
+from ..errors import SceMLError
+from ..graph import root_node
+from ..levels.batch import BatchConfig, run_batch
+from ..levels.checks import validate_model
+from ..levels.manifest import SampleRecord, write_manifest
+from ..levels.paths import LevelError
+from ..levels.sampling import STRATEGIES, plan_for, values_at
+from ..levels.space import parameter_space
+from .common import ReportedError
+
+_FORMATS = {"xmi": ("xmi",), "xosc": ("xosc",), "both": ("xosc", "xmi")}
+
+
+@click.command()
+@click.argument("logical", type=click.Path(exists=True, dir_okay=False, path_type=Path))
+@click.option(
+    "--strategy",
+    type=click.Choice(STRATEGIES),
+    default="grid",
+    show_default=True,
+    help="grid: full factorial over ranges with steps and discrete sets (other parameters at "
+    "their nominal value); random: Monte Carlo; lhs: Latin hypercube.",
+)
+@click.option(
+    "--n",
+    "n",
+    type=click.IntRange(min=0),
+    help="Number of samples (required for random and lhs; caps the grid).",
+)
+@click.option("--seed", type=click.IntRange(min=0), default=0, show_default=True, help="Seed.")
+@click.option(
+    "-o",
+    "--output",
+    "out_dir",
+    type=click.Path(file_okay=False, path_type=Path),
+    required=True,
+    help="Folder for the sampled files and manifest.csv / manifest.json.",
+)
+@click.option(
+    "--format",
+    "file_format",
+    type=click.Choice(sorted(_FORMATS)),
+    default="xosc",
+    show_default=True,
+    help="Write each sample as OpenSCENARIO (.xosc, XSD-checked), as SceML (.xmi), or both.",
+)
+@click.option(
+    "--osc-version",
+    type=click.Choice(["1.0", "1.1", "1.2", "1.3"]),
+    default="1.3",
+    show_default=True,
+    help="OpenSCENARIO version of the .xosc files.",
+)
+@click.option(
+    "--workers",
+    type=click.IntRange(min=1),
+    default=None,
+    help="Worker processes [default: the number of CPUs].",
+)
+@click.option(
+    "--index",
+    type=click.IntRange(min=0),
+    default=None,
+    help="Write only sample INDEX of the run given by the other options (same seed, and for "
+    "lhs the same --n); its values are printed and no manifest is written.",
+)
+def sample(
+    logical: Path,
+    strategy: str,
+    n: int | None,
+    seed: int,
+    out_dir: Path,
+    file_format: str,
+    osc_version: str,
+    workers: int | None,
+    index: int | None,
+) -> None:
+    """Sample the logical scenario LOGICAL into concrete scenarios in DIR.
+
+    Every sample is reproducible from (seed, index) alone. Samples whose values break a rule
+    (e.g. a negative speed drawn from a wide distribution) are skipped and counted. A manifest
+    lists each sample's index, status, files and the value of every varied parameter.
+    """
+    try:
+        scenario = io.load_scenario(logical).root
+        _require_logical(scenario, logical)
+        _require_valid(scenario, logical)
+        space = parameter_space(scenario)
+        if index is not None and strategy == "lhs" and n is None:
+            raise click.UsageError("--index with --strategy lhs needs the --n of the run")
+        plan = plan_for(space, strategy, n, seed)  # type: ignore[arg-type]
+        indices = np.arange(plan.n) if index is None else np.array([index])
+        rows = values_at(space, plan, indices)
+    except SceMLError as error:
+        raise ReportedError(error) from None
+    config = BatchConfig(
+        logical=logical,
+        out_dir=out_dir,
+        paths=space.paths,
+        formats=_FORMATS[file_format],
+        osc_version=osc_version,
+        stem=logical.stem.removesuffix("-logical"),
+        width=max(5, len(str(max(plan.n - 1, 0)))),
+    )
+    started = time.perf_counter()
+    records = _run(config, indices, rows, workers)
+    elapsed = time.perf_counter() - started
+    if index is None:
+        run = {
+            "logical": str(logical),
+            "strategy": strategy,
+            "n": plan.n,
+            "seed": seed,
+            "format": file_format,
+            "osc_version": osc_version,
+        }
+        write_manifest(out_dir, space.paths, records, run)
+    else:
+        for path, value in zip(space.paths, rows[0], strict=True):
+            click.echo(f"{path} = {float(value)!r}")
+    click.echo(_summary(records, elapsed))
+    if records and all(r.status != "written" for r in records):
+        raise click.exceptions.Exit(1)
+
+
+def _require_logical(scenario: scm.Scenario, file: Path) -> None:
+    root = root_node(scenario)
+    level = str(root.level.name) if root is not None and root.level is not None else "?"
+    if level != "logical":
+        raise LevelError(f"only logical scenarios are sampled; this one is {level}", file=file)
+
+
+def _require_valid(scenario: scm.Scenario, file: Path) -> None:
+    # Samples only change numbers: rules about structure, actors and modules are checked once here.
+    found = validate_model(scenario) or []
+    errors = [d for d in found if d.severity >= Severity.ERROR]
+    for diagnostic in errors:
+        click.echo(
+            f"{file}: {diagnostic.severity}[{diagnostic.code}] {diagnostic.message}", err=True
+        )
+    if errors:
+        raise click.exceptions.Exit(1)
+
+
+def _run(
+    config: BatchConfig, indices: np.ndarray, rows: np.ndarray, workers: int | None
+) -> list[SampleRecord]:
+    records: list[SampleRecord] = []
+    try:
+        with click.progressbar(length=len(indices), label="sampling", file=sys.stderr) as bar:
+            for record in run_batch(config, indices, rows, workers=workers or os.cpu_count()):
+                records.append(record)
+                bar.update(1)
+    except SceMLError as error:
+        raise ReportedError(error) from None
+    return records
+
+
+def _summary(records: list[SampleRecord], elapsed: float) -> str:
+    written = sum(1 for r in records if r.status == "written")
+    reasons = Counter(r.reason for r in records if r.status != "written")
+    skipped = sum(reasons.values())
+    why = (
+        f" ({'; '.join(f'{reason}: {count}' for reason, count in reasons.most_common())})"
+        if reasons
+        else ""
+    )
+    files = sum(len(r.files) for r in records)
+    rate = files / elapsed if elapsed > 0 else 0.0
+    return f"{written} written, {skipped} skipped{why}, {elapsed:.2f} s, {rate:.0f} files/s"

@@ -1,0 +1,131 @@
+"""Turn a logical scenario and one sample's values into a concrete scenario.
+
+`apply` is the reference: copy the logical scenario, set each sampled path to a Value, mark it
+concrete. `FlatTemplate` is the fast equivalent for batch export: it flattens the logical
+scenario once and then only rewrites numbers in place, so that for every sample
+
+    template.fill(values)  equals  flatten(apply(logical, values))
+
+Where a sampled value lands after flattening is found by flattening once with a unique marker
+number in every varied slot: flatten itself decides where each module-use override goes (one
+module parameter may fill several slots, e.g. a destination used by a maneuver and a
+condition), so the mapping cannot drift from flatten's rules.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+
+import scemlmodel as scm
+
+from ..copying import Copier
+from ..graph import root_node
+from ..io import model_path
+from ..modules.flatten import flatten
+from ..modules.resolve import resolved_definition
+from .paths import LevelError, place_value, resolve, slots, unresolved
+
+#: Marker numbers no scenario uses; varied path k is marked with _marker(k).
+_MARKER_BASE = -1.5e300
+
+
+def _marker(k: int) -> float:
+    # Multiplicative: at this magnitude, adding k would not change the float.
+    return _MARKER_BASE * (1 + k * 1e-6)
+
+
+def copy_scenario(scenario: scm.Scenario) -> scm.Scenario:
+    """A deep copy of a scenario; references into libraries keep their targets."""
+    copier = Copier()
+    duplicate = copier.copy(scenario)
+    copier.copy_references()
+    return duplicate
+
+
+def set_level(scenario: scm.Scenario, level: str) -> None:
+    """Set the abstraction level on the scenario's root node."""
+    root = root_node(scenario)
+    if root is None:
+        raise LevelError("the scenario has no root node")
+    root.level = scm.AbstractionLevel.getEEnumLiteral(level)
+
+
+def apply(logical: scm.Scenario, values: Mapping[str, float]) -> scm.Scenario:
+    """A concrete copy of `logical` with each path in `values` set to its number.
+
+    Raises LevelError when a parameter is still a range or distribution afterwards, and
+    UnknownPathError for a path the scenario does not have.
+    """
+    concrete = copy_scenario(logical)
+    known = slots(concrete)
+    for path, number in values.items():
+        place_value(resolve(concrete, path, known), number)
+    left = unresolved(concrete, known)
+    varied = [path for path in left if known[path].held() is not None]
+    if varied:
+        raise LevelError(f"no value given for {', '.join(varied)}")
+    set_level(concrete, "concrete")
+    return concrete
+
+
+class FlatTemplate:
+    """A flattened concrete copy of a logical scenario whose varied numbers are set in place."""
+
+    def __init__(self, logical: scm.Scenario, paths: Sequence[str]) -> None:
+        self.paths = tuple(paths)
+        markers = {_marker(k): k for k in range(len(self.paths))}
+        _refuse_markers_in(logical, markers)
+        tagged = copy_scenario(logical)
+        known = slots(tagged)
+        for path, k in zip(self.paths, range(len(self.paths)), strict=True):
+            place_value(resolve(tagged, path, known), _marker(k))
+        self.scenario = flatten(tagged)
+        set_level(self.scenario, "concrete")
+        self.targets: list[list[scm.Value]] = [[] for _ in self.paths]
+        for obj in self.scenario.eAllContents():
+            if isinstance(obj, scm.Value) and obj.value in markers:
+                self.targets[markers[obj.value]].append(obj)
+            elif isinstance(obj, scm.ParameterValue) and not isinstance(obj, scm.Value):
+                raise LevelError(
+                    f"{obj.eClass.name} is not among the sampled parameters; inside a module "
+                    "definition, make it a module parameter so that a path reaches it",
+                    element=model_path(obj),
+                )
+
+    def fill(self, values: Sequence[float]) -> scm.Scenario:
+        """Write one sample's values (in path order) into the template and return it."""
+        for targets, number in zip(self.targets, values, strict=True):
+            number = float(number)
+            for target in targets:
+                target.value = number
+        return self.scenario
+
+    def slots_of(self, index: int) -> list[scm.Value]:
+        """The Value objects of the flattened scenario that path `index` fills."""
+        return list(self.targets[index])
+
+
+def _refuse_markers_in(logical: scm.Scenario, markers: Mapping[float, int]) -> None:
+    objects = list(logical.eAllContents())
+    for use in [o for o in objects if isinstance(o, scm.ModuleUse)]:
+        objects.extend(resolved_definition(use).eAllContents())
+    for obj in objects:
+        numbers = [getattr(obj, name, None) for name in ("value", "min", "max", "mean")]
+        if any(isinstance(n, float) and n in markers for n in numbers):
+            raise LevelError(f"the model uses the reserved number {_MARKER_BASE:g}")
+
+
+def relocate_map(scenario: scm.Scenario, source: Path, target: Path) -> None:
+    """Keep a relative map path pointing at the same file when the model moves to `target`.
+
+    A map that is not a relative path to an existing file (a simulator town name such as
+    `Town01`, or an absolute path) is left as it is.
+    """
+    root = root_node(scenario)
+    if root is None or not root.map or Path(root.map).is_absolute():
+        return
+    map_file = (source.resolve().parent / root.map).resolve()
+    if map_file.is_file():
+        root.map = Path(os.path.relpath(map_file, target.resolve().parent)).as_posix()

@@ -1,0 +1,134 @@
+"""One sample to one XSD-checked .xosc file, through the export's fast path, written atomically.
+
+The export's `build_xosc` renders the document from precompiled templates, parses it once, and
+checks the tree against the XSD that `sceml.schema` loads once per process; the bytes it returns
+are written as they are, so nothing is parsed again here.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+from typing import Any
+
+from lxml import etree
+
+import scemlmodel as scm
+
+from .. import schema
+from ..errors import SceMLError
+from ..io import model_path, write_atomically
+from .apply import FlatTemplate
+
+
+class XoscWriter:
+    """Builds, checks and writes the .xosc of concrete (flattened) scenarios of one source file."""
+
+    def __init__(self, source: Path, version: str) -> None:
+        from ..export import build_xosc  # the export package imports Jinja2; only load it here
+
+        self._build = build_xosc
+        self.source = source
+        self.version = version
+
+    def document(
+        self, scenario: scm.Scenario, target: Path, parameters: Mapping[Any, Any] | None = None
+    ) -> Any:
+        """The export's document (bytes and tree) for a scenario that will be written to `target`."""
+        return self._build(
+            scenario,
+            version=self.version,
+            source_path=self.source,
+            output_path=target,
+            parameters=parameters,
+            check_model=False,
+        )
+
+    def write(self, scenario: scm.Scenario, target: Path) -> str | None:
+        """Write the scenario's .xosc to `target`; a reason instead when it cannot be exported."""
+        try:
+            document = self.document(scenario, target)
+        except SceMLError as error:  # ExportError, or InvalidOutputError for an XSD failure
+            return f"export: {error.message}"
+        write_atomically(target, document.data)
+        return None
+
+
+_PLACEHOLDER = "SceMLsample"
+_TOKEN = re.compile(rb"\$" + _PLACEHOLDER.encode() + rb"(\d+)")
+
+
+class SampleXosc:
+    """The export of one flattened template, rendered once, with each sampled number a slot.
+
+    The export is run once with every sampled value written as a placeholder `$SceMLsample<k>`
+    (the export's parameter hook); per sample the placeholders are replaced by the numbers as
+    the export writes them, and the top-level ParameterDeclarations are those of a concrete
+    export. Only the sampled numbers change between samples, so when the exporter derives no
+    other value from them the bytes equal a full export. That is checked, not assumed:
+    `matches` compares the result with a full export, and the batch uses this path only while
+    those comparisons hold.
+    """
+
+    def __init__(self, writer: XoscWriter, template: FlatTemplate, target: Path) -> None:
+        from ..export import ParameterDeclarationSpec
+        from ..export.values import number
+
+        self.writer = writer
+        self.template = template
+        self.target = target
+        self._number = number
+        row = [t[0].value if t else 0.0 for t in template.targets]
+        hook = {}
+        for k, targets in enumerate(template.targets):
+            spec = ParameterDeclarationSpec(f"{_PLACEHOLDER}{k}", number(row[k]))
+            for value in targets:
+                hook[(model_path(value.eContainer()), value.eContainmentFeature().name)] = spec
+        concrete = writer.document(template.scenario, target).data
+        marked = writer.document(template.scenario, target, parameters=hook).data
+        marked = _with_declarations_of(marked, concrete)
+        self.segments: list[bytes] = _TOKEN.split(marked)
+        self.usable = self.render(row) == concrete
+
+    def render(self, row: Sequence[float]) -> bytes:
+        """The document bytes of one sample."""
+        parts = list(self.segments)
+        for position in range(1, len(parts), 2):
+            parts[position] = self._number(row[int(parts[position])]).encode()
+        return b"".join(parts)
+
+    def matches(self, scenario: scm.Scenario, row: Sequence[float]) -> bool:
+        """Whether this path gives the same bytes as a full export of the filled template."""
+        return self.render(row) == self.writer.document(scenario, self.target).data
+
+    def write(self, row: Sequence[float], target: Path) -> str | None:
+        """Check the sample's document against the XSD and write it; a reason if it fails."""
+        data = self.render(row)
+        tree = etree.fromstring(data, _parser())
+        if not schema.is_valid_tree(tree, self.writer.version):
+            issue = schema.validate_tree(tree, self.writer.version)[0]
+            return f"xsd: {issue.reason}"
+        write_atomically(target, data)
+        return None
+
+
+def _with_declarations_of(marked: bytes, concrete: bytes) -> bytes:
+    """`marked` with its top-level ParameterDeclarations replaced by those of `concrete`."""
+    start, end = _declarations(marked)
+    c_start, c_end = _declarations(concrete)
+    return marked[:start] + concrete[c_start:c_end] + marked[end:]
+
+
+def _declarations(data: bytes) -> tuple[int, int]:
+    start = data.index(b"<ParameterDeclarations")
+    closing = b"</ParameterDeclarations>"
+    empty = data.find(b"/>", start)
+    opened_end = data.find(b">", start)
+    if empty != -1 and empty + 1 == opened_end:  # an empty element: <ParameterDeclarations/>
+        return start, empty + 2
+    return start, data.index(closing, start) + len(closing)
+
+
+def _parser() -> etree.XMLParser:
+    return etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False)
