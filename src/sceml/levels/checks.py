@@ -33,7 +33,7 @@ class SampleChecker:
         for path, targets in zip(template.paths, template.targets, strict=True):
             features = {t.eContainmentFeature().name for t in targets}
             self.rules.append((path, _rule_for(features)))
-        self.validator = validator if validator is not None else _validation_hook()
+        self.validator = validator if validator is not None else _validation_hook(template)
 
     def problem(self, scenario: scm.Scenario, row: Sequence[float]) -> str | None:
         """Why this sample must be skipped, or None if it may be written."""
@@ -82,21 +82,56 @@ def _value_registry() -> Any:
     return registry
 
 
-def _validation_hook() -> Validator | None:
+def _validation_hook(template: FlatTemplate) -> Validator | None:
     """Error codes of the value-dependent rules for one sample, once validation exists.
 
     Sampling changes numbers, never the graph, actors or modules, so structure, actor, module,
-    simultaneity and readiness rules are checked once on the logical scenario (by the caller);
-    per sample only the parameter and plausibility families run.
+    simultaneity and readiness rules are checked once on the logical scenario (by the caller).
+    Per sample only the parameter and plausibility families run, and only on the objects that
+    hold a sampled value and their containers up to the scenario: every other object's values
+    are the logical scenario's and were checked with it. Walking the whole model with pyecore's
+    eAllContents for every sample cost more than the export itself.
     """
     from .. import validation
 
-    iter_diagnostics = getattr(validation, "iter_diagnostics", None)
-    if iter_diagnostics is None:
+    if getattr(validation, "REGISTRY", None) is None:
         return None
+    from ..validation.context import Context
+    from ..validation.limits import Limits
+    from ..validation.registry import findings
+
+    context = Context(template.scenario, None, Limits(), None)
+    plan = []
+    for obj in _holders(template):
+        rules = tuple(
+            rule
+            for rule in _value_registry().rules_for(obj.eClass)
+            if rule.severity >= Severity.ERROR
+        )
+        if rules:
+            plan.append((obj, rules))
 
     def codes(scenario: scm.Scenario) -> list[str]:
-        found = iter_diagnostics(scenario, registry=_value_registry())
-        return [d.code for d in found if d.severity >= Severity.ERROR]
+        found = []
+        for obj, rules in plan:
+            for rule in rules:
+                try:
+                    if next(iter(findings(rule.check, obj, context)), None) is not None:
+                        found.append(rule.code)
+                except Exception:  # a rule that breaks on odd values skips the sample, loudly
+                    found.append("SCEML-X000")
+        return found
 
     return codes
+
+
+def _holders(template: FlatTemplate) -> list[Any]:
+    """Each sampled Value and all of its containers, each once, innermost first."""
+    seen: dict[int, Any] = {}
+    for targets in template.targets:
+        for target in targets:
+            obj = target
+            while obj is not None and id(obj) not in seen:
+                seen[id(obj)] = obj
+                obj = obj.eContainer()
+    return list(seen.values())

@@ -20,7 +20,6 @@ from typing import Literal, get_args
 
 import numpy as np
 from numpy.typing import NDArray
-from scipy.stats import qmc
 
 from .paths import LevelError
 from .space import ParameterSpace
@@ -107,6 +106,8 @@ def _random_uniforms(seed: int, index: int, d: int) -> NDArray[np.float64]:
 def _lhs_design(plan: Plan, d: int) -> NDArray[np.float64]:
     if d == 0:
         return np.empty((plan.n, 0))
+    from scipy.stats import qmc  # slow to import; only Latin hypercube sampling needs it
+
     sampler = qmc.LatinHypercube(d, rng=np.random.default_rng(plan.seed))
     return sampler.random(plan.n)
 

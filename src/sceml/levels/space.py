@@ -20,7 +20,6 @@ from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import NDArray
-from scipy.stats import truncnorm
 
 import scemlmodel as scm
 
@@ -59,6 +58,9 @@ class Dimension:
         if self.kind == "uniform":
             return self.low + u * (self.high - self.low)
         a, b = (self.low - self.mean) / self.sd, (self.high - self.mean) / self.sd
+        # Imported here: scipy.stats takes half a second to import, and only sampling needs it.
+        from scipy.stats import truncnorm
+
         drawn = truncnorm.ppf(u, a, b, loc=self.mean, scale=self.sd)
         return np.clip(drawn, self.low, self.high)
 
