@@ -18,6 +18,7 @@ from .promote import promote
 from .render import render
 from .report import report
 from .sample import sample
+from .validate import validate
 
 
 @click.group(cls=SceMLGroup, context_settings={"help_option_names": ["-h", "--help"]})
@@ -31,6 +32,7 @@ def cli() -> None:
 
 
 cli.add_command(info)
+cli.add_command(validate)
 cli.add_command(render)
 cli.add_command(report)
 cli.add_command(export)

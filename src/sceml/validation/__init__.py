@@ -1,1 +1,31 @@
-"""Validation: constraint functions registered per metaclass, collected into diagnostics."""
+"""Validation: constraint functions registered per metaclass, collected into diagnostics.
+
+    from sceml.validation import validate
+    for diagnostic in validate(io.load("uis1-concrete.xmi").root):
+        print(diagnostic)
+
+Importing this package registers every rule of SPEC §6 (one module per area) in `REGISTRY`.
+"""
+
+from . import actors, modules, parameters, plausibility, readiness, simultaneity, structure
+from .engine import INTERNAL_ERROR, is_valid, iter_diagnostics, validate
+from .limits import DEFAULT_LIMITS, Limits, LimitsError, load_limits
+from .registry import REGISTRY, Registry, Rule, constraint
+
+__all__ = [
+    "DEFAULT_LIMITS",
+    "INTERNAL_ERROR",
+    "REGISTRY",
+    "Limits",
+    "LimitsError",
+    "Registry",
+    "Rule",
+    "constraint",
+    "is_valid",
+    "iter_diagnostics",
+    "load_limits",
+    "validate",
+]
+
+# The rule modules register themselves on import; naming them keeps linters from dropping them.
+_RULE_MODULES = (actors, modules, parameters, plausibility, readiness, simultaneity, structure)

@@ -1,0 +1,133 @@
+"""What every constraint may ask about the model under validation: level, limits, modules, flat view."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from functools import cache
+from typing import TypeVar
+
+from pyecore.ecore import EObject, EProxy
+
+import scemlmodel as scm
+
+from .. import catalog
+from ..graph import root_node
+from ..io import Document
+from .limits import Limits
+
+T = TypeVar("T")
+
+
+@cache
+def is_kind(class_name: str, kind: str) -> bool:
+    """`catalog.is_kind_of` by class name, cached: rules ask it for every node."""
+    return catalog.is_kind_of(class_name, kind)
+
+
+@dataclass
+class FlatView:
+    """A scenario with its module uses expanded, and where each expanded node came from.
+
+    Flattening names a node `<use>.<node>`; a node whose name is not one of the original's plain
+    nodes came from a module and is traced back to the outermost use it was expanded from.
+    """
+
+    scenario: scm.Scenario
+    original: scm.Scenario
+
+    def __post_init__(self) -> None:
+        self._plain: dict[str, EObject] = {}
+        self._uses: dict[str, EObject] = {}
+        for node in self.original.nodes:
+            table = self._uses if isinstance(node, scm.ModuleUse) else self._plain
+            table.setdefault(str(node.name), node)
+
+    def from_module(self, node: EObject) -> bool:
+        """Whether a flat node was expanded from a module use."""
+        return str(node.name) not in self._plain
+
+    def origin(self, node: EObject) -> EObject:
+        """The original element a flat node stands for: itself, or the use it was expanded from."""
+        name = str(node.name)
+        if name in self._plain:
+            return self._plain[name]
+        prefix = name
+        while "." in prefix:
+            prefix = prefix.rsplit(".", 1)[0]
+            if prefix in self._uses:
+                return self._uses[prefix]
+        return self.original
+
+
+@dataclass
+class Context:
+    """Shared state of one validation run; rules read it and never change the model."""
+
+    root: EObject
+    document: Document | None
+    limits: Limits
+    osc_version: str | None = None
+    flat_failure: str | None = None
+    _memo: dict[object, object] = field(default_factory=dict)
+    _definitions: dict[EObject, scm.ModuleDefinition | None] = field(default_factory=dict)
+    _levels: dict[EObject, str | None] = field(default_factory=dict)
+    _flat: FlatView | None = None
+    _flat_done: bool = False
+
+    def memo(self, key: object, compute: Callable[[], T]) -> T:
+        """`compute()` once per run and key: lets per-node rules share per-graph tables."""
+        if key not in self._memo:
+            self._memo[key] = compute()
+        return self._memo[key]  # type: ignore[return-value]
+
+    def level_of(self, obj: EObject) -> str | None:
+        """The abstraction level governing `obj`; None inside module definitions, which have none."""
+        current: EObject | None = obj
+        top = obj
+        while current is not None:
+            if isinstance(current, scm.ModuleDefinition):
+                return None
+            top = current
+            current = current.eContainer()
+        if top not in self._levels:
+            root = root_node(top) if isinstance(top, scm.Scenario) else None
+            level = root.level if root is not None else None
+            self._levels[top] = str(level.name) if level is not None else None
+        return self._levels[top]
+
+    def definition_of(self, use: scm.ModuleUse) -> scm.ModuleDefinition | None:
+        """The definition a use refers to, loaded if needed, or None when it cannot be had."""
+        if use not in self._definitions:
+            self._definitions[use] = _resolve(use)
+        return self._definitions[use]
+
+    def flat(self) -> FlatView | None:
+        """The flattened scenario (computed once), or None when the root is not a scenario with
+        module uses or cannot be flattened (then `flat_failure` says why)."""
+        if self._flat_done:
+            return self._flat
+        self._flat_done = True
+        scenario = self.root
+        if not isinstance(scenario, scm.Scenario):
+            return None
+        if not any(isinstance(node, scm.ModuleUse) for node in scenario.nodes):
+            return None
+        from ..modules.flatten import flatten  # imported late: flattening is optional here
+
+        try:
+            self._flat = FlatView(flatten(scenario), scenario)
+        except Exception as error:  # any reason at all: the module rules say what is wrong
+            self.flat_failure = str(error) or type(error).__name__
+        return self._flat
+
+
+def _resolve(use: scm.ModuleUse) -> scm.ModuleDefinition | None:
+    try:
+        definition = use.definition
+        if isinstance(definition, EProxy):
+            # The wrapped object, so that isinstance and identity work on what the proxy stood for.
+            definition = definition.force_resolve()
+        return definition if isinstance(definition, scm.ModuleDefinition) else None
+    except Exception:  # pyecore reports broken hrefs with assorted exception types
+        return None

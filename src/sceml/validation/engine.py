@@ -1,0 +1,131 @@
+"""One validation pass: every object against every rule of its metaclass, module internals included."""
+
+from __future__ import annotations
+
+import gc
+from collections.abc import Iterator
+
+from pyecore.ecore import EObject
+
+import scemlmodel as scm
+
+from ..diagnostics import Diagnostic, Severity
+from ..io import Document, model_path, uri_fragment
+from .context import Context
+from .limits import Limits
+from .registry import REGISTRY, Registry, Rule, findings
+
+INTERNAL_ERROR = "SCEML-X000"
+
+
+def iter_diagnostics(
+    model: EObject,
+    *,
+    document: Document | None = None,
+    limits: Limits | None = None,
+    osc_version: str | None = None,
+    registry: Registry = REGISTRY,
+) -> Iterator[Diagnostic]:
+    """Every diagnostic of a Scenario or Library, in one pass; never raises on a bad model.
+
+    Module definitions a scenario uses (in library files) are checked too, once each, and reported
+    in their own file. A rule that fails unexpectedly becomes a SCEML-X000 diagnostic.
+    """
+    context = Context(model, document, limits or Limits(), osc_version)
+    seen: set[tuple[str, str, str | None]] = set()
+    for obj in _objects(model, context):
+        for rule in registry.rules_for(obj.eClass):
+            yield from _unique(_run(rule, obj, context, document), seen)
+    flat = context.flat()
+    if flat is None:
+        return
+    # Values a module use gives its internals exist only once expanded; check them there, and
+    # report at the use, where an engineer can change them.
+    for node in flat.scenario.nodes:
+        if not flat.from_module(node):
+            continue
+        origin = flat.origin(node)
+        for obj in (node, *node.eAllContents()):
+            for rule in registry.rules_for(obj.eClass):
+                if rule.through_modules:
+                    found = _run(rule, obj, context, document, at=origin)
+                    yield from _unique(found, seen)
+
+
+def validate(model: EObject, **options: object) -> list[Diagnostic]:
+    """The list of every diagnostic (see `iter_diagnostics`)."""
+    # The pass allocates a few containers per node while the model holds millions of objects;
+    # CPython's cyclic collector would rescan all of them over and over (seconds on 50k nodes).
+    # Nothing the pass creates needs the collector, so it is paused for the pass only.
+    paused = gc.isenabled()
+    gc.disable()
+    try:
+        return list(iter_diagnostics(model, **options))  # type: ignore[arg-type]
+    finally:
+        if paused:
+            gc.enable()
+
+
+def is_valid(model: EObject, **options: object) -> bool:
+    """Whether the model has no ERROR diagnostic (warnings and infos are allowed)."""
+    diagnostics = iter_diagnostics(model, **options)  # type: ignore[arg-type]
+    return not any(d.severity is Severity.ERROR for d in diagnostics)
+
+
+def _objects(model: EObject, context: Context) -> Iterator[EObject]:
+    """The model, its contents, and the contents of every module definition reached from it."""
+    visited: set[EObject] = set(model.modules) if isinstance(model, scm.Library) else set()
+    pending: list[EObject] = [model]
+    while pending:
+        top = pending.pop(0)
+        for obj in (top, *top.eAllContents()):
+            yield obj
+            if isinstance(obj, scm.ModuleUse):
+                definition = context.definition_of(obj)
+                if definition is not None and definition not in visited:
+                    visited.add(definition)
+                    pending.append(definition)
+
+
+def _unique(diagnostics: Iterator[Diagnostic], seen: set) -> Iterator[Diagnostic]:
+    for diagnostic in diagnostics:
+        key = (diagnostic.code, diagnostic.message, diagnostic.fragment, diagnostic.file)
+        if key not in seen:
+            seen.add(key)
+            yield diagnostic
+
+
+def _run(
+    rule: Rule,
+    obj: EObject,
+    context: Context,
+    document: Document | None,
+    at: EObject | None = None,
+) -> Iterator[Diagnostic]:
+    try:
+        found = list(findings(rule.check, obj, context))
+    except Exception as error:  # a broken model must not stop the run; report and go on
+        message = f"internal error in {rule.code} ({rule.name}): {type(error).__name__}: {error}"
+        yield locate(INTERNAL_ERROR, Severity.ERROR, message, at or obj, document)
+        return
+    for element, message in found:
+        yield locate(rule.code, rule.severity, message, at or element, document)
+
+
+def locate(
+    code: str, severity: Severity, message: str, element: EObject, document: Document | None
+) -> Diagnostic:
+    """A diagnostic about `element`, with its fragment, readable path, file and line."""
+    fragment = path = file = line = None
+    try:
+        fragment = uri_fragment(element)
+        path = model_path(element)
+        if document is not None:
+            # The file as the user named it, or the library a module internal was read from.
+            other = element.eResource is not None and element.eResource is not document.resource
+            found = document.file_of(element) if other else None
+            file = str(found or document.path)
+            line = document.line_of(element)
+    except Exception:  # locating is best effort; the finding itself must get through
+        pass
+    return Diagnostic(severity, code, message, fragment, path or None, file, line, element)

@@ -1,0 +1,240 @@
+"""Parameter rules (paper rule 2): values fit the abstraction level, are well-formed and make sense."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator
+
+from pyecore.ecore import EObject
+
+import scemlmodel as scm
+
+from .. import catalog
+from ..diagnostics import Severity
+from ..params import describe
+from .context import Context, is_kind
+from .registry import Finding, constraint
+
+ERROR = Severity.ERROR
+
+#: Parameters that must be above zero, or at least zero, by their feature name.
+POSITIVE = frozenset(
+    {
+        "radius",
+        "tolerance",
+        "duration",
+        "distance",
+        "rate",
+        "time",
+        "gap",
+        "laneChangeDistance",
+        "length",
+        "width",
+        "height",
+        "maxDuration",
+        "fogVisualRange",
+    }
+)
+NON_NEGATIVE = frozenset({"speed", "targetSpeed", "initialSpeed", "precipitationIntensity", "s"})
+
+#: Positions a node kind needs at the logical and concrete levels: (kind, feature, minimum count).
+REQUIRED_POSITIONS = (
+    ("RoutedManeuver", "destination", 1),
+    ("InLocationRadius", "position", 1),
+    ("FollowTrajectory", "waypoints", 2),
+)
+
+
+def parameter_path(obj: EObject, feature: str | None = None) -> str:
+    """Where a parameter sits, as `actor.node.parameter` (e.g. `ego.TurnRight_1.destination.x`)."""
+    parts = [feature] if feature else []
+    current: EObject | None = obj
+    while current is not None:
+        if isinstance(current, scm.ActionNode):
+            actor = current.referenceActor
+            parts += [str(current.name), str(getattr(actor, "name", None) or "?")]
+            break
+        if isinstance(current, scm.ParameterOverride):
+            parts[-1:] = [str(current.parameter)]
+        elif isinstance(current, scm.NamedElement) and current.name:
+            parts.append(str(current.name))
+            break
+        else:
+            containment = current.eContainmentFeature()
+            if containment is None:
+                break
+            step = str(containment.name)
+            if containment.many:
+                step += f"[{current.eContainer().eGet(containment).index(current)}]"
+            parts.append(step)
+        current = current.eContainer()
+    return ".".join(reversed(parts))
+
+
+def numbers(value: EObject) -> list[float]:
+    """Every number a parameter value states: a value, range ends, distribution parameters."""
+    if isinstance(value, scm.Value):
+        candidates = [value.value]
+    elif isinstance(value, scm.Range | scm.UniformDistribution):
+        candidates = [value.min, value.max]
+    elif isinstance(value, scm.NormalDistribution):
+        candidates = [value.mean, value.lowerBound, value.upperBound]
+    elif isinstance(value, scm.DiscreteDistribution):
+        candidates = [option.value for option in value.options]
+    else:
+        candidates = []
+    return [float(number) for number in candidates if number is not None]
+
+
+def _unit(value: EObject) -> str:
+    owner, feature = value.eContainer(), value.eContainmentFeature()
+    try:
+        return catalog.parameter(owner.eClass.name, feature.name).unit
+    except (KeyError, AttributeError):
+        return ""
+
+
+@constraint(
+    "SCEML-P001",
+    ERROR,
+    ("Range", "Distribution"),
+    "a concrete scenario holds single values: no range or distribution",
+    paper_rule="2",
+    through_modules=True,
+)
+def no_spread_when_concrete(value: EObject, context: Context) -> Iterator[Finding]:
+    if context.level_of(value) == "concrete":
+        yield (
+            value,
+            f"{parameter_path(value)} is {describe(value, _unit(value))}; a concrete scenario "
+            "needs a single value",
+        )
+
+
+def _missing_parameters(owner: EObject) -> Iterator[str]:
+    for spec in catalog.parameters(owner.eClass.name):
+        if spec.required and owner.eGet(spec.name) is None:
+            yield spec.name
+    for kind, feature, minimum in REQUIRED_POSITIONS:
+        if is_kind(owner.eClass.name, kind):
+            held = owner.eGet(feature)
+            many = owner.eClass.findEStructuralFeature(feature).many
+            count = len(held) if many else int(held is not None)
+            if count < minimum:
+                yield feature if minimum == 1 else f"{feature} (at least {minimum})"
+    if isinstance(owner, scm.LanePosition) and not owner.roadId:
+        yield "roadId"
+
+
+@constraint(
+    "SCEML-P002",
+    ERROR,
+    ("ActionNode", "Position"),
+    "a logical or concrete scenario gives every value needed for execution "
+    "(parameters without a language default, destinations, positions, waypoints)",
+    paper_rule="2",
+    through_modules=True,
+)
+def required_values_present(owner: EObject, context: Context) -> Iterator[Finding]:
+    level = context.level_of(owner)
+    if level not in ("logical", "concrete"):
+        return
+    for name in _missing_parameters(owner):
+        yield owner, f"{parameter_path(owner, name)} is missing; a {level} scenario needs it"
+
+
+@constraint("SCEML-P003", ERROR, "Range", "a range has min <= max", paper_rule="2")
+def range_bounds_ordered(value: scm.Range, context: Context) -> Iterator[Finding]:
+    if value.min is not None and value.max is not None and value.min > value.max:
+        yield value, f"{parameter_path(value)}: range min {value.min:g} is above max {value.max:g}"
+
+
+@constraint("SCEML-P004", ERROR, "Range", "a range's step, if given, is above zero", paper_rule="2")
+def range_step_positive(value: scm.Range, context: Context) -> Iterator[Finding]:
+    if value.step is not None and not value.step > 0:
+        yield value, f"{parameter_path(value)}: range step {value.step:g} must be above zero"
+
+
+@constraint(
+    "SCEML-P005",
+    ERROR,
+    ("UniformDistribution", "NormalDistribution"),
+    "a uniform distribution has min <= max; a normal one has standard deviation >= 0 and "
+    "lower bound <= upper bound",
+    paper_rule="2",
+)
+def continuous_distribution_well_formed(value: EObject, context: Context) -> Iterator[Finding]:
+    where = parameter_path(value)
+    if isinstance(value, scm.UniformDistribution):
+        if value.min is not None and value.max is not None and value.min > value.max:
+            yield value, f"{where}: uniform min {value.min:g} is above max {value.max:g}"
+        return
+    sd = value.standardDeviation
+    if sd is not None and sd < 0:
+        yield value, f"{where}: standard deviation {sd:g} is negative"
+    low, high = value.lowerBound, value.upperBound
+    if low is not None and high is not None and low > high:
+        yield value, f"{where}: lower bound {low:g} is above upper bound {high:g}"
+
+
+@constraint(
+    "SCEML-P006",
+    ERROR,
+    "DiscreteDistribution",
+    "a discrete distribution has at least one option, no negative weight, and not all weights zero",
+    paper_rule="2",
+)
+def discrete_distribution_well_formed(
+    value: scm.DiscreteDistribution, context: Context
+) -> Iterator[Finding]:
+    where = parameter_path(value)
+    options = list(value.options)
+    if not options:
+        yield value, f"{where}: a discrete distribution needs at least one option"
+        return
+    weights = [option.weight for option in options]
+    if any(weight is not None and weight < 0 for weight in weights):
+        yield value, f"{where}: weights must not be negative"
+    elif all(weight is not None and weight == 0 for weight in weights):
+        yield value, f"{where}: all weights are zero"
+
+
+@constraint(
+    "SCEML-P007",
+    ERROR,
+    "ParameterValue",
+    "values are finite and physically meaningful: radius, tolerance, duration, distance, rate, "
+    "time, gap and dimensions above zero; speeds and lane s at least zero",
+    paper_rule="2",
+    through_modules=True,
+)
+def values_physically_meaningful(value: EObject, context: Context) -> Iterator[Finding]:
+    feature = value.eContainmentFeature()
+    name = feature.name if feature is not None else ""
+    stated = numbers(value)
+    if not all(math.isfinite(number) for number in stated):
+        yield value, f"{parameter_path(value)} is {describe(value)}: not a finite number"
+        return
+    if name in POSITIVE and any(number <= 0 for number in stated):
+        yield (
+            value,
+            f"{parameter_path(value)} is {describe(value, _unit(value))}; it must be above 0",
+        )
+    elif name in NON_NEGATIVE and any(number < 0 for number in stated):
+        yield value, f"{parameter_path(value)} is {describe(value, _unit(value))}; it must be >= 0"
+
+
+@constraint(
+    "SCEML-P008",
+    ERROR,
+    "ParameterRef",
+    "a parameter reference sits inside a module definition and names one of its parameters",
+)
+def parameter_ref_in_its_module(ref: scm.ParameterRef, context: Context) -> Iterator[Finding]:
+    module = ref.eContainer()
+    while module is not None and not isinstance(module, scm.ModuleDefinition):
+        module = module.eContainer()
+    if module is None:
+        yield ref, f"{parameter_path(ref)} refers to a module parameter outside any module"
+    elif ref.parameter is None or ref.parameter not in set(module.parameters):
+        yield ref, f"{parameter_path(ref)} refers to no parameter of module {module.name!r}"

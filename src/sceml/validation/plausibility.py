@@ -1,0 +1,127 @@
+"""Plausibility rules (paper rule 5): speeds and rates fit the kind of actor that has to reach them.
+
+A value is judged by the highest number it allows: a range or uniform distribution by its max, a
+normal distribution by its upper bound (by its mean when unbounded), a discrete one by its largest
+option. Exceeding a limit is an error: the limits are plausible maxima, and a project that means
+to go beyond them raises them in a limits file (`sceml validate --limits FILE`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from pyecore.ecore import EObject
+
+import scemlmodel as scm
+
+from ..diagnostics import Severity
+from ..params import describe
+from .context import Context, is_kind
+from .parameters import parameter_path
+from .registry import Finding, constraint
+
+ERROR = Severity.ERROR
+
+#: Which parameter of which kind each limit bounds.
+LIMITED_PARAMETERS: dict[str, tuple[tuple[str, str], ...]] = {
+    "max_speed": (
+        ("Actor", "initialSpeed"),
+        ("Accelerate", "targetSpeed"),
+        ("Decelerate", "targetSpeed"),
+        ("DriveDistance", "speed"),
+        ("Overtake", "speed"),
+        ("SpeedCondition", "speed"),
+    ),
+    "max_acceleration": (("Accelerate", "rate"),),
+    "max_deceleration": (("Decelerate", "rate"), ("Stop", "rate")),
+}
+_KINDS = (
+    "Actor",
+    "Accelerate",
+    "Decelerate",
+    "DriveDistance",
+    "Overtake",
+    "SpeedCondition",
+    "Stop",
+)
+
+
+def highest(value: EObject | None) -> float | None:
+    """The largest number a parameter value allows, or None when it states none."""
+    if isinstance(value, scm.Value):
+        return value.value
+    if isinstance(value, scm.Range | scm.UniformDistribution):
+        return value.max
+    if isinstance(value, scm.NormalDistribution):
+        return value.upperBound if value.upperBound is not None else value.mean
+    if isinstance(value, scm.DiscreteDistribution):
+        options = [option.value for option in value.options if option.value is not None]
+        return max(options) if options else None
+    return None
+
+
+def _actor_of(owner: EObject) -> scm.Actor | None:
+    if isinstance(owner, scm.Actor):
+        return owner
+    actor = getattr(owner, "referenceActor", None)
+    # Inside a module definition the performer is a role; the flattened scenario binds it.
+    return actor if isinstance(actor, scm.Actor) else None
+
+
+def _over_limit(owner: EObject, context: Context, key: str, unit: str) -> Iterator[Finding]:
+    actor = _actor_of(owner)
+    if actor is None:
+        return
+    kind = actor.eClass.name
+    limit = context.limits.limit(kind, key)
+    if limit is None:
+        return
+    for holder_kind, name in LIMITED_PARAMETERS[key]:
+        if not is_kind(owner.eClass.name, holder_kind):
+            continue
+        value = owner.eGet(name)
+        top = highest(value)
+        if top is not None and top > limit:
+            in_kmh = f" ({limit * 3.6:g} km/h)" if unit == "m/s" else ""
+            yield (
+                value,
+                f"{parameter_path(owner, name)} is {describe(value, unit)}, above the "
+                f"{kind} limit of {limit:g} {unit}{in_kmh}",
+            )
+
+
+@constraint(
+    "SCEML-L001",
+    ERROR,
+    _KINDS,
+    "speeds (initial, target, driving, overtaking, compared) do not exceed the actor kind's "
+    "max_speed",
+    paper_rule="5",
+    through_modules=True,
+)
+def speed_fits_actor(owner: EObject, context: Context) -> Iterator[Finding]:
+    yield from _over_limit(owner, context, "max_speed", "m/s")
+
+
+@constraint(
+    "SCEML-L002",
+    ERROR,
+    _KINDS,
+    "acceleration rates do not exceed the actor kind's max_acceleration",
+    paper_rule="5",
+    through_modules=True,
+)
+def acceleration_fits_actor(owner: EObject, context: Context) -> Iterator[Finding]:
+    yield from _over_limit(owner, context, "max_acceleration", "m/s2")
+
+
+@constraint(
+    "SCEML-L003",
+    ERROR,
+    _KINDS,
+    "deceleration rates (Decelerate, Stop) do not exceed the actor kind's max_deceleration",
+    paper_rule="5",
+    through_modules=True,
+)
+def deceleration_fits_actor(owner: EObject, context: Context) -> Iterator[Finding]:
+    yield from _over_limit(owner, context, "max_deceleration", "m/s2")

@@ -1,0 +1,146 @@
+"""Simultaneity (paper rule 4): one actor never runs two maneuvers of the same category at once.
+
+Node b is *ordered after* node a when b can only be activated once a has finished. That holds when
+b is a, or b's predecessor is ordered after a, or b is a JoinAllFinished with any predecessor
+ordered after a. A JoinOneFinished finishes with its first predecessor while the others may still
+run, so it is ordered after a only when *every* one of its predecessors is. Two maneuvers that
+are not ordered either way can run at the same time.
+
+The maneuvers of one actor and one category (longitudinal or lateral; a composite maneuver counts
+as both) are conflict-free exactly when they form a chain under this order, and a set forms a
+chain exactly when each member, taken in topological order, is ordered after the previous one.
+One pass over the topological order carries, for every node, the set of maneuvers it is ordered
+after as a bitset (a Python int), so the check is linear in nodes times a machine-word fraction of
+the maneuvers, with no enumeration of pairs. Bitsets are dropped as soon as their last successor
+has been visited.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from collections.abc import Iterator
+
+from pyecore.ecore import EObject
+
+import scemlmodel as scm
+
+from .. import catalog
+from ..diagnostics import Severity
+from .context import Context
+from .registry import Finding, constraint
+
+_CATEGORIES = {
+    "longitudinal": ("longitudinal",),
+    "lateral": ("lateral",),
+    "composite": ("longitudinal", "lateral"),
+}
+
+Conflict = tuple[scm.Maneuver, scm.Maneuver, str]
+
+
+def _previous_in_group(order: list) -> tuple[dict[EObject, int], dict[EObject, list]]:
+    """Bit index of every maneuver, and for each the previous member of each of its groups."""
+    bit: dict[EObject, int] = {}
+    previous: dict[EObject, list[tuple[EObject, str]]] = {}
+    last: dict[tuple[EObject, str], EObject] = {}
+    for node in order:
+        if not isinstance(node, scm.Maneuver) or node.referenceActor is None:
+            continue
+        for category in _CATEGORIES.get(catalog.category(node.eClass.name) or "", ()):
+            key = (node.referenceActor, category)
+            if key in last:
+                previous.setdefault(node, []).append((last[key], category))
+            last[key] = node
+        bit[node] = len(bit)
+    return bit, previous
+
+
+def _adjacency(graph: scm.Graph) -> tuple[list, dict[EObject, list], dict[EObject, int]]:
+    """Kahn's order, predecessors per node and successor counts, from the graph's own flows.
+
+    Read from `graph.flows` rather than the nodes' incoming/outgoing lists, so that flows that
+    are dangling or leave the graph are simply not part of the order.
+    """
+    members = set(graph.nodes)
+    sources: dict[EObject, list] = {node: [] for node in graph.nodes}
+    targets: dict[EObject, list] = {node: [] for node in graph.nodes}
+    for flow in graph.flows:
+        if flow.source in members and flow.target in members:
+            sources[flow.target].append(flow.source)
+            targets[flow.source].append(flow.target)
+    waiting = {node: len(sources[node]) for node in graph.nodes}
+    queue = deque(node for node in graph.nodes if waiting[node] == 0)
+    order = []
+    while queue:
+        node = queue.popleft()
+        order.append(node)
+        for target in targets[node]:
+            waiting[target] -= 1
+            if waiting[target] == 0:
+                queue.append(target)
+    return order, sources, {node: len(targets[node]) for node in graph.nodes}
+
+
+def conflicts(graph: scm.Graph) -> list[Conflict]:
+    """Pairs of same-actor, same-category maneuvers that can run at the same time."""
+    order, sources, pending = _adjacency(graph)
+    if len(order) < len(pending):
+        return []  # S008 reports the cycle; the order is undefined there
+    bit, previous = _previous_in_group(order)
+    after: dict[EObject, int] = {}
+    found: list[Conflict] = []
+    seen: set[tuple[EObject, EObject]] = set()
+    for node in order:
+        bits = _combine(node, [after[source] for source in sources[node]])
+        if node in bit:
+            bits |= 1 << bit[node]
+        for earlier, category in previous.get(node, ()):
+            if not (bits >> bit[earlier]) & 1 and (earlier, node) not in seen:
+                seen.add((earlier, node))
+                found.append((earlier, node, category))
+        after[node] = bits
+        for source in sources[node]:
+            pending[source] -= 1
+            if pending[source] == 0:
+                del after[source]
+        if pending[node] == 0:
+            del after[node]
+    return found
+
+
+def _combine(node: EObject, inputs: list[int]) -> int:
+    if not inputs:
+        return 0
+    if isinstance(node, scm.JoinOneFinished) and len(inputs) > 1:
+        combined = inputs[0]
+        for bits in inputs[1:]:
+            combined &= bits
+        return combined
+    combined = 0
+    for bits in inputs:
+        combined |= bits
+    return combined
+
+
+@constraint(
+    "SCEML-C001",
+    Severity.ERROR,
+    ("Scenario", "ModuleDefinition"),
+    "two maneuvers of the same actor and category (longitudinal or lateral; composite counts as "
+    "both) cannot run at the same time: one must be ordered after the other. A path through a "
+    "JoinOneFinished orders only if all of the join's branches are ordered. Module uses are "
+    "checked expanded",
+    paper_rule="4",
+)
+def no_simultaneous_maneuvers(graph: scm.Graph, context: Context) -> Iterator[Finding]:
+    if isinstance(graph, scm.ModuleDefinition) and not isinstance(context.root, scm.Library):
+        return  # a used definition is checked expanded, inside the scenario that uses it
+    flat = context.flat() if isinstance(graph, scm.Scenario) else None
+    for earlier, later, category in conflicts(flat.scenario if flat else graph):
+        actor = later.referenceActor.name
+        element = flat.origin(later) if flat else later
+        yield (
+            element,
+            f"{earlier.name!r} and {later.name!r} are both {category} maneuvers of {actor!r} "
+            "and can run at the same time",
+        )

@@ -1,0 +1,721 @@
+"""Build the corpus of invalid models (one fault or several per file) and its MANIFEST.
+
+    python tests/validation/make_corpus.py [--out DIR]
+
+Each case is built with the public builder API and saved with io.save; faults the builder cannot
+express (dangling flows, broken hrefs) are made by editing the saved XML. MANIFEST lists every
+case with the rule codes validation must report for it, nothing more and nothing less; a line
+with no codes is a model that must validate clean. The committed corpus must equal this output.
+"""
+
+from __future__ import annotations
+
+import argparse
+from collections.abc import Callable
+from pathlib import Path
+
+from lxml import etree
+
+import scemlmodel as scm
+from sceml import io
+from sceml.build import LibraryBuilder, ScenarioBuilder, lane, world
+from sceml.params import discrete, normal, span, uniform
+
+HERE = Path(__file__).resolve().parent / "corpus"
+DATE = "2026-01-01T00:00:00"
+LIBRARY = "lib/modules.xmi"
+
+Case = Callable[[Path], None]
+CASES: list[tuple[str, str, Case]] = []
+
+
+def case(name: str, codes: str) -> Callable[[Case], Case]:
+    """Register a case writing `<name>.xmi` that must give exactly `codes`."""
+
+    def register(build: Case) -> Case:
+        CASES.append((f"{name}.xmi", codes, build))
+        return build
+
+    return register
+
+
+def scenario(level: str = "concrete", **options: object) -> tuple[ScenarioBuilder, scm.Actor]:
+    """A scenario with a map and one ego car, ready for one fault to be added."""
+    b = ScenarioBuilder("Case", map="town.xodr", level=level, date=DATE, **options)  # type: ignore[arg-type]
+    ego = b.actor("Car", "ego", ego=True, start=lane(1, -1, 10.0), speed=5.0)
+    return b, ego
+
+
+def save(root: object, out: Path, name: str) -> Path:
+    return io.save(root, out / name)  # type: ignore[arg-type]
+
+
+def edit_xml(path: Path, change: Callable[[etree._Element], None]) -> None:
+    """Change a saved file's XML in place (for faults no API call produces)."""
+    tree = etree.parse(str(path))
+    change(tree.getroot())
+    path.write_bytes(etree.tostring(tree, xml_declaration=True, encoding="UTF-8"))
+
+
+def library() -> scm.Library:
+    """A small valid library: CrossingManeuver (as in the examples) and Speedup for any road user."""
+    lib = LibraryBuilder("Corpus library")
+    crossing = lib.module("CrossingManeuver")
+    crosser = crossing.role("crosser", "TwoWheeler", "Pedestrian")
+    trigger = crossing.role("trigger", "FourWheeler")
+    radius = crossing.parameter("triggerRadius", "m", 10.0)
+    speed = crossing.parameter("crossingSpeed", "m/s", 1.5)
+    x, y = crossing.parameter("destinationX", "m"), crossing.parameter("destinationY", "m")
+    wait = crossing.add("InVehicleRadius", crosser, target=trigger, radius=radius)
+    go = crossing.add("Accelerate", crosser, targetSpeed=speed)
+    cross = crossing.add("Cross", crosser, destination=world(x, y))
+    crossing.chain(crossing.in_port, wait, go, cross, crossing.out_port)
+    speedup = lib.module("Speedup")
+    driver = speedup.role("driver")
+    target = speedup.parameter("target", "m/s", 10.0)
+    faster = speedup.add("Accelerate", driver, targetSpeed=target)
+    speedup.chain(speedup.in_port, faster, speedup.out_port)
+    return lib.library
+
+
+@case("lib/modules", "")
+def valid_library(out: Path) -> None:
+    save(library(), out, LIBRARY)
+
+
+def definition(out: Path, name: str) -> scm.ModuleDefinition:
+    """A module of the corpus library, loaded from `out` so that uses refer to it across files."""
+    if not (out / LIBRARY).exists():
+        save(library(), out, LIBRARY)
+    return next(m for m in io.load_library(out / LIBRARY).root.modules if m.name == name)
+
+
+def crossing_scenario(level: str = "concrete") -> tuple[ScenarioBuilder, dict[str, scm.Actor]]:
+    """A scenario with an ego car, a second car and a pedestrian, for module-use cases."""
+    b, ego = scenario(level)
+    car = b.actor("Car", "car", start=lane(1, 1, 30.0))
+    walker = b.actor("Pedestrian", "walker", start=lane(4, 2, 1.0))
+    return b, {"ego": ego, "car": car, "walker": walker}
+
+
+DESTINATION = {"destinationX": -10.0, "destinationY": 4.5}
+
+
+def crossing_use(
+    out: Path,
+    name: str,
+    bindings: Callable[[dict[str, scm.Actor]], dict[str, scm.Actor]],
+    overrides: dict | None = None,
+    level: str = "concrete",
+) -> None:
+    """A scenario whose only part is one use of CrossingManeuver, bound and overridden as given."""
+    b, cast = crossing_scenario(level)
+    given = DESTINATION if overrides is None else overrides
+    use = b.use(definition(out, "CrossingManeuver"), bindings(cast), given)
+    b.chain(b.root, use, b.end)
+    save(b.scenario, out, name)
+
+
+# Structure -----------------------------------------------------------------------------------
+
+
+@case("s001-two-roots", "SCEML-S001 SCEML-S007 SCEML-A007")
+def two_roots(out: Path) -> None:
+    b, ego = scenario()
+    b.chain(b.root, b.add("Accelerate", ego, targetSpeed=8.0), b.end)
+    b.scenario.nodes.append(scm.RootNode(name="Root2", map="town.xodr"))
+    save(b.scenario, out, "s001-two-roots.xmi")
+
+
+@case("s001-no-root", "SCEML-S001")
+def no_root(out: Path) -> None:
+    bare = scm.Scenario()
+    bare.nodes.append(scm.EndNode(name="End"))
+    save(bare, out, "s001-no-root.xmi")
+
+
+@case("s002-no-end", "SCEML-S002")
+def no_end(out: Path) -> None:
+    b, ego = scenario()
+    b.scenario.nodes.remove(b.end)
+    b.chain(b.root, b.add("Accelerate", ego, targetSpeed=8.0))
+    save(b.scenario, out, "s002-no-end.xmi")
+
+
+@case("s003-root-incoming", "SCEML-S003 SCEML-S006")
+def root_incoming(out: Path) -> None:
+    b, ego = scenario()
+    orphan = b.add("TimeElapsed", ego, name="Orphan", duration=1.0)
+    b.chain(orphan, b.root, b.add("Accelerate", ego, targetSpeed=8.0), b.end)
+    save(b.scenario, out, "s003-root-incoming.xmi")
+
+
+@case("s004-join-one-input", "SCEML-S004")
+def join_one_input(out: Path) -> None:
+    b, ego = scenario()
+    accelerate = b.add("Accelerate", ego, targetSpeed=8.0)
+    b.chain(b.root, accelerate)
+    b.chain(b.join_all(accelerate), b.end)
+    save(b.scenario, out, "s004-join-one-input.xmi")
+
+
+@case("s005-end-outgoing", "SCEML-S005 SCEML-S007")
+def end_outgoing(out: Path) -> None:
+    b, ego = scenario()
+    b.chain(b.root, b.add("Accelerate", ego, targetSpeed=8.0), b.end)
+    b.flow(b.end, b.add("TimeElapsed", ego, name="After", duration=1.0))
+    save(b.scenario, out, "s005-end-outgoing.xmi")
+
+
+@case("s006-unreachable", "SCEML-S006")
+def unreachable(out: Path) -> None:
+    b, ego = scenario()
+    accelerate = b.add("Accelerate", ego, targetSpeed=8.0)
+    island = b.add("TimeElapsed", ego, name="Island", duration=2.0)
+    b.chain(b.root, accelerate)
+    b.chain(b.join_all(accelerate, island), b.end)
+    save(b.scenario, out, "s006-unreachable.xmi")
+
+
+@case("s007-dead-end", "SCEML-S007")
+def dead_end(out: Path) -> None:
+    b, ego = scenario()
+    b.chain(b.root, b.add("TimeElapsed", ego, name="Nowhere", duration=1.0))
+    b.chain(b.root, b.add("Accelerate", ego, targetSpeed=8.0), b.end)
+    save(b.scenario, out, "s007-dead-end.xmi")
+
+
+@case("s008-cycle", "SCEML-S008")
+def cycle(out: Path) -> None:
+    b, ego = scenario()
+    speed_up = b.add("Accelerate", ego, targetSpeed=8.0)
+    hold = b.add("KeepVelocity", ego, duration=3.0)
+    join = b.join_all(b.root)
+    b.chain(join, speed_up, hold, b.end)
+    b.flow(hold, join)
+    save(b.scenario, out, "s008-cycle.xmi")
+
+
+@case("s009-merge-without-join", "SCEML-S009")
+def merge_without_join(out: Path) -> None:
+    b, ego = scenario()
+    first = b.add("TimeElapsed", ego, duration=1.0)
+    second = b.add("TimeElapsed", ego, duration=2.0)
+    accelerate = b.add("Accelerate", ego, targetSpeed=8.0)
+    b.chain(b.root, first, accelerate, b.end)
+    b.chain(b.root, second, accelerate)
+    save(b.scenario, out, "s009-merge-without-join.xmi")
+
+
+@case("s010-dangling-flow", "SCEML-S006 SCEML-S007 SCEML-S010")
+def dangling_flow(out: Path) -> None:
+    b, ego = scenario()
+    b.chain(b.root, b.add("Accelerate", ego, targetSpeed=8.0), b.end)
+    path = save(b.scenario, out, "s010-dangling-flow.xmi")
+    edit_xml(path, lambda root: root.findall("flows")[-1].attrib.pop("target"))
+
+
+@case("s011-flow-other-graph", "SCEML-S011 SCEML-S009")
+def flow_other_graph(out: Path) -> None:
+    lib = LibraryBuilder("Crossed wires")
+    first, second = lib.module("First"), lib.module("Second")
+    a = first.add("TimeElapsed", first.role("r"), duration=1.0)
+    b = second.add("TimeElapsed", second.role("r"), duration=1.0)
+    first.chain(first.in_port, a, first.out_port)
+    second.chain(second.in_port, b, second.out_port)
+    first.flow(a, b)
+    save(lib.library, out, "s011-flow-other-graph.xmi")
+
+
+@case("s012-duplicate-flow", "SCEML-S012")
+def duplicate_flow(out: Path) -> None:
+    b, ego = scenario()
+    first = b.add("TimeElapsed", ego, duration=1.0)
+    second = b.add("SpeedCondition", ego, speed=3.0)
+    b.chain(b.root, first)
+    b.chain(b.root, second)
+    join = b.join_all(first, second)
+    b.flow(first, join)
+    b.chain(join, b.end)
+    save(b.scenario, out, "s012-duplicate-flow.xmi")
+
+
+@case("s013-duplicate-names", "SCEML-S013")
+def duplicate_names(out: Path) -> None:
+    b, ego = scenario()
+    b.chain(
+        b.root,
+        b.add("TimeElapsed", ego, name="Wait", duration=1.0),
+        b.add("TimeElapsed", ego, name="Wait", duration=2.0),
+        b.end,
+    )
+    save(b.scenario, out, "s013-duplicate-names.xmi")
+
+
+# Actors --------------------------------------------------------------------------------------
+
+
+@case("a001-no-reference-actor", "SCEML-A001")
+def no_reference_actor(out: Path) -> None:
+    b, ego = scenario()
+    wait = b.add("TimeElapsed", ego, duration=1.0)
+    wait.referenceActor = None
+    b.chain(b.root, wait, b.end)
+    save(b.scenario, out, "a001-no-reference-actor.xmi")
+
+
+@case("a002-foreign-role", "SCEML-A002")
+def foreign_role(out: Path) -> None:
+    lib = LibraryBuilder("Borrowed roles")
+    owner, borrower = lib.module("Owner"), lib.module("Borrower")
+    role = owner.role("driver", "Car")
+    borrower.role("walker", "Pedestrian")
+    owner.chain(owner.in_port, owner.add("TimeElapsed", role, duration=1.0), owner.out_port)
+    node = borrower.add("TimeElapsed", role, duration=1.0)
+    borrower.chain(borrower.in_port, node, borrower.out_port)
+    save(lib.library, out, "a002-foreign-role.xmi")
+
+
+@case("a003-missing-target", "SCEML-A003")
+def missing_target(out: Path) -> None:
+    b, ego = scenario()
+    b.chain(b.root, b.add("Follow", ego), b.end)
+    save(b.scenario, out, "a003-missing-target.xmi")
+
+
+@case("a004-unused-target", "SCEML-A004")
+def unused_target(out: Path) -> None:
+    b, ego = scenario()
+    car = b.actor("Car", "car", start=lane(1, 1, 30.0))
+    b.chain(b.root, b.add("Accelerate", ego, target=car, targetSpeed=8.0), b.end)
+    save(b.scenario, out, "a004-unused-target.xmi")
+
+
+@case("a005-self-target", "SCEML-A005")
+def self_target(out: Path) -> None:
+    b, ego = scenario()
+    b.chain(b.root, b.add("Follow", ego, target=ego), b.end)
+    save(b.scenario, out, "a005-self-target.xmi")
+
+
+@case("a006-duplicate-actor-names", "SCEML-A006")
+def duplicate_actor_names(out: Path) -> None:
+    b, ego = scenario()
+    b.actor("Car", "car", start=lane(1, 1, 30.0))
+    b.actor("Van", "car", start=lane(1, 1, 50.0))
+    b.chain(b.root, b.add("Accelerate", ego, targetSpeed=8.0), b.end)
+    save(b.scenario, out, "a006-duplicate-actor-names.xmi")
+
+
+@case("a007-two-egos", "SCEML-A007")
+def two_egos(out: Path) -> None:
+    b, ego = scenario()
+    b.actor("Car", "other", ego=True, start=lane(1, 1, 30.0))
+    b.chain(b.root, b.add("Accelerate", ego, targetSpeed=8.0), b.end)
+    save(b.scenario, out, "a007-two-egos.xmi")
+
+
+# Parameters and levels -----------------------------------------------------------------------
+
+
+@case("p001-range-in-concrete", "SCEML-P001")
+def range_in_concrete(out: Path) -> None:
+    b, ego = scenario()
+    b.chain(b.root, b.add("Accelerate", ego, targetSpeed=span(6.0, 10.0)), b.end)
+    save(b.scenario, out, "p001-range-in-concrete.xmi")
+
+
+@case("p002-logical-missing-values", "SCEML-P002")
+def logical_missing_values(out: Path) -> None:
+    b, ego = scenario("logical")
+    b.chain(b.root, b.add("Accelerate", ego), b.add("TurnRight", ego), b.end)
+    save(b.scenario, out, "p002-logical-missing-values.xmi")
+
+
+@case("p003-range-reversed", "SCEML-P003")
+def range_reversed(out: Path) -> None:
+    b, ego = scenario("logical")
+    b.chain(b.root, b.add("Accelerate", ego, targetSpeed=span(10.0, 6.0)), b.end)
+    save(b.scenario, out, "p003-range-reversed.xmi")
+
+
+@case("p004-range-step-zero", "SCEML-P004")
+def range_step_zero(out: Path) -> None:
+    b, ego = scenario("logical")
+    b.chain(b.root, b.add("Accelerate", ego, targetSpeed=span(6.0, 10.0, 0.0)), b.end)
+    save(b.scenario, out, "p004-range-step-zero.xmi")
+
+
+@case("p005-negative-deviation", "SCEML-P005")
+def negative_deviation(out: Path) -> None:
+    b, ego = scenario("logical")
+    b.chain(b.root, b.add("Accelerate", ego, targetSpeed=normal(8.0, -1.0)), b.end)
+    save(b.scenario, out, "p005-negative-deviation.xmi")
+
+
+@case("p006-empty-discrete", "SCEML-P006")
+def empty_discrete(out: Path) -> None:
+    b, ego = scenario("logical")
+    b.chain(b.root, b.add("Accelerate", ego, targetSpeed=discrete([])), b.end)
+    save(b.scenario, out, "p006-empty-discrete.xmi")
+
+
+@case("p007-negative-radius", "SCEML-P007")
+def negative_radius(out: Path) -> None:
+    b, ego = scenario()
+    b.chain(b.root, b.add("InLocationRadius", ego, position=world(5, 5), radius=-2.0), b.end)
+    save(b.scenario, out, "p007-negative-radius.xmi")
+
+
+@case("p008-parameter-ref-in-scenario", "SCEML-P008")
+def parameter_ref_in_scenario(out: Path) -> None:
+    b, ego = scenario()
+    accelerate = b.add("Accelerate", ego)
+    accelerate.targetSpeed = scm.ParameterRef()
+    b.chain(b.root, accelerate, b.end)
+    save(b.scenario, out, "p008-parameter-ref-in-scenario.xmi")
+
+
+# Simultaneity --------------------------------------------------------------------------------
+
+
+@case("c001-parallel-longitudinal", "SCEML-C001")
+def parallel_longitudinal(out: Path) -> None:
+    b, ego = scenario()
+    b.chain(b.root, b.add("Accelerate", ego, targetSpeed=8.0))
+    b.chain(b.root, b.add("Decelerate", ego, targetSpeed=2.0))
+    b.chain(b.join_all(*b.scenario.nodes[2:4]), b.end)
+    save(b.scenario, out, "c001-parallel-longitudinal.xmi")
+
+
+@case("c001-after-join-one", "SCEML-C001")
+def after_join_one(out: Path) -> None:
+    b, ego = scenario()
+    wait = b.add("TimeElapsed", ego, duration=2.0)
+    speed_up = b.add("Accelerate", ego, targetSpeed=8.0)
+    b.chain(b.root, wait)
+    b.chain(b.root, speed_up)
+    # The join finishes with the first branch: the Accelerate may still be running.
+    b.chain(b.join_one(wait, speed_up), b.add("Decelerate", ego, targetSpeed=2.0), b.end)
+    save(b.scenario, out, "c001-after-join-one.xmi")
+
+
+@case("c001-composite-and-lateral", "SCEML-C001")
+def composite_and_lateral(out: Path) -> None:
+    b, ego = scenario()
+    car = b.actor("Car", "car", start=lane(1, -1, 40.0), speed=3.0)
+    overtake = b.add("Overtake", ego, target=car, speed=12.0)
+    change = b.add("LaneChange", ego, direction="right")
+    b.chain(b.root, overtake)
+    b.chain(b.root, change)
+    b.chain(b.join_all(overtake, change), b.end)
+    save(b.scenario, out, "c001-composite-and-lateral.xmi")
+
+
+@case("c001-through-module", "SCEML-C001")
+def through_module(out: Path) -> None:
+    b, ego = scenario()
+    use = b.use(definition(out, "Speedup"), {"driver": ego}, {"target": 12.0})
+    keep = b.add("KeepVelocity", ego, duration=3.0)
+    b.chain(b.root, use)
+    b.chain(b.root, keep)
+    b.chain(b.join_all(use, keep), b.end)
+    save(b.scenario, out, "c001-through-module.xmi")
+
+
+# Plausibility --------------------------------------------------------------------------------
+
+
+@case("l001-pedestrian-50kmh", "SCEML-L001")
+def pedestrian_50kmh(out: Path) -> None:
+    b, ego = scenario()
+    walker = b.actor("Pedestrian", "walker", start=lane(4, 2, 1.0))
+    b.chain(b.root, b.add("Accelerate", walker, targetSpeed=13.9), b.end)
+    save(b.scenario, out, "l001-pedestrian-50kmh.xmi")
+
+
+@case("l001-through-module", "SCEML-L001")
+def fast_crossing(out: Path) -> None:
+    overrides = {**DESTINATION, "crossingSpeed": uniform(1.0, 14.0)}
+    crossing_use(
+        out,
+        "l001-through-module.xmi",
+        lambda c: {"crosser": c["walker"], "trigger": c["car"]},
+        overrides,
+        level="logical",
+    )
+
+
+@case("l002-bicycle-acceleration", "SCEML-L002")
+def bicycle_acceleration(out: Path) -> None:
+    b, ego = scenario()
+    bike = b.actor("Bicycle", "bike", start=lane(1, -2, 5.0))
+    b.chain(b.root, b.add("Accelerate", bike, targetSpeed=6.0, rate=5.0), b.end)
+    save(b.scenario, out, "l002-bicycle-acceleration.xmi")
+
+
+@case("l003-truck-braking", "SCEML-L003")
+def truck_braking(out: Path) -> None:
+    b, ego = scenario()
+    truck = b.actor("Truck", "truck", start=lane(1, 1, 40.0), speed=20.0)
+    b.chain(b.root, b.add("Stop", truck, rate=10.0), b.end)
+    save(b.scenario, out, "l003-truck-braking.xmi")
+
+
+# Modules -------------------------------------------------------------------------------------
+
+
+@case("m001-role-unbound", "SCEML-M001 SCEML-M017")
+def role_unbound(out: Path) -> None:
+    crossing_use(out, "m001-role-unbound.xmi", lambda c: {"crosser": c["walker"]})
+
+
+@case("m002-role-bound-twice", "SCEML-M002")
+def role_bound_twice(out: Path) -> None:
+    b, cast = crossing_scenario()
+    use = b.use(
+        definition(out, "CrossingManeuver"),
+        {"crosser": cast["walker"], "trigger": cast["car"]},
+        DESTINATION,
+    )
+    use.bindings.append(scm.RoleBinding(role="trigger", actor=cast["car"]))
+    b.chain(b.root, use, b.end)
+    save(b.scenario, out, "m002-role-bound-twice.xmi")
+
+
+@case("m003-unknown-role", "SCEML-M003")
+def unknown_role(out: Path) -> None:
+    crossing_use(
+        out,
+        "m003-unknown-role.xmi",
+        lambda c: {"crosser": c["walker"], "trigger": c["car"], "driver": c["ego"]},
+    )
+
+
+@case("m004-car-as-crosser", "SCEML-M004")
+def car_as_crosser(out: Path) -> None:
+    crossing_use(
+        out, "m004-car-as-crosser.xmi", lambda c: {"crosser": c["car"], "trigger": c["ego"]}
+    )
+
+
+@case("m005-unknown-override", "SCEML-M005 SCEML-M017")
+def unknown_override(out: Path) -> None:
+    crossing_use(
+        out,
+        "m005-unknown-override.xmi",
+        lambda c: {"crosser": c["walker"], "trigger": c["car"]},
+        {**DESTINATION, "speed": 2.0},
+    )
+
+
+@case("m006-required-parameter", "SCEML-M006 SCEML-P002")
+def required_parameter(out: Path) -> None:
+    crossing_use(
+        out,
+        "m006-required-parameter.xmi",
+        lambda c: {"crosser": c["walker"], "trigger": c["car"]},
+        {},
+        level="logical",
+    )
+
+
+def module_library(out: Path, name: str, shape: Callable[[LibraryBuilder], None]) -> None:
+    lib = LibraryBuilder("Broken modules")
+    shape(lib)
+    save(lib.library, out, name)
+
+
+@case("m007-no-out-port", "SCEML-M007")
+def no_out_port(out: Path) -> None:
+    def shape(lib: LibraryBuilder) -> None:
+        m = lib.module("Endless")
+        m.definition.nodes.remove(m.out_port)
+        m.chain(m.in_port, m.add("TimeElapsed", m.role("r"), duration=1.0))
+
+    module_library(out, "m007-no-out-port.xmi", shape)
+
+
+@case("m008-in-port-unwired", "SCEML-M008 SCEML-S006 SCEML-S007")
+def in_port_unwired(out: Path) -> None:
+    def shape(lib: LibraryBuilder) -> None:
+        m = lib.module("Unfed")
+        m.chain(m.add("TimeElapsed", m.role("r"), duration=1.0), m.out_port)
+
+    module_library(out, "m008-in-port-unwired.xmi", shape)
+
+
+@case("m009-out-port-merges", "SCEML-M009")
+def out_port_merges(out: Path) -> None:
+    def shape(lib: LibraryBuilder) -> None:
+        m = lib.module("TwoWays")
+        r = m.role("r")
+        m.chain(m.in_port, m.add("TimeElapsed", r, duration=1.0), m.out_port)
+        m.chain(m.in_port, m.add("TimeElapsed", r, duration=2.0), m.out_port)
+
+    module_library(out, "m009-out-port-merges.xmi", shape)
+
+
+@case("m010-root-in-module", "SCEML-M010 SCEML-S006 SCEML-S007")
+def root_in_module(out: Path) -> None:
+    def shape(lib: LibraryBuilder) -> None:
+        m = lib.module("Rooted")
+        m.chain(m.in_port, m.add("TimeElapsed", m.role("r"), duration=1.0), m.out_port)
+        m.definition.nodes.append(scm.RootNode(name="Root"))
+
+    module_library(out, "m010-root-in-module.xmi", shape)
+
+
+@case("m011-port-in-scenario", "SCEML-M011 SCEML-S006 SCEML-S007")
+def port_in_scenario(out: Path) -> None:
+    b, ego = scenario()
+    b.chain(b.root, b.add("Accelerate", ego, targetSpeed=8.0), b.end)
+    b.scenario.nodes.append(scm.InPort(name="In"))
+    save(b.scenario, out, "m011-port-in-scenario.xmi")
+
+
+@case("m012-recursion", "SCEML-M012")
+def recursion(out: Path) -> None:
+    def shape(lib: LibraryBuilder) -> None:
+        outer, inner = lib.module("Outer"), lib.module("Inner")
+        r, s = outer.role("r"), inner.role("s")
+        outer.chain(outer.in_port, outer.use(inner.definition, {"s": r}), outer.out_port)
+        inner.chain(inner.in_port, inner.use(outer.definition, {"r": s}), inner.out_port)
+
+    module_library(out, "m012-recursion.xmi", shape)
+
+
+@case("m013-missing-library", "SCEML-M013 SCEML-M017")
+def missing_library(out: Path) -> None:
+    crossing_use(
+        out, "m013-missing-library.xmi", lambda c: {"crosser": c["walker"], "trigger": c["car"]}
+    )
+
+    def break_href(root: etree._Element) -> None:
+        for element in root.iter("definition"):
+            element.set("href", "lib/no-such-library.xmi#CrossingManeuver")
+
+    edit_xml(out / "m013-missing-library.xmi", break_href)
+
+
+@case("m015-binding-to-nothing", "SCEML-M015 SCEML-M017")
+def binding_to_nothing(out: Path) -> None:
+    b, cast = crossing_scenario()
+    use = b.use(definition(out, "CrossingManeuver"), {"trigger": cast["car"]}, DESTINATION)
+    use.bindings.append(scm.RoleBinding(role="crosser"))
+    b.chain(b.root, use, b.end)
+    save(b.scenario, out, "m015-binding-to-nothing.xmi")
+
+
+@case("m016-duplicate-role-names", "SCEML-M016")
+def duplicate_role_names(out: Path) -> None:
+    def shape(lib: LibraryBuilder) -> None:
+        m = lib.module("Twins")
+        r = m.role("r", "Car")
+        m.role("r", "Bicycle")
+        m.chain(m.in_port, m.add("TimeElapsed", r, duration=1.0), m.out_port)
+
+    module_library(out, "m016-duplicate-role-names.xmi", shape)
+
+
+# Export readiness ----------------------------------------------------------------------------
+
+
+@case("e001-no-map", "SCEML-E001")
+def no_map(out: Path) -> None:
+    b, ego = scenario()
+    b.root.map = None
+    b.chain(b.root, b.add("Accelerate", ego, targetSpeed=8.0), b.end)
+    save(b.scenario, out, "e001-no-map.xmi")
+
+
+@case("e002-no-start-position", "SCEML-E002")
+def no_start_position(out: Path) -> None:
+    b, ego = scenario()
+    b.actor("Bicycle", "bike")
+    b.chain(b.root, b.add("Accelerate", ego, targetSpeed=8.0), b.end)
+    save(b.scenario, out, "e002-no-start-position.xmi")
+
+
+# Several faults at once ----------------------------------------------------------------------
+
+
+@case(
+    "multi-actors-and-values",
+    "SCEML-A003 SCEML-A007 SCEML-L001 SCEML-P001 SCEML-P007 SCEML-E002",
+)
+def actors_and_values(out: Path) -> None:
+    b = ScenarioBuilder("Many", map="town.xodr", level="concrete", date=DATE)
+    walker = b.actor("Pedestrian", "walker", start=lane(4, 2, 1.0))
+    car = b.actor("Car", "car")
+    run = b.add("Accelerate", walker, targetSpeed=span(2.0, 20.0))
+    follow = b.add("Follow", car)
+    near = b.add("InVehicleRadius", walker, target=car, radius=0.0)
+    b.chain(b.root, run, near)
+    b.chain(b.root, follow)
+    b.chain(b.join_all(near, follow), b.end)
+    save(b.scenario, out, "multi-actors-and-values.xmi")
+
+
+@case(
+    "multi-structure",
+    "SCEML-S002 SCEML-S004 SCEML-S006 SCEML-S007 SCEML-S008 SCEML-S009 SCEML-S010 SCEML-S013",
+)
+def structure_faults(out: Path) -> None:
+    b, ego = scenario()
+    second_end = scm.EndNode(name="End")
+    b.scenario.nodes.append(second_end)
+    left = b.add("Accelerate", ego, targetSpeed=8.0)
+    right = b.add("Decelerate", ego, targetSpeed=3.0)
+    b.chain(b.root, left)
+    b.chain(b.root, right)
+    b.chain(b.join_all(left, right), b.end)
+    loop_a = b.add("TimeElapsed", ego, duration=1.0)
+    loop_b = b.add("TimeElapsed", ego, duration=1.0)
+    lonely = b.join_one(right)
+    b.chain(right, loop_a, loop_b, loop_a)
+    b.chain(lonely, second_end)
+    path = save(b.scenario, out, "multi-structure.xmi")
+    edit_xml(path, lambda root: root.findall("flows")[-1].attrib.pop("source"))
+
+
+@case(
+    "multi-levels",
+    "SCEML-C001 SCEML-M004 SCEML-M006 SCEML-P002 SCEML-P003 SCEML-P005 SCEML-P006",
+)
+def level_faults(out: Path) -> None:
+    b, cast = crossing_scenario("logical")
+    ego = cast["ego"]
+    b.chain(b.root, b.add("Accelerate", ego, targetSpeed=uniform(9.0, 4.0), rate=span(3.0, 1.0)))
+    shaky = b.add("Decelerate", ego, targetSpeed=discrete([1.0, 2.0], [0.0, 0.0]))
+    b.chain(b.scenario.nodes[-2], shaky, b.add("FollowTrajectory", ego, waypoints=[world(1, 2)]))
+    use = b.use(
+        definition(out, "CrossingManeuver"), {"crosser": cast["ego"], "trigger": cast["car"]}
+    )
+    b.chain(b.root, use)
+    b.chain(b.join_all(b.scenario.nodes[-2], use), b.end)
+    save(b.scenario, out, "multi-levels.xmi")
+
+
+def build_all(out: Path) -> list[Path]:
+    """Write every case and the MANIFEST under `out`; returns the files written."""
+    out.mkdir(parents=True, exist_ok=True)
+    lines = []
+    for name, codes, build in CASES:
+        build(out)
+        lines.append(f"{name} {codes}".rstrip())
+    manifest = out / "MANIFEST"
+    io.write_atomically(manifest, ("\n".join(lines) + "\n").encode("utf-8"))
+    return [out / name for name, _, _ in CASES] + [manifest]
+
+
+def main(argv: list[str] | None = None) -> None:
+    """Command-line entry point."""
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--out", type=Path, default=HERE, help="folder to write into")
+    for path in build_all(parser.parse_args(argv).out):
+        print(path)
+
+
+if __name__ == "__main__":
+    main()
