@@ -5,7 +5,9 @@ from __future__ import annotations
 from collections.abc import Iterable
 from typing import TypeVar
 
-from pyecore.ecore import EAttribute, EObject, EReference
+from pyecore.ecore import EObject
+
+from .traversal import attributes, containments, cross_references
 
 T = TypeVar("T", bound=EObject)
 
@@ -23,22 +25,23 @@ class Copier:
 
     def copy(self, obj: T) -> T:
         """Copy `obj` and its containment tree (references are set by `copy_references`)."""
-        duplicate = obj.eClass.python_class()
+        eclass = obj.eClass
+        duplicate = eclass.python_class()
         self.copies[obj] = duplicate
-        for feature in obj.eClass.eAllStructuralFeatures():
-            if feature.derived or feature.transient or not obj.eIsSet(feature):
+        for feature in attributes(eclass):
+            if not obj.eIsSet(feature):
                 continue
+            if feature.many:
+                duplicate.eGet(feature).extend(obj.eGet(feature))
+            else:
+                duplicate.eSet(feature, obj.eGet(feature))
+        for feature in containments(eclass):
             held = obj.eGet(feature)
-            if isinstance(feature, EAttribute):
-                if feature.many:
-                    duplicate.eGet(feature).extend(held)
-                else:
-                    duplicate.eSet(feature, held)
-            elif isinstance(feature, EReference) and feature.containment:
-                if feature.many:
+            if feature.many:
+                if held:
                     duplicate.eGet(feature).extend(self.copy(child) for child in held)
-                elif held is not None:
-                    duplicate.eSet(feature, self.copy(held))
+            elif held is not None:
+                duplicate.eSet(feature, self.copy(held))
         return duplicate
 
     def copy_all(self, objects: Iterable[T]) -> list[T]:
@@ -48,14 +51,10 @@ class Copier:
     def copy_references(self) -> None:
         """Set every non-containment reference of the copies, mapped into the copies."""
         for original, duplicate in list(self.copies.items()):
-            for feature in original.eClass.eAllReferences():
-                if feature.containment or feature.derived or feature.transient:
-                    continue
-                if feature.eOpposite is not None and feature.eOpposite.containment:
-                    continue  # the container link, set by containment
-                if not original.eIsSet(feature):
-                    continue
+            for feature in cross_references(original.eClass):
                 held = original.eGet(feature)
+                if held is None or (feature.many and not held):
+                    continue
                 if feature.many:
                     duplicate.eGet(feature).extend(self.copies.get(t, t) for t in held)
                 elif held is not None:

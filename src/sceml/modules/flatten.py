@@ -9,9 +9,11 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
+from ..collector import collector_paused
 from ..copying import Copier, copy_tree
 from ..graph import predecessors, successors
 from ..io import model_path
+from ..traversal import all_contents, cross_references
 from . import naming
 from .errors import FlattenError
 from .resolve import definition_key, location, resolved_definition, unwrap
@@ -39,12 +41,18 @@ def flatten(scenario: scm.Scenario) -> scm.Scenario:
 
 def expand(scenario: scm.Scenario) -> Flattened:
     """Like `flatten`, and also report which uses were expanded."""
+    with collector_paused():
+        return _expand(scenario)
+
+
+def _expand(scenario: scm.Scenario) -> Flattened:
     copier = Copier()
     flat = copier.copy(scenario)
     copier.copy_references()
     expansion = _Expansion(flat, {copy: original for original, copy in copier.copies.items()})
     for use in [node for node in flat.nodes if isinstance(node, scm.ModuleUse)]:
         expansion.inline(use, ())
+    expansion.commit()
     _check_self_contained(flat)
     return Flattened(flat, expansion.expanded)
 
@@ -58,6 +66,28 @@ class _Expansion:
         self.origins = origins
         self.taken = {str(node.name) for node in graph.nodes if node.name}
         self.expanded: list[str] = []
+        # The graph's own collections are pyecore ordered sets, whose insert and remove cost
+        # O(n); the expansion collects its changes in plain containers and commits them once,
+        # which keeps flattening linear in the size of the result.
+        self.replacements: dict[EObject, list[scm.GraphElement]] = {}
+        self.added_flows: list[scm.Flow] = []
+        self.dead_flows: set[scm.Flow] = set()
+
+    def commit(self) -> None:
+        """Give the graph its final nodes, in reading order, and its live flows."""
+        nodes: list[scm.GraphElement] = []
+        pending = list(reversed(self.graph.nodes))
+        while pending:
+            node = pending.pop()
+            if node in self.replacements:
+                pending.extend(reversed(self.replacements[node]))
+            else:
+                nodes.append(node)
+        flows = [f for f in (*self.graph.flows, *self.added_flows) if f not in self.dead_flows]
+        self.graph.nodes.clear()
+        self.graph.nodes.extend(nodes)
+        self.graph.flows.clear()
+        self.graph.flows.extend(flows)
 
     def where(self, obj: EObject) -> dict:
         """Location keywords of the element `obj` was copied from."""
@@ -97,12 +127,31 @@ class _Expansion:
         for node in nodes:
             node.name = naming.unique(naming.scoped(str(use.name), str(node.name)), self.taken)
             self.taken.add(node.name)
-        position = list(self.graph.nodes).index(use)
-        inner = [n for n in nodes if n is not in_port and n is not out_port]
-        for offset, node in enumerate(inner):
-            self.graph.nodes.insert(position + offset, node)
-        self.graph.flows.extend(flows)
-        _rewire(self.graph, use, in_port, out_port)
+        self.replacements[use] = [n for n in nodes if n is not in_port and n is not out_port]
+        self.added_flows.extend(flows)
+        self._rewire(use, in_port, out_port)
+
+    def _rewire(self, use: scm.ModuleUse, in_port: scm.InPort, out_port: scm.OutPort) -> None:
+        entries = successors(in_port)
+        exits = predecessors(out_port)
+        before = predecessors(use)
+        after = successors(use)
+        # A module whose in-port leads straight to its out-port passes activation through.
+        sources = [*exits, *(before if out_port in entries else [])]
+        for source in before:
+            for entry in entries:
+                if entry is not out_port:
+                    self.added_flows.append(scm.Flow(source=source, target=entry))
+        for exit_ in sources:
+            if exit_ is in_port:
+                continue
+            for target in after:
+                self.added_flows.append(scm.Flow(source=exit_, target=target))
+        for node in (use, in_port, out_port):
+            for flow in [*node.incoming, *node.outgoing]:
+                flow.source = None
+                flow.target = None
+                self.dead_flows.add(flow)
 
 
 def _ports(
@@ -141,8 +190,8 @@ def _bind_roles(
             )
         actors[role] = bound[role.name]
     for obj in _with_contents(nodes):
-        for feature in obj.eClass.eAllReferences():
-            if feature.containment or feature.many or feature.derived or feature.transient:
+        for feature in cross_references(obj.eClass):
+            if feature.many:
                 continue
             target = obj.eGet(feature)
             if target is not None and unwrap(target) in actors:
@@ -181,48 +230,15 @@ def _bind_parameters(
 
 
 def _with_contents(nodes: list) -> list[EObject]:
-    return [obj for node in nodes for obj in (node, *node.eAllContents())]
-
-
-def _rewire(
-    graph: scm.Graph, use: scm.ModuleUse, in_port: scm.InPort, out_port: scm.OutPort
-) -> None:
-    entries = successors(in_port)
-    exits = predecessors(out_port)
-    before = predecessors(use)
-    after = successors(use)
-    # A module whose in-port leads straight to its out-port passes activation through.
-    sources = [*exits, *(before if out_port in entries else [])]
-    for source in before:
-        for entry in entries:
-            if entry is not out_port:
-                graph.flows.append(scm.Flow(source=source, target=entry))
-    for exit_ in sources:
-        if exit_ is in_port:
-            continue
-        for target in after:
-            graph.flows.append(scm.Flow(source=exit_, target=target))
-    for node in (use, in_port, out_port):
-        for flow in [*node.incoming, *node.outgoing]:
-            _remove_flow(graph, flow)
-    graph.nodes.remove(use)
-
-
-def _remove_flow(graph: scm.Graph, flow: scm.Flow) -> None:
-    flow.source = None
-    flow.target = None
-    if flow in graph.flows:
-        graph.flows.remove(flow)
+    return [obj for node in nodes for obj in (node, *all_contents(node))]
 
 
 def _check_self_contained(flat: scm.Scenario) -> None:
     # Anything still pointing into a library (a role of another module, say) would make the
     # flattened file depend on the library it is meant to replace.
-    for obj in flat.eAllContents():
-        for feature in obj.eClass.eAllReferences():
-            if feature.containment or feature.derived or feature.transient or feature.many:
-                continue
-            if feature.eOpposite is not None and feature.eOpposite.containment:
+    for obj in all_contents(flat):
+        for feature in cross_references(obj.eClass):
+            if feature.many:
                 continue
             target = obj.eGet(feature)
             if target is not None and _root_of(unwrap(target)) is not flat:

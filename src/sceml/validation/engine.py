@@ -2,15 +2,16 @@
 
 from __future__ import annotations
 
-import gc
 from collections.abc import Iterator
 
 from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
+from ..collector import collector_paused
 from ..diagnostics import Diagnostic, Severity
 from ..io import Document, model_path, uri_fragment
+from ..traversal import all_contents
 from .context import Context
 from .limits import Limits
 from .registry import REGISTRY, Registry, Rule, findings
@@ -45,7 +46,7 @@ def iter_diagnostics(
         if not flat.from_module(node):
             continue
         origin = flat.origin(node)
-        for obj in (node, *node.eAllContents()):
+        for obj in (node, *all_contents(node)):
             for rule in registry.rules_for(obj.eClass):
                 if rule.through_modules:
                     found = _run(rule, obj, context, document, at=origin)
@@ -54,16 +55,8 @@ def iter_diagnostics(
 
 def validate(model: EObject, **options: object) -> list[Diagnostic]:
     """The list of every diagnostic (see `iter_diagnostics`)."""
-    # The pass allocates a few containers per node while the model holds millions of objects;
-    # CPython's cyclic collector would rescan all of them over and over (seconds on 50k nodes).
-    # Nothing the pass creates needs the collector, so it is paused for the pass only.
-    paused = gc.isenabled()
-    gc.disable()
-    try:
+    with collector_paused():
         return list(iter_diagnostics(model, **options))  # type: ignore[arg-type]
-    finally:
-        if paused:
-            gc.enable()
 
 
 def is_valid(model: EObject, **options: object) -> bool:
@@ -78,7 +71,7 @@ def _objects(model: EObject, context: Context) -> Iterator[EObject]:
     pending: list[EObject] = [model]
     while pending:
         top = pending.pop(0)
-        for obj in (top, *top.eAllContents()):
+        for obj in (top, *all_contents(top)):
             yield obj
             if isinstance(obj, scm.ModuleUse):
                 definition = context.definition_of(obj)
