@@ -19,6 +19,7 @@ from pyecore.resources.xmi import XMIOptions, XMIResource
 
 import scemlmodel as scm
 
+from .collector import collector_paused
 from .errors import LoadError, SaveError
 
 #: Files larger than this are refused before parsing (bytes); a scenario of 50,000 nodes is ~15 MB.
@@ -136,7 +137,8 @@ class SafeXMIResource(XMIResource):
         # unique per file (ModuleDefinition.name is one).
         self._sceml_ids: dict[tuple[str, str], tuple[EObject, int | None]] = {}
         try:
-            self._decode_tree(tree, options)
+            with collector_paused():
+                self._decode_tree(tree, options)
         except LoadError:
             raise
         except _Located as error:
