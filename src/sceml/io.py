@@ -597,3 +597,24 @@ def write_atomically(path: str | Path, data: bytes) -> None:
         if isinstance(error, OSError):
             raise SaveError(f"cannot write file: {error.strerror}", file=path) from None
         raise
+
+
+#: Configuration files (limits, ranges) are small; anything bigger is a mistake or an attack.
+CONFIG_MAX_BYTES = 1024 * 1024
+
+
+def read_config_text(path: str | Path, what: str, max_bytes: int = CONFIG_MAX_BYTES) -> str:
+    """The UTF-8 text of a small configuration file; LoadError names the file and the problem."""
+    path = Path(path)
+    try:
+        size = path.stat().st_size
+        if size > max_bytes:
+            raise LoadError(f"{what} is {size} bytes, above the {max_bytes} byte limit", file=path)
+        data = path.read_bytes()
+    except OSError as error:
+        raise LoadError(f"cannot read {what}: {error.strerror}", file=path) from None
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError as error:
+        line = data[: error.start].count(b"\n") + 1
+        raise LoadError(f"{what} is not UTF-8 (byte {error.start})", file=path, line=line) from None

@@ -31,3 +31,19 @@ def test_alias_bomb_is_refused_quickly(tmp_path: Path) -> None:
     limits.write_text("\n".join(lines) + "\n")
     with deadline(10), pytest.raises(SceMLError):
         load_limits(limits)
+
+
+def test_limits_file_that_is_not_utf8_is_a_clean_error(tmp_path: Path) -> None:
+    limits = tmp_path / "limits.yaml"
+    limits.write_bytes(b"Car:\n  maxSpeed: 3\xff\n")
+    with pytest.raises(SceMLError, match=r"not UTF-8 \(byte 18\)") as caught:
+        load_limits(limits)
+    assert caught.value.file == str(limits) and caught.value.line == 2
+
+
+def test_oversized_limits_file_is_refused_before_reading(tmp_path: Path) -> None:
+    limits = tmp_path / "limits.yaml"
+    with limits.open("wb") as stream:
+        stream.truncate(5 * 1024 * 1024)  # sparse: costs no disk
+    with deadline(5), pytest.raises(SceMLError, match="above the 1048576 byte limit"):
+        load_limits(limits)

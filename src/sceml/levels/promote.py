@@ -26,6 +26,7 @@ import scemlmodel as scm
 
 from .. import build, catalog, params
 from ..errors import LoadError
+from ..io import read_config_text
 from .apply import copy_scenario, set_level
 from .paths import LevelError, find_feature, place, resolve, slots, unresolved
 
@@ -40,13 +41,7 @@ _FORMS = (
 
 def load_ranges(path: Path, max_bytes: int = MAX_RANGES_BYTES) -> dict[str, Any]:
     """Read a ranges file (YAML, or JSON by its .json suffix) safely into {path: spec}."""
-    try:
-        size = path.stat().st_size
-        if size > max_bytes:
-            raise LoadError(f"ranges file is {size} bytes, above the {max_bytes} limit", file=path)
-        text = path.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as error:
-        raise LoadError(f"cannot read ranges file: {error}", file=path) from None
+    text = read_config_text(path, "ranges file", max_bytes)
     try:
         data = json.loads(text) if path.suffix.lower() == ".json" else yaml.safe_load(text)
     except json.JSONDecodeError as error:

@@ -26,7 +26,8 @@ import yaml
 import scemlmodel as scm
 
 from .. import catalog
-from ..errors import SceMLError
+from ..errors import LoadError, SceMLError
+from ..io import read_config_text
 
 #: The limit names a table may use, with what each bounds.
 LIMIT_KEYS = {
@@ -88,9 +89,9 @@ def load_limits(path: str | Path, base: Limits | None = None) -> Limits:
     """Read a YAML or TOML limits file and lay it over `base` (the built-in table by default)."""
     path = Path(path)
     try:
-        text = path.read_text(encoding="utf-8")
-    except OSError as error:
-        raise LimitsError(f"cannot read limits file: {error.strerror}", file=path) from None
+        text = read_config_text(path, "limits file")
+    except LoadError as error:
+        raise LimitsError(error.message, file=path, line=error.line) from None
     try:
         toml = path.suffix.lower() == ".toml"
         data = tomllib.loads(text) if toml else yaml.safe_load(text)
