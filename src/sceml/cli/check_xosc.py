@@ -3,8 +3,6 @@
 from __future__ import annotations
 
 import sys
-from collections.abc import Iterator
-from contextlib import contextmanager
 from pathlib import Path
 
 import click
@@ -12,10 +10,9 @@ import click
 from .. import schema
 from ..diagnostics import Diagnostic, Severity
 from ..errors import SceMLError
-from ..io import write_atomically
 from ..qualitychecker import QualityCheckerError, run_quality_checker
 from ..report import FileReport, exit_code, format_json, render
-from .common import ReportedError
+from .common import ReportedError, emit_report, file_progress, report_options
 
 XSD_CODE = "XOSC-XSD"
 SKIPPED_CODE = "XOSC-QC-SKIPPED"
@@ -77,37 +74,14 @@ def _quality(path: Path, version: str) -> list[Diagnostic]:
     ]
 
 
-@contextmanager
-def _progress(files: tuple[Path, ...]) -> Iterator[Iterator[Path]]:
-    if len(files) > 1 and sys.stderr.isatty():
-        with click.progressbar(files, label="checking", file=sys.stderr) as bar:
-            yield iter(bar)
-    else:
-        yield iter(files)
-
-
 @click.command("check-xosc")
 @click.argument("files", nargs=-1, required=True, type=click.Path(dir_okay=False, path_type=Path))
-@click.option(
-    "--format",
-    "output_format",
-    type=click.Choice(["text", "json", "junit"]),
-    default="text",
-    show_default=True,
-    help="text: compiler-style lines; json: as `sceml validate --format json`; junit: JUnit XML.",
-)
-@click.option("--strict", is_flag=True, help="Count warnings as errors (exit 1, JUnit failures).")
+@report_options(json_help="as `sceml validate --format json`")
 @click.option(
     "--no-quality-checker",
     "skip_quality",
     is_flag=True,
     help="Check the XSD only, without ASAM's Quality Checker bundle.",
-)
-@click.option(
-    "-o",
-    "--output",
-    type=click.Path(dir_okay=False, path_type=Path),
-    help="Write the report to this file (atomically) instead of standard output.",
 )
 def check_xosc(
     files: tuple[Path, ...],
@@ -123,16 +97,13 @@ def check_xosc(
     errors or files that cannot be read (missing, malformed, DOCTYPE, unknown version).
     """
     try:
-        with _progress(files) as todo:
+        with file_progress(files, "checking") as todo:
             reports = [check_file(path, quality=not skip_quality) for path in todo]
         if output_format == "json":
             text = format_json(reports, tool="sceml check-xosc")
         else:
             text = render(reports, output_format, strict)
-        if output is not None:
-            write_atomically(output, text.encode("utf-8"))
-        else:
-            click.echo(text, nl=False)
+        emit_report(text, output)
     except SceMLError as error:
         raise ReportedError(error) from None
     sys.exit(exit_code(reports, strict))

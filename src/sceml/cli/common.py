@@ -2,11 +2,18 @@
 
 from __future__ import annotations
 
-from typing import Any
+import sys
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
+from pathlib import Path
+from typing import Any, TypeVar
 
 import click
 
 from ..errors import SceMLError
+from ..io import write_atomically
+
+F = TypeVar("F", bound=Callable[..., Any])
 
 
 class ReportedError(click.ClickException):
@@ -26,3 +33,51 @@ class SceMLGroup(click.Group):
             return super().invoke(ctx)
         except SceMLError as error:
             raise ReportedError(error) from None
+
+
+@contextmanager
+def file_progress(files: tuple[Path, ...], label: str) -> Iterator[Iterator[Path]]:
+    """Iterate over files with a progress bar when a person is watching several of them.
+
+    CI logs and pipes get no bar: it would only add noise there.
+    """
+    if len(files) > 1 and sys.stderr.isatty():
+        with click.progressbar(files, label=label, file=sys.stderr) as bar:
+            yield iter(bar)
+    else:
+        yield iter(files)
+
+
+def report_options(json_help: str) -> Callable[[F], F]:
+    """The options of every command that writes a diagnostics report: --format, --strict, -o."""
+
+    def decorate(command: F) -> F:
+        command = click.option(
+            "-o",
+            "--output",
+            type=click.Path(dir_okay=False, path_type=Path),
+            default=None,
+            help="Write the report to this file (atomically) instead of standard output.",
+        )(command)
+        command = click.option(
+            "--strict", is_flag=True, help="Count warnings as errors (exit 1, JUnit failures)."
+        )(command)
+        return click.option(
+            "--format",
+            "output_format",
+            type=click.Choice(["text", "json", "junit"]),
+            default="text",
+            show_default=True,
+            help=f"text: compiler-style lines; json: {json_help}; junit: JUnit XML, one testcase "
+            "per file and one failure per error.",
+        )(command)
+
+    return decorate
+
+
+def emit_report(text: str, output: Path | None) -> None:
+    """Write a report to `output` atomically, or to standard output."""
+    if output is not None:
+        write_atomically(output, text.encode("utf-8"))
+    else:
+        click.echo(text, nl=False)

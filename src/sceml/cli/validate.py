@@ -3,18 +3,16 @@
 from __future__ import annotations
 
 import sys
-from collections.abc import Iterator
-from contextlib import contextmanager
 from pathlib import Path
 
 import click
 
 from ..errors import LoadError, SceMLError
-from ..io import load, write_atomically
+from ..io import load
 from ..report import FileReport, exit_code, render
 from ..validation import Limits, load_limits
 from ..validation import validate as validate_model
-from .common import ReportedError
+from .common import ReportedError, emit_report, file_progress, report_options
 
 OSC_VERSIONS = ("1.0", "1.1", "1.2", "1.3")
 
@@ -32,28 +30,9 @@ def validate_file(path: Path, limits: Limits, osc_version: str | None) -> FileRe
     return FileReport(str(path), diagnostics)
 
 
-@contextmanager
-def _progress(files: tuple[Path, ...]) -> Iterator[Iterator[Path]]:
-    # A bar only helps a person watching many files; CI logs and pipes get none.
-    if len(files) > 1 and sys.stderr.isatty():
-        with click.progressbar(files, label="validating", file=sys.stderr) as bar:
-            yield iter(bar)
-    else:
-        yield iter(files)
-
-
 @click.command("validate")
 @click.argument("files", nargs=-1, required=True, type=click.Path(dir_okay=False, path_type=Path))
-@click.option(
-    "--format",
-    "output_format",
-    type=click.Choice(["text", "json", "junit"]),
-    default="text",
-    show_default=True,
-    help="text: compiler-style lines; json: see docs/validation-json.md; junit: JUnit XML, one "
-    "testcase per file and one failure per error.",
-)
-@click.option("--strict", is_flag=True, help="Count warnings as errors (exit 1, JUnit failures).")
+@report_options(json_help="see docs/validation-json.md")
 @click.option(
     "--limits",
     "limits_file",
@@ -66,13 +45,6 @@ def _progress(files: tuple[Path, ...]) -> Iterator[Iterator[Path]]:
     default=None,
     help="Also check that every node kind of a concrete scenario can be exported to this "
     "OpenSCENARIO version.",
-)
-@click.option(
-    "-o",
-    "--output",
-    type=click.Path(dir_okay=False, path_type=Path),
-    default=None,
-    help="Write the report to this file (atomically) instead of standard output.",
 )
 def validate(
     files: tuple[Path, ...],
@@ -90,13 +62,9 @@ def validate(
     """
     try:
         limits = load_limits(limits_file) if limits_file is not None else Limits()
-        with _progress(files) as todo:
+        with file_progress(files, "validating") as todo:
             reports = [validate_file(path, limits, osc_version) for path in todo]
-        text = render(reports, output_format, strict)
-        if output is not None:
-            write_atomically(output, text.encode("utf-8"))
-        else:
-            click.echo(text, nl=False)
+        emit_report(render(reports, output_format, strict), output)
     except SceMLError as error:
         raise ReportedError(error) from None
     sys.exit(exit_code(reports, strict))
