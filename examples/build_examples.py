@@ -182,6 +182,38 @@ def add_overtaking_modules(library: LibraryBuilder) -> None:
     overtaking.chain(overtaking.join_all(pass_use, approach), overtaking.out_port)
 
 
+def add_ego(b: ScenarioBuilder, where: dict, level: str) -> scm.Actor:
+    """The ego car of both intersection scenarios, on its start lane."""
+    pick = chooser(level)
+    return b.actor(
+        "Car",
+        "ego",
+        ego=True,
+        start=on_lane(where["ego_start"], level),
+        speed=pick(5.0, span(3.0, 7.0, 1.0)),
+        model="vehicle.tesla.model3",
+    )
+
+
+def add_ego_turn(
+    b: ScenarioBuilder, ego: scm.Actor, turn: str, speed: float, where: dict, level: str
+) -> None:
+    """The ego's branch of UIS1 and UIS2: accelerate, turn, and sync 1 (it reaches its
+    destination around the corner), from the root to the end node."""
+    pick = chooser(level)
+    spread = normal(speed, 1.0, speed - 2.0, speed + 2.0)
+    accelerate = b.add("Accelerate", ego, **given(targetSpeed=pick(speed, spread), rate=pick(2.0)))
+    turning = b.add(
+        turn, ego, **given(destination=at(where["ego_destination"], level), tolerance=pick(3.0))
+    )
+    arrived = b.add(
+        "InLocationRadius",
+        ego,
+        **given(position=at(where["ego_destination"], level), radius=pick(3.0)),
+    )
+    b.chain(b.root, accelerate, turning, arrived, b.end)
+
+
 def build_uis1(level: str, where: dict) -> scm.Scenario:
     """UIS1: the ego turns right; a bike on a parallel lane crosses right after the intersection."""
     pick = chooser(level)
@@ -194,14 +226,7 @@ def build_uis1(level: str, where: dict) -> scm.Scenario:
         description="Urban intersection: the ego turns right while a bike crosses the street.",
     )
     b.environment(time_of_day="12:00:00", cloud_state="free", precipitation="dry")
-    ego = b.actor(
-        "Car",
-        "ego",
-        ego=True,
-        start=on_lane(where["ego_start"], level),
-        speed=pick(5.0, span(3.0, 7.0, 1.0)),
-        model="vehicle.tesla.model3",
-    )
+    ego = add_ego(b, where, level)
     bike = b.actor(
         "Bicycle",
         "bike",
@@ -209,21 +234,7 @@ def build_uis1(level: str, where: dict) -> scm.Scenario:
         speed=pick(0.0),
         model="vehicle.diamondback.century",
     )
-    accelerate = b.add(
-        "Accelerate",
-        ego,
-        **given(targetSpeed=pick(8.0, normal(8.0, 1.0, 6.0, 10.0)), rate=pick(2.0)),
-    )
-    turn = b.add(
-        "TurnRight",
-        ego,
-        **given(destination=at(where["ego_destination"], level), tolerance=pick(3.0)),
-    )
-    ego_arrived = b.add(
-        "InLocationRadius",
-        ego,
-        **given(position=at(where["ego_destination"], level), radius=pick(3.0)),
-    )
+    add_ego_turn(b, ego, "TurnRight", 8.0, where, level)
     ego_close = b.add(
         "InVehicleRadius", bike, target=ego, **given(radius=pick(12.0, span(8.0, 16.0, 4.0)))
     )
@@ -240,7 +251,6 @@ def build_uis1(level: str, where: dict) -> scm.Scenario:
         bike,
         **given(position=at(where["bike_destination"], level), radius=pick(2.0)),
     )
-    b.chain(b.root, accelerate, turn, ego_arrived, b.end)
     b.chain(b.root, ego_close, bike_go, cross, bike_arrived, b.end)
     return b.scenario
 
@@ -258,14 +268,7 @@ def build_uis2(level: str, where: dict, library: scm.Library) -> scm.Scenario:
         "pedestrian crosses on the left.",
     )
     b.environment(time_of_day="12:00:00", cloud_state="free", precipitation="dry")
-    ego = b.actor(
-        "Car",
-        "ego",
-        ego=True,
-        start=on_lane(where["ego_start"], level),
-        speed=pick(5.0, span(3.0, 7.0, 1.0)),
-        model="vehicle.tesla.model3",
-    )
+    ego = add_ego(b, where, level)
     car = b.actor(
         "Car",
         "car",
@@ -280,21 +283,7 @@ def build_uis2(level: str, where: dict, library: scm.Library) -> scm.Scenario:
         speed=pick(0.0),
         model="walker.pedestrian.0001",
     )
-    accelerate = b.add(
-        "Accelerate",
-        ego,
-        **given(targetSpeed=pick(7.0, normal(7.0, 1.0, 5.0, 9.0)), rate=pick(2.0)),
-    )
-    turn = b.add(
-        "TurnLeft",
-        ego,
-        **given(destination=at(where["ego_destination"], level), tolerance=pick(3.0)),
-    )
-    ego_arrived = b.add(
-        "InLocationRadius",
-        ego,
-        **given(position=at(where["ego_destination"], level), radius=pick(3.0)),
-    )
+    add_ego_turn(b, ego, "TurnLeft", 7.0, where, level)
     ego_in_junction = b.add(
         "InLocationRadius",
         ego,
@@ -318,7 +307,6 @@ def build_uis2(level: str, where: dict, library: scm.Library) -> scm.Scenario:
         destinationHeading=pick(round(destination["h"], 6)),
     )
     pedestrian_part = b.use(crossing, {"crosser": pedestrian, "trigger": car}, overrides)
-    b.chain(b.root, accelerate, turn, ego_arrived, b.end)
     b.chain(b.root, ego_in_junction, drive, b.end)
     b.chain(b.root, pedestrian_part, b.end)
     return b.scenario
