@@ -273,10 +273,22 @@ def parse_file(path: str | os.PathLike[str]) -> etree._ElementTree:
     Raises UnsafeXMLError for documents with a DOCTYPE (checked before parsing, so entity
     bombs are never expanded and external entities never fetched) and XMLParseError for
     malformed XML; both carry ``file`` and ``line`` and print gcc-style as ``file:line: ...``.
-    OSError propagates for unreadable files.
+    Files above ``sceml.io.max_bytes_limit()`` (64 MB, or $SCEML_MAX_BYTES) raise SchemaError
+    unread. OSError propagates for unreadable files.
     """
+    from sceml.io import max_bytes_limit  # deferred: sceml.io imports pyecore and the metamodel
+
     name = os.fspath(path)
+    limit = max_bytes_limit()
     with open(name, "rb") as fh:
+        # Refused by size before reading, like models: the file is parsed in memory.
+        size = os.fstat(fh.fileno()).st_size
+        if size > limit:
+            raise SchemaError(
+                f"file is {size / 1e6:.1f} MB, above the {limit / 1e6:.0f} MB limit "
+                f"(set SCEML_MAX_BYTES to change it)",
+                file=name,
+            )
         data = fh.read()
     doctype_line = _doctype_line(data)
     if doctype_line is not None:

@@ -103,7 +103,7 @@ def test_promote_refuses_a_malformed_ranges_file(tmp_path: Path) -> None:
         promote, [EXAMPLES / "uis1-functional.xmi", "--ranges", ranges, "-o", tmp_path / "o.xmi"]
     )
     assert result.exit_code == 2
-    assert "malformed YAML" in result.output
+    assert "malformed ranges file" in result.output
 
 
 def _numbers_in(xosc: Path) -> dict[str, float]:

@@ -3,17 +3,15 @@ random damage to real files ends in a SceML error, never a traceback or a hang."
 
 from __future__ import annotations
 
-import importlib.util
 import signal
-import sys
 from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
-from types import ModuleType
 
 from click.testing import CliRunner
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
+from strategies import scenarios as shared_scenarios
 
 import scemlmodel as scm
 from sceml import io
@@ -66,25 +64,11 @@ def test_random_scenarios_round_trip_unchanged(tmp_path: Path, scenario: scm.Sce
     assert differences(scenario, io.load(path).root) == []
 
 
-def _shared_strategies() -> ModuleType:
-    spec = importlib.util.spec_from_file_location(
-        "sceml_test_strategies", Path(__file__).resolve().parents[1] / "strategies.py"
-    )
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = module  # its dataclasses look themselves up there
-    spec.loader.exec_module(module)
-    return module
-
-
-SHARED = _shared_strategies()
-
-
 @PROPERTY
 @given(data=st.data())
 def test_shared_random_scenarios_round_trip(tmp_path: Path, data: st.DataObject) -> None:
     level = data.draw(st.sampled_from(["functional", "logical", "concrete"]))
-    scenario = data.draw(SHARED.scenarios(level))
+    scenario = data.draw(shared_scenarios(level))
     path = io.save(scenario, tmp_path / "random.xmi")
     reloaded = io.load(path).root
     assert differences(scenario, reloaded) == []

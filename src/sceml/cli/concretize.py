@@ -46,6 +46,7 @@ def concretize(file: Path, assignments: tuple[str, ...], output: Path) -> None:
     try:
         values = dict(parse_assignment(text) for text in assignments)
         document = io.load_scenario(file)
+        _refuse_unresolved(document)
         result = make_concrete(document.root, values)
         relocate_map(result, file, output)
         io.save(result, output)
@@ -70,3 +71,14 @@ def report_validation(model: scm.Scenario, output: Path) -> None:
         )
     if any(d.severity >= Severity.ERROR for d in found):
         raise click.exceptions.Exit(1)
+
+
+def _refuse_unresolved(document: io.Document) -> None:
+    # The copy concretize works on has no file, so report a broken reference here, located.
+    for holder, _href, reason in io.unresolved_references(document.root):
+        raise SceMLError(
+            reason,
+            file=document.path,
+            line=document.line_of(holder),
+            element=io.model_path(holder),
+        )

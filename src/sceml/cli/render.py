@@ -8,7 +8,7 @@ from typing import cast
 import click
 
 from ..errors import SceMLError
-from ..io import load, write_atomically
+from ..io import load, model_path, unresolved_references, write_atomically
 from ..render import FORMATS, ModuleChoiceError, View, diagram, to_bytes
 from ..render.flow import Modules
 from .common import ReportedError
@@ -61,11 +61,13 @@ def render(
 ) -> None:
     """Draw FILE, a scenario or a module library (.xmi), as a diagram.
 
-    Exits 0 when the diagram is written, 2 for usage errors or unreadable input.
+    Exits 0 when the diagram is written, 1 when it is written but a module use's definition
+    cannot be loaded (drawn as broken), 2 for usage errors or unreadable input.
     """
     fmt = output_format(output)
     try:
-        root = load(file).root
+        document = load(file)
+        root = document.root
         graph = diagram(
             root,
             view=cast(View, view),
@@ -79,3 +81,11 @@ def render(
     except SceMLError as error:
         raise ReportedError(error) from None
     click.echo(f"wrote {output}")
+    # The diagram draws a broken module use as such; the exit status still says it is broken.
+    broken = list(unresolved_references(root))
+    for holder, _href, reason in broken:
+        line = document.line_of(holder)
+        where = f"{file}:{line}" if line else str(file)
+        click.echo(f"Error: {where}: {reason} ({model_path(holder)})", err=True)
+    if broken:
+        raise SystemExit(1)

@@ -18,11 +18,11 @@ from ..diagnostics import Severity
 from ..errors import SceMLError
 from ..graph import root_node
 from ..levels.batch import BatchConfig, run_batch
-from ..levels.checks import validate_model
 from ..levels.manifest import SampleRecord, write_manifest
 from ..levels.paths import LevelError
 from ..levels.sampling import STRATEGIES, plan_for, values_at
 from ..levels.space import parameter_space
+from ..validation import validate
 from .common import ReportedError
 
 _FORMATS = {"xmi": ("xmi",), "xosc": ("xosc",), "both": ("xosc", "xmi")}
@@ -99,9 +99,10 @@ def sample(
     lists each sample's index, status, files and the value of every varied parameter.
     """
     try:
-        scenario = io.load_scenario(logical).root
+        document = io.load_scenario(logical)
+        scenario = document.root
         _require_logical(scenario, logical)
-        _require_valid(scenario, logical)
+        _require_valid(document, logical)
         space = parameter_space(scenario)
         if index is not None and strategy == "lhs" and n is None:
             raise click.UsageError("--index with --strategy lhs needs the --n of the run")
@@ -109,6 +110,7 @@ def sample(
         indices = np.arange(plan.n) if index is None else np.array([index])
         rows = values_at(space, plan, indices)
     except SceMLError as error:
+        error.file = error.file or str(logical)  # e.g. a grid too large: the file is the cause
         raise ReportedError(error) from None
     config = BatchConfig(
         logical=logical,
@@ -147,13 +149,14 @@ def _require_logical(scenario: scm.Scenario, file: Path) -> None:
         raise LevelError(f"only logical scenarios are sampled; this one is {level}", file=file)
 
 
-def _require_valid(scenario: scm.Scenario, file: Path) -> None:
+def _require_valid(document: io.Document, file: Path) -> None:
     # Samples only change numbers: rules about structure, actors and modules are checked once here.
-    found = validate_model(scenario) or []
+    found = validate(document.root, document=document)
     errors = [d for d in found if d.severity >= Severity.ERROR]
     for diagnostic in errors:
+        where = f"{diagnostic.file or file}" + (f":{diagnostic.line}" if diagnostic.line else "")
         click.echo(
-            f"{file}: {diagnostic.severity}[{diagnostic.code}] {diagnostic.message}", err=True
+            f"{where}: {diagnostic.severity}[{diagnostic.code}] {diagnostic.message}", err=True
         )
     if errors:
         raise click.exceptions.Exit(1)

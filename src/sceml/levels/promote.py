@@ -15,18 +15,15 @@ Coordinates of a position take the same forms as any parameter.
 
 from __future__ import annotations
 
-import json
 from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
-
-import yaml
 
 import scemlmodel as scm
 
 from .. import build, catalog, params
 from ..errors import LoadError
-from ..io import read_config_text
+from ..io import load_config
 from .apply import copy_scenario, set_level
 from .paths import LevelError, find_feature, place, resolve, slots, unresolved
 
@@ -40,16 +37,8 @@ _FORMS = (
 
 
 def load_ranges(path: Path, max_bytes: int = MAX_RANGES_BYTES) -> dict[str, Any]:
-    """Read a ranges file (YAML, or JSON by its .json suffix) safely into {path: spec}."""
-    text = read_config_text(path, "ranges file", max_bytes)
-    try:
-        data = json.loads(text) if path.suffix.lower() == ".json" else yaml.safe_load(text)
-    except json.JSONDecodeError as error:
-        raise LoadError(f"malformed JSON: {error.msg}", file=path, line=error.lineno) from None
-    except yaml.YAMLError as error:
-        mark = getattr(error, "problem_mark", None)
-        line = mark.line + 1 if mark is not None else None
-        raise LoadError(f"malformed YAML: {error}", file=path, line=line) from None
+    """Read a ranges file (YAML; JSON or TOML by suffix) safely into {path: spec}."""
+    data = load_config(path, "ranges file", max_bytes)
     if not isinstance(data, dict) or not all(isinstance(k, str) for k in data):
         raise LoadError("a ranges file maps parameter paths to values or ranges", file=path)
     return data

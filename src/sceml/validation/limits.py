@@ -15,19 +15,16 @@ abstract kinds for kinds the table does not name.
 from __future__ import annotations
 
 import math
-import tomllib
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from functools import cache
 from pathlib import Path
 
-import yaml
-
 import scemlmodel as scm
 
 from .. import catalog
 from ..errors import LoadError, SceMLError
-from ..io import read_config_text
+from ..io import load_config
 
 #: The limit names a table may use, with what each bounds.
 LIMIT_KEYS = {
@@ -89,19 +86,9 @@ def load_limits(path: str | Path, base: Limits | None = None) -> Limits:
     """Read a YAML or TOML limits file and lay it over `base` (the built-in table by default)."""
     path = Path(path)
     try:
-        text = read_config_text(path, "limits file")
+        data = load_config(path, "limits file")
     except LoadError as error:
         raise LimitsError(error.message, file=path, line=error.line) from None
-    try:
-        toml = path.suffix.lower() == ".toml"
-        data = tomllib.loads(text) if toml else yaml.safe_load(text)
-    except (tomllib.TOMLDecodeError, yaml.YAMLError) as error:
-        line = getattr(getattr(error, "problem_mark", None), "line", None)
-        raise LimitsError(
-            f"malformed limits file: {error}".splitlines()[0],
-            file=path,
-            line=line + 1 if line is not None else None,
-        ) from None
     return (base or Limits()).merged(_checked(data or {}, path))
 
 
