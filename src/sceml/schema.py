@@ -23,7 +23,6 @@ Library code here never prints or logs.
 
 from __future__ import annotations
 
-import codecs
 import functools
 import importlib.resources
 import os
@@ -33,6 +32,7 @@ from typing import TYPE_CHECKING, Any, Final, TypeAlias
 from lxml import etree
 
 from sceml.errors import SceMLError
+from sceml.safexml import doctype_line, hardened_parser, has_dtd, max_bytes_limit
 
 if TYPE_CHECKING:
     import xmlschema
@@ -114,18 +114,6 @@ class SchemaIssue:
         return self.message
 
 
-def _hardened_parser() -> etree.XMLParser:
-    # A fresh parser per call: lxml parsers must not be shared between threads, and creating
-    # one costs microseconds.
-    return etree.XMLParser(
-        resolve_entities=False,
-        no_network=True,
-        load_dtd=False,
-        dtd_validation=False,
-        huge_tree=False,
-    )
-
-
 def _xsd_bytes(version: str) -> bytes:
     if version not in _XSD_FOLDERS:
         raise UnsupportedVersionError(
@@ -138,7 +126,7 @@ def _xsd_bytes(version: str) -> bytes:
 
 @functools.cache
 def _lxml_schema(version: str) -> etree.XMLSchema:
-    return etree.XMLSchema(etree.fromstring(_xsd_bytes(version), _hardened_parser()))
+    return etree.XMLSchema(etree.fromstring(_xsd_bytes(version), hardened_parser()))
 
 
 @functools.cache
@@ -236,48 +224,15 @@ def _issue(reason: str, line: int | None, path: str | None) -> SchemaIssue:
     )
 
 
-def _doctype_line(data: bytes) -> int | None:
-    """Line number of a DOCTYPE in the prolog, or None.
-
-    A hand-written scan rather than a regex: it is linear, cannot backtrack on hostile
-    prologs, and stops at the root element, so large documents cost nothing extra.
-    """
-    if data.startswith((codecs.BOM_UTF16_LE, codecs.BOM_UTF16_BE)):
-        # Re-encode so the ASCII scan below works; newlines survive, so lines stay right.
-        data = data.decode("utf-16", errors="replace").encode("utf-8")
-    i = len(codecs.BOM_UTF8) if data.startswith(codecs.BOM_UTF8) else 0
-    n = len(data)
-    while i < n:
-        if data[i] in b" \t\r\n":
-            i += 1
-        elif data.startswith(b"<?", i):
-            end = data.find(b"?>", i + 2)
-            if end < 0:
-                return None
-            i = end + 2
-        elif data.startswith(b"<!--", i):
-            end = data.find(b"-->", i + 4)
-            if end < 0:
-                return None
-            i = end + 3
-        elif data.startswith(b"<!DOCTYPE", i):
-            return data.count(b"\n", 0, i) + 1
-        else:
-            return None
-    return None
-
-
 def parse_file(path: str | os.PathLike[str]) -> etree._ElementTree:
     """Parse an OpenSCENARIO file safely.
 
     Raises UnsafeXMLError for documents with a DOCTYPE (checked before parsing, so entity
     bombs are never expanded and external entities never fetched) and XMLParseError for
     malformed XML; both carry ``file`` and ``line`` and print gcc-style as ``file:line: ...``.
-    Files above ``sceml.io.max_bytes_limit()`` (64 MB, or $SCEML_MAX_BYTES) raise SchemaError
+    Files above ``sceml.safexml.max_bytes_limit()`` (64 MB, or $SCEML_MAX_BYTES) raise SchemaError
     unread. OSError propagates for unreadable files.
     """
-    from sceml.io import max_bytes_limit  # deferred: sceml.io imports pyecore and the metamodel
-
     name = os.fspath(path)
     limit = max_bytes_limit()
     with open(name, "rb") as fh:
@@ -290,23 +245,23 @@ def parse_file(path: str | os.PathLike[str]) -> etree._ElementTree:
                 file=name,
             )
         data = fh.read()
-    doctype_line = _doctype_line(data)
-    if doctype_line is not None:
+    line = doctype_line(data)
+    if line is not None:
         raise UnsafeXMLError(
             "DOCTYPE declarations are not allowed in OpenSCENARIO files "
             "(refused unparsed: entity expansion / external entities)",
             file=name,
-            line=doctype_line,
+            line=line,
         )
     try:
-        tree = etree.ElementTree(etree.fromstring(data, _hardened_parser(), base_url=name))
+        tree = etree.ElementTree(etree.fromstring(data, hardened_parser(), base_url=name))
     except etree.XMLSyntaxError as exc:
         raise XMLParseError(
             f"not well-formed XML: {exc.msg}", file=name, line=exc.lineno or None, reason=exc.msg
         ) from None
     # Backstop for encodings the prolog scan cannot read (e.g. UTF-32): parsing above was
     # already entity-safe, but the document is still refused.
-    if tree.docinfo.doctype or tree.docinfo.internalDTD is not None:
+    if has_dtd(tree):
         raise UnsafeXMLError(
             "DOCTYPE declarations are not allowed in OpenSCENARIO files", file=name
         )

@@ -23,8 +23,8 @@ from pathlib import Path
 import scemlmodel as scm
 
 from .. import catalog
+from ..config import load_config
 from ..errors import LoadError, SceMLError
-from ..io import load_config
 
 #: The limit names a table may use, with what each bounds.
 LIMIT_KEYS = {
