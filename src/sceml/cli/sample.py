@@ -167,7 +167,11 @@ def _run(
 ) -> list[SampleRecord]:
     records: list[SampleRecord] = []
     try:
-        with click.progressbar(length=len(indices), label="sampling", file=sys.stderr) as bar:
+        # The bar is for a person at a terminal; logs and pipes would only get a stray label.
+        hidden = not sys.stderr.isatty()
+        with click.progressbar(
+            length=len(indices), label="sampling", file=sys.stderr, hidden=hidden
+        ) as bar:
             for record in run_batch(config, indices, rows, workers=workers or os.cpu_count()):
                 records.append(record)
                 bar.update(1)
