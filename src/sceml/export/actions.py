@@ -69,13 +69,6 @@ def plan_speed(ctx: Context, node: scm.ActionNode, groups: list[Group]) -> Plan:
     return _single(ctx, node, groups, Action(ctx.action_name(ctx.event_names[node]), "speed", data))
 
 
-@planner("KeepVelocity")
-def plan_keep(ctx: Context, node: scm.ActionNode, groups: list[Group]) -> Plan:
-    """Nothing changes the speed: a marker whose activation is delayed by the duration."""
-    duration = ctx.values.text(node, "duration")
-    return _marker(ctx, node, delayed(groups, duration), ctx.entity(node.referenceActor))
-
-
 @planner("DriveDistance")
 def plan_drive_distance(ctx: Context, node: scm.DriveDistance, groups: list[Group]) -> Plan:
     """A step SpeedAction to the speed; finished once TraveledDistance reaches the distance."""
@@ -261,9 +254,12 @@ def plan_in_vehicle(ctx: Context, node: scm.InVehicleRadius, groups: list[Group]
     return _marker(ctx, node, with_extra(groups, close), ctx.entity(node.referenceActor))
 
 
-@planner("TimeElapsed")
-def plan_time_elapsed(ctx: Context, node: scm.TimeElapsed, groups: list[Group]) -> Plan:
-    """A marker whose activation conditions carry the duration as their delay."""
+@planner("TimeElapsed", "KeepVelocity")
+def plan_duration(ctx: Context, node: scm.ActionNode, groups: list[Group]) -> Plan:
+    """A marker whose activation conditions carry the duration as their delay.
+
+    KeepVelocity maps the same way: nothing changes the speed, so the node is its duration.
+    """
     duration = ctx.values.text(node, "duration")
     return _marker(ctx, node, delayed(groups, duration), ctx.entity(node.referenceActor))
 
