@@ -61,8 +61,6 @@ def concretize(file: Path, assignments: tuple[str, ...], output: Path) -> None:
 def report_validation(model: scm.Scenario, output: Path) -> None:
     """Show the validation findings of a written model; exit 1 when there are errors."""
     found = validate_model(model)
-    if found is None:
-        return
     for diagnostic in found:
         click.echo(
             f"{output}: {diagnostic.severity}[{diagnostic.code}] {diagnostic.message}"

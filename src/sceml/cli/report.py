@@ -2,28 +2,18 @@
 
 from __future__ import annotations
 
-import importlib
-from collections.abc import Sequence
 from pathlib import Path
 from typing import cast
 
 import click
 
-from ..diagnostics import Diagnostic, Severity
+from ..diagnostics import Severity
 from ..errors import SceMLError
-from ..io import Document, load, write_atomically
+from ..io import load, write_atomically
 from ..render.flow import Modules
 from ..render.report import build_report
+from ..validation import validate
 from .common import ReportedError
-
-
-def run_validation(document: Document) -> Sequence[Diagnostic] | None:
-    """The validator's diagnostics, or None when this installation has no validator yet."""
-    # Imported late and looked up by name: validation is built alongside and may be absent.
-    validate = getattr(importlib.import_module("sceml.validation"), "validate", None)
-    if validate is None:
-        return None
-    return list(validate(document.root, document=document))
 
 
 @click.command()
@@ -53,12 +43,12 @@ def report(file: Path, output: Path, modules: str) -> None:
         raise click.BadParameter("the report is HTML; name a .html file", param_hint="'-o'")
     try:
         document = load(file)
-        diagnostics = run_validation(document)
+        diagnostics = validate(document.root, document=document)
         html = build_report(document, diagnostics, modules=cast(Modules, modules))
         write_atomically(output, html.encode("utf-8"))
     except SceMLError as error:
         raise ReportedError(error) from None
-    errors = sum(d.severity == Severity.ERROR for d in diagnostics or ())
+    errors = sum(d.severity == Severity.ERROR for d in diagnostics)
     click.echo(
         f"wrote {output}" + (f" ({errors} error{'s' if errors != 1 else ''})" if errors else "")
     )

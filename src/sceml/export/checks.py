@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import importlib
 from collections.abc import Iterator
 
 from pyecore.ecore import EObject
@@ -12,6 +11,7 @@ import scemlmodel as scm
 from .. import catalog, graph
 from ..diagnostics import Diagnostic, Severity
 from ..io import model_path, uri_fragment
+from ..validation import validate
 from .support import unsupported_reason
 
 LEVEL = "SCEML-X001"
@@ -61,14 +61,8 @@ def level_problems(scenario: scm.Scenario) -> list[Diagnostic]:
 
 
 def model_problems(scenario: scm.Scenario) -> list[Diagnostic]:
-    """Errors from sceml.validation when that package provides `validate`, else []."""
-    validation = importlib.import_module("sceml.validation")
-    validate = getattr(validation, "validate", None)
-    if validate is None:
-        return []
-    result = validate(scenario)
-    found = getattr(result, "diagnostics", result)
-    return [d for d in found if getattr(d, "severity", None) == Severity.ERROR]
+    """The validation errors of a model; an export refuses a model that has any."""
+    return [d for d in validate(scenario) if d.severity == Severity.ERROR]
 
 
 def expressibility_problems(flat: scm.Scenario, version: str, profile: str) -> Iterator[Diagnostic]:

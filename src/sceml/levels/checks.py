@@ -16,6 +16,10 @@ from typing import Any
 import scemlmodel as scm
 
 from ..diagnostics import Diagnostic, Severity
+from ..validation import REGISTRY, Registry, validate
+from ..validation.context import Context
+from ..validation.limits import Limits
+from ..validation.registry import findings
 from .apply import FlatTemplate
 
 #: Features whose value must be > 0, and the fragments of names whose value must be >= 0.
@@ -61,20 +65,13 @@ def _rule_for(features: set[str]) -> str:
 VALUE_RULE_PREFIXES = ("SCEML-P", "SCEML-L")
 
 
-def validate_model(scenario: scm.Scenario) -> list[Diagnostic] | None:
-    """Every diagnostic of a model; None while `sceml.validation` offers no `validate`."""
-    from .. import validation
-
-    validate = getattr(validation, "validate", None)
-    if validate is None:
-        return None
-    return list(validate(scenario))
+def validate_model(scenario: scm.Scenario) -> list[Diagnostic]:
+    """Every diagnostic of a model."""
+    return validate(scenario)
 
 
 @cache
-def _value_registry() -> Any:
-    from ..validation import REGISTRY, Registry
-
+def _value_registry() -> Registry:
     registry = Registry()
     for rule in REGISTRY.rules():
         if rule.code.startswith(VALUE_RULE_PREFIXES):
@@ -82,8 +79,8 @@ def _value_registry() -> Any:
     return registry
 
 
-def _validation_hook(template: FlatTemplate) -> Validator | None:
-    """Error codes of the value-dependent rules for one sample, once validation exists.
+def _validation_hook(template: FlatTemplate) -> Validator:
+    """Error codes of the value-dependent rules for one sample.
 
     Sampling changes numbers, never the graph, actors or modules, so structure, actor, module,
     simultaneity and readiness rules are checked once on the logical scenario (by the caller).
@@ -92,14 +89,6 @@ def _validation_hook(template: FlatTemplate) -> Validator | None:
     are the logical scenario's and were checked with it. Walking the whole model with pyecore's
     eAllContents for every sample cost more than the export itself.
     """
-    from .. import validation
-
-    if getattr(validation, "REGISTRY", None) is None:
-        return None
-    from ..validation.context import Context
-    from ..validation.limits import Limits
-    from ..validation.registry import findings
-
     context = Context(template.scenario, None, Limits(), None)
     plan = []
     for obj in _holders(template):

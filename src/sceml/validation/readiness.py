@@ -6,8 +6,7 @@ map, start positions, and whether each node kind used has a mapping for the chos
 
 from __future__ import annotations
 
-import importlib
-from collections.abc import Callable, Iterator
+from collections.abc import Iterator
 
 from pyecore.ecore import EObject
 
@@ -32,15 +31,6 @@ def actor_has_start(actor: scm.Actor, context: Context) -> Iterator[Finding]:
         yield actor, f"actor {actor.name!r} has no start position"
 
 
-def _unsupported_reason() -> Callable[..., str | None] | None:
-    """The export helper's `unsupported_reason`, or None while the export package lacks it."""
-    try:
-        module = importlib.import_module("sceml.export.support")
-    except ImportError:
-        return None
-    return getattr(module, "unsupported_reason", None)
-
-
 def _used_kinds(scenario: scm.Scenario, context: Context) -> dict[str, EObject]:
     """The first node of each ModuleElement kind, module internals included (via the flat view)."""
     flat = context.flat()
@@ -61,9 +51,9 @@ def _used_kinds(scenario: scm.Scenario, context: Context) -> dict[str, EObject]:
 def kinds_exportable(scenario: scm.Scenario, context: Context) -> Iterator[Finding]:
     if context.osc_version is None or context.level_of(scenario) != "concrete":
         return
-    unsupported_reason = _unsupported_reason()
-    if unsupported_reason is None:
-        return
+    # Imported late: the export package runs this validation before it exports.
+    from ..export.support import unsupported_reason
+
     for kind, node in _used_kinds(scenario, context).items():
         reason = unsupported_reason(kind, context.osc_version)
         if reason:
