@@ -1,12 +1,12 @@
 
 from .scemlmodel import getEClassifier, eClassifiers
 from .scemlmodel import name, nsURI, nsPrefix, eClass
-from .scemlmodel import AbstractionLevel, JoinPolicy, LaneChangeDirection, ComparisonRule, CloudState, PrecipitationType, ActorKind, NamedElement, Graph, Scenario, Library, Flow, GraphElement, RootNode, EndNode, ModuleElement, ActionNode, Maneuver, LongitudinalManeuver, LateralManeuver, CompositeManeuver, Condition, Accelerate, Decelerate, Stop, KeepVelocity, DriveDistance, Follow, Approach, LaneChange, RoutedManeuver, TurnLeft, TurnRight, Cross, FollowTrajectory, Overtake, InLocationRadius, InVehicleRadius, TimeElapsed, SpeedCondition, TimeToCollision, JoiningPolicy, JoinAllFinished, JoinOneFinished, ModuleDefinition, InPort, OutPort, ModuleUse, RoleBinding, ParameterOverride, ModuleParameter, Participant, ActorRole, AllowedKind, Actor, Pedestrian, TwoWheeler, Bicycle, Motorcycle, FourWheeler, Car, Van, Truck, Bus, Position, WorldPosition, LanePosition, Environment, ParameterValue, Value, Range, Distribution, UniformDistribution, NormalDistribution, DiscreteDistribution, WeightedValue, ParameterRef
+from .scemlmodel import AbstractionLevel, JoinPolicy, LaneChangeDirection, ComparisonRule, CloudState, PrecipitationType, ActorKind, NamedElement, Graph, Scenario, Library, Flow, GraphElement, DiagramPosition, RootNode, EndNode, ModuleElement, ActionNode, Maneuver, LongitudinalManeuver, LateralManeuver, CompositeManeuver, Condition, Accelerate, Decelerate, Stop, KeepVelocity, DriveDistance, Follow, Approach, LaneChange, RoutedManeuver, TurnLeft, TurnRight, Cross, FollowTrajectory, Overtake, InLocationRadius, InVehicleRadius, TimeElapsed, SpeedCondition, TimeToCollision, JoiningPolicy, JoinAllFinished, JoinOneFinished, ModuleDefinition, InPort, OutPort, ModuleUse, RoleBinding, ParameterOverride, ModuleParameter, Participant, ActorRole, AllowedKind, Actor, Pedestrian, TwoWheeler, Bicycle, Motorcycle, FourWheeler, Car, Van, Truck, Bus, Position, WorldPosition, LanePosition, Environment, ParameterValue, Value, Range, Distribution, UniformDistribution, NormalDistribution, DiscreteDistribution, WeightedValue, ParameterRef
 
 
 from . import scemlmodel
 
-__all__ = ['AbstractionLevel', 'JoinPolicy', 'LaneChangeDirection', 'ComparisonRule', 'CloudState', 'PrecipitationType', 'ActorKind', 'NamedElement', 'Graph', 'Scenario', 'Library', 'Flow', 'GraphElement', 'RootNode', 'EndNode', 'ModuleElement', 'ActionNode', 'Maneuver', 'LongitudinalManeuver', 'LateralManeuver', 'CompositeManeuver', 'Condition', 'Accelerate', 'Decelerate', 'Stop', 'KeepVelocity', 'DriveDistance', 'Follow', 'Approach', 'LaneChange', 'RoutedManeuver', 'TurnLeft', 'TurnRight', 'Cross', 'FollowTrajectory', 'Overtake', 'InLocationRadius', 'InVehicleRadius',
+__all__ = ['AbstractionLevel', 'JoinPolicy', 'LaneChangeDirection', 'ComparisonRule', 'CloudState', 'PrecipitationType', 'ActorKind', 'NamedElement', 'Graph', 'Scenario', 'Library', 'Flow', 'GraphElement', 'DiagramPosition', 'RootNode', 'EndNode', 'ModuleElement', 'ActionNode', 'Maneuver', 'LongitudinalManeuver', 'LateralManeuver', 'CompositeManeuver', 'Condition', 'Accelerate', 'Decelerate', 'Stop', 'KeepVelocity', 'DriveDistance', 'Follow', 'Approach', 'LaneChange', 'RoutedManeuver', 'TurnLeft', 'TurnRight', 'Cross', 'FollowTrajectory', 'Overtake', 'InLocationRadius', 'InVehicleRadius',
            'TimeElapsed', 'SpeedCondition', 'TimeToCollision', 'JoiningPolicy', 'JoinAllFinished', 'JoinOneFinished', 'ModuleDefinition', 'InPort', 'OutPort', 'ModuleUse', 'RoleBinding', 'ParameterOverride', 'ModuleParameter', 'Participant', 'ActorRole', 'AllowedKind', 'Actor', 'Pedestrian', 'TwoWheeler', 'Bicycle', 'Motorcycle', 'FourWheeler', 'Car', 'Van', 'Truck', 'Bus', 'Position', 'WorldPosition', 'LanePosition', 'Environment', 'ParameterValue', 'Value', 'Range', 'Distribution', 'UniformDistribution', 'NormalDistribution', 'DiscreteDistribution', 'WeightedValue', 'ParameterRef']
 
 eSubpackages = []
@@ -17,6 +17,7 @@ scemlmodel.eSuperPackage = eSuperPackage
 Graph.nodes.eType = GraphElement
 Graph.flows.eType = Flow
 Library.modules.eType = ModuleDefinition
+GraphElement.diagramPosition.eType = DiagramPosition
 RootNode.maxDuration.eType = ParameterValue
 RootNode.environment.eType = Environment
 RootNode.actors.eType = Actor

@@ -80,6 +80,24 @@ class Flow(EObject, metaclass=MetaEClass):
             self.target = target
 
 
+class DiagramPosition(EObject, metaclass=MetaEClass):
+    """A node's place in the diagram, kept with the model so that reopening shows the picture the user arranged. Pure notation: it never changes what the scenario means."""
+    x = EAttribute(eType=EDouble, unique=True, derived=False, changeable=True, default_value=0.0)
+    y = EAttribute(eType=EDouble, unique=True, derived=False, changeable=True, default_value=0.0)
+
+    def __init__(self, *, x=None, y=None):
+        # if kwargs:
+        #    raise AttributeError('unexpected arguments: {}'.format(kwargs))
+
+        super().__init__()
+
+        if x is not None:
+            self.x = x
+
+        if y is not None:
+            self.y = y
+
+
 class RoleBinding(EObject, metaclass=MetaEClass):
 
     role = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
@@ -233,8 +251,9 @@ class GraphElement(NamedElement):
                           derived=False, upper=-1, transient=True)
     outgoing = EReference(ordered=True, unique=True, containment=False,
                           derived=False, upper=-1, transient=True)
+    diagramPosition = EReference(ordered=True, unique=True, containment=True, derived=False)
 
-    def __init__(self, *, incoming=None, outgoing=None, **kwargs):
+    def __init__(self, *, incoming=None, outgoing=None, diagramPosition=None, **kwargs):
 
         super().__init__(**kwargs)
 
@@ -243,6 +262,9 @@ class GraphElement(NamedElement):
 
         if outgoing:
             self.outgoing.extend(outgoing)
+
+        if diagramPosition is not None:
+            self.diagramPosition = diagramPosition
 
 
 class ModuleDefinition(Graph):

@@ -21,6 +21,7 @@ VIEWS: dict[str, tuple[str, ...]] = {
         "GraphElement",
         "RootNode",
         "EndNode",
+        "DiagramPosition",
         "ModuleElement",
         "ActionNode",
         "JoiningPolicy",
