@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import io as _io
 import math
 import os
@@ -570,11 +571,58 @@ def _resolve_before_moving(root: EObject, resource: XMIResource, path: Path) -> 
         )
 
 
+def make_folder(folder: str | Path, *, target: str | Path | None = None) -> list[Path]:
+    """Create `folder` and missing parents; SaveError naming `target` (default: the folder).
+
+    Returns the folders it created, outermost first, for `remove_folders` to undo.
+    """
+    folder = Path(folder)
+    named = Path(target) if target is not None else folder
+    missing = [p for p in [folder, *folder.parents] if not p.is_dir()]
+    blocking = next((p for p in missing if p.exists() or p.is_symlink()), None)
+    if blocking is not None:
+        raise SaveError(f"cannot write: {blocking} is a file, not a folder", file=named)
+    created: list[Path] = []
+    for missing_folder in reversed(missing):
+        try:
+            missing_folder.mkdir()
+        except FileExistsError:
+            continue  # made by someone else meanwhile: fine
+        except OSError as error:
+            remove_folders(created)
+            raise SaveError(f"cannot write: {_reason(error)}", file=named) from None
+        created.append(missing_folder)
+    return created
+
+
+def remove_folders(created: list[Path]) -> None:
+    """Remove folders `make_folder` created, innermost first, where they are still empty."""
+    for folder in reversed(created):
+        with contextlib.suppress(OSError):
+            folder.rmdir()
+
+
+def _reason(error: OSError) -> str:
+    return error.strerror or str(error)
+
+
 def write_atomically(path: str | Path, data: bytes) -> None:
-    """Write bytes to `path` through a temporary file in the same folder and an atomic rename."""
+    """Write bytes to `path` through a temporary file in the same folder and an atomic rename.
+
+    Any failure is a SaveError naming `path` (`cannot write: reason`); the previous file, if
+    any, stays as it was, and neither the temporary file nor folders made for it are left.
+    """
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    if path.is_dir():
+        raise SaveError("cannot write: it is a folder", file=path)
+    created = make_folder(path.parent, target=path)
+    try:
+        handle, temporary = tempfile.mkstemp(
+            prefix=f".{path.name}.", suffix=".tmp", dir=path.parent
+        )
+    except OSError as error:
+        remove_folders(created)
+        raise SaveError(f"cannot write: {_reason(error)}", file=path) from None
     try:
         with os.fdopen(handle, "wb") as stream:
             # No fsync: the rename alone guarantees readers never see a half-written file, and
@@ -584,6 +632,7 @@ def write_atomically(path: str | Path, data: bytes) -> None:
         os.replace(temporary, path)
     except BaseException as error:
         Path(temporary).unlink(missing_ok=True)
+        remove_folders(created)
         if isinstance(error, OSError):
-            raise SaveError(f"cannot write file: {error.strerror}", file=path) from None
+            raise SaveError(f"cannot write: {_reason(error)}", file=path) from None
         raise

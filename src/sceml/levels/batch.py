@@ -159,8 +159,25 @@ def run_batch(
     workers: int | None = None,
     chunk_size: int | None = None,
 ) -> Iterator[SampleRecord]:
-    """Produce every sample's files; records come as samples finish (in no fixed order)."""
-    config.out_dir.mkdir(parents=True, exist_ok=True)
+    """Produce every sample's files; records come as samples finish (in no fixed order).
+
+    When it fails, the output folder, if it made it, is removed again unless files were written.
+    """
+    created = io.make_folder(config.out_dir)
+    try:
+        yield from _records(config, indices, rows, workers, chunk_size)
+    except BaseException:
+        io.remove_folders(created)
+        raise
+
+
+def _records(
+    config: BatchConfig,
+    indices: NDArray[np.int64],
+    rows: NDArray[np.float64],
+    workers: int | None,
+    chunk_size: int | None,
+) -> Iterator[SampleRecord]:
     workers = max(1, min(workers or os.cpu_count() or 1, len(indices) or 1))
     if workers == 1:
         worker = Worker(config)

@@ -109,12 +109,17 @@ def save_together(models: Sequence[tuple[EObject, Path]]) -> None:
     that uses it: if the second rename failed, the scenario would still be the old one.
     """
     temporaries: list[Path] = []
+    created: list[Path] = []
+    done = False
     try:
         for root, target in models:
-            target.parent.mkdir(parents=True, exist_ok=True)
-            handle, name = tempfile.mkstemp(
-                prefix=f".{target.name}.", suffix=".tmp", dir=target.parent
-            )
+            created += io.make_folder(target.parent, target=target)
+            try:
+                handle, name = tempfile.mkstemp(
+                    prefix=f".{target.name}.", suffix=".tmp", dir=target.parent
+                )
+            except OSError as error:
+                raise SaveError(f"cannot write: {error.strerror}", file=target) from None
             os.close(handle)
             temporaries.append(Path(name))
             io.save(root, name)
@@ -122,8 +127,11 @@ def save_together(models: Sequence[tuple[EObject, Path]]) -> None:
             try:
                 os.replace(temporary, target)
             except OSError as error:
-                raise SaveError(f"cannot write file: {error.strerror}", file=target) from None
+                raise SaveError(f"cannot write: {error.strerror}", file=target) from None
+        done = True
     finally:
         for temporary in temporaries:
             with contextlib.suppress(FileNotFoundError):
                 temporary.unlink()
+        if not done:
+            io.remove_folders(created)
