@@ -38,6 +38,16 @@ class LoadError(SceMLError):
     exit_code = 2
 
 
+class ArgumentError(SceMLError):
+    """A value given to an operation (a command-line option) cannot be used: a usage error.
+
+    The library's parsers raise it; the CLI's option types call those parsers, so an option is
+    accepted or refused by the same rule as the Python API.
+    """
+
+    exit_code = 2
+
+
 class SaveError(SceMLError):
     """A model could not be written; the previous file, if any, is untouched."""
 

@@ -105,7 +105,11 @@ class SafeXMIResource(XMIResource):
         named = path.resolve() in getattr(resource_set, "sceml_named_files", ())
         if allowed is not None and not named and not any(_is_within(path, r) for r in allowed):
             roots = ", ".join(str(r) for r in allowed)
-            raise LoadError(f"reference leaves the allowed folders ({roots})", file=path)
+            raise LoadError(
+                f"reference leaves the allowed folders ({roots}); to read it, allow its folder "
+                f"(--allow {path.parent})",
+                file=path,
+            )
         tree = parse_xml_safely(path, getattr(resource_set, "sceml_max_bytes", None))
         _check_tree(tree, path)
         self.sceml_tree = tree
@@ -289,6 +293,32 @@ def _is_within(path: Path, root: Path) -> bool:
     return True
 
 
+#: What marks a project's root folder: a version control checkout, or SceML's own marker file.
+PROJECT_MARKERS = (".git", ".hg", ".svn", ".sceml-root")
+
+
+def project_root(path: str | Path) -> Path | None:
+    """The nearest folder at or above `path`'s folder that holds one of PROJECT_MARKERS."""
+    folder = Path(path).resolve().parent
+    for candidate in [folder, *folder.parents]:
+        if any((candidate / marker).exists() for marker in PROJECT_MARKERS):
+            return candidate
+    return None
+
+
+def reading_roots(path: str | Path, allow: Iterable[str | Path] = ()) -> list[Path]:
+    """The folders that files `path` refers to may be read from: the one rule of every reader.
+
+    They are `path`'s own folder, its project root (see `project_root`), and the folders in
+    `allow` (the CLI's `--allow`), each with everything below it.
+    """
+    roots: list[Path] = []
+    for root in [Path(path).resolve().parent, project_root(path), *allow]:
+        if root is not None and Path(root).resolve() not in roots:
+            roots.append(Path(root).resolve())
+    return roots
+
+
 def new_resource_set(
     allowed_roots: Iterable[str | Path] | None = None, max_bytes: int | None = None
 ) -> ResourceSet:
@@ -386,16 +416,18 @@ def load(
     *,
     resource_set: ResourceSet | None = None,
     allowed_roots: Iterable[str | Path] | None = None,
+    allow: Iterable[str | Path] = (),
     max_bytes: int | None = None,
 ) -> Document:
     """Load a scenario or library XMI file; references to other files load on first use.
 
-    Files are read only from `allowed_roots` (default: the folder of `path`) and only up to
-    `max_bytes` each (default: $SCEML_MAX_BYTES, else DEFAULT_MAX_BYTES).
+    Referenced files are read only from `allowed_roots`, by default `reading_roots(path, allow)`
+    (the file's folder, its project root and `allow`), and only up to `max_bytes` each (default:
+    $SCEML_MAX_BYTES, else DEFAULT_MAX_BYTES).
     """
     path = Path(path)
     if resource_set is None:
-        roots = allowed_roots if allowed_roots is not None else [path.resolve().parent]
+        roots = allowed_roots if allowed_roots is not None else reading_roots(path, allow)
         resource_set = new_resource_set(roots, max_bytes)
     # The file the user names is always read; allowed_roots govern what it refers to.
     named: set[Path] = getattr(resource_set, "sceml_named_files", set())

@@ -38,6 +38,7 @@ if TYPE_CHECKING:
     import xmlschema
 
 __all__ = [
+    "DISTRIBUTION_VERSIONS",
     "SUPPORTED_VERSIONS",
     "SchemaError",
     "SchemaIssue",
@@ -51,7 +52,10 @@ __all__ = [
     "validate_tree",
 ]
 
+#: The OpenSCENARIO versions SceML checks and writes: the one list every module and option reads.
 SUPPORTED_VERSIONS: Final[tuple[str, ...]] = ("1.0", "1.1", "1.2", "1.3")
+#: The versions that have ParameterValueDistribution (it came with 1.1).
+DISTRIBUTION_VERSIONS: Final[tuple[str, ...]] = tuple(v for v in SUPPORTED_VERSIONS if v != "1.0")
 
 # Folder names under qc_openscenario/schema/. For 1.1 the package ships 1.1.0 and the 1.1.1
 # errata. The only non-comment difference is the `expression` pattern: 1.1.1 adds ',' to the

@@ -212,5 +212,6 @@ def test_export_distribution_refuses_1_0(tmp_path: Path) -> None:
         export_distribution_command,
         [EXAMPLES / "uis2-logical.xmi", "-o", tmp_path, "--osc-version", "1.0"],
     )
-    assert result.exit_code == 1 and "1.0 has no ParameterValueDistribution" in result.output
+    # A usage error (issue 14): the option only offers the versions that have distributions.
+    assert result.exit_code == 2 and "'1.0' is not one of '1.1', '1.2', '1.3'" in result.output
     assert list(tmp_path.iterdir()) == []

@@ -12,7 +12,7 @@ from ..diagnostics import Diagnostic, Severity
 from ..errors import SceMLError
 from ..qualitychecker import QualityCheckerError, run_quality_checker
 from ..report import FileReport, exit_code, format_json, render
-from .common import ReportedError, emit_report, file_progress, report_options
+from .common import SceMLCommand, emit_report, file_progress, report_options
 
 XSD_CODE = "XOSC-XSD"
 SKIPPED_CODE = "XOSC-QC-SKIPPED"
@@ -74,7 +74,7 @@ def _quality(path: Path, version: str) -> list[Diagnostic]:
     ]
 
 
-@click.command("check-xosc")
+@click.command("check-xosc", cls=SceMLCommand)
 @click.argument("files", nargs=-1, required=True, type=click.Path(dir_okay=False, path_type=Path))
 @report_options(json_help="as `sceml validate --format json`")
 @click.option(
@@ -96,14 +96,11 @@ def check_xosc(
     Exit status: 0 clean, 1 when a file has errors (with --strict: or warnings), 2 for usage
     errors or files that cannot be read (missing, malformed, DOCTYPE, unknown version).
     """
-    try:
-        with file_progress(files, "checking") as todo:
-            reports = [check_file(path, quality=not skip_quality) for path in todo]
-        if output_format == "json":
-            text = format_json(reports, tool="sceml check-xosc")
-        else:
-            text = render(reports, output_format, strict)
-        emit_report(text, output)
-    except SceMLError as error:
-        raise ReportedError(error) from None
+    with file_progress(files, "checking") as todo:
+        reports = [check_file(path, quality=not skip_quality) for path in todo]
+    if output_format == "json":
+        text = format_json(reports, tool="sceml check-xosc")
+    else:
+        text = render(reports, output_format, strict)
+    emit_report(text, output)
     sys.exit(exit_code(reports, strict))

@@ -10,7 +10,7 @@ from typing import Any, TypeVar
 
 import click
 
-from ..errors import SceMLError
+from ..errors import ArgumentError, SceMLError
 from ..io import write_atomically
 
 F = TypeVar("F", bound=Callable[..., Any])
@@ -25,14 +25,67 @@ class ReportedError(click.ClickException):
         setattr(self, "exit_code", error.exit_code)  # noqa: B010
 
 
-class SceMLGroup(click.Group):
-    """A click group whose commands report SceMLError without a traceback."""
+class SceMLCommand(click.Command):
+    """The base of every command: the one place a SceMLError becomes a message and exit code.
+
+    Like click's own ClickException handling: the command body raises, this prints
+    `Error: file:line: message` and exits with the error's code (2 for input or arguments that
+    cannot be used, 1 otherwise), never with a traceback.
+    """
 
     def invoke(self, ctx: click.Context) -> Any:
         try:
             return super().invoke(ctx)
         except SceMLError as error:
             raise ReportedError(error) from None
+
+
+class SceMLGroup(click.Group):
+    """A click group whose commands (and subgroups) report SceMLError without a traceback."""
+
+    command_class = SceMLCommand
+
+    def invoke(self, ctx: click.Context) -> Any:
+        try:
+            return super().invoke(ctx)
+        except SceMLError as error:
+            raise ReportedError(error) from None
+
+
+SceMLGroup.group_class = SceMLGroup
+
+
+class Parsed(click.ParamType):
+    """An option value read by the library's own parser, so CLI and API accept the same text.
+
+    The parser raises ArgumentError for text it cannot use; click shows that as a usage error
+    (exit 2) naming the option.
+    """
+
+    def __init__(self, name: str, parse: Callable[[str], Any]) -> None:
+        self.name = name
+        self.parse = parse
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
+        if not isinstance(value, str):
+            return value  # a default, already parsed
+        try:
+            return self.parse(value)
+        except ArgumentError as error:
+            self.fail(error.message, param, ctx)
+
+
+def allow_option(command: F) -> F:
+    """--allow, on every command that reads a model: one more folder references may reach."""
+    return click.option(
+        "--allow",
+        "allow",
+        multiple=True,
+        type=click.Path(file_okay=False, path_type=Path),
+        help="Another folder that files the input refers to (module libraries) may be read "
+        "from; repeatable. Always allowed: the input's folder and its project root (the "
+        "nearest folder above with .git, .hg, .svn or .sceml-root), with their subfolders.",
+    )(command)
 
 
 @contextmanager

@@ -15,17 +15,16 @@ from ..levels.apply import relocate_map
 from ..levels.checks import validate_model
 from ..levels.concretize import concretize as make_concrete
 from ..levels.concretize import parse_assignment
-from ..levels.paths import UnknownPathError
-from .common import ReportedError
+from .common import Parsed, SceMLCommand, allow_option
 
 
-@click.command()
+@click.command(cls=SceMLCommand)
 @click.argument("file", type=click.Path(exists=True, dir_okay=False, path_type=Path))
 @click.option(
     "--set",
     "assignments",
     multiple=True,
-    metavar="PATH=VALUE",
+    type=Parsed("PATH=VALUE", parse_assignment),
     help="Give a parameter a value in SI units, e.g. ego.Accelerate_1.targetSpeed=12. Repeatable. "
     "Paths are listed when an unknown one is given (see docs/levels.md).",
 )
@@ -36,24 +35,21 @@ from .common import ReportedError
     required=True,
     help="Where to write the concrete scenario (.xmi); written atomically.",
 )
-def concretize(file: Path, assignments: tuple[str, ...], output: Path) -> None:
+@allow_option
+def concretize(
+    file: Path, assignments: tuple[tuple[str, float], ...], output: Path, allow: tuple[Path, ...]
+) -> None:
     """Make FILE concrete: set the given parameters, then check that nothing is left open.
 
     Every range or distribution must get a value, and every required parameter without a
     language default must be set. The result is validated and written to OUT; exit 1 when it
     has errors (it is written anyway, so that it can be inspected).
     """
-    try:
-        values = dict(parse_assignment(text) for text in assignments)
-        document = io.load_scenario(file)
-        _refuse_unresolved(document)
-        result = make_concrete(document.root, values)
-        relocate_map(result, file, output)
-        io.save(result, output)
-    except UnknownPathError as error:
-        raise click.UsageError(str(error)) from None
-    except SceMLError as error:
-        raise ReportedError(error) from None
+    document = io.load_scenario(file, allow=allow)
+    _refuse_unresolved(document)
+    result = make_concrete(document.root, dict(assignments))
+    relocate_map(result, file, output)
+    io.save(result, output)
     click.echo(f"wrote {output}")
     report_validation(result, output)
 

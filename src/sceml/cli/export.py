@@ -8,15 +8,15 @@ from pathlib import Path
 import click
 
 from ..diagnostics import Diagnostic
-from ..errors import SceMLError
 from ..export import ExportError, export_to_file
 from ..export.support import PROFILES
 from ..export.versions import VERSIONS
+from ..export.writer import header_date
 from ..io import load_scenario
-from .common import ReportedError
+from .common import Parsed, ReportedError, SceMLCommand, allow_option
 
 
-@click.command()
+@click.command(cls=SceMLCommand)
 @click.argument("file", type=click.Path(exists=True, dir_okay=False, path_type=Path))
 @click.option(
     "-o",
@@ -40,7 +40,7 @@ from .common import ReportedError
 )
 @click.option(
     "--date",
-    metavar="ISO",
+    type=Parsed("ISO", header_date),
     help="FileHeader date (ISO 8601), e.g. 2026-01-01T00:00:00; default: the root node's date.",
 )
 @click.option(
@@ -55,6 +55,7 @@ from .common import ReportedError
     type=click.Path(dir_okay=False, path_type=Path),
     help="OpenDRIVE file to refer to instead of the model's map (written relative to OUTPUT).",
 )
+@allow_option
 def export(
     file: Path,
     output: Path,
@@ -63,6 +64,7 @@ def export(
     date: str | None,
     town: str | None,
     map_path: Path | None,
+    allow: tuple[Path, ...],
 ) -> None:
     """Export the concrete scenario FILE to OpenSCENARIO.
 
@@ -72,7 +74,7 @@ def export(
     """
     osc_version = osc_version or ("1.0" if profile == "carla" else "1.3")
     try:
-        document = load_scenario(file)
+        document = load_scenario(file, allow=allow)
         export_to_file(
             document.root,
             output,
@@ -86,8 +88,6 @@ def export(
     except ExportError as error:
         for diagnostic in error.diagnostics:
             click.echo(str(_located(diagnostic, file)), err=True)
-        raise ReportedError(error) from None
-    except SceMLError as error:
         raise ReportedError(error) from None
     click.echo(f"{output}: OpenSCENARIO {osc_version} ({profile})")
 

@@ -6,12 +6,13 @@ from pathlib import Path
 
 import click
 
-from ..errors import SceMLError
+from ..export.writer import header_date
 from ..levels.pvd import MODES, export_distribution
-from .common import ReportedError
+from ..schema import DISTRIBUTION_VERSIONS
+from .common import Parsed, SceMLCommand, allow_option
 
 
-@click.command("export-distribution")
+@click.command("export-distribution", cls=SceMLCommand)
 @click.argument("logical", type=click.Path(exists=True, dir_okay=False, path_type=Path))
 @click.option(
     "-o",
@@ -23,10 +24,10 @@ from .common import ReportedError
 )
 @click.option(
     "--osc-version",
-    type=click.Choice(["1.0", "1.1", "1.2", "1.3"]),
-    default="1.3",
+    type=click.Choice(DISTRIBUTION_VERSIONS),
+    default=DISTRIBUTION_VERSIONS[-1],
     show_default=True,
-    help="OpenSCENARIO version; 1.0 has no distributions and is refused.",
+    help="OpenSCENARIO version (distributions came with 1.1).",
 )
 @click.option(
     "--mode",
@@ -47,8 +48,12 @@ from .common import ReportedError
     "--seed", type=click.IntRange(min=0), default=0, show_default=True, help="randomSeed."
 )
 @click.option(
-    "--date", default=None, help="FileHeader date (xsd:dateTime) [default: the model's date]."
+    "--date",
+    type=Parsed("ISO", header_date),
+    default=None,
+    help="FileHeader date (ISO 8601) [default: the model's date].",
 )
+@allow_option
 def export_distribution_command(
     logical: Path,
     out_dir: Path,
@@ -57,6 +62,7 @@ def export_distribution_command(
     runs: int,
     seed: int,
     date: str | None,
+    allow: tuple[Path, ...],
 ) -> None:
     """Export the logical scenario LOGICAL as OpenSCENARIO parameters (1.1 and later).
 
@@ -64,11 +70,15 @@ def export_distribution_command(
     value, and a ParameterValueDistribution file that refers to it. Both are checked against
     the official XSD before they are written.
     """
-    try:
-        files = export_distribution(
-            logical, out_dir, version=osc_version, mode=mode, runs=runs, seed=seed, date=date
-        )
-    except SceMLError as error:
-        raise ReportedError(error) from None
+    files = export_distribution(
+        logical,
+        out_dir,
+        version=osc_version,
+        mode=mode,
+        runs=runs,
+        seed=seed,
+        date=date,
+        allow=allow,
+    )
     click.echo(f"wrote {files.scenario}")
     click.echo(f"wrote {files.distribution} ({files.kind})")

@@ -10,18 +10,20 @@ import click
 
 from ..info import Summary, summarize
 from ..io import load, model_path, unresolved_references
+from .common import SceMLCommand, allow_option
 
 
-@click.command()
+@click.command(cls=SceMLCommand)
 @click.argument("file", type=click.Path(exists=True, dir_okay=False, path_type=Path))
 @click.option("--json", "as_json", is_flag=True, help="Print the summary as JSON.")
-def info(file: Path, as_json: bool) -> None:
+@allow_option
+def info(file: Path, as_json: bool, allow: tuple[Path, ...]) -> None:
     """Summarise FILE: its level, map, actors, node counts and module uses.
 
     FILE is a scenario or a module library (.xmi). Exits 1 when a cross-file reference (a module
     use's definition) cannot be resolved, after printing the summary.
     """
-    document = load(file)
+    document = load(file, allow=allow)
     summary = summarize(document.root)
     if as_json:
         click.echo(json.dumps(asdict(summary), indent=2))

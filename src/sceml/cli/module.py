@@ -11,7 +11,7 @@ import click
 from ..io import load_library
 from ..modules import extract_file, list_definitions, parse_role, show
 from ..modules.library import DefinitionDetail, DefinitionSummary, ParameterInfo, Size
-from .common import SceMLGroup
+from .common import SceMLGroup, allow_option
 
 _EXISTING_FILE = click.Path(exists=True, dir_okay=False, path_type=Path)
 
@@ -24,13 +24,14 @@ def module() -> None:
 @module.command("list")
 @click.argument("library", type=_EXISTING_FILE)
 @click.option("--json", "as_json", is_flag=True, help="Print the definitions as JSON.")
-def list_command(library: Path, as_json: bool) -> None:
+@allow_option
+def list_command(library: Path, as_json: bool, allow: tuple[Path, ...]) -> None:
     """List the module definitions of LIBRARY with their roles, parameters and size.
 
     Size counts the nodes inside a module (ports not counted), its flows, its sub-module uses and
     its nesting depth (1 for a module without sub-modules).
     """
-    summaries = list_definitions(load_library(library).root)
+    summaries = list_definitions(load_library(library, allow=allow).root)
     if as_json:
         click.echo(json.dumps([asdict(s) for s in summaries], indent=2))
         return
@@ -45,9 +46,10 @@ def list_command(library: Path, as_json: bool) -> None:
 @click.argument("library", type=_EXISTING_FILE)
 @click.argument("name")
 @click.option("--json", "as_json", is_flag=True, help="Print the definition as JSON.")
-def show_command(library: Path, name: str, as_json: bool) -> None:
+@allow_option
+def show_command(library: Path, name: str, as_json: bool, allow: tuple[Path, ...]) -> None:
     """Show module NAME of LIBRARY: roles, parameters, nodes in flow order, flows and uses."""
-    detail = show(load_library(library).root, name)
+    detail = show(load_library(library, allow=allow).root, name)
     if as_json:
         click.echo(json.dumps(asdict(detail), indent=2))
         return
@@ -96,13 +98,7 @@ def show_command(library: Path, name: str, as_json: bool) -> None:
     help="Turn every value the nodes hold into a module parameter (default: that value); the "
     "new use overrides each with the same value, so the scenario does not change.",
 )
-@click.option(
-    "--allow",
-    "allowed",
-    multiple=True,
-    type=click.Path(file_okay=False, path_type=Path),
-    help="Another folder that referenced libraries may be read from (repeatable).",
-)
+@allow_option
 def extract_command(
     file: Path,
     node_list: str,
@@ -111,7 +107,7 @@ def extract_command(
     output: Path | None,
     role_options: tuple[str, ...],
     parametrize: bool,
-    allowed: tuple[Path, ...],
+    allow: tuple[Path, ...],
 ) -> None:
     """Move nodes of scenario FILE into a new module of LIB and use the module in their place.
 
@@ -128,7 +124,7 @@ def extract_command(
         output=output,
         roles=roles,
         parametrize=parametrize,
-        allowed_roots=allowed,
+        allowed_roots=allow,
     )
     verb = "created" if report.created_library else "added to"
     click.echo(f"module {report.module!r} {verb} {report.library}")

@@ -7,16 +7,15 @@ from pathlib import Path
 import click
 
 from .. import io
-from ..errors import SceMLError
 from ..levels.apply import relocate_map
 from ..levels.paths import UnknownPathError
 from ..levels.promote import load_ranges
 from ..levels.promote import promote as make_logical
-from .common import ReportedError
+from .common import SceMLCommand, allow_option
 from .concretize import report_validation
 
 
-@click.command()
+@click.command(cls=SceMLCommand)
 @click.argument("file", type=click.Path(exists=True, dir_okay=False, path_type=Path))
 @click.option(
     "--ranges",
@@ -33,21 +32,21 @@ from .concretize import report_validation
     required=True,
     help="Where to write the logical scenario (.xmi); written atomically.",
 )
-def promote(file: Path, ranges_file: Path, output: Path) -> None:
+@allow_option
+def promote(file: Path, ranges_file: Path, output: Path, allow: tuple[Path, ...]) -> None:
     """Promote FILE to the logical level with the ranges and distributions in RANGES.
 
     Every required parameter and every position must be given (by FILE or by RANGES); the
     result is validated and written to OUT.
     """
+    ranges = load_ranges(ranges_file)
+    document = io.load_scenario(file, allow=allow)
     try:
-        ranges = load_ranges(ranges_file)
-        document = io.load_scenario(file)
         result = make_logical(document.root, ranges, source=ranges_file)
-        relocate_map(result, file, output)
-        io.save(result, output)
     except UnknownPathError as error:
-        raise click.UsageError(f"{ranges_file}: {error}") from None
-    except SceMLError as error:
-        raise ReportedError(error) from None
+        error.file = error.file or str(ranges_file)
+        raise
+    relocate_map(result, file, output)
+    io.save(result, output)
     click.echo(f"wrote {output}")
     report_validation(result, output)

@@ -7,11 +7,10 @@ from typing import cast
 
 import click
 
-from ..errors import SceMLError
 from ..io import load, model_path, unresolved_references, write_atomically
 from ..render import FORMATS, ModuleChoiceError, View, diagram, to_bytes
 from ..render.flow import Modules
-from .common import ReportedError
+from .common import SceMLCommand, allow_option
 
 
 def output_format(path: Path) -> str:
@@ -25,7 +24,7 @@ def output_format(path: Path) -> str:
     return fmt
 
 
-@click.command()
+@click.command(cls=SceMLCommand)
 @click.argument("file", type=click.Path(exists=True, dir_okay=False, path_type=Path))
 @click.option(
     "-o",
@@ -56,8 +55,15 @@ def output_format(path: Path) -> str:
     default=None,
     help="For a module library: the module definition to draw (required there).",
 )
+@allow_option
 def render(
-    file: Path, output: Path, view: str, modules: str, legend: bool, module: str | None
+    file: Path,
+    output: Path,
+    view: str,
+    modules: str,
+    legend: bool,
+    module: str | None,
+    allow: tuple[Path, ...],
 ) -> None:
     """Draw FILE, a scenario or a module library (.xmi), as a diagram.
 
@@ -66,7 +72,7 @@ def render(
     """
     fmt = output_format(output)
     try:
-        document = load(file)
+        document = load(file, allow=allow)
         root = document.root
         graph = diagram(
             root,
@@ -78,8 +84,6 @@ def render(
         write_atomically(output, to_bytes(graph, fmt))
     except ModuleChoiceError as error:
         raise click.UsageError(error.message) from None
-    except SceMLError as error:
-        raise ReportedError(error) from None
     click.echo(f"wrote {output}")
     # The diagram draws a broken module use as such; the exit status still says it is broken.
     broken = list(unresolved_references(root))

@@ -8,15 +8,14 @@ from typing import cast
 import click
 
 from ..diagnostics import Severity
-from ..errors import SceMLError
 from ..io import load, write_atomically
 from ..render.flow import Modules
 from ..render.report import build_report
 from ..validation import validate
-from .common import ReportedError
+from .common import SceMLCommand, allow_option
 
 
-@click.command()
+@click.command(cls=SceMLCommand)
 @click.argument("file", type=click.Path(exists=True, dir_okay=False, path_type=Path))
 @click.option(
     "-o",
@@ -32,7 +31,8 @@ from .common import ReportedError
     show_default=True,
     help="Draw module uses as one box, or expanded so diagnostics inside them can be shown.",
 )
-def report(file: Path, output: Path, modules: str) -> None:
+@allow_option
+def report(file: Path, output: Path, modules: str, allow: tuple[Path, ...]) -> None:
     """Write a review report of FILE: diagram, validation diagnostics, actors and parameters.
 
     Clicking a diagnostic in the page highlights its element in the diagram. Exits 0 when the
@@ -41,13 +41,10 @@ def report(file: Path, output: Path, modules: str) -> None:
     """
     if output.suffix.lower() not in (".html", ".htm"):
         raise click.BadParameter("the report is HTML; name a .html file", param_hint="'-o'")
-    try:
-        document = load(file)
-        diagnostics = validate(document.root, document=document)
-        html = build_report(document, diagnostics, modules=cast(Modules, modules))
-        write_atomically(output, html.encode("utf-8"))
-    except SceMLError as error:
-        raise ReportedError(error) from None
+    document = load(file, allow=allow)
+    diagnostics = validate(document.root, document=document)
+    html = build_report(document, diagnostics, modules=cast(Modules, modules))
+    write_atomically(output, html.encode("utf-8"))
     errors = sum(d.severity == Severity.ERROR for d in diagnostics)
     click.echo(
         f"wrote {output}" + (f" ({errors} error{'s' if errors != 1 else ''})" if errors else "")

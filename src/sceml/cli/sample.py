@@ -15,20 +15,21 @@ import scemlmodel as scm
 
 from .. import io
 from ..diagnostics import Severity
-from ..errors import SceMLError
+from ..errors import ArgumentError, SceMLError
 from ..graph import root_node
 from ..levels.batch import BatchConfig, run_batch
 from ..levels.manifest import SampleRecord, write_manifest
 from ..levels.paths import LevelError
 from ..levels.sampling import STRATEGIES, plan_for, values_at
 from ..levels.space import parameter_space
+from ..schema import SUPPORTED_VERSIONS
 from ..validation import validate
-from .common import ReportedError
+from .common import SceMLCommand, allow_option
 
 _FORMATS = {"xmi": ("xmi",), "xosc": ("xosc",), "both": ("xosc", "xmi")}
 
 
-@click.command()
+@click.command(cls=SceMLCommand)
 @click.argument("logical", type=click.Path(exists=True, dir_okay=False, path_type=Path))
 @click.option(
     "--strategy",
@@ -63,8 +64,8 @@ _FORMATS = {"xmi": ("xmi",), "xosc": ("xosc",), "both": ("xosc", "xmi")}
 )
 @click.option(
     "--osc-version",
-    type=click.Choice(["1.0", "1.1", "1.2", "1.3"]),
-    default="1.3",
+    type=click.Choice(SUPPORTED_VERSIONS),
+    default=SUPPORTED_VERSIONS[-1],
     show_default=True,
     help="OpenSCENARIO version of the .xosc files.",
 )
@@ -81,6 +82,7 @@ _FORMATS = {"xmi": ("xmi",), "xosc": ("xosc",), "both": ("xosc", "xmi")}
     help="Write only sample INDEX of the run given by the other options (same seed, and for "
     "lhs the same --n); its values are printed and no manifest is written.",
 )
+@allow_option
 def sample(
     logical: Path,
     strategy: str,
@@ -91,6 +93,7 @@ def sample(
     osc_version: str,
     workers: int | None,
     index: int | None,
+    allow: tuple[Path, ...],
 ) -> None:
     """Sample the logical scenario LOGICAL into concrete scenarios in DIR.
 
@@ -99,7 +102,7 @@ def sample(
     lists each sample's index, status, files and the value of every varied parameter.
     """
     try:
-        document = io.load_scenario(logical)
+        document = io.load_scenario(logical, allow=allow)
         scenario = document.root
         _require_logical(scenario, logical)
         _require_valid(document, logical)
@@ -110,8 +113,9 @@ def sample(
         indices = np.arange(plan.n) if index is None else np.array([index])
         rows = values_at(space, plan, indices)
     except SceMLError as error:
-        error.file = error.file or str(logical)  # e.g. a grid too large: the file is the cause
-        raise ReportedError(error) from None
+        if not isinstance(error, ArgumentError):  # e.g. a grid too large: the file is the cause
+            error.file = error.file or str(logical)
+        raise
     config = BatchConfig(
         logical=logical,
         out_dir=out_dir,
@@ -119,6 +123,7 @@ def sample(
         formats=_FORMATS[file_format],
         osc_version=osc_version,
         stem=logical.stem.removesuffix("-logical"),
+        allow=allow,
         width=max(5, len(str(max(plan.n - 1, 0)))),
     )
     started = time.perf_counter()
@@ -166,17 +171,14 @@ def _run(
     config: BatchConfig, indices: np.ndarray, rows: np.ndarray, workers: int | None
 ) -> list[SampleRecord]:
     records: list[SampleRecord] = []
-    try:
-        # The bar is for a person at a terminal; logs and pipes would only get a stray label.
-        hidden = not sys.stderr.isatty()
-        with click.progressbar(
-            length=len(indices), label="sampling", file=sys.stderr, hidden=hidden
-        ) as bar:
-            for record in run_batch(config, indices, rows, workers=workers or os.cpu_count()):
-                records.append(record)
-                bar.update(1)
-    except SceMLError as error:
-        raise ReportedError(error) from None
+    # The bar is for a person at a terminal; logs and pipes would only get a stray label.
+    hidden = not sys.stderr.isatty()
+    with click.progressbar(
+        length=len(indices), label="sampling", file=sys.stderr, hidden=hidden
+    ) as bar:
+        for record in run_batch(config, indices, rows, workers=workers or os.cpu_count()):
+            records.append(record)
+            bar.update(1)
     return records
 
 

@@ -7,20 +7,22 @@ from pathlib import Path
 
 import click
 
-from ..errors import LoadError, SceMLError
+from ..errors import LoadError
 from ..io import load
 from ..report import FileReport, exit_code, render
 from ..validation import Limits, load_limits
 from ..validation import validate as validate_model
-from .common import ReportedError, emit_report, file_progress, report_options
+from .common import SceMLCommand, allow_option, emit_report, file_progress, report_options
 
 OSC_VERSIONS = ("1.0", "1.1", "1.2", "1.3")
 
 
-def validate_file(path: Path, limits: Limits, osc_version: str | None) -> FileReport:
+def validate_file(
+    path: Path, limits: Limits, osc_version: str | None, allow: tuple[Path, ...] = ()
+) -> FileReport:
     """Load and validate one file; an unreadable one is reported, not raised."""
     try:
-        document = load(path)
+        document = load(path, allow=allow)
     except LoadError as error:
         where = f"line {error.line}: " if error.line else ""
         return FileReport(str(path), unreadable=where + error.message)
@@ -30,7 +32,7 @@ def validate_file(path: Path, limits: Limits, osc_version: str | None) -> FileRe
     return FileReport(str(path), diagnostics)
 
 
-@click.command("validate")
+@click.command("validate", cls=SceMLCommand)
 @click.argument("files", nargs=-1, required=True, type=click.Path(dir_okay=False, path_type=Path))
 @report_options(json_help="see docs/validation-json.md")
 @click.option(
@@ -46,6 +48,7 @@ def validate_file(path: Path, limits: Limits, osc_version: str | None) -> FileRe
     help="Also check that every node kind of a concrete scenario can be exported to this "
     "OpenSCENARIO version.",
 )
+@allow_option
 def validate(
     files: tuple[Path, ...],
     output_format: str,
@@ -53,6 +56,7 @@ def validate(
     limits_file: Path | None,
     osc_version: str | None,
     output: Path | None,
+    allow: tuple[Path, ...],
 ) -> None:
     """Validate scenario and library FILES (.xmi) against the SceML rules.
 
@@ -60,11 +64,8 @@ def validate(
     and model path. Module libraries a scenario uses are checked too. Exit status: 0 clean, 1 when
     a file has errors (with --strict: or warnings), 2 for usage errors or unreadable files.
     """
-    try:
-        limits = load_limits(limits_file) if limits_file is not None else Limits()
-        with file_progress(files, "validating") as todo:
-            reports = [validate_file(path, limits, osc_version) for path in todo]
-        emit_report(render(reports, output_format, strict), output)
-    except SceMLError as error:
-        raise ReportedError(error) from None
+    limits = load_limits(limits_file) if limits_file is not None else Limits()
+    with file_progress(files, "validating") as todo:
+        reports = [validate_file(path, limits, osc_version, allow) for path in todo]
+    emit_report(render(reports, output_format, strict), output)
     sys.exit(exit_code(reports, strict))

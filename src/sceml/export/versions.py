@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-VERSIONS = ("1.0", "1.1", "1.2", "1.3")
+from ..schema import SUPPORTED_VERSIONS as VERSIONS
 
 
 @dataclass(frozen=True)

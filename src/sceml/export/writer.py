@@ -13,7 +13,7 @@ import scemlmodel as scm
 
 from .. import graph, schema
 from ..diagnostics import Diagnostic
-from ..errors import SceMLError
+from ..errors import ArgumentError, SceMLError
 from ..io import write_atomically
 from ..modules.flatten import flatten
 from . import checks
@@ -87,7 +87,7 @@ def build_xosc(
     options = Options(
         version=version,
         profile=profile,
-        date=_header_date(date, root, source_path),
+        date=_file_header_date(date, root, source_path),
         logic_file=logic_file(root.map, source_path, map_path, output_path, profile, town),
         parameters=parameters,
     )
@@ -133,13 +133,24 @@ def _refuse(problems: list[Diagnostic], source_path: str | Path | None) -> None:
     )
 
 
-def _header_date(date: str | None, root: scm.RootNode, source_path: str | Path | None) -> str:
-    """The FileHeader date: the option, else the root's date, else the epoch; always seconds."""
-    given = date or root.date or EPOCH
+def _file_header_date(date: str | None, root: scm.RootNode, source_path: str | Path | None) -> str:
+    """The FileHeader date: the caller's, else the root node's, else the epoch."""
+    if date:
+        return header_date(date)
     try:
-        parsed = datetime.fromisoformat(given)
+        return header_date(root.date or EPOCH)
+    except ArgumentError as error:
+        raise ExportError(f"the root node's {error.message}", file=source_path) from None
+
+
+def header_date(text: str) -> str:
+    """A FileHeader date (xsd:dateTime, to the second) from ISO 8601 text; ArgumentError if not."""
+    try:
+        parsed = datetime.fromisoformat(text)
     except ValueError:
-        raise ExportError(f"date {given!r} is not an ISO 8601 date", file=source_path) from None
+        raise ArgumentError(
+            f"date {text!r} is not an ISO 8601 date, e.g. 2026-01-01T12:00:00"
+        ) from None
     return parsed.isoformat(timespec="seconds")
 
 

@@ -47,6 +47,8 @@ class BatchConfig:
     osc_version: str = "1.3"
     stem: str = "sample"
     width: int = 5
+    #: More folders the logical scenario's references may reach (see io.reading_roots).
+    allow: tuple[Path, ...] = ()
 
     def file_name(self, index: int, suffix: str) -> str:
         """The output file name of one sample, e.g. `uis2_00417.xosc`."""
@@ -58,7 +60,7 @@ class Worker:
 
     def __init__(self, config: BatchConfig) -> None:
         self.config = config
-        logical = io.load_scenario(config.logical).root
+        logical = io.load_scenario(config.logical, allow=config.allow).root
         self.template = FlatTemplate(logical, config.paths)
         self.checker = SampleChecker(self.template)
         self.xosc = None

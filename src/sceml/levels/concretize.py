@@ -8,7 +8,7 @@ import scemlmodel as scm
 
 from .. import params
 from .apply import copy_scenario, set_level
-from .paths import LevelError, Slot, place_value, resolve, slots, unresolved
+from .paths import LevelArgumentError, LevelError, Slot, place_value, resolve, slots, unresolved
 
 
 def concretize(scenario: scm.Scenario, assignments: Mapping[str, float]) -> scm.Scenario:
@@ -39,12 +39,12 @@ def _open(slot: Slot) -> str:
 
 
 def parse_assignment(text: str) -> tuple[str, float]:
-    """`path=value` as (path, number); LevelError when it is not of that form."""
+    """`path=value` as (path, number); LevelArgumentError when it is not of that form."""
     path, sep, raw = text.partition("=")
     try:
         number = float(raw)
     except ValueError:
         number = float("nan")
     if not sep or not path.strip() or number != number:
-        raise LevelError(f"expected PATH=NUMBER, got {text!r}")
+        raise LevelArgumentError(f"expected PATH=NUMBER (a number in SI units), got {text!r}")
     return path.strip(), number

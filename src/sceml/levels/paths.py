@@ -28,7 +28,7 @@ import scemlmodel as scm
 
 from .. import catalog, params
 from ..copying import copy_tree
-from ..errors import SceMLError
+from ..errors import ArgumentError, SceMLError
 from ..modules.resolve import resolved_definition
 
 _SEGMENT = re.compile(r"^(?P<name>[^.\[\]]+)(?:\[(?P<index>\d+)\])?$")
@@ -38,10 +38,12 @@ class LevelError(SceMLError):
     """A scenario cannot be moved to another abstraction level as asked."""
 
 
-class UnknownPathError(LevelError):
-    """A parameter path names nothing in the scenario; `valid` lists the paths that exist."""
+class LevelArgumentError(LevelError, ArgumentError):
+    """A level operation was given a value it cannot use (a sample count, an assignment)."""
 
-    exit_code = 2
+
+class UnknownPathError(LevelArgumentError):
+    """A parameter path names nothing in the scenario; `valid` lists the paths that exist."""
 
     def __init__(self, path: str, valid: Sequence[str]) -> None:
         listing = "\n  ".join(valid) if valid else "(the scenario has no numeric parameters)"

@@ -22,7 +22,7 @@ The distribution file is one of OpenSCENARIO's two kinds (the schema allows one 
 from __future__ import annotations
 
 import re
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -33,7 +33,7 @@ import scemlmodel as scm
 from .. import io, schema
 from ..graph import root_node
 from .apply import FlatTemplate
-from .paths import LevelError
+from .paths import LevelArgumentError, LevelError
 from .space import Dimension, ParameterSpace, parameter_space
 
 MODES = ("auto", "deterministic", "stochastic")
@@ -63,14 +63,22 @@ def export_distribution(
     runs: int = 100,
     seed: int = 0,
     date: str | None = None,
+    allow: Iterable[str | Path] = (),
 ) -> DistributionFiles:
-    """Write `<stem>.xosc` (parameterized) and `<stem>.pvd.xosc` (its distribution) to out_dir."""
-    if version == "1.0":
-        raise LevelError(
-            "OpenSCENARIO 1.0 has no ParameterValueDistribution; use --osc-version 1.1, 1.2 or 1.3",
-            file=logical,
+    """Write `<stem>.xosc` (parameterized) and `<stem>.pvd.xosc` (its distribution) to out_dir.
+
+    Files the scenario refers to are read from `io.reading_roots(logical, allow)`.
+    """
+    if version not in schema.DISTRIBUTION_VERSIONS:
+        raise LevelArgumentError(
+            f"OpenSCENARIO {version} has no ParameterValueDistribution; use version "
+            f"{', '.join(schema.DISTRIBUTION_VERSIONS)}"
         )
-    scenario = io.load_scenario(logical).root
+    if date is not None:
+        from ..export.writer import header_date  # Jinja2 is loaded only when exporting
+
+        date = header_date(date)
+    scenario = io.load_scenario(logical, allow=allow).root
     space = parameter_space(scenario)
     kind = distribution_kind(space, mode)
     stem = logical.stem.removesuffix("-logical")
@@ -78,9 +86,9 @@ def export_distribution(
     distribution_path = out_dir / f"{stem}.pvd.xosc"
     tree = parameterized_tree(scenario, space, logical, scenario_path, version, date)
     _check(tree, version, scenario_path)
-    header_date = date or _date_of(scenario)
+    file_date = date or _date_of(scenario)
     distribution = distribution_tree(
-        space, kind, version, scenario_path.name, runs=runs, seed=seed, date=header_date
+        space, kind, version, scenario_path.name, runs=runs, seed=seed, date=file_date
     )
     _check(distribution, version, distribution_path)
     io.write_atomically(scenario_path, _bytes(tree))

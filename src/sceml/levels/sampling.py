@@ -21,7 +21,7 @@ from typing import Literal, get_args
 import numpy as np
 from numpy.typing import NDArray
 
-from .paths import LevelError
+from .paths import LevelArgumentError, LevelError
 from .space import ParameterSpace
 
 Strategy = Literal["grid", "random", "lhs"]
@@ -49,7 +49,7 @@ def plan_for(space: ParameterSpace, strategy: Strategy, n: int | None, seed: int
         size = space.grid_size
         return Plan("grid", size if n is None else min(n, size), seed)
     if n is None:
-        raise LevelError(f"the {strategy} strategy needs a sample count (n)")
+        raise LevelArgumentError(f"the {strategy} strategy needs a sample count (--n)")
     return Plan(strategy, n, seed)
 
 
@@ -62,7 +62,7 @@ def values_at(space: ParameterSpace, plan: Plan, indices: NDArray[np.int64]) -> 
     """The values of the samples at `indices` (each in [0, n)), one row per index."""
     indices = np.asarray(indices, dtype=np.int64)
     if indices.size and (indices.min() < 0 or indices.max() >= plan.n):
-        raise LevelError(
+        raise LevelArgumentError(
             f"sample index out of range: the plan has {plan.n} samples (0..{plan.n - 1})"
         )
     if plan.strategy == "grid":

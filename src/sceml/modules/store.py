@@ -48,10 +48,10 @@ def flatten_file(
 ) -> FlattenReport:
     """Flatten the scenario in `path` and save it, atomically, to `output`.
 
-    Referenced libraries may lie below the scenario's folder or any of `allowed_roots`.
+    Referenced libraries are read from `io.reading_roots(path, allowed_roots)`.
     """
     path, output = Path(path), Path(output)
-    document = io.load_scenario(path, allowed_roots=[path.resolve().parent, *allowed_roots])
+    document = io.load_scenario(path, allow=allowed_roots)
     flattened = expand(document.root)
     io.save(flattened.scenario, output)
     return FlattenReport(output, flattened.expanded, len(flattened.scenario.nodes))
@@ -75,7 +75,9 @@ def extract_file(
     """
     path, library_path = Path(path).resolve(), Path(library_path).resolve()
     target = Path(output).resolve() if output is not None else path
-    resource_set = io.new_resource_set([path.parent, library_path.parent, *allowed_roots])
+    resource_set = io.new_resource_set(
+        io.reading_roots(path, [library_path.parent, *allowed_roots])
+    )
     scenario = io.load_scenario(path, resource_set=resource_set).root
     created = not library_path.exists()
     if created:
