@@ -1,0 +1,352 @@
+// The editor page: toolbar, palette, diagram, properties and problems around one server view.
+
+import { useReactFlow } from "@xyflow/react";
+import { useCallback, useEffect, useMemo, useRef, useState } from "react";
+import { api, ApiError } from "./api";
+import { Diagram } from "./canvas/Diagram";
+import { ExportDialog, ExtractDialog, OpenDialog, UseModuleDialog, type ExportResult } from "./dialogs/dialogs";
+import { pasteOffset } from "./lib/clipboard";
+import type { Direction } from "./lib/layout";
+import { Palette } from "./panels/Palette";
+import { Problems } from "./panels/Problems";
+import { Properties } from "./panels/Properties";
+import { Toolbar } from "./panels/Toolbar";
+import { useDiagramState } from "./state/useDiagramState";
+import { useExpanded } from "./state/useExpanded";
+import { useServer } from "./state/useServer";
+import { useShortcuts } from "./state/useShortcuts";
+import type { Diagnostic, Op, PaletteItem, View, ViewNode, XY } from "./types";
+
+type DialogState =
+  | { type: "open" }
+  | { type: "export" }
+  | { type: "extract" }
+  | { type: "use"; item: PaletteItem; position: XY }
+  | null;
+
+const DIRECTION_KEY = "sceml-layout-direction";
+
+function storedDirection(): Direction {
+  return localStorage.getItem(DIRECTION_KEY) === "RIGHT" ? "RIGHT" : "DOWN";
+}
+
+/** Ops that change the picture: the first one also saves where every node is drawn. */
+const STRUCTURAL = new Set(["add_node", "add_module_use", "move", "paste", "delete", "connect", "extract_module"]);
+
+function hasUnsavedPositions(view: View): boolean {
+  return view.nodes.some((node) => node.parent === null && node.position === null);
+}
+
+export function Editor() {
+  const server = useServer();
+  const { view } = server;
+  const [expanded, toggleExpanded] = useExpanded(view);
+  const [direction, setDirection] = useState<Direction>(storedDirection);
+  const diagram = useDiagramState(view, expanded, direction);
+  const flow = useReactFlow();
+  const [dialog, setDialog] = useState<DialogState>(null);
+  const [clipboard, setClipboard] = useState<{ count: number; pastes: number }>({ count: 0, pastes: 0 });
+  const canvas = useRef<HTMLDivElement>(null);
+
+  const editable = view !== null && !view.readOnly;
+  const selectedNodes = useMemo(() => diagram.nodes.filter((node) => node.selected), [diagram.nodes]);
+  const selectedEdges = useMemo(() => diagram.edges.filter((edge) => edge.selected), [diagram.edges]);
+  const ownSelection = selectedNodes.filter((node) => node.deletable !== false).map((node) => node.id);
+
+  // The page title and the warning before leaving with unsaved changes.
+  useEffect(() => {
+    document.title = view ? `${view.dirty ? "• " : ""}SceML — ${view.document.name}` : "SceML";
+  }, [view]);
+  useEffect(() => {
+    if (!view?.dirty) return;
+    const warn = (event: BeforeUnloadEvent) => {
+      event.preventDefault();
+      event.returnValue = "";
+    };
+    window.addEventListener("beforeunload", warn);
+    return () => window.removeEventListener("beforeunload", warn);
+  }, [view?.dirty]);
+
+  // The first layout of a document fits the view.
+  const fittedFor = useRef<string | null>(null);
+  useEffect(() => {
+    if (!view || diagram.layouts === 0) return;
+    const document = `${view.document.path}#${view.document.module ?? ""}`;
+    if (fittedFor.current === document) return;
+    fittedFor.current = document;
+    requestAnimationFrame(() => void flow.fitView({ padding: 0.08 }));
+  }, [view, diagram.layouts, flow]);
+
+  /** Where every top-level node is drawn now. */
+  const drawnPositions = useCallback((): Record<string, XY> => {
+    const positions: Record<string, XY> = {};
+    for (const node of diagram.nodes) {
+      if (!node.parentId) positions[node.id] = { x: Math.round(node.position.x), y: Math.round(node.position.y) };
+    }
+    return positions;
+  }, [diagram.nodes]);
+
+  /** Send ops as one undo step; select what they created. */
+  const edit = useCallback(
+    async (ops: Op[], label?: string) => {
+      if (!view) return null;
+      let list = ops;
+      if (hasUnsavedPositions(view) && ops.some((op) => STRUCTURAL.has(op.op))) {
+        const positions = drawnPositions();
+        const moves = ops.filter((op) => op.op === "move");
+        for (const move of moves) Object.assign(positions, move.positions as Record<string, XY>);
+        list = [{ op: "move", positions }, ...ops.filter((op) => op.op !== "move")];
+      }
+      const next = await server.ops(list, label);
+      if (next?.created?.length) diagram.selectNext(next.created);
+      return next;
+    },
+    [view, server, drawnPositions, diagram],
+  );
+  const send = useCallback((op: Op) => void edit([op]), [edit]);
+
+  const setSelection = useCallback(
+    (ids: Set<string>) => {
+      diagram.setNodes((nodes) => nodes.map((node) => ({ ...node, selected: ids.has(node.id) })));
+      diagram.setEdges((edges) => edges.map((edge) => ({ ...edge, selected: false })));
+    },
+    [diagram],
+  );
+
+  const centreOn = useCallback(
+    (id: string) => {
+      const internal = flow.getInternalNode(id);
+      if (!internal) return;
+      const { x, y } = internal.internals.positionAbsolute;
+      const width = internal.measured.width ?? internal.width ?? 0;
+      const height = internal.measured.height ?? internal.height ?? 0;
+      void flow.setCenter(x + width / 2, y + height / 2, { zoom: Math.max(flow.getZoom(), 0.8), duration: 300 });
+    },
+    [flow],
+  );
+
+  /** The drawn node nearest to a node (itself, or the collapsed use that holds it). */
+  const drawnNode = useCallback(
+    (id: string): string | null => {
+      if (!view) return null;
+      const byId = new Map(view.nodes.map((node) => [node.id, node]));
+      const drawn = new Set(diagram.nodes.map((node) => node.id));
+      let current = byId.get(id);
+      while (current && !drawn.has(current.id)) current = current.parent === null ? undefined : byId.get(current.parent);
+      return current?.id ?? null;
+    },
+    [view, diagram.nodes],
+  );
+
+  const showProblem = useCallback(
+    (diagnostic: Diagnostic) => {
+      if (!view) return;
+      const target = diagnostic.node ?? view.nodes.find((node) => node.look === "root")?.id ?? null;
+      const id = target === null ? null : drawnNode(target);
+      if (id === null) return;
+      setSelection(new Set([id]));
+      centreOn(id);
+    },
+    [view, drawnNode, setSelection, centreOn],
+  );
+
+  const removeSelection = useCallback(() => {
+    if (!editable) return;
+    const edges = selectedEdges.filter((edge) => edge.deletable !== false).map((edge) => edge.id);
+    if (ownSelection.length === 0 && edges.length === 0) return;
+    void edit([{ op: "delete", nodes: ownSelection, edges }]);
+  }, [editable, selectedEdges, ownSelection, edit]);
+
+  const copy = useCallback(async () => {
+    if (!editable || ownSelection.length === 0) return false;
+    try {
+      const answer = await server.enqueue(() => api.copy(ownSelection));
+      setClipboard({ count: answer.copied, pastes: 0 });
+      return true;
+    } catch (caught) {
+      server.report(caught);
+      return false;
+    }
+  }, [editable, ownSelection, server]);
+
+  const paste = useCallback(() => {
+    if (!editable || clipboard.count === 0) return;
+    const pastes = clipboard.pastes + 1;
+    setClipboard({ ...clipboard, pastes });
+    void edit([{ op: "paste", offset: pasteOffset(pastes) }], "Paste");
+  }, [editable, clipboard, edit]);
+
+  const cut = useCallback(async () => {
+    if (await copy()) void edit([{ op: "delete", nodes: ownSelection, edges: [] }], "Cut");
+  }, [copy, edit, ownSelection]);
+
+  const centre = useCallback((): XY => {
+    const rect = canvas.current?.getBoundingClientRect();
+    if (!rect) return { x: 0, y: 0 };
+    return flow.screenToFlowPosition({ x: rect.left + rect.width / 2, y: rect.top + rect.height / 2 });
+  }, [flow]);
+
+  const addItem = useCallback(
+    (item: PaletteItem, at?: XY) => {
+      if (!editable) return;
+      const where = at ?? centre();
+      const position = { x: Math.round(where.x - 60), y: Math.round(where.y - 20) };
+      if (item.module) setDialog({ type: "use", item, position });
+      else void edit([{ op: "add_node", kind: item.kind, position }], `Add ${item.label}`);
+    },
+    [editable, centre, edit],
+  );
+
+  const arrange = useCallback(
+    async (to: Direction = direction) => {
+      const positions = await diagram.arrange(to);
+      if (editable) void server.ops([{ op: "move", positions }], "Arrange");
+    },
+    [diagram, direction, editable, server],
+  );
+
+  const changeDirection = useCallback(
+    (to: Direction) => {
+      localStorage.setItem(DIRECTION_KEY, to);
+      setDirection(to);
+      // Saved positions would keep the old picture: arrange them anew (one undoable step).
+      if (view && editable && view.nodes.some((node) => node.parent === null && node.position !== null)) void arrange(to);
+    },
+    [view, editable, arrange],
+  );
+
+  const fit = useCallback(() => void flow.fitView({ padding: 0.08, duration: 200 }), [flow]);
+  const undo = useCallback(() => void (editable && view?.undo && server.run(api.undo)), [editable, view, server]);
+  const redo = useCallback(() => void (editable && view?.redo && server.run(api.redo)), [editable, view, server]);
+  const save = useCallback(() => {
+    if (!editable) return;
+    if (document.activeElement instanceof HTMLElement) document.activeElement.blur();
+    void server.run(() => api.save());
+  }, [editable, server]);
+
+  const open = useCallback(
+    async (path: string, module: string) => {
+      setDialog(null);
+      const attempt = async (discard: boolean): Promise<View | null> => {
+        try {
+          const next = await server.enqueue(() => api.open(path, discard, module || undefined));
+          return next;
+        } catch (caught) {
+          if (caught instanceof ApiError && caught.status === 409 && !discard) {
+            return window.confirm(`${caught.message}\n\nDiscard the unsaved changes?`) ? attempt(true) : null;
+          }
+          server.report(caught);
+          return null;
+        }
+      };
+      const next = await attempt(false);
+      if (next) void server.run(() => Promise.resolve(next));
+    },
+    [server],
+  );
+
+  const exportXosc = useCallback(
+    async (version: string, profile: string, path: string): Promise<ExportResult> => {
+      try {
+        const answer = await server.enqueue(() => api.exportXosc(version, profile, path || undefined));
+        return { path: answer.path };
+      } catch (caught) {
+        if (caught instanceof ApiError) return { error: caught.message, diagnostics: caught.diagnostics };
+        return { error: String(caught) };
+      }
+    },
+    [server],
+  );
+
+  const openDefinition = useCallback((node: ViewNode) => void server.run(() => api.openDefinition(node.id)), [server]);
+
+  useShortcuts({
+    undo,
+    redo,
+    remove: removeSelection,
+    copy: () => void copy(),
+    paste,
+    cut: () => void cut(),
+    selectAll: () => setSelection(new Set(diagram.nodes.filter((node) => node.selectable !== false).map((node) => node.id))),
+    save,
+    clearSelection: () => setSelection(new Set()),
+    fit,
+  });
+
+  const single = selectedNodes.length === 1 && selectedNodes[0] ? selectedNodes[0].data.node : null;
+
+  return (
+    <div className={`editor${view?.readOnly ? " read-only" : ""}`}>
+      <Toolbar
+        view={view}
+        direction={direction}
+        hasSelection={ownSelection.length > 0 || selectedEdges.length > 0}
+        canPaste={clipboard.count > 0}
+        actions={{
+          open: () => setDialog({ type: "open" }),
+          save,
+          exportXosc: () => setDialog({ type: "export" }),
+          undo,
+          redo,
+          remove: removeSelection,
+          copy: () => void copy(),
+          paste,
+          arrange: () => void arrange(),
+          fit,
+          extract: () => setDialog({ type: "extract" }),
+          setDirection: changeDirection,
+        }}
+      />
+      {server.error && (
+        <div className="banner" role="alert">
+          <span>{server.error}</span>
+          <button type="button" onClick={server.clearError} aria-label="Dismiss">
+            ×
+          </button>
+        </div>
+      )}
+      <div className="workspace">
+        {view && !view.readOnly && <Palette view={view} onAdd={(item) => addItem(item)} />}
+        <div className="canvas" ref={canvas}>
+          <Diagram
+            view={view}
+            state={diagram}
+            direction={direction}
+            toggleExpanded={toggleExpanded}
+            onConnect={(source, target) => void edit([{ op: "connect", source, target }], "Connect")}
+            onMoved={(positions) => void edit([{ op: "move", positions }], "Move")}
+            onDropItem={addItem}
+          />
+        </div>
+        {view && <Properties view={view} node={single} selectionCount={selectedNodes.length} send={send} openDefinition={openDefinition} />}
+      </div>
+      {view && <Problems diagnostics={view.diagnostics} onShow={showProblem} />}
+      {dialog?.type === "open" && <OpenDialog view={view} onOpen={(path, module) => void open(path, module)} onCancel={() => setDialog(null)} />}
+      {dialog?.type === "export" && view && <ExportDialog view={view} onExport={exportXosc} onCancel={() => setDialog(null)} />}
+      {dialog?.type === "extract" && (
+        <ExtractDialog
+          count={ownSelection.length}
+          onCancel={() => setDialog(null)}
+          onExtract={(name, library) => {
+            setDialog(null);
+            void edit([{ op: "extract_module", nodes: ownSelection, name, library }], `Extract ${name}`);
+          }}
+        />
+      )}
+      {dialog?.type === "use" && view && (
+        <UseModuleDialog
+          view={view}
+          item={dialog.item}
+          onCancel={() => setDialog(null)}
+          onAdd={(bindings) => {
+            setDialog(null);
+            void edit(
+              [{ op: "add_module_use", library: dialog.item.library, module: dialog.item.module, position: dialog.position, bindings, overrides: {} }],
+              `Add ${dialog.item.label}`,
+            );
+          }}
+        />
+      )}
+    </div>
+  );
+}

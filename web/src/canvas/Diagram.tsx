@@ -1,0 +1,83 @@
+// The canvas: React Flow with the notation's nodes, connect by dragging, drop from the palette.
+
+import { Background, Controls, MiniMap, ReactFlow, type Connection } from "@xyflow/react";
+import { useMemo, type DragEvent } from "react";
+import { useReactFlow } from "@xyflow/react";
+import type { Direction } from "../lib/layout";
+import { resolveLook } from "../lib/looks";
+import { PALETTE_MIME } from "../panels/Palette";
+import type { DiagramState } from "../state/useDiagramState";
+import type { PaletteItem, View, XY } from "../types";
+import { DiagramContext } from "./context";
+import { nodeTypes } from "./nodeTypes";
+import type { DiagramNode } from "./types";
+
+interface Props {
+  view: View | null;
+  state: DiagramState;
+  direction: Direction;
+  toggleExpanded: (id: string) => void;
+  onConnect: (source: string, target: string) => void;
+  onMoved: (positions: Record<string, XY>) => void;
+  onDropItem: (item: PaletteItem, at: XY) => void;
+}
+
+export function Diagram({ view, state, direction, toggleExpanded, onConnect, onMoved, onDropItem }: Props) {
+  const flow = useReactFlow();
+  const readOnly = view?.readOnly ?? true;
+  const context = useMemo(
+    () => ({ style: view?.style, direction, readOnly, toggleExpanded }),
+    [view?.style, direction, readOnly, toggleExpanded],
+  );
+
+  const onDrop = (event: DragEvent) => {
+    const data = event.dataTransfer.getData(PALETTE_MIME);
+    if (!data || readOnly) return;
+    event.preventDefault();
+    onDropItem(JSON.parse(data) as PaletteItem, flow.screenToFlowPosition({ x: event.clientX, y: event.clientY }));
+  };
+
+  const minimapColour = (node: DiagramNode) => {
+    if (node.type === "frame") return "transparent";
+    return resolveLook(view?.style, node.data.node.look).fill;
+  };
+
+  return (
+    <DiagramContext.Provider value={context}>
+      <div className="diagram" role="application" aria-label="Diagram" onDragOver={(event) => event.preventDefault()} onDrop={onDrop}>
+        <ReactFlow<DiagramNode>
+          nodes={state.nodes}
+          edges={state.edges}
+          nodeTypes={nodeTypes}
+          onNodesChange={state.onNodesChange}
+          onEdgesChange={state.onEdgesChange}
+          onConnect={(connection: Connection) => onConnect(connection.source, connection.target)}
+          onNodeDragStop={(_event, _node, dragged) => {
+            const positions: Record<string, XY> = {};
+            for (const node of dragged) {
+              if (!node.parentId) positions[node.id] = { x: Math.round(node.position.x), y: Math.round(node.position.y) };
+            }
+            if (Object.keys(positions).length > 0) onMoved(positions);
+          }}
+          nodesDraggable={!readOnly}
+          nodesConnectable={!readOnly}
+          edgesReconnectable={false}
+          deleteKeyCode={null}
+          selectionKeyCode="Shift"
+          multiSelectionKeyCode={["Shift", "Meta", "Control"]}
+          selectionOnDrag={false}
+          panOnDrag
+          minZoom={0.1}
+          maxZoom={2.5}
+          connectionRadius={30}
+          proOptions={{ hideAttribution: true }}
+          defaultEdgeOptions={{ type: "default" }}
+        >
+          <Background gap={20} color="#e0e4e8" />
+          <MiniMap<DiagramNode> pannable zoomable nodeColor={minimapColour} nodeStrokeColor="#37474f" nodeStrokeWidth={2} />
+          <Controls showInteractive={false} />
+        </ReactFlow>
+      </div>
+    </DiagramContext.Provider>
+  );
+}

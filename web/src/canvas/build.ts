@@ -1,0 +1,75 @@
+// From the shown graph and its layout to React Flow's nodes and edges.
+
+import { MarkerType } from "@xyflow/react";
+import type { Shown } from "../lib/graph";
+import { childrenOf } from "../lib/graph";
+import type { Layout, Measures } from "../lib/layout";
+import { componentOf } from "../lib/looks";
+import { frameHeaderHeight, LINE_PX, measureText, nodeSize, TITLE_PX } from "../lib/sizes";
+import type { ViewNode } from "../types";
+import { nodeType } from "./nodeTypes";
+import type { DiagramEdge, DiagramNode } from "./types";
+
+export const measures: Measures = {
+  size: nodeSize,
+  header: (node: ViewNode) => {
+    const title = node.name ? `${node.name}: ${node.title}` : node.title;
+    const widths = [measureText(title, TITLE_PX + 2, true) + 90, ...node.lines.map((l) => measureText(l, LINE_PX, false))];
+    return { width: Math.ceil(Math.max(...widths)), height: frameHeaderHeight(node) };
+  },
+};
+
+/** React Flow nodes, parents first; `selected` keeps the user's selection across views. */
+export function flowNodes(
+  shown: Shown,
+  layout: Layout,
+  allNodes: ViewNode[],
+  selected: Set<string>,
+  readOnly: boolean,
+): DiagramNode[] {
+  const children = childrenOf(allNodes);
+  return shown.nodes.map((node) => {
+    const size = layout.sizes.get(node.id) ?? nodeSize(node);
+    const expanded = shown.frames.has(node.id);
+    const canExpand = componentOf(node.look) === "module" && (children.get(node.id)?.length ?? 0) > 0;
+    const inner = node.parent !== null && shown.frames.has(node.parent);
+    const locked = readOnly || node.readOnly || inner;
+    const domAttributes = (node.severity ? { "data-severity": node.severity } : {}) as DiagramNode["domAttributes"];
+    return {
+      id: node.id,
+      type: nodeType(node.look, expanded),
+      position: layout.positions.get(node.id) ?? node.position ?? { x: 0, y: 0 },
+      data: { node, width: size.width, height: size.height, expanded, canExpand },
+      width: size.width,
+      height: size.height,
+      ...(inner ? { parentId: node.parent ?? undefined, extent: "parent" as const } : {}),
+      draggable: !locked,
+      connectable: !locked,
+      deletable: !locked,
+      selectable: true,
+      selected: selected.has(node.id),
+      ariaLabel: node.name,
+      domAttributes,
+      zIndex: expanded ? -1 : undefined,
+      className: node.severity ? `has-problems severity-${node.severity}` : undefined,
+    };
+  });
+}
+
+export function flowEdges(shown: Shown, selected: Set<string>, readOnly: boolean): DiagramEdge[] {
+  const parentOf = new Map(shown.nodes.map((node) => [node.id, node.parent]));
+  return shown.edges.map((edge) => {
+    const inner = parentOf.get(edge.source) != null && parentOf.get(edge.target) != null;
+    return {
+      id: edge.id,
+      source: edge.source,
+      target: edge.target,
+      markerEnd: { type: MarkerType.ArrowClosed, color: "#37474f", width: 18, height: 18 },
+      style: { stroke: "#37474f", strokeWidth: 1.4 },
+      selectable: !inner && !readOnly,
+      deletable: !inner && !readOnly,
+      selected: selected.has(edge.id),
+      zIndex: 1,
+    };
+  });
+}

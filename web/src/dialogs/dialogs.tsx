@@ -1,0 +1,136 @@
+// The dialogs: Open, Export, Extract module, and "Use <module>" after dropping a module.
+
+import { useState } from "react";
+import type { Diagnostic, PaletteItem, View } from "../types";
+import { Dialog, Field } from "./Dialog";
+
+export function OpenDialog({ view, onOpen, onCancel }: { view: View | null; onOpen: (path: string, module: string) => void; onCancel: () => void }) {
+  const [path, setPath] = useState(view?.document.path ?? "");
+  const [module, setModule] = useState("");
+  return (
+    <Dialog title="Open" confirm="Open" onConfirm={() => path.trim() && onOpen(path.trim(), module.trim())} onCancel={onCancel}>
+      <Field label="Path">{(id) => <input id={id} value={path} onChange={(e) => setPath(e.target.value)} size={50} />}</Field>
+      <Field label="Module (in a library, optional)">{(id) => <input id={id} value={module} onChange={(e) => setModule(e.target.value)} />}</Field>
+    </Dialog>
+  );
+}
+
+export interface ExportResult {
+  path?: string;
+  error?: string;
+  diagnostics?: Diagnostic[];
+}
+
+export function ExportDialog({
+  view,
+  onExport,
+  onCancel,
+}: {
+  view: View;
+  onExport: (version: string, profile: string, path: string) => Promise<ExportResult>;
+  onCancel: () => void;
+}) {
+  const versions = view.choices.oscVersions ?? [];
+  const [version, setVersion] = useState(versions[versions.length - 1] ?? "");
+  const [profile, setProfile] = useState("generic");
+  const [path, setPath] = useState("");
+  const [busy, setBusy] = useState(false);
+  const [result, setResult] = useState<ExportResult | null>(null);
+  const run = async () => {
+    setBusy(true);
+    setResult(await onExport(version, profile, path.trim()));
+    setBusy(false);
+  };
+  return (
+    <Dialog title="Export" confirm="Export" onConfirm={() => void run()} onCancel={onCancel} busy={busy}>
+      <Field label="Version">
+        {(id) => (
+          <select id={id} value={version} onChange={(e) => setVersion(e.target.value)}>
+            {versions.map((v) => (
+              <option key={v} value={v}>
+                OpenSCENARIO {v}
+              </option>
+            ))}
+          </select>
+        )}
+      </Field>
+      <Field label="Profile">
+        {(id) => (
+          <select id={id} value={profile} onChange={(e) => setProfile(e.target.value)}>
+            <option value="generic">generic</option>
+            <option value="carla">carla</option>
+          </select>
+        )}
+      </Field>
+      <Field label="Path">{(id) => <input id={id} value={path} placeholder="beside the scenario (default)" onChange={(e) => setPath(e.target.value)} size={50} />}</Field>
+      {result?.path && (
+        <p className="success" role="status">
+          Exported to {result.path}
+        </p>
+      )}
+      {result?.error && (
+        <div className="export-refused" role="alert">
+          <p>{result.error}</p>
+          {result.diagnostics && result.diagnostics.length > 0 && (
+            <ul>
+              {result.diagnostics.map((d, i) => (
+                <li key={i} className={`severity-${d.severity}`}>
+                  {d.code} {d.message}
+                </li>
+              ))}
+            </ul>
+          )}
+        </div>
+      )}
+    </Dialog>
+  );
+}
+
+export function ExtractDialog({ count, onExtract, onCancel }: { count: number; onExtract: (name: string, library: string) => void; onCancel: () => void }) {
+  const [name, setName] = useState("");
+  const [library, setLibrary] = useState("library/sceml-library.xmi");
+  return (
+    <Dialog title="Extract module" confirm="Extract module" onConfirm={() => name.trim() && library.trim() && onExtract(name.trim(), library.trim())} onCancel={onCancel}>
+      <p className="hint">The {count} selected nodes become a module, replaced here by a use of it.</p>
+      <Field label="Module name">{(id) => <input id={id} value={name} onChange={(e) => setName(e.target.value)} />}</Field>
+      <Field label="Library">{(id) => <input id={id} value={library} onChange={(e) => setLibrary(e.target.value)} size={40} />}</Field>
+    </Dialog>
+  );
+}
+
+export function UseModuleDialog({
+  view,
+  item,
+  onAdd,
+  onCancel,
+}: {
+  view: View;
+  item: PaletteItem;
+  onAdd: (bindings: Record<string, string>) => void;
+  onCancel: () => void;
+}) {
+  const roles = item.roles ?? [];
+  const [bindings, setBindings] = useState<Record<string, string>>({});
+  const chosen = () => Object.fromEntries(Object.entries(bindings).filter(([, actor]) => actor !== ""));
+  return (
+    <Dialog title={`Use ${item.module ?? item.label}`} confirm="Add" onConfirm={() => onAdd(chosen())} onCancel={onCancel}>
+      <p className="hint">From {item.library}. Bind each role to an actor of the scenario.</p>
+      {roles.length === 0 && <p className="hint">Roles can be bound in the properties after adding it.</p>}
+      {roles.map((role) => (
+        <Field key={role.role} label={role.role}>
+          {(id) => (
+            <select id={id} value={bindings[role.role] ?? ""} onChange={(e) => setBindings({ ...bindings, [role.role]: e.target.value })}>
+              <option value="">(none)</option>
+              {view.actors.map((actor) => (
+                <option key={actor.id} value={actor.name}>
+                  {actor.name} ({actor.kind ?? "?"})
+                </option>
+              ))}
+            </select>
+          )}
+        </Field>
+      ))}
+      {roles.length > 0 && <p className="hint">Allowed: {roles.map((r) => `${r.role}: ${r.allowedKinds.join(", ")}`).join("; ")}</p>}
+    </Dialog>
+  );
+}

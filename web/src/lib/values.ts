@@ -1,0 +1,228 @@
+// Turning what the user types into the protocol's ParamValue, and back. Only syntax: whether a
+// value is allowed (units, ranges, the level) is the server's call.
+
+import type { ParamType, ParamValue } from "../types";
+
+/** The inputs a parameter kind has, in order, and which of them must be filled. */
+export const PARAM_INPUTS: Record<ParamType, { name: string; required: boolean }[]> = {
+  value: [{ name: "value", required: true }],
+  range: [
+    { name: "min", required: true },
+    { name: "max", required: true },
+    { name: "step", required: false },
+  ],
+  uniform: [
+    { name: "min", required: true },
+    { name: "max", required: true },
+  ],
+  normal: [
+    { name: "mean", required: true },
+    { name: "sd", required: true },
+    { name: "min", required: false },
+    { name: "max", required: false },
+  ],
+  discrete: [
+    { name: "values", required: true },
+    { name: "weights", required: false },
+  ],
+  ref: [{ name: "parameter", required: true }],
+};
+
+export const PARAM_TYPES = Object.keys(PARAM_INPUTS) as ParamType[];
+
+export function isParamType(text: string): text is ParamType {
+  return (PARAM_TYPES as string[]).includes(text);
+}
+
+export interface Draft {
+  type: ParamType | "unset";
+  inputs: Record<string, string>;
+}
+
+const num = (value: number | null | undefined): string =>
+  value === null || value === undefined ? "" : String(value);
+
+/** The text of each input for a value. */
+export function draftOf(value: ParamValue | null): Draft {
+  if (value === null) return { type: "unset", inputs: {} };
+  switch (value.type) {
+    case "value":
+      return { type: "value", inputs: { value: num(value.value) } };
+    case "range":
+      return { type: "range", inputs: { min: num(value.min), max: num(value.max), step: num(value.step) } };
+    case "uniform":
+      return { type: "uniform", inputs: { min: num(value.min), max: num(value.max) } };
+    case "normal":
+      return {
+        type: "normal",
+        inputs: { mean: num(value.mean), sd: num(value.sd), min: num(value.min), max: num(value.max) },
+      };
+    case "discrete":
+      return {
+        type: "discrete",
+        inputs: { values: value.values.join(", "), weights: value.weights ? value.weights.join(", ") : "" },
+      };
+    case "ref":
+      return { type: "ref", inputs: { parameter: value.parameter } };
+  }
+}
+
+/** A number typed by the user (a comma as decimal mark is accepted), or null. */
+export function parseNumber(text: string | undefined): number | null {
+  const trimmed = (text ?? "").trim().replace(/^(-?\d+),(\d+)$/, "$1.$2");
+  if (trimmed === "") return null;
+  const value = Number(trimmed);
+  return Number.isFinite(value) ? value : null;
+}
+
+/** A comma- or space-separated list of numbers, or null when any item is not a number. */
+export function parseNumberList(text: string | undefined): number[] | null {
+  const items = (text ?? "").split(/[,;\s]+/).filter((item) => item !== "");
+  if (items.length === 0) return null;
+  const numbers = items.map((item) => parseNumber(item));
+  return numbers.every((item): item is number => item !== null) ? numbers : null;
+}
+
+/** The value a draft stands for: null for "unset", undefined while it is incomplete or malformed. */
+export function valueOfDraft(draft: Draft): ParamValue | null | undefined {
+  const n = (name: string) => parseNumber(draft.inputs[name]);
+  const filled = (name: string) => (draft.inputs[name] ?? "").trim() !== "";
+  const optional = (name: string): number | null | undefined => (filled(name) ? (n(name) ?? undefined) : null);
+  switch (draft.type) {
+    case "unset":
+      return null;
+    case "value": {
+      const value = n("value");
+      return value === null ? undefined : { type: "value", value };
+    }
+    case "range": {
+      const [min, max, step] = [n("min"), n("max"), optional("step")];
+      return min === null || max === null || step === undefined ? undefined : { type: "range", min, max, step };
+    }
+    case "uniform": {
+      const [min, max] = [n("min"), n("max")];
+      return min === null || max === null ? undefined : { type: "uniform", min, max };
+    }
+    case "normal": {
+      const [mean, sd, min, max] = [n("mean"), n("sd"), optional("min"), optional("max")];
+      if (mean === null || sd === null || min === undefined || max === undefined) return undefined;
+      return { type: "normal", mean, sd, min, max };
+    }
+    case "discrete": {
+      const values = parseNumberList(draft.inputs.values);
+      const weights = filled("weights") ? parseNumberList(draft.inputs.weights) : null;
+      if (values === null || (filled("weights") && weights === null)) return undefined;
+      return { type: "discrete", values, weights };
+    }
+    case "ref": {
+      const parameter = (draft.inputs.parameter ?? "").trim();
+      return parameter ? { type: "ref", parameter } : undefined;
+    }
+  }
+}
+
+/** A representative number of a value, carried over when the user switches its kind. */
+function centre(draft: Draft): string {
+  const inputs = draft.inputs;
+  return inputs.value || inputs.mean || inputs.min || (inputs.values ?? "").split(/[,\s]+/)[0] || "";
+}
+
+/** The draft after the user picks another kind: the old number is kept where it fits. */
+export function switchKind(draft: Draft, type: ParamType | "unset"): Draft {
+  const c = centre(draft);
+  const keep = (name: string, fallback: string) => draft.inputs[name] ?? fallback;
+  switch (type) {
+    case "unset":
+      return { type, inputs: {} };
+    case "value":
+      return { type, inputs: { value: c } };
+    case "range":
+      return { type, inputs: { min: keep("min", c), max: keep("max", c), step: keep("step", "") } };
+    case "uniform":
+      return { type, inputs: { min: keep("min", c), max: keep("max", c) } };
+    case "normal":
+      return { type, inputs: { mean: c, sd: keep("sd", ""), min: keep("min", ""), max: keep("max", "") } };
+    case "discrete":
+      return { type, inputs: { values: c, weights: "" } };
+    case "ref":
+      return { type, inputs: { parameter: "" } };
+  }
+}
+
+const list = (values: number[]) => values.join(", ");
+
+/** A compact one-line text for a value, as used by position coordinates: 8, [5, 10] step 1, U(5, 10), N(8, 1), {5, 8}, $speed. */
+export function formatParam(value: ParamValue | null): string {
+  if (value === null) return "";
+  switch (value.type) {
+    case "value":
+      return String(value.value);
+    case "range":
+      return `[${value.min}, ${value.max}]` + (value.step === null ? "" : ` step ${value.step}`);
+    case "uniform":
+      return `U(${value.min}, ${value.max})`;
+    case "normal":
+      return (
+        `N(${value.mean}, ${value.sd})` +
+        (value.min === null && value.max === null ? "" : ` in [${num(value.min)}, ${num(value.max)}]`)
+      );
+    case "discrete":
+      return `{${list(value.values)}}` + (value.weights ? ` weights {${list(value.weights)}}` : "");
+    case "ref":
+      return `$${value.parameter}`;
+  }
+}
+
+const NUMBER = String.raw`\s*(-?[\d.eE+-]+)\s*`;
+const OPTIONAL = String.raw`\s*(-?[\d.eE+-]*)\s*`;
+
+/** Parse formatParam's text: null when empty, undefined when it cannot be read. */
+export function parseParam(text: string): ParamValue | null | undefined {
+  const t = text.trim();
+  if (t === "") return null;
+  const plain = parseNumber(t);
+  if (plain !== null) return { type: "value", value: plain };
+  let m = new RegExp(String.raw`^\[${NUMBER},${NUMBER}\](?:\s*step${NUMBER})?$`).exec(t);
+  if (m) return checked({ type: "range", min: Number(m[1]), max: Number(m[2]), step: m[3] ? Number(m[3]) : null });
+  m = new RegExp(String.raw`^U\(${NUMBER},${NUMBER}\)$`, "i").exec(t);
+  if (m) return checked({ type: "uniform", min: Number(m[1]), max: Number(m[2]) });
+  m = new RegExp(String.raw`^N\(${NUMBER},${NUMBER}\)(?:\s*in\s*\[${OPTIONAL},${OPTIONAL}\])?$`, "i").exec(t);
+  if (m) {
+    const bound = (s: string | undefined) => (s ? Number(s) : null);
+    return checked({ type: "normal", mean: Number(m[1]), sd: Number(m[2]), min: bound(m[3]), max: bound(m[4]) });
+  }
+  m = /^\{([^}]*)\}(?:\s*weights\s*\{([^}]*)\})?$/i.exec(t);
+  if (m) {
+    const values = parseNumberList(m[1]);
+    const weights = m[2] === undefined ? null : parseNumberList(m[2]);
+    if (values === null || (m[2] !== undefined && weights === null)) return undefined;
+    return { type: "discrete", values, weights };
+  }
+  m = /^\$([A-Za-z_][\w]*)$/.exec(t);
+  if (m?.[1]) return { type: "ref", parameter: m[1] };
+  return undefined;
+}
+
+function checked(value: ParamValue): ParamValue | undefined {
+  const numbers = Object.values(value).filter((item): item is number => typeof item === "number");
+  return numbers.every(Number.isFinite) ? value : undefined;
+}
+
+/** km/h text for a speed in m/s, as a hint beside the input. */
+export function kmhText(value: ParamValue | null): string {
+  const k = (mps: number) => `${Math.round(mps * 36) / 10}`;
+  if (value === null) return "";
+  switch (value.type) {
+    case "value":
+      return `${k(value.value)} km/h`;
+    case "range":
+    case "uniform":
+      return `${k(value.min)}–${k(value.max)} km/h`;
+    case "normal":
+      return `mean ${k(value.mean)} km/h`;
+    case "discrete":
+      return `{${value.values.map(k).join(", ")}} km/h`;
+    case "ref":
+      return "";
+  }
+}

@@ -1,0 +1,69 @@
+// A parameter: its kind (limited to the level's value types, or unset) and one input per number.
+
+import { useState } from "react";
+import { draftOf, isParamType, kmhText, PARAM_INPUTS, switchKind, valueOfDraft, type Draft } from "../lib/values";
+import type { ParamValue } from "../types";
+import { CommitInput, LabelledSelect } from "./inputs";
+
+interface Props {
+  label: string;
+  value: ParamValue | null;
+  valueTypes: string[];
+  unit?: string | null;
+  defaultValue?: ParamValue | number | null;
+  kmh?: boolean;
+  disabled: boolean;
+  onCommit: (value: ParamValue | null) => void;
+}
+
+function defaultText(value: ParamValue | number | null | undefined, unit: string | null | undefined): string {
+  if (value === null || value === undefined) return "";
+  const number = typeof value === "number" ? value : value.type === "value" ? value.value : null;
+  return number === null ? "default set" : `default ${number}${unit ? ` ${unit}` : ""}`;
+}
+
+/** Re-created by its parent (key) whenever the server's value changes. */
+export function ParamEditor({ label, value, valueTypes, unit, defaultValue, kmh, disabled, onCommit }: Props) {
+  const [draft, setDraft] = useState<Draft>(() => draftOf(value));
+  const complete = valueOfDraft(draft);
+  const update = (next: Draft) => {
+    setDraft(next);
+    const result = valueOfDraft(next);
+    if (result !== undefined && JSON.stringify(result) !== JSON.stringify(value)) onCommit(result);
+  };
+  const kinds = [...valueTypes.filter(isParamType)];
+  if (draft.type !== "unset" && !kinds.includes(draft.type)) kinds.push(draft.type);
+  const hint = defaultText(defaultValue, unit);
+  const inputs = draft.type === "unset" ? [] : PARAM_INPUTS[draft.type];
+  return (
+    <fieldset className="param">
+      <legend>
+        {label}
+        {unit ? <span className="unit"> [{unit}]</span> : null}
+      </legend>
+      <LabelledSelect
+        label={`${label} kind`}
+        className="param-kind"
+        value={draft.type}
+        disabled={disabled}
+        options={[...kinds.map((kind) => ({ value: kind, label: kind })), { value: "unset", label: "unset" }]}
+        onChange={(kind) => update(switchKind(draft, kind as Draft["type"]))}
+      />
+      {draft.type === "unset" && hint && <div className="hint">{hint}</div>}
+      {inputs.map((input) => (
+        <CommitInput
+          key={`${draft.type}-${input.name}`}
+          label={input.name === "value" ? label : `${label} ${input.name}`}
+          value={draft.inputs[input.name] ?? ""}
+          disabled={disabled}
+          inputMode={input.name === "parameter" ? "text" : "decimal"}
+          placeholder={input.name === "value" || input.name === "mean" ? hint || unit || undefined : input.required ? unit ?? undefined : "optional"}
+          invalid={complete === undefined && input.required && !(draft.inputs[input.name] ?? "").trim()}
+          onCommit={(text) => update({ ...draft, inputs: { ...draft.inputs, [input.name]: text } })}
+        />
+      ))}
+      {kmh && complete ? <div className="hint kmh">= {kmhText(complete)}</div> : null}
+      {complete === undefined && draft.type !== "unset" ? <div className="hint incomplete">Fill in the required numbers to send it.</div> : null}
+    </fieldset>
+  );
+}

@@ -1,0 +1,112 @@
+// A position: none, world (x, y, z, heading) or lane (road, lane, s, offset). Coordinates accept
+// a number or a compact distribution (U(1, 2), N(8, 1), [5, 10] step 1, {1, 2}).
+
+import { useState } from "react";
+import { POSITION_INPUTS, positionDraft, positionOfDraft, type PositionDraft, type PositionType } from "../lib/positions";
+import type { Position } from "../types";
+import { CommitInput, LabelledSelect } from "./inputs";
+
+interface Props {
+  label: string;
+  value: Position | null;
+  disabled: boolean;
+  onCommit: (value: Position | null) => void;
+  /** Offer "none" (a required position still may be unset while editing). */
+  allowNone?: boolean;
+}
+
+export function PositionEditor({ label, value, disabled, onCommit, allowNone = true }: Props) {
+  const [draft, setDraft] = useState<PositionDraft>(() => positionDraft(value));
+  const result = positionOfDraft(draft);
+  const update = (next: PositionDraft) => {
+    setDraft(next);
+    const position = positionOfDraft(next);
+    if (position !== undefined && JSON.stringify(position) !== JSON.stringify(value)) onCommit(position);
+  };
+  const types: PositionType[] = allowNone ? ["none", "world", "lane"] : ["world", "lane"];
+  return (
+    <fieldset className="position">
+      <legend>{label}</legend>
+      <LabelledSelect
+        label={`${label} type`}
+        value={draft.type}
+        disabled={disabled}
+        options={types.map((type) => ({ value: type, label: type }))}
+        onChange={(type) => update({ type: type as PositionType, inputs: {} })}
+      />
+      {draft.type !== "none" && (
+        <div className="coordinates">
+          {POSITION_INPUTS[draft.type].map((input) => (
+            <CommitInput
+              key={`${draft.type}-${input.key}`}
+              className="coordinate"
+              label={`${label} ${input.label}`}
+              value={draft.inputs[input.key] ?? ""}
+              disabled={disabled}
+              inputMode={input.key === "roadId" ? "text" : "decimal"}
+              placeholder={input.required ? undefined : "optional"}
+              invalid={result === undefined && input.required && !(draft.inputs[input.key] ?? "").trim()}
+              onCommit={(text) => update({ ...draft, inputs: { ...draft.inputs, [input.key]: text } })}
+            />
+          ))}
+        </div>
+      )}
+      {result === undefined && <div className="hint incomplete">Fill in the required coordinates to send it.</div>}
+    </fieldset>
+  );
+}
+
+interface WaypointsProps {
+  label: string;
+  value: Position[];
+  disabled: boolean;
+  onCommit: (value: Position[]) => void;
+}
+
+/** A list of positions with add and remove; every change sends the whole list. */
+export function WaypointsEditor({ label, value, disabled, onCommit }: WaypointsProps) {
+  const [adding, setAdding] = useState(false);
+  return (
+    <fieldset className="waypoints">
+      <legend>{label}</legend>
+      {value.length === 0 && !adding && <div className="hint">none</div>}
+      <ol>
+        {value.map((position, index) => (
+          <li key={`${index}-${JSON.stringify(position)}`}>
+            <PositionEditor
+              label={`${label} ${index + 1}`}
+              value={position}
+              disabled={disabled}
+              allowNone={false}
+              onCommit={(next) => next && onCommit(value.map((old, i) => (i === index ? next : old)))}
+            />
+            {!disabled && (
+              <button type="button" onClick={() => onCommit(value.filter((_, i) => i !== index))}>
+                Remove {label.toLowerCase()} {index + 1}
+              </button>
+            )}
+          </li>
+        ))}
+        {adding && (
+          <li>
+            <PositionEditor
+              label={`${label} ${value.length + 1}`}
+              value={null}
+              disabled={disabled}
+              onCommit={(next) => {
+                if (!next) return;
+                setAdding(false);
+                onCommit([...value, next]);
+              }}
+            />
+          </li>
+        )}
+      </ol>
+      {!disabled && !adding && (
+        <button type="button" onClick={() => setAdding(true)}>
+          Add {label.toLowerCase().replace(/s$/, "")}
+        </button>
+      )}
+    </fieldset>
+  );
+}

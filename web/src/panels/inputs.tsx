@@ -1,0 +1,79 @@
+// Small inputs that send their value when it changed and the input loses focus or Enter is hit.
+
+import { useId, useState } from "react";
+
+interface CommitInputProps {
+  label: string;
+  value: string;
+  onCommit: (text: string) => void;
+  disabled?: boolean;
+  placeholder?: string;
+  inputMode?: "decimal" | "numeric" | "text";
+  className?: string;
+  invalid?: boolean;
+}
+
+/** A text input with its own label; commits on blur or Enter, reverts on Escape. */
+export function CommitInput({ label, value, onCommit, disabled, placeholder, inputMode, className, invalid }: CommitInputProps) {
+  const id = useId();
+  const [text, setText] = useState(value);
+  const commit = () => {
+    if (text !== value) onCommit(text);
+  };
+  return (
+    <div className={`control ${className ?? ""}`}>
+      <label htmlFor={id}>{label}</label>
+      <input
+        id={id}
+        type="text"
+        value={text}
+        disabled={disabled}
+        readOnly={disabled}
+        placeholder={placeholder}
+        inputMode={inputMode}
+        aria-invalid={invalid || undefined}
+        onChange={(event) => setText(event.target.value)}
+        onBlur={commit}
+        onKeyDown={(event) => {
+          if (event.key === "Enter") commit();
+          if (event.key === "Escape") setText(value);
+        }}
+      />
+    </div>
+  );
+}
+
+interface SelectProps {
+  label: string;
+  value: string;
+  options: { value: string; label: string }[];
+  onChange: (value: string) => void;
+  disabled?: boolean;
+  className?: string;
+}
+
+export function LabelledSelect({ label, value, options, onChange, disabled, className }: SelectProps) {
+  const id = useId();
+  return (
+    <div className={`control ${className ?? ""}`}>
+      <label htmlFor={id}>{label}</label>
+      <select id={id} value={value} disabled={disabled} onChange={(event) => onChange(event.target.value)}>
+        {options.map((option) => (
+          <option key={option.value} value={option.value}>
+            {option.label}
+          </option>
+        ))}
+      </select>
+    </div>
+  );
+}
+
+export function LabelledCheckbox({ label, checked, onChange, disabled }: { label: string; checked: boolean; onChange: (value: boolean) => void; disabled?: boolean }) {
+  const id = useId();
+  return (
+    <div className="control control-bool">
+      <input id={id} type="checkbox" checked={checked} disabled={disabled} onChange={(event) => onChange(event.target.checked)} />
+      <label htmlFor={id}>{label}</label>
+    </div>
+  );
+}

@@ -1,0 +1,179 @@
+// The editor protocol's JSON shapes (docs/editor-protocol.md). The server decides every value;
+// these types only describe what it sends and what the page sends back.
+
+export type Severity = "error" | "warning" | "info";
+
+export interface XY {
+  x: number;
+  y: number;
+}
+
+export type ParamValue =
+  | { type: "value"; value: number }
+  | { type: "range"; min: number; max: number; step: number | null }
+  | { type: "uniform"; min: number; max: number }
+  | { type: "normal"; mean: number; sd: number; min: number | null; max: number | null }
+  | { type: "discrete"; values: number[]; weights: number[] | null }
+  | { type: "ref"; parameter: string };
+
+export type ParamType = ParamValue["type"];
+
+export type Position =
+  | { type: "world"; x: ParamValue; y: ParamValue; z: ParamValue | null; h: ParamValue | null }
+  | { type: "lane"; roadId: string; laneId: number; s: ParamValue; offset: ParamValue | null };
+
+interface FieldBase {
+  name: string;
+  label: string;
+  required?: boolean;
+}
+
+export type Field =
+  | (FieldBase & { type: "text"; value: string | null })
+  | (FieldBase & { type: "enum"; options: string[]; value: string | null })
+  | (FieldBase & { type: "bool"; value: boolean | null })
+  | (FieldBase & { type: "actor"; value: string | null })
+  | (FieldBase & {
+      type: "parameter";
+      unit?: string | null;
+      default?: number | null;
+      kmh?: boolean;
+      value: ParamValue | null;
+    })
+  | (FieldBase & { type: "position"; value: Position | null })
+  | (FieldBase & { type: "positions"; value: Position[] | null });
+
+export type Look =
+  | "longitudinal"
+  | "lateral"
+  | "composite"
+  | "condition"
+  | "root"
+  | "end"
+  | "joinAll"
+  | "joinOne"
+  | "endOne"
+  | "module"
+  | "brokenModule"
+  | "inPort"
+  | "outPort";
+
+export interface Binding {
+  role: string;
+  allowedKinds: string[];
+  actor: string | null;
+}
+
+export interface ModuleParameter {
+  name: string;
+  unit?: string | null;
+  default: ParamValue | null;
+  override: ParamValue | null;
+}
+
+export interface ModuleInfo {
+  definition: string;
+  library: string;
+  resolved: boolean;
+  bindings: Binding[];
+  parameters: ModuleParameter[];
+}
+
+export interface ViewNode {
+  id: string;
+  kind: string;
+  look: Look | string;
+  name: string;
+  title: string;
+  lines: string[];
+  position: XY | null;
+  parent: string | null;
+  readOnly: boolean;
+  severity: Severity | null;
+  problems: number;
+  fields: Field[];
+  module?: ModuleInfo;
+}
+
+export interface ViewEdge {
+  id: string;
+  source: string;
+  target: string;
+}
+
+export interface Actor {
+  id: string;
+  name: string;
+  kind?: string;
+  isEgo?: boolean;
+  allowedKinds?: string[];
+  fields?: Field[];
+}
+
+export interface Diagnostic {
+  severity: Severity;
+  code: string;
+  message: string;
+  path?: string | null;
+  node: string | null;
+  actor: string | null;
+  line?: number | null;
+}
+
+export interface PaletteItem {
+  kind: string;
+  label: string;
+  module: string | null;
+  library: string | null;
+  /** Roles of a module item, for the "Use <module>" dialog (optional, see the protocol). */
+  roles?: { role: string; allowedKinds: string[] }[];
+}
+
+export interface PaletteGroup {
+  group: string;
+  label: string;
+  look: string;
+  items: PaletteItem[];
+}
+
+export interface LookStyle {
+  fill?: string;
+  border?: string;
+  shape?: string;
+  [key: string]: unknown;
+}
+
+export interface Style {
+  looks: Record<string, LookStyle>;
+  symbols?: Record<string, string>;
+  font?: string;
+}
+
+export interface DocumentInfo {
+  kind: "scenario" | "module";
+  path: string;
+  name: string;
+  module?: string;
+}
+
+export interface View {
+  version: number;
+  document: DocumentInfo;
+  readOnly: boolean;
+  dirty: boolean;
+  undo: string | null;
+  redo: string | null;
+  created?: string[];
+  level: string;
+  valueTypes: string[];
+  nodes: ViewNode[];
+  edges: ViewEdge[];
+  actors: Actor[];
+  diagnostics: Diagnostic[];
+  summary: { errors: number; warnings: number; infos: number };
+  palette: PaletteGroup[];
+  style: Style;
+  choices: Record<string, string[]>;
+}
+
+export type Op = { op: string } & Record<string, unknown>;
