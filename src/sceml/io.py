@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from lxml import etree
-from pyecore.ecore import EAttribute, EEnum, EObject, EProxy
+from pyecore.ecore import EAttribute, EClass, EEnum, EObject, EProxy
 from pyecore.resources import URI, ResourceSet
 from pyecore.resources.xmi import XMIOptions, XMIResource
 
@@ -226,6 +226,7 @@ def _check_tree(tree: etree._ElementTree, path: Path) -> None:
             file=path,
             line=models[0].sourceline,
         )
+    _check_types(root, path)
     seen: dict[str, int | None] = {}
     for element in root.iter(etree.Element):
         identifier = element.get(f"{{{xmi_namespace}}}id")
@@ -238,6 +239,46 @@ def _check_tree(tree: etree._ElementTree, path: Path) -> None:
                 line=element.sourceline,
             )
         seen[identifier] = element.sourceline
+
+
+_XSI_TYPE = "{http://www.w3.org/2001/XMLSchema-instance}type"
+
+
+def _check_types(root: etree._Element, path: Path) -> None:
+    """Refuse an xsi:type that names no concrete SceML class, in the file's own terms."""
+    for element in root.iter(etree.Element):
+        value = element.get(_XSI_TYPE)
+        problem = None if value is None else _type_problem(value, element.nsmap)
+        if problem is not None:
+            raise LoadError(problem, file=path, line=element.sourceline)
+
+
+def _type_problem(value: str, namespaces: dict[str | None, str]) -> str | None:
+    prefix, colon, name = value.rpartition(":")
+    ours = next((p for p, uri in namespaces.items() if p and uri == scm.nsURI), scm.nsPrefix)
+    expected = f'expected "{ours}:{name}"'
+    if not colon:
+        return f'xsi:type "{value}" has no namespace prefix; {expected}'
+    if prefix not in namespaces:
+        return f'xsi:type "{value}": prefix "{prefix}" is not declared; {expected}'
+    if namespaces[prefix] != scm.nsURI:
+        return (
+            f'xsi:type "{value}": prefix "{prefix}" is not the SceML metamodel\'s namespace '
+            f"({scm.nsURI}); {expected}"
+        )
+    kind = scm.eClass.getEClassifier(name)
+    if not isinstance(kind, EClass):
+        return f'xsi:type "{value}": the SceML metamodel has no type {name}'
+    if kind.abstract:
+        concrete = sorted(
+            c.name
+            for c in scm.eClass.eClassifiers
+            if isinstance(c, EClass) and not c.abstract and kind in c.eAllSuperTypes()
+        )
+        return (
+            f'xsi:type "{value}": {name} is abstract; use one of its kinds: {", ".join(concrete)}'
+        )
+    return None
 
 
 def _refuse_containment_href(resource: XMIResource, node: etree._Element, parent: EObject) -> None:

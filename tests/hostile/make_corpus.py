@@ -230,6 +230,31 @@ def _xml_cases() -> list[Case]:
             _at(UIS1, "scemlmodel:TurnRight"),
         ),
         Case(
+            "xsi_type_without_prefix.xmi",
+            _uis1('xsi:type="scemlmodel:Accelerate"', 'xsi:type="Accelerate"'),
+            "model",
+            2,
+            'xsi:type "Accelerate" has no namespace prefix; expected "scemlmodel:Accelerate"',
+            _at(UIS1, 'xsi:type="scemlmodel:Accelerate"'),
+        ),
+        Case(
+            "xsi_type_undeclared_prefix.xmi",
+            _uis1('xsi:type="scemlmodel:Accelerate"', 'xsi:type="sceml:Accelerate"'),
+            "model",
+            2,
+            'xsi:type "sceml:Accelerate": prefix "sceml" is not declared; expected '
+            '"scemlmodel:Accelerate"',
+            _at(UIS1, 'xsi:type="scemlmodel:Accelerate"'),
+        ),
+        Case(
+            "xsi_type_foreign_namespace.xmi",
+            _uis1('xsi:type="scemlmodel:Accelerate"', 'xsi:type="xmi:Accelerate"'),
+            "model",
+            2,
+            'xsi:type "xmi:Accelerate": prefix "xmi" is not the SceML metamodel\'s namespace',
+            _at(UIS1, 'xsi:type="scemlmodel:Accelerate"'),
+        ),
+        Case(
             "wrong_type_for_feature.xmi",
             _uis1('<rate xsi:type="scemlmodel:Value"', '<rate xsi:type="scemlmodel:Flow"'),
             "model",
