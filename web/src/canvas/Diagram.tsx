@@ -75,7 +75,7 @@ export function Diagram({ view, state, direction, toggleExpanded, onConnect, onM
         >
           <Background gap={20} color="#e0e4e8" />
           <MiniMap<DiagramNode> pannable zoomable nodeColor={minimapColour} nodeStrokeColor="#37474f" nodeStrokeWidth={2} />
-          <Controls showInteractive={false} />
+          <Controls showInteractive={false} showFitView={false} />
         </ReactFlow>
       </div>
     </DiagramContext.Provider>

@@ -22,6 +22,7 @@ export interface Measures {
 }
 
 const elk = new ELK();
+const FRAME_PAD = 16;
 
 function options(direction: Direction): Record<string, string> {
   return {
@@ -30,36 +31,73 @@ function options(direction: Direction): Record<string, string> {
     "elk.layered.spacing.nodeNodeBetweenLayers": "50",
     "elk.spacing.nodeNode": "30",
     "elk.layered.nodePlacement.strategy": "BRANDES_KOEPF",
-    "elk.layered.crossingMinimization.forceNodeModelOrder": "false",
+    "elk.padding": "[top=0,left=0,bottom=0,right=0]",
     "elk.layered.considerModelOrder.strategy": "NODES_AND_EDGES",
   };
 }
 
-function elkTree(shown: Shown, direction: Direction, measures: Measures): ElkNode {
+interface Level {
+  positions: Map<string, XY>;
+  sizes: Map<string, Size>;
+  width: number;
+  height: number;
+}
+
+/**
+ * Lay out the nodes directly inside `parent` (null: the top level). Expanded frames are laid out
+ * first, inside out, so that each is one box of known size at its own level.
+ */
+async function layoutLevel(shown: Shown, parent: string | null, direction: Direction, measures: Measures): Promise<Level> {
   const nodes = new Map(shown.nodes.map((node) => [node.id, node]));
-  const toElk = (node: ViewNode): ElkNode => {
-    if (!shown.frames.has(node.id)) return { id: node.id, ...measures.size(node) };
-    const header = measures.header(node);
-    return {
-      id: node.id,
-      layoutOptions: {
-        ...options(direction),
-        "elk.padding": `[top=${header.height + 12},left=20,bottom=20,right=20]`,
-        "elk.nodeSize.constraints": "MINIMUM_SIZE",
-        "elk.nodeSize.minimum": `(${header.width + 40}, ${header.height + 40})`,
-      },
-      children: shown.nodes.filter((child) => child.parent === node.id).map(toElk),
-    };
+  const members = shown.nodes.filter((node) => (parent === null ? node.parent === null || !nodes.has(node.parent) : node.parent === parent));
+  const memberIds = new Set(members.map((node) => node.id));
+  const positions = new Map<string, XY>();
+  const sizes = new Map<string, Size>();
+  const frameOffsets = new Map<string, XY>();
+  const children: ElkNode[] = [];
+  for (const node of members) {
+    if (shown.frames.has(node.id)) {
+      const inner = await layoutLevel(shown, node.id, direction, measures);
+      const header = measures.header(node);
+      const width = Math.max(inner.width + 2 * FRAME_PAD, header.width + 2 * FRAME_PAD);
+      const height = inner.height + header.height + 2 * FRAME_PAD;
+      inner.positions.forEach((position, id) => positions.set(id, position));
+      inner.sizes.forEach((size, id) => sizes.set(id, size));
+      frameOffsets.set(node.id, { x: (width - inner.width) / 2, y: header.height + FRAME_PAD });
+      sizes.set(node.id, { width, height });
+    } else {
+      sizes.set(node.id, measures.size(node));
+    }
+    children.push({ id: node.id, ...(sizes.get(node.id) as Size) });
+  }
+  // An edge is drawn between the members that hold its ends.
+  const memberOf = (id: string): string | null => {
+    let current = nodes.get(id);
+    while (current && !memberIds.has(current.id)) current = current.parent === null ? undefined : nodes.get(current.parent);
+    return current?.id ?? null;
   };
-  const edges: ElkExtendedEdge[] = shown.edges
-    .filter((edge) => nodes.has(edge.source) && nodes.has(edge.target))
-    .map((edge) => ({ id: edge.id, sources: [edge.source], targets: [edge.target] }));
-  return {
-    id: "__root__",
-    layoutOptions: { ...options(direction), "elk.hierarchyHandling": "INCLUDE_CHILDREN" },
-    children: shown.nodes.filter((node) => node.parent === null || !nodes.has(node.parent)).map(toElk),
-    edges,
-  };
+  const edges: ElkExtendedEdge[] = [];
+  const seen = new Set<string>();
+  for (const edge of shown.edges) {
+    const [source, target] = [memberOf(edge.source), memberOf(edge.target)];
+    if (source === null || target === null || source === target || seen.has(`${source}>${target}`)) continue;
+    seen.add(`${source}>${target}`);
+    edges.push({ id: edge.id, sources: [source], targets: [target] });
+  }
+  const graph: ElkNode = { id: parent ?? "__root__", layoutOptions: options(direction), children, edges };
+  const result = await elk.layout(graph);
+  for (const child of result.children ?? []) {
+    positions.set(child.id, { x: Math.round(child.x ?? 0), y: Math.round(child.y ?? 0) });
+  }
+  // Children of a frame are placed relative to the frame, below its header.
+  for (const [frame, offset] of frameOffsets) {
+    for (const node of shown.nodes) {
+      if (node.parent !== frame) continue;
+      const position = positions.get(node.id);
+      if (position) positions.set(node.id, { x: Math.round(position.x + offset.x), y: Math.round(position.y + offset.y) });
+    }
+  }
+  return { positions, sizes, width: result.width ?? 0, height: result.height ?? 0 };
 }
 
 /** Lay out what is shown; saved positions of top-level nodes win unless `ignoreSaved`. */
@@ -69,19 +107,11 @@ export async function layoutGraph(
   measures: Measures,
   ignoreSaved = false,
 ): Promise<Layout> {
-  const result = await elk.layout(elkTree(shown, direction, measures));
-  const positions = new Map<string, XY>();
-  const sizes = new Map<string, Size>();
-  const saved = new Map(shown.nodes.map((node) => [node.id, node]));
-  const collect = (elkNode: ElkNode, topLevel: boolean) => {
-    for (const child of elkNode.children ?? []) {
-      const node = saved.get(child.id);
-      const own = topLevel && !ignoreSaved ? node?.position : null;
-      positions.set(child.id, own ?? { x: Math.round(child.x ?? 0), y: Math.round(child.y ?? 0) });
-      sizes.set(child.id, { width: child.width ?? 0, height: child.height ?? 0 });
-      collect(child, false);
+  const level = await layoutLevel(shown, null, direction, measures);
+  if (!ignoreSaved) {
+    for (const node of shown.nodes) {
+      if (node.parent === null && node.position) level.positions.set(node.id, node.position);
     }
-  };
-  collect(result, true);
-  return { positions, sizes };
+  }
+  return { positions: level.positions, sizes: level.sizes };
 }

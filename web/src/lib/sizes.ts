@@ -31,7 +31,7 @@ export const measureText: Measure = (text, px, bold) => {
 
 function textBlock(title: string, lines: string[], measure: Measure, extraLines = 0): Size {
   const widths = [measure(title, TITLE_PX, true), ...lines.map((line) => measure(line, LINE_PX, false))];
-  const width = Math.ceil(Math.max(...widths) * 1.04 + 2 * PAD_X);
+  const width = Math.ceil(Math.max(...widths) * 1.06 + 2 * PAD_X + 6);
   const height = Math.ceil(
     TITLE_PX * LINE_HEIGHT + (lines.length + extraLines) * LINE_PX * LINE_HEIGHT + 2 * PAD_Y,
   );
@@ -49,7 +49,7 @@ export function nodeSize(node: ViewNode, measure: Measure = measureText): Size {
       return { width: 48, height: 30 };
     case "module": {
       const size = textBlock(node.title, ["module", ...nameAndLines(node)], measure);
-      return { width: size.width + 10, height: size.height + 10 };
+      return { width: size.width + 10, height: size.height + 30 }; // double frame, Expand button
     }
     case "root":
       return textBlock(node.title, node.lines, measure);

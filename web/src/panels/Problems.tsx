@@ -2,7 +2,7 @@
 
 import type { Diagnostic } from "../types";
 
-const ICONS = { error: "⛔", warning: "⚠", info: "ℹ" } as const;
+const ICONS = { error: "✖", warning: "⚠", info: "ℹ" } as const;
 
 interface Props {
   diagnostics: Diagnostic[];

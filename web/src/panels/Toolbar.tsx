@@ -72,7 +72,7 @@ export function Toolbar({ view, direction, hasSelection, canPaste, actions }: Pr
         <span className={view?.dirty ? "dirty" : "saved"}>{view ? (view.dirty ? "Unsaved changes" : "Saved") : "Loading…"}</span>
         {summary && (
           <>
-            <span className="count count-error" title="errors">⛔ {summary.errors} {summary.errors === 1 ? "error" : "errors"}</span>
+            <span className="count count-error" title="errors">✖ {summary.errors} {summary.errors === 1 ? "error" : "errors"}</span>
             <span className="count count-warning" title="warnings">⚠ {summary.warnings} {summary.warnings === 1 ? "warning" : "warnings"}</span>
           </>
         )}

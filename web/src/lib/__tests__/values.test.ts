@@ -1,0 +1,48 @@
+import { describe, expect, it } from "vitest";
+import { draftOf, formatParam, parseParam, switchKind, valueOfDraft } from "../values";
+import type { ParamValue } from "../../types";
+
+const samples: ParamValue[] = [
+  { type: "value", value: 8 },
+  { type: "range", min: 5, max: 10, step: 1 },
+  { type: "range", min: 5, max: 10, step: null },
+  { type: "uniform", min: -1.5, max: 2 },
+  { type: "normal", mean: 8, sd: 1, min: null, max: null },
+  { type: "normal", mean: 8, sd: 1, min: 6, max: 10 },
+  { type: "discrete", values: [5, 8], weights: [1, 2] },
+  { type: "discrete", values: [5, 8], weights: null },
+  { type: "ref", parameter: "speed" },
+];
+
+describe("parameter drafts", () => {
+  it.each(samples)("round-trips %j through the inputs", (value) => {
+    expect(valueOfDraft(draftOf(value))).toEqual(value);
+  });
+
+  it("unset is null, an incomplete draft is undefined", () => {
+    expect(valueOfDraft(draftOf(null))).toBeNull();
+    expect(valueOfDraft({ type: "range", inputs: { min: "1", max: "" } })).toBeUndefined();
+    expect(valueOfDraft({ type: "value", inputs: { value: "abc" } })).toBeUndefined();
+  });
+
+  it("keeps the number when the kind changes", () => {
+    const range = switchKind(draftOf({ type: "value", value: 8 }), "range");
+    expect(valueOfDraft(range)).toEqual({ type: "range", min: 8, max: 8, step: null });
+    expect(valueOfDraft(switchKind(range, "value"))).toEqual({ type: "value", value: 8 });
+  });
+
+  it("accepts a decimal comma", () => {
+    expect(valueOfDraft({ type: "value", inputs: { value: "1,5" } })).toEqual({ type: "value", value: 1.5 });
+  });
+});
+
+describe("compact parameter text", () => {
+  it.each(samples)("round-trips %j", (value) => {
+    expect(parseParam(formatParam(value))).toEqual(value);
+  });
+
+  it("reads empty as null and nonsense as undefined", () => {
+    expect(parseParam("  ")).toBeNull();
+    expect(parseParam("N(1)")).toBeUndefined();
+  });
+});
