@@ -9,6 +9,7 @@ from .check_xosc import check_xosc
 from .common import SceMLGroup
 from .concretize import concretize
 from .dev import dev
+from .edit import edit
 from .export import export
 from .export_logical import export_distribution_command
 from .flatten import flatten
@@ -44,6 +45,7 @@ cli.add_command(export_distribution_command)
 cli.add_command(module)
 cli.add_command(flatten)
 cli.add_command(dev)
+cli.add_command(edit)
 
 
 def main() -> None:

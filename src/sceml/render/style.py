@@ -217,3 +217,45 @@ def legend_graph() -> graphviz.Digraph:
     graph.node_attr.update(NODE_ATTRIBUTES)
     add_legend(graph)
     return graph
+
+
+#: The editor's name for each look (docs/editor-protocol.md), the same Look objects as above.
+EDITOR_LOOKS = {
+    **CATEGORY_LOOKS,
+    "root": ROOT,
+    "end": END,
+    "endOne": END,
+    "joinAll": JOIN_ALL,
+    "joinOne": JOIN_ONE,
+    "module": MODULE,
+    "brokenModule": BROKEN_MODULE,
+    "inPort": IN_PORT,
+    "outPort": OUT_PORT,
+}
+
+
+def look_data(look: Look) -> dict[str, object]:
+    """One look as plain data: fill, border, text colour, shape and its style words."""
+    attributes = dict(look.attributes)
+    words = set(attributes.get("style", "").split(","))
+    return {
+        "fill": attributes.get("fillcolor", "white"),
+        "border": attributes.get("color", "black"),
+        "text": attributes.get("fontcolor", "black"),
+        "shape": attributes.get("shape", "box"),
+        "rounded": "rounded" in words,
+        "dashed": "dashed" in words,
+        "bold": "bold" in words,
+        "double": attributes.get("peripheries") == "2" or attributes.get("shape") == "doublecircle",
+        "label": attributes.get("label"),
+    }
+
+
+def style_data() -> dict[str, object]:
+    """The notation as data for the editor's browser page: looks, symbols and font."""
+    return {
+        "looks": {name: look_data(look) for name, look in EDITOR_LOOKS.items()},
+        "symbols": {"joinAll": PARALLEL_ALL_SYMBOL, "joinOne": PARALLEL_ONE_SYMBOL},
+        "font": FONT,
+        "edge": {"color": EDGE_ATTRIBUTES["color"]},
+    }

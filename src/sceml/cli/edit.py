@@ -1,0 +1,68 @@
+"""`sceml edit [FILE]`: open a scenario (or a library module) in the browser-based editor."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import click
+
+from .common import SceMLCommand
+
+
+@click.command(cls=SceMLCommand)
+@click.argument("file", required=False, type=click.Path(dir_okay=False, path_type=Path))
+@click.option(
+    "--port",
+    type=click.IntRange(1, 65535),
+    default=None,
+    help="Port on 127.0.0.1 (default: a free one).",
+)
+@click.option("--no-browser", is_flag=True, help="Do not open a browser; just print the URL.")
+@click.option("--read-only", is_flag=True, help="Let reviewers look: every change is refused.")
+@click.option(
+    "--level",
+    type=click.Choice(["functional", "logical", "concrete"]),
+    default="functional",
+    show_default=True,
+    help="Abstraction level of a new scenario (when FILE does not exist yet).",
+)
+@click.option(
+    "--library",
+    "libraries",
+    multiple=True,
+    type=click.Path(exists=True, dir_okay=False, path_type=Path),
+    help="Another module library to offer in the palette; repeatable. Always offered: the "
+    "libraries the scenario uses and the *.xmi files in a library/ folder beside it.",
+)
+@click.option(
+    "--module", default=None, metavar="NAME", help="For a library FILE: the module to edit."
+)
+def edit(
+    file: Path | None,
+    port: int | None,
+    no_browser: bool,
+    read_only: bool,
+    level: str,
+    libraries: tuple[Path, ...],
+    module: str | None,
+) -> None:
+    """Edit FILE, a scenario (.xmi), in the browser; a missing FILE starts a new scenario.
+
+    The server runs on 127.0.0.1 until Ctrl-C. Unsaved changes are then kept in a recovery
+    copy beside the file (.NAME.recovered.xmi), whose path is printed.
+    """
+    from ..editor import EditorSession, SessionOptions
+    from ..editor.server import serve
+
+    target = file or Path("untitled.xmi")
+    options = SessionOptions(read_only=read_only, level=level, libraries=list(libraries))
+    session = EditorSession(options)
+    session.open(target, module=module)
+    result = serve(
+        session,
+        port=port,
+        open_browser=not no_browser,
+        announce=lambda url: click.echo(f"SceML editor: {url} (Ctrl-C to stop)"),
+    )
+    if result.recovered is not None:
+        click.echo(f"unsaved changes were written to {result.recovered}", err=True)

@@ -1,0 +1,131 @@
+"""Reversible model changes: every edit is a list of small set/insert/remove steps that undo.
+
+Operations change the model only through a `Recorder`, so any operation, however composed, can
+be undone and redone with the very same pyecore objects at their original places, and a failed
+request can be rolled back. Two pyecore 0.15.2 habits are handled here, once:
+
+- reassigning `Flow.source/target` does not remove the flow from the old node's transient
+  `outgoing/incoming`; a flow end is therefore always cleared before it is set;
+- attaching an object that another container holds moves it silently; the move away is recorded
+  first, so undo puts the object back where it was.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+from pyecore.ecore import EObject
+
+import scemlmodel as scm
+
+_FLOW_ENDS = ("source", "target")
+
+
+@dataclass
+class _Set:
+    owner: EObject
+    feature: str
+    old: Any
+    new: Any
+
+    def do(self) -> None:
+        _assign(self.owner, self.feature, self.new)
+
+    def undo(self) -> None:
+        _assign(self.owner, self.feature, self.old)
+
+
+@dataclass
+class _Insert:
+    owner: EObject
+    feature: str
+    item: Any
+    index: int
+
+    def do(self) -> None:
+        self.owner.eGet(self.feature).insert(self.index, self.item)
+
+    def undo(self) -> None:
+        self.owner.eGet(self.feature).remove(self.item)
+
+
+@dataclass
+class _Remove:
+    owner: EObject
+    feature: str
+    item: Any
+    index: int
+
+    def do(self) -> None:
+        self.owner.eGet(self.feature).remove(self.item)
+
+    def undo(self) -> None:
+        self.owner.eGet(self.feature).insert(self.index, self.item)
+
+
+def _assign(owner: EObject, feature: str, value: Any) -> None:
+    if isinstance(owner, scm.Flow) and feature in _FLOW_ENDS:
+        # Clearing first updates the old end's opposite list, which a plain reassignment does not.
+        owner.eSet(feature, None)
+    owner.eSet(feature, value)
+
+
+Step = _Set | _Insert | _Remove
+
+
+class Recorder:
+    """Applies small changes to the model and remembers them, in order, to undo or redo."""
+
+    def __init__(self) -> None:
+        self.steps: list[Step] = []
+
+    def _apply(self, step: Step) -> None:
+        step.do()
+        self.steps.append(step)
+
+    def set(self, owner: EObject, feature: str, value: Any) -> None:
+        """Set a single-valued feature (a containment moves `value` here, recorded)."""
+        old = owner.eGet(feature)
+        if old is value:
+            return
+        if isinstance(value, EObject) and _is_containment(owner, feature):
+            self.detach(value)
+        self._apply(_Set(owner, feature, old, value))
+
+    def insert(self, owner: EObject, feature: str, item: EObject, index: int | None = None) -> None:
+        """Insert into a many-valued feature, at `index` or at the end."""
+        if _is_containment(owner, feature):
+            self.detach(item)
+        size = len(owner.eGet(feature))
+        self._apply(_Insert(owner, feature, item, size if index is None else index))
+
+    def remove(self, owner: EObject, feature: str, item: EObject) -> None:
+        """Remove from a many-valued feature, remembering the index for undo."""
+        index = list(owner.eGet(feature)).index(item)
+        self._apply(_Remove(owner, feature, item, index))
+
+    def detach(self, obj: EObject) -> None:
+        """Take an object out of its container, if it has one."""
+        container, feature = obj.eContainer(), obj.eContainmentFeature()
+        if container is None or feature is None:
+            return
+        if feature.many:
+            self.remove(container, feature.name, obj)
+        else:
+            self._apply(_Set(container, feature.name, obj, None))
+
+    def undo(self) -> None:
+        """Revert every recorded change, last first."""
+        for step in reversed(self.steps):
+            step.undo()
+
+    def redo(self) -> None:
+        """Apply every recorded change again, first first."""
+        for step in self.steps:
+            step.do()
+
+
+def _is_containment(owner: EObject, feature: str) -> bool:
+    found = owner.eClass.findEStructuralFeature(feature)
+    return bool(getattr(found, "containment", False))

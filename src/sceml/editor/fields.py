@@ -1,0 +1,149 @@
+"""What the properties panel edits: Fields derived from the EClass features and the catalog."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+from typing import Any
+
+from pyecore.ecore import EAttribute, EEnum, EObject, EReference, EStructuralFeature
+
+import scemlmodel as scm
+
+from .. import catalog
+from ..traversal import features
+from .values import position_to_json, value_to_json
+
+#: Features no panel edits: graph structure, notation, and what other fields already show.
+_HIDDEN = {"incoming", "outgoing", "diagramPosition", "actors", "environment", "bindings"}
+_HIDDEN_BY_CLASS = {"ModuleUse": {"definition", "overrides"}}
+#: Where a feature name reads badly as words: `isEgo` is shown as "Ego".
+_LABELS = {"isEgo": "Ego", "h": "Heading", "roadId": "Road", "laneId": "Lane"}
+_SPEED_UNIT = "m/s"
+
+
+def label(name: str) -> str:
+    """`targetSpeed` -> `Target speed`, `referenceActor` -> `Reference actor`."""
+    if name in _LABELS:
+        return _LABELS[name]
+    words = re.sub(r"(?<!^)(?=[A-Z])", " ", name).lower()
+    return words[:1].upper() + words[1:]
+
+
+def actor_kind_names() -> list[str]:
+    """The concrete actor kinds, in metamodel order (Pedestrian, Bicycle, ... Bus)."""
+    return [cls.__name__ for cls in catalog.actor_kinds()]
+
+
+def enum_options(eenum: EEnum) -> list[str]:
+    """The literal names of an enum, in metamodel order."""
+    return [str(literal.name) for literal in eenum.eLiterals]
+
+
+def _enum_value(held: object) -> str | None:
+    return None if held is None else str(getattr(held, "name", held))
+
+
+def _participant(held: object) -> str | None:
+    return None if held is None else str(getattr(held, "name", None) or "")
+
+
+def type_name(feature: EStructuralFeature) -> str:
+    """The name of a feature's type (generated classes stand for their EClass)."""
+    kind = feature.eType
+    name = getattr(kind, "name", None)
+    return name if isinstance(name, str) else str(kind.eClass.name)
+
+
+def feature_field(
+    owner: EObject, feature: EStructuralFeature, prefix: str = ""
+) -> dict[str, Any] | None:
+    """The Field of one feature of `owner`, or None when no panel edits it."""
+    name = str(feature.name)
+    held = owner.eGet(feature)
+    base: dict[str, Any] = {"name": prefix + name, "label": label(name)}
+    if isinstance(feature, EAttribute):
+        return {**base, **_attribute_field(feature, held)}
+    if not isinstance(feature, EReference):
+        return None
+    kind = type_name(feature)
+    if kind == "Participant":
+        return {**base, "type": "actor", "value": _participant(held), "required": True}
+    if kind == "ParameterValue":
+        return {**base, **parameter_field(owner, name, held)}
+    if kind == "Position" and feature.many:
+        return {**base, "type": "positions", "value": [position_to_json(p) for p in held]}
+    if kind == "Position":
+        # Every single position of a node (destination, position) is needed to run it.
+        required = isinstance(owner, scm.ActionNode)
+        return {**base, "type": "position", "required": required, "value": position_to_json(held)}
+    return None
+
+
+def _attribute_field(feature: EAttribute, held: object) -> dict[str, Any]:
+    if isinstance(feature.eType, EEnum):
+        return {"type": "enum", "options": enum_options(feature.eType), "value": _enum_value(held)}
+    if type_name(feature) in ("EBoolean", "EBooleanObject"):
+        return {"type": "bool", "value": bool(held)}
+    return {"type": "text", "value": held}
+
+
+def parameter_field(owner: EObject, name: str, held: object) -> dict[str, Any]:
+    """A numeric parameter: unit, language default, whether required, km/h for speeds."""
+    spec = catalog.parameter(owner, name)
+    default = spec.default
+    if spec.per_actor_default:
+        default = catalog.actor_dimensions(owner).get(name)
+    return {
+        "type": "parameter",
+        "unit": spec.unit,
+        "default": default,
+        "required": spec.required,
+        "kmh": spec.unit == _SPEED_UNIT,
+        "value": value_to_json(held),
+    }
+
+
+def _features(owner: EObject) -> Iterator[EStructuralFeature]:
+    hidden = _HIDDEN | _HIDDEN_BY_CLASS.get(owner.eClass.name, set())
+    for feature in features(owner.eClass):
+        if feature.name not in hidden:
+            yield feature
+
+
+def node_fields(node: EObject) -> list[dict[str, Any]]:
+    """The Fields of a graph element: name, actors, then its own features in metamodel order."""
+    fields = []
+    # The name first, as every panel shows it; the rest in metamodel order.
+    ordered = sorted(_features(node), key=lambda feature: feature.name != "name")
+    for feature in ordered:
+        if feature.name == "targetActor" and not catalog.needs_target(node):
+            continue
+        made = feature_field(node, feature)
+        if made is not None:
+            fields.append(made)
+    return fields
+
+
+def root_fields(root: scm.RootNode) -> list[dict[str, Any]]:
+    """The root's fields, then its environment's as `environment.<name>`."""
+    fields = [f for f in node_fields(root) if f["name"] != "name"]
+    environment = root.environment if root.environment is not None else scm.Environment()
+    for feature in _features(environment):
+        made = feature_field(environment, feature, "environment.")
+        if made is not None:
+            fields.append(made)
+    return fields
+
+
+def actor_fields(actor: scm.Actor) -> list[dict[str, Any]]:
+    """An actor's fields: name, kind, then its features (isEgo, model, start, speed, size)."""
+    fields = node_fields(actor)
+    kind = {
+        "name": "kind",
+        "label": "Kind",
+        "type": "enum",
+        "options": actor_kind_names(),
+        "value": actor.eClass.name,
+    }
+    return [fields[0], kind, *fields[1:]]

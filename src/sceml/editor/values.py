@@ -1,0 +1,186 @@
+"""ParamValue and Position as the protocol's JSON, to and from pyecore objects."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Mapping
+from typing import Any
+
+import scemlmodel as scm
+
+from .. import params
+from .errors import OperationError
+
+#: Every ParamValue type of the protocol, in the order the panels offer them.
+VALUE_TYPES = ("value", "range", "uniform", "normal", "discrete", "ref")
+
+#: Finds a module parameter by name (None outside a module, where `ref` is refused).
+ParameterLookup = Callable[[str], "scm.ModuleParameter | None"]
+
+
+def value_to_json(value: scm.ParameterValue | None) -> dict[str, Any] | None:
+    """The protocol's ParamValue for a model value (None when unset)."""
+    if value is None:
+        return None
+    if isinstance(value, scm.Value):
+        return {"type": "value", "value": value.value}
+    if isinstance(value, scm.Range):
+        return {"type": "range", "min": value.min, "max": value.max, "step": value.step}
+    if isinstance(value, scm.UniformDistribution):
+        return {"type": "uniform", "min": value.min, "max": value.max}
+    if isinstance(value, scm.NormalDistribution):
+        return {
+            "type": "normal",
+            "mean": value.mean,
+            "sd": value.standardDeviation,
+            "min": value.lowerBound,
+            "max": value.upperBound,
+        }
+    if isinstance(value, scm.DiscreteDistribution):
+        weights = [option.weight for option in value.options]
+        return {
+            "type": "discrete",
+            "values": [option.value for option in value.options],
+            "weights": None if all(w is None for w in weights) else weights,
+        }
+    if isinstance(value, scm.ParameterRef):
+        name = value.parameter.name if value.parameter is not None else None
+        return {"type": "ref", "parameter": name}
+    return {"type": value.eClass.name}
+
+
+def _number(data: Mapping[str, Any], key: str, *, optional: bool = False) -> float | None:
+    given = data.get(key)
+    if given is None and optional:
+        return None
+    if isinstance(given, bool) or not isinstance(given, int | float) or not math.isfinite(given):
+        raise OperationError(f"{key!r} must be a finite number, not {given!r}")
+    return float(given)
+
+
+def _numbers(data: Mapping[str, Any], key: str) -> list[float]:
+    given = data.get(key)
+    if not isinstance(given, list) or not given:
+        raise OperationError(f"{key!r} must be a non-empty list of numbers")
+    return [_number({key: item}, key) for item in given]  # type: ignore[misc]
+
+
+def value_from_json(
+    data: object, find_parameter: ParameterLookup | None = None
+) -> scm.ParameterValue | None:
+    """A new model value from the protocol's ParamValue; None stays None (unset)."""
+    if data is None:
+        return None
+    if not isinstance(data, Mapping):
+        raise OperationError(f"a parameter value must be an object with a 'type', not {data!r}")
+    kind = data.get("type")
+    try:
+        return _MAKERS[kind](data, find_parameter)
+    except KeyError:
+        raise OperationError(
+            f"unknown parameter value type {kind!r}; use one of {', '.join(VALUE_TYPES)}"
+        ) from None
+    except ValueError as error:  # params' own checks (one weight per value)
+        raise OperationError(str(error)) from None
+
+
+def _ordered(low: float | None, high: float | None) -> None:
+    if low is not None and high is not None and low > high:
+        raise OperationError(f"min ({low:g}) must not be above max ({high:g})")
+
+
+def _range(data: Mapping[str, Any], _: ParameterLookup | None) -> scm.ParameterValue:
+    low, high = _number(data, "min"), _number(data, "max")
+    _ordered(low, high)
+    return params.span(low, high, _number(data, "step", optional=True))  # type: ignore[arg-type]
+
+
+def _uniform(data: Mapping[str, Any], _: ParameterLookup | None) -> scm.ParameterValue:
+    low, high = _number(data, "min"), _number(data, "max")
+    _ordered(low, high)
+    return params.uniform(low, high)  # type: ignore[arg-type]
+
+
+def _normal(data: Mapping[str, Any], _: ParameterLookup | None) -> scm.ParameterValue:
+    low, high = _number(data, "min", optional=True), _number(data, "max", optional=True)
+    _ordered(low, high)
+    return params.normal(_number(data, "mean"), _number(data, "sd"), low, high)  # type: ignore[arg-type]
+
+
+def _discrete(data: Mapping[str, Any], _: ParameterLookup | None) -> scm.ParameterValue:
+    weights = None if data.get("weights") is None else _numbers(data, "weights")
+    return params.discrete(_numbers(data, "values"), weights)
+
+
+def _ref(data: Mapping[str, Any], find: ParameterLookup | None) -> scm.ParameterValue:
+    name = data.get("parameter")
+    if find is None:
+        raise OperationError("parameter references ('ref') exist only inside a module")
+    target = find(str(name)) if isinstance(name, str) else None
+    if target is None:
+        raise OperationError(f"the module has no parameter {name!r}")
+    return scm.ParameterRef(parameter=target)
+
+
+_MAKERS: dict[object, Callable[[Mapping[str, Any], ParameterLookup | None], scm.ParameterValue]] = {
+    "value": lambda data, _: params.value(_number(data, "value")),  # type: ignore[arg-type]
+    "range": _range,
+    "uniform": _uniform,
+    "normal": _normal,
+    "discrete": _discrete,
+    "ref": _ref,
+}
+
+
+def position_to_json(position: scm.Position | None) -> dict[str, Any] | None:
+    """The protocol's Position for a model position (None when unset)."""
+    if isinstance(position, scm.WorldPosition):
+        return {
+            "type": "world",
+            **{key: value_to_json(position.eGet(key)) for key in ("x", "y", "z", "h")},
+        }
+    if isinstance(position, scm.LanePosition):
+        return {
+            "type": "lane",
+            "roadId": position.roadId,
+            "laneId": position.laneId,
+            "s": value_to_json(position.s),
+            "offset": value_to_json(position.offset),
+        }
+    return None
+
+
+def position_from_json(
+    data: object, find_parameter: ParameterLookup | None = None
+) -> scm.Position | None:
+    """A new model position from the protocol's Position; None stays None (unset)."""
+    if data is None:
+        return None
+    if not isinstance(data, Mapping):
+        raise OperationError(f"a position must be an object with a 'type', not {data!r}")
+    kind = data.get("type")
+
+    def coordinate(key: str, *, required: bool) -> scm.ParameterValue | None:
+        made = value_from_json(data.get(key), find_parameter)
+        if made is None and required:
+            raise OperationError(f"a {kind} position needs {key!r}")
+        return made
+
+    if kind == "world":
+        position: scm.Position = scm.WorldPosition()
+        for key in ("x", "y", "z", "h"):
+            position.eSet(key, coordinate(key, required=key in ("x", "y")))
+        return position
+    if kind == "lane":
+        road, lane_id = data.get("roadId"), data.get("laneId")
+        if not isinstance(road, str | int) or isinstance(road, bool) or str(road) == "":
+            raise OperationError(f"'roadId' must be a road id, not {road!r}")
+        if isinstance(lane_id, bool) or not isinstance(lane_id, int):
+            raise OperationError(f"'laneId' must be a whole number, not {lane_id!r}")
+        return scm.LanePosition(
+            roadId=str(road),
+            laneId=lane_id,
+            s=coordinate("s", required=True),
+            offset=coordinate("offset", required=False),
+        )
+    raise OperationError(f"unknown position type {kind!r}; use 'world' or 'lane'")
