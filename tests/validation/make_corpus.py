@@ -637,6 +637,47 @@ def no_start_position(out: Path) -> None:
     save(b.scenario, out, "e002-no-start-position.xmi")
 
 
+@case("e002-logical-no-start-position", "SCEML-E002")
+def logical_no_start_position(out: Path) -> None:
+    # Sampling only changes numbers: a logical scenario must already have what every sample
+    # needs to be a valid concrete scenario (SPEC §5).
+    b, ego = scenario("logical")
+    b.actor("Bicycle", "bike", speed=0.0)
+    b.chain(b.root, b.add("Accelerate", ego, targetSpeed=span(6.0, 10.0, 1.0)), b.end)
+    save(b.scenario, out, "e002-logical-no-start-position.xmi")
+
+
+@case("e001-logical-no-map", "SCEML-E001")
+def logical_no_map(out: Path) -> None:
+    b, ego = scenario("logical")
+    b.root.map = None
+    b.chain(b.root, b.add("Accelerate", ego, targetSpeed=span(6.0, 10.0, 1.0)), b.end)
+    save(b.scenario, out, "e001-logical-no-map.xmi")
+
+
+def _time_of_day(text: str) -> Case:
+    def build(out: Path) -> None:
+        b, ego = scenario()
+        b.environment(time_of_day=text)
+        b.chain(b.root, b.add("Accelerate", ego, targetSpeed=8.0), b.end)
+        save(b.scenario, out, f"e004-time-of-day-{text.replace(':', '-')}.xmi")
+
+    return build
+
+
+for _text in ("noon", "25:61:00", "12:00"):
+    case(f"e004-time-of-day-{_text.replace(':', '-')}", "SCEML-E004")(_time_of_day(_text))
+
+
+@case("e004-time-of-day-functional", "SCEML-E004")
+def time_of_day_functional(out: Path) -> None:
+    b = ScenarioBuilder("Case", level="functional", date=DATE)
+    ego = b.actor("Car", "ego", ego=True)
+    b.environment(time_of_day="7pm")
+    b.chain(b.root, b.add("Accelerate", ego), b.end)
+    save(b.scenario, out, "e004-time-of-day-functional.xmi")
+
+
 # Several faults at once ----------------------------------------------------------------------
 
 

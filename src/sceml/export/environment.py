@@ -2,15 +2,14 @@
 
 from __future__ import annotations
 
-import re
 from typing import Any
 
 import scemlmodel as scm
 
+from ..validation.readiness import is_time_of_day
 from .context import Context
 from .values import number
 
-_TIME = re.compile(r"^([01]\d|2[0-3]):[0-5]\d:[0-5]\d$")
 #: 1.2 replaced cloudState by fractionalCloudCover (oktas).
 OKTAS = {
     "free": "zeroOktas",
@@ -31,7 +30,7 @@ def environment(ctx: Context, root: scm.RootNode, date: str) -> dict[str, Any]:
     given = root.environment
     owner = given if given is not None else scm.Environment()
     time_of_day = owner.timeOfDay or "12:00:00"
-    if not _TIME.match(time_of_day):
+    if not is_time_of_day(time_of_day):
         raise EnvironmentValueError(f"time of day {time_of_day!r} is not HH:MM:SS")
     cloud = owner.cloudState.name
     return {

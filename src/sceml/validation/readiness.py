@@ -1,11 +1,15 @@
-"""Export readiness (concrete level): what OpenSCENARIO needs beyond a valid graph.
+"""Export readiness: what OpenSCENARIO needs beyond a valid graph.
 
 Missing destinations, positions and required values are level rules (SCEML-P002); here are the
-map, start positions, and whether each node kind used has a mapping for the chosen version.
+map, start positions, well-formed environment values, and whether each node kind used has a
+mapping for the chosen version. Map and start positions are required from the logical level on:
+sampling only changes numbers, so each sample of a clean logical scenario must be a valid
+concrete one (SPEC §5).
 """
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterator
 
 from pyecore.ecore import EObject
@@ -17,18 +21,46 @@ from .context import Context
 from .registry import Finding, constraint
 
 ERROR = Severity.ERROR
+#: The levels whose scenarios are, or are sampled into, executable ones.
+_EXECUTABLE = ("logical", "concrete")
+#: OpenSCENARIO's time of day (the time part of xsd:dateTime, to the second): HH:MM:SS.
+TIME_OF_DAY = re.compile(r"([01]\d|2[0-3]):[0-5]\d:[0-5]\d")
 
 
-@constraint("SCEML-E001", ERROR, "RootNode", "a concrete scenario names its map")
+def is_time_of_day(text: str) -> bool:
+    """Whether `text` is a time of day OpenSCENARIO takes, 00:00:00 to 23:59:59."""
+    return TIME_OF_DAY.fullmatch(text) is not None
+
+
+@constraint("SCEML-E001", ERROR, "RootNode", "a logical or concrete scenario names its map")
 def map_is_set(root: scm.RootNode, context: Context) -> Iterator[Finding]:
-    if context.level_of(root) == "concrete" and not (root.map or "").strip():
-        yield root, "a concrete scenario needs a map (an OpenDRIVE file or a simulator town)"
+    level = context.level_of(root)
+    if level in _EXECUTABLE and not (root.map or "").strip():
+        yield root, f"a {level} scenario needs a map (an OpenDRIVE file or a simulator town)"
 
 
-@constraint("SCEML-E002", ERROR, "Actor", "in a concrete scenario every actor has a start position")
+@constraint(
+    "SCEML-E002",
+    ERROR,
+    "Actor",
+    "in a logical or concrete scenario every actor has a start position",
+)
 def actor_has_start(actor: scm.Actor, context: Context) -> Iterator[Finding]:
-    if context.level_of(actor) == "concrete" and actor.startPosition is None:
-        yield actor, f"actor {actor.name!r} has no start position"
+    level = context.level_of(actor)
+    if level in _EXECUTABLE and actor.startPosition is None:
+        yield actor, f"actor {actor.name!r} has no start position ({level} scenario)"
+
+
+@constraint(
+    "SCEML-E004",
+    ERROR,
+    "Environment",
+    "the time of day is HH:MM:SS, from 00:00:00 to 23:59:59",
+)
+def time_of_day_is_valid(environment: scm.Environment, context: Context) -> Iterator[Finding]:
+    text = environment.timeOfDay
+    if text is not None and not is_time_of_day(text):
+        yield environment, f"time of day {text!r} is not HH:MM:SS (00:00:00 to 23:59:59)"
 
 
 def _used_kinds(scenario: scm.Scenario, context: Context) -> dict[str, EObject]:
