@@ -28,12 +28,13 @@ class _Set:
     feature: str
     old: Any
     new: Any
+    was_set: bool = False
 
     def do(self) -> None:
-        _assign(self.owner, self.feature, self.new)
+        _assign(self.owner, self.feature, self.new, self.new is not None)
 
     def undo(self) -> None:
-        _assign(self.owner, self.feature, self.old)
+        _assign(self.owner, self.feature, self.old, self.was_set)
 
 
 @dataclass
@@ -64,23 +65,54 @@ class _Remove:
         self.owner.eGet(self.feature).insert(self.index, self.item)
 
 
-def _assign(owner: EObject, feature: str, value: Any) -> None:
+def _assign(owner: EObject, feature: str, value: Any, is_set: bool) -> None:
     if isinstance(owner, scm.Flow) and feature in _FLOW_ENDS:
         # Clearing first updates the old end's opposite list, which a plain reassignment does not.
         owner.eSet(feature, None)
     owner.eSet(feature, value)
+    if not is_set:
+        # pyecore has no eUnset: a feature set to None stays "set" and is saved as xsi:nil,
+        # which the file never had. Null means unset (the language default applies).
+        owner._isset.pop(owner.eClass.findEStructuralFeature(feature), None)
 
 
 Step = _Set | _Insert | _Remove
+
+
+@dataclass
+class _Ordered:
+    """A change that also puts back the order in which its owner's features were set.
+
+    pyecore writes an element's attributes in that order, so without this an undone change
+    would save the same model with its attributes reordered.
+    """
+
+    change: Step
+    order: list[Any] | None = None
+
+    def do(self) -> None:
+        self.order = list(self.change.owner._isset)
+        self.change.do()
+
+    def undo(self) -> None:
+        self.change.undo()
+        held = self.change.owner._isset
+        if self.order is not None and list(held) != self.order:
+            keys = [key for key in self.order if key in held]
+            keys += [key for key in held if key not in keys]
+            values = {key: held[key] for key in keys}
+            held.clear()
+            held.update(values)
 
 
 class Recorder:
     """Applies small changes to the model and remembers them, in order, to undo or redo."""
 
     def __init__(self) -> None:
-        self.steps: list[Step] = []
+        self.steps: list[_Ordered] = []
 
-    def _apply(self, step: Step) -> None:
+    def _apply(self, change: Step) -> None:
+        step = _Ordered(change)
         step.do()
         self.steps.append(step)
 
@@ -91,7 +123,8 @@ class Recorder:
             return
         if isinstance(value, EObject) and _is_containment(owner, feature):
             self.detach(value)
-        self._apply(_Set(owner, feature, old, value))
+        was_set = owner.eIsSet(owner.eClass.findEStructuralFeature(feature))
+        self._apply(_Set(owner, feature, old, value, was_set))
 
     def insert(self, owner: EObject, feature: str, item: EObject, index: int | None = None) -> None:
         """Insert into a many-valued feature, at `index` or at the end."""
@@ -113,7 +146,7 @@ class Recorder:
         if feature.many:
             self.remove(container, feature.name, obj)
         else:
-            self._apply(_Set(container, feature.name, obj, None))
+            self._apply(_Set(container, feature.name, obj, None, True))
 
     def undo(self) -> None:
         """Revert every recorded change, last first."""
