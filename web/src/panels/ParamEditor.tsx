@@ -34,7 +34,9 @@ export function ParamEditor({ label, value, valueTypes, unit, defaultValue, kmh,
   const kinds = [...valueTypes.filter(isParamType)];
   if (draft.type !== "unset" && !kinds.includes(draft.type)) kinds.push(draft.type);
   const hint = defaultText(defaultValue, unit);
-  const inputs = draft.type === "unset" ? [] : PARAM_INPUTS[draft.type];
+  // An unset parameter still shows the inputs of the first kind: typing a number sets it.
+  const shownType = draft.type === "unset" ? (kinds[0] ?? "value") : draft.type;
+  const inputs = PARAM_INPUTS[shownType];
   return (
     <fieldset className="param">
       <legend>
@@ -49,17 +51,20 @@ export function ParamEditor({ label, value, valueTypes, unit, defaultValue, kmh,
         options={[...kinds.map((kind) => ({ value: kind, label: kind })), { value: "unset", label: "unset" }]}
         onChange={(kind) => update(switchKind(draft, kind as Draft["type"]))}
       />
-      {draft.type === "unset" && hint && <div className="hint">{hint}</div>}
       {inputs.map((input) => (
         <CommitInput
-          key={`${draft.type}-${input.name}`}
+          key={`${shownType}-${input.name}`}
           label={input.name === "value" ? label : `${label} ${input.name}`}
           value={draft.inputs[input.name] ?? ""}
           disabled={disabled}
           inputMode={input.name === "parameter" ? "text" : "decimal"}
-          placeholder={input.name === "value" || input.name === "mean" ? hint || unit || undefined : input.required ? unit ?? undefined : "optional"}
+          placeholder={input.name === "value" || input.name === "mean" ? hint || unit || undefined : input.required ? (unit ?? undefined) : "optional"}
           invalid={complete === undefined && input.required && !(draft.inputs[input.name] ?? "").trim()}
-          onCommit={(text) => update({ ...draft, inputs: { ...draft.inputs, [input.name]: text } })}
+          onCommit={(text) => {
+            const next = { type: shownType, inputs: { ...draft.inputs, [input.name]: text } };
+            const empty = Object.values(next.inputs).every((item) => item.trim() === "");
+            update(draft.type === "unset" && empty ? draft : next);
+          }}
         />
       ))}
       {kmh && complete ? <div className="hint kmh">= {kmhText(complete)}</div> : null}
