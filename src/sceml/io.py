@@ -28,6 +28,7 @@ from .safexml import (  # noqa: F401 (the size limit is part of this module's AP
     hardened_parser,
     has_dtd,
     max_bytes_limit,
+    size_problem,
 )
 
 # Deeper documents are refused by libxml2 itself (its limit without huge_tree is 256 levels), so
@@ -58,10 +59,9 @@ def parse_xml_safely(path: Path, max_bytes: int | None = None) -> etree._Element
         raise LoadError("no such file", file=path) from None
     except OSError as error:
         raise LoadError(f"cannot read file: {error.strerror}", file=path) from None
-    if size > max_bytes:
-        raise LoadError(
-            f"file is {size / 1e6:.1f} MB, above the {max_bytes / 1e6:.0f} MB limit", file=path
-        )
+    too_large = size_problem(size, max_bytes)
+    if too_large is not None:
+        raise LoadError(too_large, file=path)
     try:
         data = path.read_bytes()
     except OSError as error:

@@ -156,11 +156,12 @@ def format_junit(
     return etree.tostring(root, xml_declaration=True, encoding="UTF-8", pretty_print=True).decode()
 
 
-FORMATTERS = {"text": format_text, "json": format_json}
-
-
-def render(reports: Sequence[FileReport], format: str, strict: bool = False) -> str:
-    """The report in one of `text`, `json` or `junit`."""
+def render(
+    reports: Sequence[FileReport], format: str, strict: bool = False, tool: str = "sceml validate"
+) -> str:
+    """The report in one of `text`, `json` or `junit`; `tool` names the command that made it."""
     if format == "junit":
-        return format_junit(reports, strict)
-    return FORMATTERS[format](reports)
+        return format_junit(reports, strict, suite=tool)
+    if format == "json":
+        return format_json(reports, tool=tool)
+    return format_text(reports)

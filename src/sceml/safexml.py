@@ -13,7 +13,7 @@ from lxml import etree
 
 from .errors import LoadError
 
-#: Files larger than this are refused before parsing (bytes); a scenario of 50,000 nodes is ~15 MB.
+#: Files larger than this (64 MiB) are refused before parsing; a 50,000-node scenario is ~15 MB.
 DEFAULT_MAX_BYTES = 64 * 1024 * 1024
 
 #: Environment variable that overrides DEFAULT_MAX_BYTES (a whole number of bytes).
@@ -28,6 +28,22 @@ def max_bytes_limit() -> int:
     if not given.isdigit() or int(given) == 0:
         raise LoadError(f"{MAX_BYTES_VARIABLE}={given!r} is not a positive whole number of bytes")
     return int(given)
+
+
+def size_problem(size: int, limit: int) -> str | None:
+    """Why a file of `size` bytes is refused under `limit`, in the units the docs use; or None."""
+    if size <= limit:
+        return None
+    return (
+        f"file is {_amount(size)}, above the {_amount(limit, single=True)} limit "
+        f"(set {MAX_BYTES_VARIABLE} to change it)"
+    )
+
+
+def _amount(size: int, single: bool = False) -> str:
+    if size < 2**20:
+        return f"{size}-byte" if single else f"{size} bytes"
+    return f"{size / 2**20:.1f}".removesuffix(".0") + " MiB"
 
 
 def hardened_parser(*, drop_comments: bool = False) -> etree.XMLParser:

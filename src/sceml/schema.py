@@ -32,7 +32,7 @@ from typing import TYPE_CHECKING, Any, Final, TypeAlias
 from lxml import etree
 
 from sceml.errors import SceMLError
-from sceml.safexml import doctype_line, hardened_parser, has_dtd, max_bytes_limit
+from sceml.safexml import doctype_line, hardened_parser, has_dtd, max_bytes_limit, size_problem
 
 if TYPE_CHECKING:
     import xmlschema
@@ -234,7 +234,7 @@ def parse_file(path: str | os.PathLike[str]) -> etree._ElementTree:
     Raises UnsafeXMLError for documents with a DOCTYPE (checked before parsing, so entity
     bombs are never expanded and external entities never fetched) and XMLParseError for
     malformed XML; both carry ``file`` and ``line`` and print gcc-style as ``file:line: ...``.
-    Files above ``sceml.safexml.max_bytes_limit()`` (64 MB, or $SCEML_MAX_BYTES) raise SchemaError
+    Files above ``sceml.safexml.max_bytes_limit()`` (64 MiB, or $SCEML_MAX_BYTES) raise SchemaError
     unread. OSError propagates for unreadable files.
     """
     name = os.fspath(path)
@@ -242,12 +242,9 @@ def parse_file(path: str | os.PathLike[str]) -> etree._ElementTree:
     with open(name, "rb") as fh:
         # Refused by size before reading, like models: the file is parsed in memory.
         size = os.fstat(fh.fileno()).st_size
-        if size > limit:
-            raise SchemaError(
-                f"file is {size / 1e6:.1f} MB, above the {limit / 1e6:.0f} MB limit "
-                f"(set SCEML_MAX_BYTES to change it)",
-                file=name,
-            )
+        too_large = size_problem(size, limit)
+        if too_large is not None:
+            raise SchemaError(too_large, file=name)
         data = fh.read()
     line = doctype_line(data)
     if line is not None:

@@ -71,7 +71,7 @@ def test_labels_name_kind_actors_and_parameters_by_level() -> None:
 def test_functional_labels_show_no_parameters() -> None:
     svg = svg_of("uis1-functional.xmi")
     turn = next(text_of(g) for g in groups(svg, "sceml-lateral") if "TurnRight" in text_of(g))
-    assert turn == "TurnRight ego"
+    assert turn == "TurnRight TurnRight_1 ego"  # kind, name, actor (issue 14: both are shown)
 
 
 def test_uis1_flows_follow_the_paper() -> None:

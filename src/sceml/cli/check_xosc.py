@@ -11,7 +11,7 @@ from .. import schema
 from ..diagnostics import Diagnostic, Severity
 from ..errors import SceMLError
 from ..qualitychecker import QualityCheckerError, run_quality_checker
-from ..report import FileReport, exit_code, format_json, render
+from ..report import FileReport, exit_code, render
 from .common import SceMLCommand, emit_report, file_progress, report_options
 
 XSD_CODE = "XOSC-XSD"
@@ -98,9 +98,5 @@ def check_xosc(
     """
     with file_progress(files, "checking") as todo:
         reports = [check_file(path, quality=not skip_quality) for path in todo]
-    if output_format == "json":
-        text = format_json(reports, tool="sceml check-xosc")
-    else:
-        text = render(reports, output_format, strict)
-    emit_report(text, output)
+    emit_report(render(reports, output_format, strict, tool="sceml check-xosc"), output)
     sys.exit(exit_code(reports, strict))

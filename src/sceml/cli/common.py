@@ -3,15 +3,17 @@
 from __future__ import annotations
 
 import sys
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from contextlib import contextmanager
+from dataclasses import replace
 from pathlib import Path
 from typing import Any, TypeVar
 
 import click
 
+from ..diagnostics import Diagnostic
 from ..errors import ArgumentError, SceMLError
-from ..io import write_atomically
+from ..io import Document, write_atomically
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -73,6 +75,34 @@ class Parsed(click.ParamType):
             return self.parse(value)
         except ArgumentError as error:
             self.fail(error.message, param, ctx)
+
+
+def echo_diagnostics(
+    diagnostics: Iterable[Diagnostic], document: Document | None = None, file: Path | None = None
+) -> None:
+    """The one diagnostic formatter of the commands: `file:line: severity[CODE] message (path)`
+    on standard error, one line each.
+
+    A diagnostic found on a model in memory is placed where `document` read its element from,
+    else in `file`.
+    """
+    for diagnostic in diagnostics:
+        click.echo(str(locate(diagnostic, document, file)), err=True)
+
+
+def locate(
+    diagnostic: Diagnostic, document: Document | None = None, file: Path | None = None
+) -> Diagnostic:
+    """The diagnostic with the file and line of its element filled in where they were missing."""
+    where, line = diagnostic.file, diagnostic.line
+    element = diagnostic.element
+    if document is not None and element is not None and where is None:
+        origin = document.file_of(element)
+        if origin is not None:
+            where, line = str(origin), line or document.line_of(element)
+    if where is None and (file or document) is not None:
+        where = str(file or document.path)  # type: ignore[union-attr]
+    return replace(diagnostic, file=where, line=line)
 
 
 def allow_option(command: F) -> F:

@@ -32,6 +32,7 @@ from .common import Parsed, SceMLCommand, allow_option
     "-o",
     "--output",
     type=click.Path(dir_okay=False, path_type=Path),
+    metavar="OUT",
     required=True,
     help="Where to write the concrete scenario (.xmi); written atomically.",
 )

@@ -2,18 +2,17 @@
 
 from __future__ import annotations
 
-from dataclasses import replace
 from pathlib import Path
 
 import click
 
-from ..diagnostics import Diagnostic
+from ..errors import SceMLError
 from ..export import ExportError, export_to_file
 from ..export.support import PROFILES
 from ..export.versions import VERSIONS
 from ..export.writer import header_date
 from ..io import load_scenario
-from .common import Parsed, ReportedError, SceMLCommand, allow_option
+from .common import Parsed, SceMLCommand, allow_option, echo_diagnostics
 
 
 @click.command(cls=SceMLCommand)
@@ -73,8 +72,8 @@ def export(
     the output is checked against the official XSD before it is written.
     """
     osc_version = osc_version or ("1.0" if profile == "carla" else "1.3")
+    document = load_scenario(file, allow=allow)
     try:
-        document = load_scenario(file, allow=allow)
         export_to_file(
             document.root,
             output,
@@ -86,12 +85,12 @@ def export(
             town=town,
         )
     except ExportError as error:
-        for diagnostic in error.diagnostics:
-            click.echo(str(_located(diagnostic, file)), err=True)
-        raise ReportedError(error) from None
+        if not error.diagnostics:
+            raise
+        # Each problem once, located; then only the verdict, which would otherwise repeat one.
+        echo_diagnostics(error.diagnostics, document, file)
+        count = len(error.diagnostics)
+        raise SceMLError(
+            f"not exported: {count} problem{'s' if count != 1 else ''}", file=file
+        ) from None
     click.echo(f"{output}: OpenSCENARIO {osc_version} ({profile})")
-
-
-def _located(diagnostic: Diagnostic, file: Path) -> Diagnostic:
-    # Export diagnostics point at elements of the flattened copy, which has no file; name the input.
-    return diagnostic if diagnostic.file else replace(diagnostic, file=str(file))

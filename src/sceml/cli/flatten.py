@@ -17,6 +17,7 @@ from .common import SceMLCommand, allow_option
     "--output",
     required=True,
     type=click.Path(dir_okay=False, path_type=Path),
+    metavar="OUT",
     help="Where to write the flattened scenario (written atomically; may be FILE itself).",
 )
 @allow_option

@@ -21,6 +21,7 @@ from .concretize import report_validation
     "--ranges",
     "ranges_file",
     type=click.Path(exists=True, dir_okay=False, path_type=Path),
+    metavar="RANGES",
     required=True,
     help="YAML (or .json) file mapping parameter paths to values, ranges, distributions or "
     "positions; see examples/uis1-ranges.yaml and docs/levels.md.",
@@ -29,6 +30,7 @@ from .concretize import report_validation
     "-o",
     "--output",
     type=click.Path(dir_okay=False, path_type=Path),
+    metavar="OUT",
     required=True,
     help="Where to write the logical scenario (.xmi); written atomically.",
 )

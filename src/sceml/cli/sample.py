@@ -51,6 +51,7 @@ _FORMATS = {"xmi": ("xmi",), "xosc": ("xosc",), "both": ("xosc", "xmi")}
     "--output",
     "out_dir",
     type=click.Path(file_okay=False, path_type=Path),
+    metavar="DIR",
     required=True,
     help="Folder for the sampled files and manifest.csv / manifest.json.",
 )

@@ -182,12 +182,11 @@ def logic_file(
     else:
         target = None
     if profile == "carla" and (target is not None or not map_text or not is_town_name(map_text)):
-        raise ExportError(
+        reason = (
             f"the carla profile needs a CARLA town as map (e.g. Town03), not {str(map_text)!r}; "
-            "give one with --town",
-            [checks.error(checks.PROFILE, "the carla profile needs a CARLA town name as map")],
-            file=source_path,
+            "give one with --town"
         )
+        raise ExportError(reason, [checks.error(checks.PROFILE, reason)], file=source_path)
     if target is None:
         return map_text or ""
     if output_path is None:

@@ -14,7 +14,7 @@ import scemlmodel as scm
 
 from .bt import bt_diagram
 from .flow import Diagram, Modules, RenderError, flow_diagram
-from .style import add_legend, legend_graph
+from .style import legend_graph
 
 View = Literal["flow", "bt"]
 
@@ -69,10 +69,7 @@ def diagram(
     else:
         target = root
     if view == "bt":
-        graph = bt_diagram(target, modules=modules)
-        if legend:
-            add_legend(graph)
-        return graph
+        return bt_diagram(target, modules=modules, legend=legend)
     return flow_diagram(target, modules=modules, legend=legend).graph
 
 

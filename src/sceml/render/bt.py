@@ -215,9 +215,15 @@ class _Reducer:
 
 
 def bt_diagram(
-    root: scm.Scenario | scm.ModuleDefinition, *, modules: Modules = "collapsed"
+    root: scm.Scenario | scm.ModuleDefinition,
+    *,
+    modules: Modules = "collapsed",
+    legend: bool = False,
 ) -> graphviz.Digraph:
-    """Draw a behavior tree: the scenario (or module) name on top, composite nodes as symbols."""
+    """Draw a behavior tree: the scenario (or module) name on top, composite nodes as symbols.
+
+    `legend` adds the behavior-tree view's legend (not the flow view's).
+    """
     tree = tree_of(root, modules)
     graph = new_digraph("sceml_bt")
     graph.attr(ordering="out")
@@ -229,6 +235,8 @@ def bt_diagram(
         title += " (not series-parallel: cut joins are shown as wait leaves)"
     graph.node("bt-root", label=title, **{**style.ROOT.attrs(), "class": "sceml-bt-root"})
     _Painter(graph, graph, Scope()).sequence(tree.items, "bt-root", "bt")
+    if legend:
+        style.add_legend(graph, style.BT_LEGEND_ENTRIES)
     return graph
 
 
@@ -247,7 +255,7 @@ class _Painter:
             self.item(items[0], parent, f"{path}.0")
             return
         node_id = f"{path}.seq"
-        self._composite(node_id, style.SEQUENCE_SYMBOL, "sceml-bt-sequence", "Sequence")
+        self._composite(node_id, style.BT_SEQUENCE, "Sequence")
         self.top.edge(parent, node_id)
         for index, item in enumerate(items):
             self.item(item, node_id, f"{path}.{index}")
@@ -255,9 +263,8 @@ class _Painter:
     def item(self, item: Item, parent: str, path: str) -> None:
         if isinstance(item, Parallel):
             one = item.policy == "one"
-            symbol = style.PARALLEL_ONE_SYMBOL if one else style.PARALLEL_ALL_SYMBOL
-            css = "sceml-bt-parallel-one" if one else "sceml-bt-parallel-all"
-            self._composite(path, symbol, css, "Parallel: " + ("one" if one else "all"))
+            look = style.BT_PARALLEL_ONE if one else style.BT_PARALLEL_ALL
+            self._composite(path, look, "Parallel: " + ("one" if one else "all"))
             self.top.edge(parent, path)
             for index, child in enumerate(item.children):
                 self.sequence(child, path, f"{path}.{index}")
@@ -268,24 +275,16 @@ class _Painter:
         else:
             self._leaf(item.node, parent, path)
 
-    def _composite(self, node_id: str, symbol: str, css: str, tooltip: str) -> None:
-        self.graph.node(
-            node_id,
-            label=symbol,
-            shape="box",
-            width="0.45",
-            height="0.4",
-            fixedsize="true",
-            fontsize="16",
-            tooltip=tooltip,
-            **{"class": f"sceml-node {css}"},
-        )
+    def _composite(self, node_id: str, look: style.Look, tooltip: str) -> None:
+        self.graph.node(node_id, tooltip=tooltip, **look.attrs())
 
     def _leaf(self, node: EObject, parent: str, path: str) -> None:
         attributes = look_of(node).attrs()
         if isinstance(node, scm.ActionNode):
             lines = [actor_line(node, self.scope)]
-            attributes["label"] = style.html_label(node.eClass.name, lines)
+            attributes["label"] = style.html_label(
+                node.eClass.name, lines, subtitle=str(node.name) if node.name else None
+            )
         elif isinstance(node, scm.ModuleUse):
             definition = loaded_definition(node)
             title = str(definition.name) if definition is not None else "definition not found"
@@ -297,13 +296,9 @@ class _Painter:
 
     def _wait(self, item: Wait, parent: str, path: str) -> None:
         names = ", ".join(str(n.name) for n in item.on)
-        self.graph.node(
-            path,
-            label=f"wait for {item.policy} of\n{names}",
-            shape="box",
-            style="dashed,rounded",
-            **{"class": "sceml-node sceml-bt-wait"},
-        )
+        attributes = style.BT_WAIT.attrs()
+        attributes["label"] = f"wait for {item.policy} of\n{names}"
+        self.graph.node(path, **attributes)
         self.top.edge(parent, path)
 
     def _module(self, item: Module, parent: str, path: str) -> None:

@@ -134,7 +134,12 @@ class _FlowDrawer:
         attributes["id"] = element_id
         attributes["tooltip"] = str(node.name or node.eClass.name)
         if isinstance(node, scm.ActionNode):
-            attributes["label"] = style.html_label(node.eClass.name, action_lines(node, scope))
+            # Kind, then the name messages and --set paths use, then actors and parameters.
+            attributes["label"] = style.html_label(
+                node.eClass.name,
+                action_lines(node, scope),
+                subtitle=str(node.name) if node.name else None,
+            )
             actor = bound_actor(node.referenceActor, scope)
             if actor:
                 attributes["class"] += f" sceml-actor-{actor}"

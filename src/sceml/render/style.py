@@ -137,6 +137,38 @@ OUT_PORT = Look(
 )
 UNKNOWN = Look("sceml-unknown", "Unknown element", _box("white", "black"))
 
+
+def _bt_composite(symbol: str) -> tuple[tuple[str, str], ...]:
+    return (
+        ("shape", "box"),
+        ("width", "0.45"),
+        ("height", "0.4"),
+        ("fixedsize", "true"),
+        ("fontsize", "16"),
+        ("label", symbol),
+    )
+
+
+#: The behavior-tree view's own nodes: sequences, parallels and the wait leaf of a cut join.
+BT_SEQUENCE = Look(
+    "sceml-bt-sequence", "Sequence: children in turn, left to right", _bt_composite(SEQUENCE_SYMBOL)
+)
+BT_PARALLEL_ALL = Look(
+    "sceml-bt-parallel-all",
+    "Parallel: done when all children are",
+    _bt_composite(PARALLEL_ALL_SYMBOL),
+)
+BT_PARALLEL_ONE = Look(
+    "sceml-bt-parallel-one",
+    "Parallel: done when one child is",
+    _bt_composite(PARALLEL_ONE_SYMBOL),
+)
+BT_WAIT = Look(
+    "sceml-bt-wait",
+    "Wait until all or one of the named nodes have finished",
+    (("shape", "box"), ("style", "dashed,rounded"), ("label", "wait")),
+)
+
 #: The frame of an expanded module use.
 CLUSTER_ATTRIBUTES = {
     "style": "rounded,dashed",
@@ -184,13 +216,32 @@ LEGEND_ENTRIES = (
 )
 
 
-def add_legend(graph: graphviz.Digraph) -> None:
-    """Add the notation's legend to a diagram: a framed column of sample nodes with captions."""
+#: The behavior-tree view's legend: its composites, its leaves (drawn as in the flow view), wait.
+BT_LEGEND_ENTRIES = (
+    ("legend-bt-sequence", BT_SEQUENCE, ""),
+    ("legend-bt-parallel-all", BT_PARALLEL_ALL, ""),
+    ("legend-bt-parallel-one", BT_PARALLEL_ONE, ""),
+    ("legend-longitudinal", CATEGORY_LOOKS["longitudinal"], "Accelerate"),
+    ("legend-lateral", CATEGORY_LOOKS["lateral"], "TurnRight"),
+    ("legend-composite", CATEGORY_LOOKS["composite"], "Overtake"),
+    ("legend-condition", CATEGORY_LOOKS["condition"], "InVehicleRadius"),
+    ("legend-module", MODULE, "CrossingManeuver"),
+    ("legend-bt-wait", BT_WAIT, ""),
+)
+
+
+def add_legend(
+    graph: graphviz.Digraph, entries: tuple[tuple[str, Look, str], ...] = LEGEND_ENTRIES
+) -> None:
+    """Add a legend to a diagram: a framed column of sample nodes with captions.
+
+    `entries` default to the flow view's notation; the behavior-tree view passes its own.
+    """
     with graph.subgraph(name="cluster_legend") as legend:
         legend.attr(label="Legend", style="rounded", color="#9aa0a6", fontsize="12")
         legend.attr(**{"class": "sceml-legend"})
         previous = None
-        for name, look, text in LEGEND_ENTRIES:
+        for name, look, text in entries:
             attributes = look.attrs()
             attributes["class"] = "sceml-legend-sample"
             attributes.setdefault("label", text)
