@@ -1,0 +1,38 @@
+"""extract_module: the library is written at once; undo gives back the very same nodes."""
+
+from __future__ import annotations
+
+import pytest
+from editor.helpers import node_id, saved_bytes
+
+from sceml import io
+from sceml.editor import EditorSession, OperationError
+
+
+def test_extract_writes_the_library_and_undo_restores_the_nodes(uis1: EditorSession) -> None:
+    view = uis1.view()
+    chosen = [node_id(view, n) for n in ("Accelerate_2", "Cross_1")]
+    before = saved_bytes(uis1)
+    op = {"op": "extract_module", "nodes": chosen, "name": "BikeGo", "library": "library/mine.xmi"}
+    after = uis1.apply([op])
+    use = next(n for n in after["nodes"] if n["id"] == after["created"][0])
+    assert use["kind"] == "ModuleUse" and use["module"]["definition"] == "BikeGo"
+    assert use["module"]["library"] == "library/mine.xmi"
+    top = {n["name"] for n in after["nodes"] if n["parent"] is None}
+    assert not top & {"Accelerate_2", "Cross_1"}
+    assert after["summary"]["errors"] == 0
+    library = io.load_library(uis1.path.parent / "library" / "mine.xmi").root
+    assert [m.name for m in library.modules] == ["BikeGo"]
+    undone = uis1.undo()
+    assert saved_bytes(uis1) == before
+    assert {n["id"] for n in undone["nodes"]} >= set(chosen)
+    uis1.redo()
+    assert any(n["kind"] == "ModuleUse" for n in uis1.view()["nodes"])
+
+
+def test_extract_refuses_a_selection_with_two_exits(uis1: EditorSession) -> None:
+    view = uis1.view()
+    chosen = [node_id(view, n) for n in ("Accelerate_1", "Accelerate_2")]
+    with pytest.raises(OperationError, match="exactly one"):
+        uis1.apply([{"op": "extract_module", "nodes": chosen, "name": "X", "library": "lib.xmi"}])
+    assert not (uis1.path.parent / "lib.xmi").exists()
