@@ -86,6 +86,11 @@ def test_palette_groups_and_libraries(uis2: EditorSession) -> None:
     assert "Accelerate" in longitudinal and "TurnLeft" not in longitudinal
     modules = [i["module"] for i in palette[5]["items"]]
     assert "CrossingManeuver" in modules and palette[5]["items"][0]["kind"] == "ModuleUse"
+    crossing = next(i for i in palette[5]["items"] if i["module"] == "CrossingManeuver")
+    assert crossing["roles"] == [
+        {"role": "crosser", "allowedKinds": ["TwoWheeler", "Pedestrian"]},
+        {"role": "trigger", "allowedKinds": ["FourWheeler"]},
+    ]
 
 
 def test_style_is_the_render_notation(uis1: EditorSession) -> None:

@@ -49,8 +49,22 @@ def library_group(library: scm.Library, shown_path: str) -> dict[str, Any]:
         "group": f"library:{shown_path}",
         "label": str(library.name or Path(shown_path).name),
         "look": "module",
-        "items": [_item("ModuleUse", str(d.name), shown_path) for d in library.modules],
+        "items": [
+            {**_item("ModuleUse", str(d.name), shown_path), "roles": _roles(d)}
+            for d in library.modules
+        ],
     }
+
+
+def _roles(definition: scm.ModuleDefinition) -> list[dict[str, Any]]:
+    """What the "Use <module>" dialog binds: each role and the actor kinds it accepts."""
+    return [
+        {
+            "role": str(role.name),
+            "allowedKinds": [str(k.kind.name) for k in role.allowedKinds if k.kind is not None],
+        }
+        for role in definition.roles
+    ]
 
 
 def choices() -> dict[str, list[str]]:
