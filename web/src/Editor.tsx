@@ -74,7 +74,7 @@ export function Editor() {
     const document = `${view.document.path}#${view.document.module ?? ""}`;
     if (fittedFor.current === document) return;
     fittedFor.current = document;
-    requestAnimationFrame(() => void flow.fitView({ padding: 0.08 }));
+    requestAnimationFrame(() => void flow.fitView({ padding: 0.06 }));
   }, [view, diagram.layouts, flow]);
 
   /** Where every top-level node is drawn now. */

@@ -74,7 +74,7 @@ export function Diagram({ view, state, direction, toggleExpanded, onConnect, onM
           defaultEdgeOptions={{ type: "default" }}
         >
           <Background gap={20} color="#e0e4e8" />
-          <MiniMap<DiagramNode> pannable zoomable nodeColor={minimapColour} nodeStrokeColor="#37474f" nodeStrokeWidth={2} />
+          <MiniMap<DiagramNode> pannable zoomable style={{ width: 170, height: 120 }} nodeColor={minimapColour} nodeStrokeColor="#37474f" nodeStrokeWidth={2} />
           <Controls showInteractive={false} showFitView={false} />
         </ReactFlow>
       </div>

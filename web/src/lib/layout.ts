@@ -68,7 +68,9 @@ async function layoutLevel(shown: Shown, parent: string | null, direction: Direc
     } else {
       sizes.set(node.id, measures.size(node));
     }
-    children.push({ id: node.id, ...(sizes.get(node.id) as Size) });
+    // A tall frame shares its layer with small nodes: keep them at the layer's start, not its middle.
+    const alignment = direction === "DOWN" ? "TOP" : "LEFT";
+    children.push({ id: node.id, ...(sizes.get(node.id) as Size), layoutOptions: { "elk.alignment": alignment } });
   }
   // An edge is drawn between the members that hold its ends.
   const memberOf = (id: string): string | null => {
