@@ -14,8 +14,9 @@ from sceml.validation import REGISTRY, iter_diagnostics
 HERE = Path(__file__).resolve().parent
 CORPUS = HERE / "corpus"
 
-#: Rules no loadable file can break, each tested on an in-memory model in test_rules.py instead:
-#: io.load refuses duplicate module names (IDs) itself, and every node kind maps to OpenSCENARIO.
+#: Rules the corpus (validated without options) cannot show, each tested elsewhere: io.load
+#: refuses duplicate module names (IDs) itself, so M014 fires on models built in memory
+#: (test_rules.py); E003 needs an export profile or version (tests/cli/test_rules_fire.py).
 NOT_IN_CORPUS = {"SCEML-M014", "SCEML-E003"}
 
 

@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import sys
-import types
 from pathlib import Path
 
 import pytest
@@ -153,19 +151,13 @@ def test_duplicate_module_names_in_a_library_built_in_memory() -> None:
     assert codes(library.library) == {"SCEML-M014"}
 
 
-def test_kinds_without_an_openscenario_mapping(monkeypatch: pytest.MonkeyPatch) -> None:
-    fake = types.ModuleType("sceml.export.support")
-
-    def unsupported_reason(kind: str, version: str, profile: str = "generic") -> str | None:
-        return "not in 1.0" if (kind, version) == ("Overtake", "1.0") else None
-
-    fake.unsupported_reason = unsupported_reason  # type: ignore[attr-defined]
-    monkeypatch.setitem(sys.modules, "sceml.export.support", fake)
+def test_kinds_a_profile_cannot_export() -> None:
+    # Every kind maps in every version; the carla profile cannot express KeepVelocity.
     b, ego = scenario()
-    car = b.actor("Car", "car", start=lane(1, -1, 40.0))
-    b.chain(b.root, b.add("Overtake", ego, target=car, speed=12.0), b.end)
-    assert codes(b.scenario, osc_version="1.0") == {"SCEML-E003"}
-    assert codes(b.scenario, osc_version="1.3") == set()
+    b.chain(b.root, b.add("KeepVelocity", ego, duration=2.0), b.end)
+    assert codes(b.scenario, osc_profile="carla") == {"SCEML-E003"}
+    assert codes(b.scenario, osc_profile="carla", osc_version="1.0") == {"SCEML-E003"}
+    assert codes(b.scenario, osc_version="1.0") == set()
     assert codes(b.scenario) == set()
 
 

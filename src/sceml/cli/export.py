@@ -8,7 +8,7 @@ import click
 
 from ..errors import SceMLError
 from ..export import ExportError, export_to_file
-from ..export.support import PROFILES
+from ..export.support import PROFILES, default_version
 from ..export.versions import VERSIONS
 from ..export.writer import header_date
 from ..io import load_scenario
@@ -71,7 +71,7 @@ def export(
     the chosen version or profile cannot express are refused with their diagnostics (exit 1);
     the output is checked against the official XSD before it is written.
     """
-    osc_version = osc_version or ("1.0" if profile == "carla" else "1.3")
+    osc_version = osc_version or default_version(profile)
     document = load_scenario(file, allow=allow)
     try:
         export_to_file(

@@ -8,17 +8,21 @@ from pathlib import Path
 import click
 
 from ..errors import LoadError
+from ..export.support import PROFILES
 from ..io import load
 from ..report import FileReport, exit_code, render
+from ..schema import SUPPORTED_VERSIONS
 from ..validation import Limits, load_limits
 from ..validation import validate as validate_model
 from .common import SceMLCommand, allow_option, emit_report, file_progress, report_options
 
-OSC_VERSIONS = ("1.0", "1.1", "1.2", "1.3")
-
 
 def validate_file(
-    path: Path, limits: Limits, osc_version: str | None, allow: tuple[Path, ...] = ()
+    path: Path,
+    limits: Limits,
+    osc_version: str | None,
+    allow: tuple[Path, ...] = (),
+    osc_profile: str | None = None,
 ) -> FileReport:
     """Load and validate one file; an unreadable one is reported, not raised."""
     try:
@@ -27,7 +31,11 @@ def validate_file(
         where = f"line {error.line}: " if error.line else ""
         return FileReport(str(path), unreadable=where + error.message)
     diagnostics = validate_model(
-        document.root, document=document, limits=limits, osc_version=osc_version
+        document.root,
+        document=document,
+        limits=limits,
+        osc_version=osc_version,
+        osc_profile=osc_profile,
     )
     return FileReport(str(path), diagnostics)
 
@@ -43,10 +51,19 @@ def validate_file(
 )
 @click.option(
     "--osc-version",
-    type=click.Choice(OSC_VERSIONS),
+    type=click.Choice(SUPPORTED_VERSIONS),
     default=None,
     help="Also check that every node kind of a concrete scenario can be exported to this "
     "OpenSCENARIO version.",
+)
+@click.option(
+    "--profile",
+    "osc_profile",
+    type=click.Choice(PROFILES),
+    default=None,
+    help="Also check that every node kind of a concrete scenario can be exported with this "
+    "export profile (carla: what CARLA scenario_runner runs), at --osc-version or the "
+    "profile's default version.",
 )
 @allow_option
 def validate(
@@ -57,6 +74,7 @@ def validate(
     osc_version: str | None,
     output: Path | None,
     allow: tuple[Path, ...],
+    osc_profile: str | None,
 ) -> None:
     """Validate scenario and library FILES (.xmi) against the SceML rules.
 
@@ -66,6 +84,6 @@ def validate(
     """
     limits = load_limits(limits_file) if limits_file is not None else Limits()
     with file_progress(files, "validating") as todo:
-        reports = [validate_file(path, limits, osc_version, allow) for path in todo]
+        reports = [validate_file(path, limits, osc_version, allow, osc_profile) for path in todo]
     emit_report(render(reports, output_format, strict), output)
     sys.exit(exit_code(reports, strict))

@@ -21,6 +21,11 @@ CARLA_UNSUPPORTED = {
 }
 
 
+def default_version(profile: str = "generic") -> str:
+    """The version written when none is asked for: CARLA's for carla, else the newest."""
+    return CARLA_VERSION if profile == "carla" else VERSIONS[-1]
+
+
 def unsupported_reason(kind_name: str, version: str, profile: str = "generic") -> str | None:
     """Why `kind_name` cannot be exported to `version` under `profile`; None when it can."""
     if profile not in PROFILES:

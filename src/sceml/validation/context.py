@@ -68,6 +68,7 @@ class Context:
     document: Document | None
     limits: Limits
     osc_version: str | None = None
+    osc_profile: str | None = None
     flat_failure: str | None = None
     _memo: dict[object, object] = field(default_factory=dict)
     _definitions: dict[EObject, scm.ModuleDefinition | None] = field(default_factory=dict)

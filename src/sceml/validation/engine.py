@@ -25,6 +25,7 @@ def iter_diagnostics(
     document: Document | None = None,
     limits: Limits | None = None,
     osc_version: str | None = None,
+    osc_profile: str | None = None,
     registry: Registry = REGISTRY,
 ) -> Iterator[Diagnostic]:
     """Every diagnostic of a Scenario or Library, in one pass; never raises on a bad model.
@@ -32,7 +33,7 @@ def iter_diagnostics(
     Module definitions a scenario uses (in library files) are checked too, once each, and reported
     in their own file. A rule that fails unexpectedly becomes a SCEML-X000 diagnostic.
     """
-    context = Context(model, document, limits or Limits(), osc_version)
+    context = Context(model, document, limits or Limits(), osc_version, osc_profile)
     seen: set[tuple[str, str, str | None]] = set()
     for obj in _objects(model, context):
         for rule in registry.rules_for(obj.eClass):

@@ -236,7 +236,13 @@ def references_resolve(graph: scm.Graph, context: Context) -> Iterator[Finding]:
                 yield holder, f"reference {href!r} does not resolve: {reason}"
 
 
-@constraint("SCEML-M014", ERROR, "Library", "module names are unique within a library")
+@constraint(
+    "SCEML-M014",
+    ERROR,
+    "Library",
+    "module names are unique within a library built in memory (the builder API, the editor); "
+    "a library file with two modules of one name is refused when it is read",
+)
 def module_names_unique(library: scm.Library, context: Context) -> Iterator[Finding]:
     counts = Counter(str(module.name) for module in library.modules)
     for name, count in counts.items():

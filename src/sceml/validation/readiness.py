@@ -78,15 +78,21 @@ def _used_kinds(scenario: scm.Scenario, context: Context) -> dict[str, EObject]:
     "SCEML-E003",
     ERROR,
     "Scenario",
-    "with a target OpenSCENARIO version given, every node kind used has a mapping for it",
+    "with a target OpenSCENARIO version or export profile given, every node kind used can be "
+    "exported to it",
 )
 def kinds_exportable(scenario: scm.Scenario, context: Context) -> Iterator[Finding]:
-    if context.osc_version is None or context.level_of(scenario) != "concrete":
+    if context.osc_version is None and context.osc_profile is None:
+        return
+    if context.level_of(scenario) != "concrete":
         return
     # Imported late: the export package runs this validation before it exports.
-    from ..export.support import unsupported_reason
+    from ..export.support import default_version, unsupported_reason
 
+    profile = context.osc_profile or "generic"
+    version = context.osc_version or default_version(profile)
     for kind, node in _used_kinds(scenario, context).items():
-        reason = unsupported_reason(kind, context.osc_version)
+        reason = unsupported_reason(kind, version, profile)
         if reason:
-            yield node, f"{kind} cannot be exported to OpenSCENARIO {context.osc_version}: {reason}"
+            target = f"OpenSCENARIO {version} ({profile} profile)"
+            yield node, f"{kind} cannot be exported to {target}: {reason}"
