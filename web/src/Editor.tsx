@@ -69,13 +69,14 @@ export function Editor() {
 
   // The first layout of a document fits the view.
   const fittedFor = useRef<string | null>(null);
+  const laidOut = diagram.laidOut;
   useEffect(() => {
-    if (!view || diagram.layouts === 0) return;
-    const document = `${view.document.path}#${view.document.module ?? ""}`;
+    if (!laidOut) return;
+    const document = `${laidOut.document.path}#${laidOut.document.module ?? ""}`;
     if (fittedFor.current === document) return;
     fittedFor.current = document;
-    requestAnimationFrame(() => void flow.fitView({ padding: 0.06 }));
-  }, [view, diagram.layouts, flow]);
+    requestAnimationFrame(() => void flow.fitView({ padding: 0.06, maxZoom: 1.25 }));
+  }, [laidOut, flow]);
 
   /** Where every top-level node is drawn now. */
   const drawnPositions = useCallback((): Record<string, XY> => {
@@ -215,7 +216,7 @@ export function Editor() {
     [view, editable, arrange],
   );
 
-  const fit = useCallback(() => void flow.fitView({ padding: 0.08, duration: 200 }), [flow]);
+  const fit = useCallback(() => void flow.fitView({ padding: 0.06, maxZoom: 1.25, duration: 200 }), [flow]);
   const undo = useCallback(() => void (editable && view?.undo && server.run(api.undo)), [editable, view, server]);
   const redo = useCallback(() => void (editable && view?.redo && server.run(api.redo)), [editable, view, server]);
   const save = useCallback(() => {
@@ -258,7 +259,21 @@ export function Editor() {
     [server],
   );
 
-  const openDefinition = useCallback((node: ViewNode) => void server.run(() => api.openDefinition(node.id)), [server]);
+  // Opening another file with unsaved changes is refused (409): offer to save them first.
+  const openDefinition = useCallback(
+    (node: ViewNode) =>
+      void server.run(async () => {
+        try {
+          return await api.openDefinition(node.id);
+        } catch (caught) {
+          if (!(caught instanceof ApiError) || caught.status !== 409) throw caught;
+          if (!window.confirm(`${caught.message}\n\nSave the changes and open ${node.title}?`)) throw caught;
+          await api.save();
+          return api.openDefinition(node.id);
+        }
+      }),
+    [server],
+  );
 
   useShortcuts({
     undo,

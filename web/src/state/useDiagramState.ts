@@ -16,8 +16,8 @@ export interface DiagramState {
   setEdges: React.Dispatch<React.SetStateAction<DiagramEdge[]>>;
   onNodesChange: (changes: NodeChange<DiagramNode>[]) => void;
   onEdgesChange: (changes: EdgeChange<DiagramEdge>[]) => void;
-  /** How many layouts have been applied (the first one fits the view). */
-  layouts: number;
+  /** The view the current nodes were laid out from (a new document's first one fits the view). */
+  laidOut: View | null;
   /** Where ELK puts every top-level node, ignoring saved positions (Arrange). */
   arrange: (direction: Direction) => Promise<Record<string, XY>>;
   /** Select these nodes once the next view is laid out (what an op created). */
@@ -31,7 +31,7 @@ export function useDiagramState(
 ): DiagramState {
   const [nodes, setNodes] = useState<DiagramNode[]>([]);
   const [edges, setEdges] = useState<DiagramEdge[]>([]);
-  const [layouts, setLayouts] = useState(0);
+  const [laidOut, setLaidOut] = useState<View | null>(null);
   const selection = useRef<{ nodes: Set<string>; edges: Set<string> }>({ nodes: new Set(), edges: new Set() });
   const pending = useRef<Set<string> | null>(null);
   const selectNext = useCallback((ids: string[]) => {
@@ -57,7 +57,7 @@ export function useDiagramState(
       const selectedEdges = chosen ? new Set<string>() : selection.current.edges;
       setNodes(flowNodes(shown, layout, view.nodes, selectedNodes, view.readOnly));
       setEdges(flowEdges(shown, selectedEdges, view.readOnly));
-      setLayouts((count) => count + 1);
+      setLaidOut(view);
     });
     return () => {
       cancelled = true;
@@ -90,5 +90,5 @@ export function useDiagramState(
     [view, expanded],
   );
 
-  return { nodes, edges, setNodes, setEdges, onNodesChange, onEdgesChange, layouts, arrange, selectNext };
+  return { nodes, edges, setNodes, setEdges, onNodesChange, onEdgesChange, laidOut, arrange, selectNext };
 }
