@@ -63,7 +63,7 @@ WRITERS: dict[str, Callable[[Path], list[str]]] = {
     "check-xosc": lambda out: [
         "check-xosc",
         "--no-quality-checker",
-        str(Path(__file__).resolve().parents[1] / "export/golden/uis1-1.3.xosc"),
+        str(Path(__file__).resolve().parents[1] / "export/golden/uis1-1.3-generic.xosc"),
         "-o",
         str(out / "report.txt"),
     ],
