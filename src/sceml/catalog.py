@@ -78,30 +78,39 @@ def class_name(kind: EObject | EClass | type | str) -> str:
     return str(kind.eClass.name)
 
 
-@cache
+# Every question is cached by metaclass name, never by the object asked about: a cache keyed by
+# model objects would keep every scenario ever exported or drawn alive.
+
+
 def category(kind: EObject | EClass | type | str) -> str | None:
     """`longitudinal`, `lateral`, `composite` or `condition` for action nodes, else None."""
-    return _inherited_annotation(class_name(kind), NODE_ANNOTATION).get("category")
+    return _node_details(class_name(kind)).get("category")
 
 
-@cache
 def complexity(kind: EObject | EClass | type | str) -> int | None:
     """The read-only complexity level the paper shows in a node's properties."""
-    value = _inherited_annotation(class_name(kind), NODE_ANNOTATION).get("complexity")
+    value = _node_details(class_name(kind)).get("complexity")
     return int(value) if value is not None else None
 
 
-@cache
 def needs_target(kind: EObject | EClass | type | str) -> bool:
     """Whether the node kind needs a target actor besides its reference actor."""
-    details = _inherited_annotation(class_name(kind), NODE_ANNOTATION)
-    return details.get("needsTarget") == "true"
+    return _node_details(class_name(kind)).get("needsTarget") == "true"
 
 
 @cache
+def _node_details(name: str) -> dict[str, str]:
+    return _inherited_annotation(name, NODE_ANNOTATION)
+
+
 def parameters(kind: EObject | EClass | type | str) -> tuple[ParameterSpec, ...]:
     """The numeric parameters of a kind, inherited ones first, in metamodel order."""
-    eclass = _ecore_classes()[class_name(kind)]
+    return _parameters(class_name(kind))
+
+
+@cache
+def _parameters(name: str) -> tuple[ParameterSpec, ...]:
+    eclass = _ecore_classes()[name]
     specs = []
     for feature in eclass.eAllStructuralFeatures():
         if not isinstance(feature, EReference) or feature.eType.name != "ParameterValue":
@@ -129,11 +138,15 @@ def parameter(kind: EObject | EClass | type | str, name: str) -> ParameterSpec:
     raise KeyError(f"{class_name(kind)} has no parameter {name!r}")
 
 
-@cache
 def actor_dimensions(kind: EObject | EClass | type | str) -> dict[str, float]:
     """Default bounding box (length, width, height in m) of an actor kind."""
-    details = _inherited_annotation(class_name(kind), ACTOR_ANNOTATION)
-    return {key: float(value) for key, value in details.items()}
+    return dict(_actor_dimensions(class_name(kind)))
+
+
+@cache
+def _actor_dimensions(name: str) -> tuple[tuple[str, float], ...]:
+    details = _inherited_annotation(name, ACTOR_ANNOTATION)
+    return tuple((key, float(value)) for key, value in details.items())
 
 
 def concrete_subclasses(base: str) -> tuple[type, ...]:
