@@ -15,7 +15,7 @@ from ..levels.apply import relocate_map
 from ..levels.checks import validate_model
 from ..levels.concretize import concretize as make_concrete
 from ..levels.concretize import parse_assignment
-from .common import Parsed, SceMLCommand, allow_option
+from .common import Parsed, SceMLCommand, allow_option, echo_diagnostics
 
 
 @click.command(cls=SceMLCommand)
@@ -58,12 +58,7 @@ def concretize(
 def report_validation(model: scm.Scenario, output: Path) -> None:
     """Show the validation findings of a written model; exit 1 when there are errors."""
     found = validate_model(model)
-    for diagnostic in found:
-        click.echo(
-            f"{output}: {diagnostic.severity}[{diagnostic.code}] {diagnostic.message}"
-            + (f" ({diagnostic.path})" if diagnostic.path else ""),
-            err=True,
-        )
+    echo_diagnostics(found, file=output)
     if any(d.severity >= Severity.ERROR for d in found):
         raise click.exceptions.Exit(1)
 

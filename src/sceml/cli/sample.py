@@ -24,7 +24,7 @@ from ..levels.sampling import STRATEGIES, plan_for, values_at
 from ..levels.space import parameter_space
 from ..schema import SUPPORTED_VERSIONS
 from ..validation import validate
-from .common import SceMLCommand, allow_option
+from .common import SceMLCommand, allow_option, echo_diagnostics
 
 _FORMATS = {"xmi": ("xmi",), "xosc": ("xosc",), "both": ("xosc", "xmi")}
 
@@ -159,11 +159,7 @@ def _require_valid(document: io.Document, file: Path) -> None:
     # Samples only change numbers: rules about structure, actors and modules are checked once here.
     found = validate(document.root, document=document)
     errors = [d for d in found if d.severity >= Severity.ERROR]
-    for diagnostic in errors:
-        where = f"{diagnostic.file or file}" + (f":{diagnostic.line}" if diagnostic.line else "")
-        click.echo(
-            f"{where}: {diagnostic.severity}[{diagnostic.code}] {diagnostic.message}", err=True
-        )
+    echo_diagnostics(errors, document, file)
     if errors:
         raise click.exceptions.Exit(1)
 
