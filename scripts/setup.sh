@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Set up everything SceML and its test suite need on a fresh Debian/Ubuntu machine:
-# system packages (Graphviz, a JDK with Eclipse EMF, Chromium), a virtualenv in .venv, and SceML
-# installed into it in editable mode with its development extras. Safe to run again.
+# system packages (Graphviz, a JDK with Eclipse EMF, Chromium, Node.js), a virtualenv in .venv, SceML
+# installed into it in editable mode with its development extras, and the editor's browser bundle.
+# Safe to run again.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -18,9 +19,20 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
 fi
 
+# The editor's browser page is built from web/ with Node and npm; machines that already have a
+# Node (for example from NodeSource, which bundles npm) keep it.
+if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
+  sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  echo "setup: installing nodejs npm"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq nodejs npm >/dev/null
+fi
+
 python=${PYTHON:-python3}
 "$python" -c 'import sys; sys.exit(sys.version_info < (3, 11))' \
   || { echo "setup: SceML needs Python >= 3.11 (set PYTHON=...)" >&2; exit 2; }
 [ -x .venv/bin/python ] || "$python" -m venv .venv
 .venv/bin/python -m pip install -q --disable-pip-version-check -e '.[dev]'
+bash scripts/build-web.sh
 echo "setup: ready (.venv/bin/sceml)"

@@ -24,6 +24,9 @@ ACTOR_DEFAULT = "actor"
 
 CATEGORIES = ("longitudinal", "lateral", "composite", "condition")
 
+#: Features that only say how a node is drawn (the editor's layout); never a parameter or a meaning.
+NOTATION_FEATURES = frozenset({"diagramPosition"})
+
 
 @dataclass(frozen=True)
 class ParameterSpec:

@@ -7,8 +7,16 @@ import argparse
 
 from playwright.sync_api import sync_playwright
 
-ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-        "--disable-background-networking", "--disable-component-update", "--disable-sync"]
+ARGS = [
+    "--headless",
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-quic",
+    "--no-first-run",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+]
 
 
 def main() -> None:
@@ -26,13 +34,19 @@ def main() -> None:
         page.on("console", lambda m: messages.append(f"{m.type}: {m.text}"))
         page.on("pageerror", lambda e: messages.append(f"pageerror: {e}"))
         page.goto(args.url)
-        page.get_by_role("application", name="Diagram").locator(".react-flow__node").first.wait_for()
+        page.get_by_role("application", name="Diagram").locator(
+            ".react-flow__node"
+        ).first.wait_for()
         page.wait_for_timeout(600)
         for name in args.collapse:
-            page.locator(f'.react-flow__node[aria-label="{name}"]').get_by_role("button", name="Collapse").click()
+            page.locator(f'.react-flow__node[aria-label="{name}"]').get_by_role(
+                "button", name="Collapse"
+            ).click()
             page.wait_for_timeout(600)
         for name in args.expand:
-            page.locator(f'.react-flow__node[aria-label="{name}"]').get_by_role("button", name="Expand").click()
+            page.locator(f'.react-flow__node[aria-label="{name}"]').get_by_role(
+                "button", name="Expand"
+            ).click()
             page.wait_for_timeout(600)
         if args.expand or args.collapse:
             page.get_by_role("button", name="Fit view").click()

@@ -52,8 +52,13 @@ class Handler(SimpleHTTPRequestHandler):
         elif self.path == "/api/copy":
             return self.answer({"copied": len(body.get("nodes", []))})
         elif self.path == "/api/export":
-            return self.answer({"error": "Export refused: the scenario has errors.",
-                                "diagnostics": VIEW["diagnostics"]}, 422)
+            return self.answer(
+                {
+                    "error": "Export refused: the scenario has errors.",
+                    "diagnostics": VIEW["diagnostics"],
+                },
+                422,
+            )
         VIEW["version"] += 1
         return self.answer(VIEW)
 

@@ -7,8 +7,7 @@ import json
 import sys
 import urllib.request
 
-from playwright.sync_api import expect, sync_playwright
-
+from playwright.sync_api import sync_playwright
 from screenshot import ARGS
 
 URL = sys.argv[1]
@@ -36,11 +35,18 @@ with sync_playwright() as p:
     print("status:", status.inner_text())
 
     # add from the palette (click = middle of the view)
-    page.get_by_role("region", name="Palette").get_by_role("button", name="Decelerate", exact=True).click()
+    page.get_by_role("region", name="Palette").get_by_role(
+        "button", name="Decelerate", exact=True
+    ).click()
     page.wait_for_timeout(800)
     v = view()
     added = [n for n in v["nodes"] if n["kind"] == "Decelerate"]
-    print("added:", [n["name"] for n in added], "all positioned:", all(n["position"] for n in v["nodes"] if n["parent"] is None))
+    print(
+        "added:",
+        [n["name"] for n in added],
+        "all positioned:",
+        all(n["position"] for n in v["nodes"] if n["parent"] is None),
+    )
     print("title:", page.title(), "| status:", status.inner_text())
     props = page.get_by_role("region", name="Properties")
     print("properties name:", props.get_by_label("Name", exact=True).input_value())
@@ -50,7 +56,10 @@ with sync_playwright() as p:
     speed.fill("12.5")
     speed.press("Enter")
     page.wait_for_timeout(500)
-    print("targetSpeed:", [f["value"] for f in node_named("Decelerate_1")["fields"] if f["name"] == "targetSpeed"])
+    print(
+        "targetSpeed:",
+        [f["value"] for f in node_named("Decelerate_1")["fields"] if f["name"] == "targetSpeed"],
+    )
     props.get_by_label("Reference actor", exact=True).select_option("bike")
     page.wait_for_timeout(500)
     print("lines:", node_named("Decelerate_1")["lines"])
@@ -61,12 +70,21 @@ with sync_playwright() as p:
     src.drag_to(dst)
     page.wait_for_timeout(600)
     ids = {n["name"]: n["id"] for n in view()["nodes"]}
-    print("connected:", any(e["source"] == ids["Cross_1"] and e["target"] == ids["Decelerate_1"] for e in view()["edges"]))
+    print(
+        "connected:",
+        any(
+            e["source"] == ids["Cross_1"] and e["target"] == ids["Decelerate_1"]
+            for e in view()["edges"]
+        ),
+    )
 
     # undo, redo
     page.get_by_role("button", name="Undo").click()
     page.wait_for_timeout(400)
-    print("after undo edges from Cross_1:", [e["target"] for e in view()["edges"] if e["source"] == ids["Cross_1"]])
+    print(
+        "after undo edges from Cross_1:",
+        [e["target"] for e in view()["edges"] if e["source"] == ids["Cross_1"]],
+    )
     page.keyboard.press("Control+Shift+Z")
     page.wait_for_timeout(400)
     print("after redo:", [e["target"] for e in view()["edges"] if e["source"] == ids["Cross_1"]])
@@ -113,9 +131,17 @@ with sync_playwright() as p:
     if problems.count():
         problems.first.click()
         page.wait_for_timeout(400)
-        print("selected after problem click:", diagram.locator(".react-flow__node.selected").get_attribute("aria-label"))
+        print(
+            "selected after problem click:",
+            diagram.locator(".react-flow__node.selected").get_attribute("aria-label"),
+        )
     badges = diagram.get_by_role("img", name="problems")
-    print("badges:", badges.count(), "data-severity nodes:", diagram.locator(".react-flow__node[data-severity]").count())
+    print(
+        "badges:",
+        badges.count(),
+        "data-severity nodes:",
+        diagram.locator(".react-flow__node[data-severity]").count(),
+    )
 
     # save
     page.keyboard.press("Control+s")

@@ -8,7 +8,6 @@ import sys
 import urllib.request
 
 from playwright.sync_api import sync_playwright
-
 from screenshot import ARGS
 
 URL = sys.argv[1]
@@ -30,7 +29,9 @@ with sync_playwright() as p:
     page.wait_for_timeout(500)
 
     # drag a module from the palette onto the canvas
-    item = page.get_by_role("region", name="Palette").get_by_role("button", name="CrossingManeuver", exact=True)
+    item = page.get_by_role("region", name="Palette").get_by_role(
+        "button", name="CrossingManeuver", exact=True
+    )
     item.drag_to(diagram, target_position={"x": 150, "y": 200})
     dialog = page.get_by_role("dialog", name="Use CrossingManeuver")
     print("dialog:", dialog.count())
@@ -50,8 +51,9 @@ with sync_playwright() as p:
         print("bindings:", use["module"]["bindings"])
 
     # drag an action node palette item
-    page.get_by_role("region", name="Palette").get_by_role("button", name="Stop", exact=True).drag_to(
-        diagram, target_position={"x": 700, "y": 100})
+    page.get_by_role("region", name="Palette").get_by_role(
+        "button", name="Stop", exact=True
+    ).drag_to(diagram, target_position={"x": 700, "y": 100})
     page.wait_for_timeout(700)
     stop = next((n for n in view()["nodes"] if n["kind"] == "Stop"), None)
     print("stop at:", stop and stop["position"])
@@ -73,7 +75,11 @@ with sync_playwright() as p:
     print("after arrange undo:", view()["undo"])
     page.get_by_label("Layout direction").select_option(label="Left to right")
     page.wait_for_timeout(1000)
-    print("handles:", diagram.locator(".react-flow__handle-left").count(), diagram.locator(".react-flow__handle-right").count())
+    print(
+        "handles:",
+        diagram.locator(".react-flow__handle-left").count(),
+        diagram.locator(".react-flow__handle-right").count(),
+    )
     page.get_by_role("button", name="Fit view").click()
     page.wait_for_timeout(500)
     page.screenshot(path="/tmp/smoke2-lr.png")
@@ -100,7 +106,9 @@ with sync_playwright() as p:
 
     # extract module dialog exists
     page.get_by_role("button", name="Open", exact=True).click()
-    print("open dialog:", page.get_by_role("dialog", name="Open").get_by_label("Path").input_value())
+    print(
+        "open dialog:", page.get_by_role("dialog", name="Open").get_by_label("Path").input_value()
+    )
     page.keyboard.press("Escape")
     print("page errors:", errors)
     browser.close()

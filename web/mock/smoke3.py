@@ -8,7 +8,6 @@ import sys
 import urllib.request
 
 from playwright.sync_api import sync_playwright
-
 from screenshot import ARGS
 
 URL = sys.argv[1]
@@ -38,7 +37,14 @@ with sync_playwright() as p:
     dialog.get_by_role("button", name="Extract module").click()
     page.wait_for_timeout(1500)
     v = view()
-    print("uses:", [(n["name"], n["title"]) for n in v["nodes"] if n["kind"] == "ModuleUse" and n["parent"] is None])
+    print(
+        "uses:",
+        [
+            (n["name"], n["title"])
+            for n in v["nodes"]
+            if n["kind"] == "ModuleUse" and n["parent"] is None
+        ],
+    )
     alert = page.get_by_role("alert")
     print("alert:", alert.inner_text() if alert.count() else None)
     use = diagram.locator(".react-flow__node.selected")

@@ -15,7 +15,7 @@ from ..traversal import features
 from .values import position_to_json, value_to_json
 
 #: Features no panel edits: graph structure, notation, and what other fields already show.
-_HIDDEN = {"incoming", "outgoing", "diagramPosition", "actors", "environment", "bindings"}
+_HIDDEN = {"incoming", "outgoing", "actors", "environment", "bindings", *catalog.NOTATION_FEATURES}
 _HIDDEN_BY_CLASS = {"ModuleUse": {"definition", "overrides"}}
 #: Where a feature name reads badly as words: `isEgo` is shown as "Ego".
 _LABELS = {"isEgo": "Ego", "h": "Heading", "roadId": "Road", "laneId": "Lane"}

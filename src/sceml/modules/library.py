@@ -19,7 +19,7 @@ from .errors import FlattenError, UnknownModuleError
 from .resolve import definition_key, location, resolved_definition
 
 #: Features every node has, shown in their own columns rather than among its parameters.
-_OWN_COLUMNS = {"name", "description", "referenceActor", "targetActor"}
+_OWN_COLUMNS = {"name", "description", "referenceActor", "targetActor", *catalog.NOTATION_FEATURES}
 
 
 @dataclass

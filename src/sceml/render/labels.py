@@ -22,7 +22,14 @@ from ..graph import actors, root_node
 from ..modules.flatten import resolved_definition
 
 #: Features every action node has that labels show in other ways, or never.
-_NOT_PARAMETERS = {"name", "referenceActor", "targetActor", "incoming", "outgoing"}
+_NOT_PARAMETERS = {
+    "name",
+    "referenceActor",
+    "targetActor",
+    "incoming",
+    "outgoing",
+    *catalog.NOTATION_FEATURES,
+}
 
 
 @dataclass(frozen=True)
