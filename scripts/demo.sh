@@ -15,3 +15,4 @@ run .venv/bin/sceml render examples/uis1-concrete.xmi -o out/uis1.svg
 run .venv/bin/sceml render examples/uis1-concrete.xmi -o out/uis1-bt.png --view bt
 run .venv/bin/sceml report examples/uis1-concrete.xmi -o out/uis1-report.html
 echo "done: see out/ (uis1.xosc, uis1.svg, uis1-bt.png, uis1-report.html)"
+echo "draw and edit it in the browser: .venv/bin/sceml edit examples/uis1-concrete.xmi"
