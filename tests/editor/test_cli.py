@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import re
+import socket
 from pathlib import Path
 
 import pytest
@@ -43,16 +45,37 @@ def test_a_run_prints_the_url_and_keeps_unsaved_work(
         original_init(self, *args, **kwargs)  # type: ignore[arg-type]
         sessions.append(self)
 
-    def run(self: object) -> None:
+    def run(self: object, sockets: object = None) -> None:
         # Stands for a user who edits and then presses Ctrl-C without saving.
         sessions[0].apply([{"op": "add_node", "kind": "Stop"}])
 
     monkeypatch.setattr(EditorSession, "__init__", remember)
     monkeypatch.setattr(server_module.uvicorn.Server, "run", run)
     target = examples_copy / "uis1-concrete.xmi"
-    result = CliRunner().invoke(cli, ["edit", str(target), "--no-browser", "--port", "8799"])
+    result = CliRunner().invoke(cli, ["edit", str(target), "--no-browser"])
     assert result.exit_code == 0, result.output
-    assert "http://127.0.0.1:8799/" in result.output
+    assert re.search(r"http://127\.0\.0\.1:\d+/", result.output)
     recovered = examples_copy / ".uis1-concrete.recovered.xmi"
     assert recovered.exists() and str(recovered) in result.output
     assert b"Stop_1" in recovered.read_bytes() and b"Stop_1" not in target.read_bytes()
+
+
+def test_a_new_file_in_a_missing_folder_is_refused_before_any_drawing(tmp_path: Path) -> None:
+    result = CliRunner().invoke(cli, ["edit", str(tmp_path / "nowhere" / "a.xmi"), "--no-browser"])
+    assert result.exit_code == 2 and "does not exist" in result.output
+    result = CliRunner().invoke(cli, ["edit", str(tmp_path / "a.xmi"), "--read-only"])
+    assert result.exit_code == 2 and "nothing to review" in result.output
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_busy_port_is_a_usage_error(examples_copy: Path) -> None:
+    with socket.socket() as taken:
+        taken.bind(("127.0.0.1", 0))
+        taken.listen()
+        port = taken.getsockname()[1]
+        target = examples_copy / "uis1-concrete.xmi"
+        args = ["edit", str(target), "--no-browser", "--port", str(port)]
+        result = CliRunner().invoke(cli, args)
+    assert result.exit_code == 2
+    assert f"port {port} on 127.0.0.1 is in use" in result.output
+    assert "http://" not in result.output  # nothing announced that would not answer

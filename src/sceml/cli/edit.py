@@ -55,6 +55,12 @@ def edit(
     from ..editor.server import serve
 
     target = file or Path("untitled.xmi")
+    if not target.exists():
+        # Refuse now rather than at the first save, after the user has drawn a whole scenario.
+        if read_only:
+            raise click.UsageError(f"{target} does not exist: there is nothing to review")
+        if not target.resolve().parent.is_dir():
+            raise click.UsageError(f"cannot create {target}: folder {target.parent} does not exist")
     options = SessionOptions(read_only=read_only, level=level, libraries=list(libraries))
     session = EditorSession(options)
     session.open(target, module=module)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import contextlib
+import errno
 import socket
 import webbrowser
 from collections.abc import Callable
@@ -11,17 +12,31 @@ from pathlib import Path
 
 import uvicorn
 
+from ..errors import ArgumentError
 from .app import create_app
 from .session import EditorSession
 
 HOST = "127.0.0.1"
 
 
-def free_port() -> int:
-    """A TCP port on 127.0.0.1 that nobody listens on right now."""
-    with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as probe:
-        probe.bind((HOST, 0))
-        return int(probe.getsockname()[1])
+def listening_socket(port: int | None) -> socket.socket:
+    """A socket bound to 127.0.0.1 (`port`, or a free one), before any URL is announced.
+
+    Binding here, not in uvicorn, means a busy port is a clear error and a free port cannot be
+    taken by someone else between choosing it and serving on it.
+    """
+    sock = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
+    try:
+        sock.bind((HOST, port or 0))
+    except OSError as error:
+        sock.close()
+        reason = (
+            "is in use" if error.errno == errno.EADDRINUSE else f"cannot be used ({error.strerror})"
+        )
+        raise ArgumentError(
+            f"port {port} on {HOST} {reason}; choose another with --port, or leave --port out"
+        ) from None
+    return sock
 
 
 @dataclass
@@ -40,14 +55,14 @@ def serve(
     announce: Callable[[str], None] = lambda url: None,
 ) -> ServeResult:
     """Serve `session` until Ctrl-C; unsaved changes are then written to a recovery copy."""
-    chosen = port or free_port()
-    url = f"http://{HOST}:{chosen}/"
-    config = uvicorn.Config(create_app(session), host=HOST, port=chosen, log_level="warning")
+    sock = listening_socket(port)
+    url = f"http://{HOST}:{sock.getsockname()[1]}/"
+    config = uvicorn.Config(create_app(session), log_level="warning")
     server = uvicorn.Server(config)
     announce(url)
     if open_browser:
         webbrowser.open(url)
     # uvicorn handles the first Ctrl-C itself; a second one would land here.
-    with contextlib.suppress(KeyboardInterrupt):
-        server.run()
+    with contextlib.suppress(KeyboardInterrupt), sock:
+        server.run(sockets=[sock])
     return ServeResult(url, session.recover())
