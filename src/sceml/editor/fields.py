@@ -16,6 +16,8 @@ from .values import position_to_json, value_to_json
 
 #: Features no panel edits: graph structure, notation, and what other fields already show.
 _HIDDEN = {"incoming", "outgoing", "actors", "environment", "bindings", *catalog.NOTATION_FEATURES}
+#: Fields every panel shows first, in this order.
+_FIRST = {"name": 0, "referenceActor": 1, "targetActor": 2}
 _HIDDEN_BY_CLASS = {"ModuleUse": {"definition", "overrides"}}
 #: Where a feature name reads badly as words: `isEgo` is shown as "Ego".
 _LABELS = {"isEgo": "Ego", "h": "Heading", "roadId": "Road", "laneId": "Lane"}
@@ -114,8 +116,9 @@ def _features(owner: EObject) -> Iterator[EStructuralFeature]:
 def node_fields(node: EObject) -> list[dict[str, Any]]:
     """The Fields of a graph element: name, actors, then its own features in metamodel order."""
     fields = []
-    # The name first, as every panel shows it; the rest in metamodel order.
-    ordered = sorted(_features(node), key=lambda feature: feature.name != "name")
+    # The name first, as every panel shows it, then who performs the node; the rest in
+    # metamodel order (a stable sort keeps it).
+    ordered = sorted(_features(node), key=lambda feature: _FIRST.get(feature.name, len(_FIRST)))
     for feature in ordered:
         if feature.name == "targetActor" and not catalog.needs_target(node):
             continue

@@ -86,6 +86,10 @@ class EditorSession:
 
     def _new_scenario(self, path: Path) -> io.Document:
         builder = ScenarioBuilder(path.stem, level=self.options.level)
+        # Root above End with room between: the first picture of a new scenario, instead of
+        # two unconnected nodes that automatic layout would pack side by side.
+        builder.root.diagramPosition = scm.DiagramPosition(x=0.0, y=0.0)
+        builder.end.diagramPosition = scm.DiagramPosition(x=70.0, y=480.0)
         resource_set = io.new_resource_set(io.reading_roots(path))
         resource = resource_set.create_resource(URI(str(path)))
         resource.append(builder.scenario)
