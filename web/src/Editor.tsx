@@ -13,6 +13,7 @@ import { Properties } from "./panels/Properties";
 import { Toolbar } from "./panels/Toolbar";
 import { useDiagramState } from "./state/useDiagramState";
 import { useExpanded } from "./state/useExpanded";
+import { freeSpot } from "./lib/placement";
 import { useServer } from "./state/useServer";
 import { useShortcuts } from "./state/useShortcuts";
 import type { Diagnostic, Op, PaletteItem, View, ViewNode, XY } from "./types";
@@ -191,11 +192,19 @@ export function Editor() {
     (item: PaletteItem, at?: XY) => {
       if (!editable) return;
       const where = at ?? centre();
-      const position = { x: Math.round(where.x - 60), y: Math.round(where.y - 20) };
+      let position = { x: Math.round(where.x - 60), y: Math.round(where.y - 20) };
+      if (!at) {
+        // A click adds in the middle of the view; never on top of a node already there.
+        const taken = flow
+          .getNodes()
+          .filter((node) => !node.parentId)
+          .map((node) => ({ ...node.position, width: node.measured?.width ?? 0, height: node.measured?.height ?? 0 }));
+        position = freeSpot({ ...position, width: 160, height: 70 }, taken);
+      }
       if (item.module) setDialog({ type: "use", item, position });
       else void edit([{ op: "add_node", kind: item.kind, position }], `Add ${item.label}`);
     },
-    [editable, centre, edit],
+    [editable, centre, edit, flow],
   );
 
   const arrange = useCallback(
