@@ -254,3 +254,101 @@ def test_build_uis1_with_mouse_and_keyboard(
     errors = [d for d in validate(document.root) if d.severity is Severity.ERROR]
     assert errors == []
     assert scenario_form(target) == scenario_form(EXAMPLES / "uis1-concrete.xmi")
+
+
+def test_place_crossing_maneuver_for_uis2(page: Page, editor: object, examples_copy: Path) -> None:
+    target = examples_copy / "uis2-concrete.xmi"
+    diagram = open_editor(page, editor(target))
+    props = page.get_by_role("region", name="Properties")
+    old = node(page, "CrossingManeuver_1")
+    box, frame = old.bounding_box(), diagram.bounding_box()
+    spot = {"x": box["x"] - frame["x"] + 20, "y": box["y"] - frame["y"] + 20}
+    old.click()
+    with ops_answer(page):
+        page.keyboard.press("Delete")
+    expect(old).to_have_count(0)
+
+    item = page.get_by_role("region", name="Palette").get_by_role(
+        "button", name="CrossingManeuver", exact=True
+    )
+    item.drag_to(diagram, target_position=spot)
+    dialog = page.get_by_role("dialog", name="Use CrossingManeuver")
+    dialog.get_by_label("crosser", exact=True).select_option("pedestrian")
+    dialog.get_by_label("trigger", exact=True).select_option("car")
+    with ops_answer(page):
+        dialog.get_by_role("button", name="Add", exact=True).click()
+    expect(dialog).to_have_count(0)
+    expect(node(page, "CrossingManeuver_1")).to_be_visible()
+    expect(props.get_by_label("Name", exact=True)).to_have_value("CrossingManeuver_1")
+    expect(props.get_by_label("crosser", exact=True)).to_have_value("pedestrian")
+    expect(props.get_by_label("trigger", exact=True)).to_have_value("car")
+    overrides = {
+        "triggerRadius": "15",
+        "crossingSpeed": "1.5",
+        "destinationX": "-10",
+        "destinationY": "4.5",
+        "destinationHeading": "1.570796",
+    }
+    for name, text in overrides.items():
+        commit(page, props.get_by_label(name, exact=True), text)
+    connect(page, "Root", "CrossingManeuver_1")
+    connect(page, "CrossingManeuver_1", "End")
+    save(page)
+
+    use = next(n for n in io.load(target).root.nodes if n.name == "CrossingManeuver_1")
+    assert {b.role: b.actor.name for b in use.bindings} == {
+        "crosser": "pedestrian",
+        "trigger": "car",
+    }
+    assert {o.parameter: o.value.value for o in use.overrides} == {
+        name: float(text) for name, text in overrides.items()
+    }
+    errors = [d for d in validate(io.load(target).root) if d.severity is Severity.ERROR]
+    assert errors == []
+    assert scenario_form(target) == scenario_form(EXAMPLES / "uis2-concrete.xmi")
+
+
+def test_live_validation_after_deleting_a_flow(
+    page: Page, editor: object, examples_copy: Path
+) -> None:
+    diagram = open_editor(page, editor(examples_copy / "uis1-concrete.xmi"))
+    turn = node(page, "TurnRight_1")
+    expect(turn).not_to_have_attribute("data-severity", re.compile(".*"))
+    source = node(page, "Accelerate_1").get_attribute("data-id")
+    edge = diagram.locator(
+        f'.react-flow__edge[aria-label="Edge from {source} to {turn.get_attribute("data-id")}"]'
+    )
+    edge.click()
+    page.keyboard.press("Delete")
+    expect(turn).to_have_attribute("data-severity", "error", timeout=1000)
+    problems = page.get_by_role("region", name="Problems")
+    problem = problems.get_by_role("button", name=re.compile(r"^SCEML-\S+ .*'TurnRight_1'"))
+    expect(problem.first).to_be_visible(timeout=1000)
+    problem.first.click()
+    expect(turn).to_have_class(re.compile(r"\bselected\b"))
+    page.keyboard.press("Control+z")
+    expect(turn).not_to_have_attribute("data-severity", re.compile(".*"))
+    expect(problem).to_have_count(0)
+    expect(edge).to_have_count(1)
+
+
+def test_read_only_mode(page: Page, editor: object, examples_copy: Path) -> None:
+    target = examples_copy / "uis1-concrete.xmi"
+    before = target.read_bytes()
+    open_editor(page, editor(target, "--read-only"))
+    expect(page.get_by_role("region", name="Palette")).to_have_count(0)
+    accelerate = node(page, "Accelerate_1")
+    accelerate.click()
+    props = page.get_by_role("region", name="Properties")
+    expect(props.get_by_label("Name", exact=True)).to_be_disabled()
+    expect(props.get_by_label("Target speed", exact=True)).to_be_disabled()
+    expect(props.get_by_label("Reference actor", exact=True)).to_be_disabled()
+    expect(page.get_by_role("button", name="Delete", exact=True)).to_be_disabled()
+    expect(page.get_by_role("button", name="Save", exact=True)).to_be_disabled()
+    page.keyboard.press("Delete")
+    page.keyboard.press("Control+s")
+    expect(accelerate).to_be_visible()
+    expect(page.get_by_role("toolbar", name="Editor").get_by_role("status")).to_contain_text(
+        re.compile(r"^Saved")
+    )
+    assert target.read_bytes() == before
