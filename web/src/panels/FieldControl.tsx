@@ -81,12 +81,13 @@ export function FieldControl({ field, context, onSend }: Props) {
   }
 }
 
-/** The fields of one object, each re-created when the server's value changes. */
+/** The fields of one object. Each control adopts the server's new value itself, so a field the
+ * user is typing in is never re-created under the cursor. */
 export function FieldList({ owner, fields, context, onSend }: { owner: string; fields: Field[]; context: FieldContext; onSend: Props["onSend"] }) {
   return (
     <>
       {fields.map((field) => (
-        <FieldControl key={`${owner}:${field.name}:${JSON.stringify(field.value)}`} field={field} context={context} onSend={onSend} />
+        <FieldControl key={`${owner}:${field.name}`} field={field} context={context} onSend={onSend} />
       ))}
     </>
   );

@@ -2,6 +2,7 @@
 
 import { useState } from "react";
 import { draftOf, isParamType, kmhText, PARAM_INPUTS, switchKind, valueOfDraft, type Draft } from "../lib/values";
+import { sameJson } from "../lib/same";
 import type { ParamValue } from "../types";
 import { CommitInput, LabelledSelect } from "./inputs";
 
@@ -22,9 +23,15 @@ function defaultText(value: ParamValue | number | null | undefined, unit: string
   return number === null ? "default set" : `default ${number}${unit ? ` ${unit}` : ""}`;
 }
 
-/** Re-created by its parent (key) whenever the server's value changes. */
+/** Edits one parameter; adopts a new value from the server unless it is what the draft says. */
 export function ParamEditor({ label, value, valueTypes, unit, defaultValue, kmh, disabled, onCommit }: Props) {
   const [draft, setDraft] = useState<Draft>(() => draftOf(value));
+  const [seen, setSeen] = useState(value);
+  if (!sameJson(value, seen)) {
+    setSeen(value);
+    // The echo of our own edit leaves the draft (and any half-typed input) alone.
+    if (!sameJson(value, valueOfDraft(draft))) setDraft(draftOf(value));
+  }
   const complete = valueOfDraft(draft);
   const update = (next: Draft) => {
     setDraft(next);

@@ -3,6 +3,7 @@
 
 import { useState } from "react";
 import { POSITION_INPUTS, positionDraft, positionOfDraft, type PositionDraft, type PositionType } from "../lib/positions";
+import { sameJson } from "../lib/same";
 import type { Position } from "../types";
 import { CommitInput, LabelledSelect } from "./inputs";
 
@@ -17,6 +18,12 @@ interface Props {
 
 export function PositionEditor({ label, value, disabled, onCommit, allowNone = true }: Props) {
   const [draft, setDraft] = useState<PositionDraft>(() => positionDraft(value));
+  const [seen, setSeen] = useState(value);
+  if (!sameJson(value, seen)) {
+    setSeen(value);
+    // The echo of our own edit leaves the draft (and any half-typed coordinate) alone.
+    if (!sameJson(value, positionOfDraft(draft))) setDraft(positionDraft(value));
+  }
   const result = positionOfDraft(draft);
   const update = (next: PositionDraft) => {
     setDraft(next);
@@ -72,7 +79,7 @@ export function WaypointsEditor({ label, value, disabled, onCommit }: WaypointsP
       {value.length === 0 && !adding && <div className="hint">none</div>}
       <ol>
         {value.map((position, index) => (
-          <li key={`${index}-${JSON.stringify(position)}`}>
+          <li key={index}>
             <PositionEditor
               label={`${label} ${index + 1}`}
               value={position}

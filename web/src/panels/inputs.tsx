@@ -17,8 +17,23 @@ interface CommitInputProps {
 export function CommitInput({ label, value, onCommit, disabled, placeholder, inputMode, className, invalid }: CommitInputProps) {
   const id = useId();
   const [text, setText] = useState(value);
+  const [focused, setFocused] = useState(false);
+  // What the model holds as far as this input knows: the server's value, or what it last sent
+  // (whose echo may not have been drawn yet when the user types the next value).
+  const [sent, setSent] = useState<string | null>(null);
+  // Follow the server's value (undo, another field's edit), but never overwrite what the user is
+  // typing: the field keeps its text while it has the focus.
+  const [seen, setSeen] = useState(value);
+  if (value !== seen) {
+    setSeen(value);
+    setSent(null);
+    if (!focused) setText(value);
+  }
   const commit = () => {
-    if (text !== value) onCommit(text);
+    if (text !== (sent ?? value)) {
+      setSent(text);
+      onCommit(text);
+    }
   };
   return (
     <div className={`control ${className ?? ""}`}>
@@ -33,7 +48,11 @@ export function CommitInput({ label, value, onCommit, disabled, placeholder, inp
         inputMode={inputMode}
         aria-invalid={invalid || undefined}
         onChange={(event) => setText(event.target.value)}
-        onBlur={commit}
+        onFocus={() => setFocused(true)}
+        onBlur={() => {
+          setFocused(false);
+          commit();
+        }}
         onKeyDown={(event) => {
           if (event.key === "Enter") commit();
           if (event.key === "Escape") setText(value);
