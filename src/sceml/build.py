@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from collections import Counter
 from collections.abc import Mapping
+from typing import cast
 
 from pyecore.ecore import EObject
 
@@ -45,7 +46,7 @@ def _kind_class(kind: str | type, base: str) -> type:
     if cls is None or not catalog.is_kind_of(name, base) or cls.eClass.abstract:
         options = ", ".join(c.__name__ for c in catalog.concrete_subclasses(base))
         raise BuildError(f"unknown {base} kind {name!r}; choose one of: {options}")
-    return cls
+    return cast(type, cls)
 
 
 class GraphBuilder:

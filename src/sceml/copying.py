@@ -26,7 +26,7 @@ class Copier:
     def copy(self, obj: T) -> T:
         """Copy `obj` and its containment tree (references are set by `copy_references`)."""
         eclass = obj.eClass
-        duplicate = eclass.python_class()
+        duplicate: T = eclass.python_class()
         self.copies[obj] = duplicate
         for feature in attributes(eclass):
             if not obj.eIsSet(feature):

@@ -4,8 +4,11 @@ from __future__ import annotations
 
 from collections import deque
 from collections.abc import Iterable, Iterator
+from typing import TypeVar
 
 import scemlmodel as scm
+
+N = TypeVar("N")
 
 
 def predecessors(node: scm.GraphElement) -> list[scm.GraphElement]:
@@ -18,7 +21,7 @@ def successors(node: scm.GraphElement) -> list[scm.GraphElement]:
     return [flow.target for flow in node.outgoing if flow.target is not None]
 
 
-def nodes_of(graph: scm.Graph, kind: type) -> list:
+def nodes_of(graph: scm.Graph, kind: type[N]) -> list[N]:
     """The nodes of a graph that are instances of `kind`."""
     return [node for node in graph.nodes if isinstance(node, kind)]
 

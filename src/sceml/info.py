@@ -3,9 +3,10 @@
 from __future__ import annotations
 
 from collections import Counter
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 
-from pyecore.ecore import EProxy
+from pyecore.ecore import EObject, EProxy
 
 import scemlmodel as scm
 
@@ -62,7 +63,7 @@ def _definition_label(use: scm.ModuleUse) -> tuple[str, str]:
     return str(definition.name), resource.uri.plain if resource is not None else ""
 
 
-def _count_nodes(nodes: list) -> dict[str, int]:
+def _count_nodes(nodes: Iterable[EObject]) -> dict[str, int]:
     counts: Counter[str] = Counter()
     for node in nodes:
         counts[catalog.category(node) or node.eClass.name] += 1

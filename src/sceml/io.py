@@ -11,9 +11,10 @@ import tempfile
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 from lxml import etree
-from pyecore.ecore import EAttribute, EClass, EEnum, EObject, EProxy
+from pyecore.ecore import EAttribute, EClass, EEnum, EObject, EProxy, EReference
 from pyecore.resources import URI, ResourceSet
 from pyecore.resources.xmi import XMIOptions, XMIResource
 
@@ -90,7 +91,7 @@ class _Located(Exception):
         self.line = line
 
 
-class SafeXMIResource(XMIResource):
+class SafeXMIResource(XMIResource):  # type: ignore[misc]  # pyecore is untyped
     """An XMI resource that parses with the hardened parser and only reads allowed local files.
 
     Besides what pyecore checks, it refuses what EMF would refuse or what no SceML tool writes:
@@ -98,7 +99,7 @@ class SafeXMIResource(XMIResource):
     enum literals), duplicate ids, more than one root, and cross-file containment.
     """
 
-    def load(self, options: dict | None = None) -> None:
+    def load(self, options: dict[XMIOptions, Any] | None = None) -> None:
         path = _local_path(self.uri)
         resource_set = self.resource_set
         allowed = getattr(resource_set, "sceml_allowed_roots", None)
@@ -139,7 +140,7 @@ class SafeXMIResource(XMIResource):
         finally:
             self._clean_registers()
 
-    def _decode_tree(self, tree: etree._ElementTree, options: dict | None) -> None:
+    def _decode_tree(self, tree: etree._ElementTree, options: dict[XMIOptions, Any] | None) -> None:
         # Mirrors XMIResource.load, but decodes the tree parsed above instead of re-reading the file.
         self.options = options or {}
         self.cache_enabled = True
@@ -191,7 +192,7 @@ class SafeXMIResource(XMIResource):
 
     def _decode_ereferences(self) -> None:
         # One holder at a time, so a reference that does not resolve is reported at its line.
-        pending: list[tuple[EObject, list]] = list(self._later)  # type: ignore[has-type]
+        pending: list[tuple[EObject, list[tuple[EReference, str]]]] = list(self._later)  # type: ignore[has-type]
         for holder, references in pending:
             self._later = [(holder, references)]
             try:
@@ -616,7 +617,7 @@ def _refuse_unreadable_values(root: EObject, path: Path) -> None:
                 raise SaveError(f"cannot save: {problem}", file=path, element=model_path(obj))
 
 
-class _MemoryURI(URI):
+class _MemoryURI(URI):  # type: ignore[misc]  # pyecore is untyped
     """A URI pyecore can save into that keeps the bytes in memory, for the atomic write."""
 
     def __init__(self, uri: str) -> None:

@@ -41,7 +41,7 @@ from collections.abc import Iterator, Mapping
 from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Final
+from typing import Any, Final, cast
 
 from lxml import etree
 
@@ -186,7 +186,7 @@ def _bundle() -> types.ModuleType:
             if handler not in handlers:
                 root.removeHandler(handler)
         root.setLevel(level)
-    return qc_main
+    return cast(types.ModuleType, qc_main)
 
 
 class _DropThreadRecords(logging.Filter):

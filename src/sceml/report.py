@@ -153,7 +153,8 @@ def format_junit(
     testsuite.extend(cases)
     for key in ("tests", "failures", "errors"):
         root.set(key, str(attributes[key]))
-    return etree.tostring(root, xml_declaration=True, encoding="UTF-8", pretty_print=True).decode()
+    text: bytes = etree.tostring(root, xml_declaration=True, encoding="UTF-8", pretty_print=True)
+    return text.decode()
 
 
 def render(

@@ -11,11 +11,11 @@ from __future__ import annotations
 from collections.abc import Iterator
 from functools import cache
 
-from pyecore.ecore import EAttribute, EClass, EObject, EReference
+from pyecore.ecore import EAttribute, EClass, EObject, EReference, EStructuralFeature
 
 
 @cache
-def features(eclass: EClass) -> tuple:
+def features(eclass: EClass) -> tuple[EStructuralFeature, ...]:
     """Every structural feature of a metaclass, inherited ones included, that is stored."""
     return tuple(f for f in eclass.eAllStructuralFeatures() if not f.derived and not f.transient)
 

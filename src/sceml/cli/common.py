@@ -57,7 +57,7 @@ class SceMLGroup(click.Group):
 SceMLGroup.group_class = SceMLGroup
 
 
-class Parsed(click.ParamType):
+class Parsed(click.ParamType[Any]):
     """An option value read by the library's own parser, so CLI and API accept the same text.
 
     The parser raises ArgumentError for text it cannot use; click shows that as a usage error

@@ -28,7 +28,8 @@ def _root(ctx: EditContext) -> scm.RootNode:
 
 def _kind(kind: object) -> type:
     require(kind in actor_kind_names(), f"unknown actor kind {kind!r}")
-    return getattr(scm, str(kind))
+    cls: type = getattr(scm, str(kind))
+    return cls
 
 
 def add_actor(ctx: EditContext, op: dict[str, Any]) -> None:

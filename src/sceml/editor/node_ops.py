@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from pyecore.ecore import EAttribute, EEnum, EObject, EReference
+from pyecore.ecore import EAttribute, EEnum, EObject, EReference, EStructuralFeature
 
 import scemlmodel as scm
 
@@ -128,7 +128,7 @@ def _holder(ctx: EditContext, node: scm.GraphElement, field: str) -> tuple[EObje
     return node, field
 
 
-def _feature(owner: EObject, name: str, node: scm.GraphElement):
+def _feature(owner: EObject, name: str, node: scm.GraphElement) -> EStructuralFeature:
     feature = owner.eClass.findEStructuralFeature(name)
     hidden = ("incoming", "outgoing", "diagramPosition", "actors", "definition")
     if feature is None or name in hidden:

@@ -13,6 +13,7 @@ import scemlmodel as scm
 
 from .. import io
 from ..build import ScenarioBuilder
+from ..diagnostics import Diagnostic
 from ..errors import LoadError, SceMLError
 from ..export.writer import ExportError, InvalidOutputError, export_to_file
 from ..graph import root_node
@@ -59,7 +60,9 @@ class EditorSession:
         assert self.document is not None, "no file is open"
         return self.document.path
 
-    def open(self, path: str | Path, *, module: str | None = None, discard: bool = True) -> dict:
+    def open(
+        self, path: str | Path, *, module: str | None = None, discard: bool = True
+    ) -> dict[str, Any]:
         """Open a scenario (a missing file: a new one) or one module of a library."""
         if self.document is not None and self.stack.dirty and not discard:
             raise ConflictError("there are unsaved changes; save them or open with discard")
@@ -95,7 +98,7 @@ class EditorSession:
         resource.append(builder.scenario)
         return io.Document(path, builder.scenario, resource, resource_set)
 
-    def open_definition(self, node_id: object, *, discard: bool = False) -> dict:
+    def open_definition(self, node_id: object, *, discard: bool = False) -> dict[str, Any]:
         """Edit the module definition a use of the current graph refers to, in its library."""
         use = EditContext(self.graph, self.ids, self.find_library, self.clipboard).node(node_id)
         definition = loaded_definition(use) if isinstance(use, scm.ModuleUse) else None
@@ -156,7 +159,7 @@ class EditorSession:
             return str(root.level.name)
         return "logical" if self.module is not None else self.options.level
 
-    def diagnostics(self) -> list:
+    def diagnostics(self) -> list[Diagnostic]:
         """Every diagnostic of the model as the real validator gives it."""
         assert self.document is not None
         found = validate(self.document.root, document=self.document)

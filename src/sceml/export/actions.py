@@ -8,6 +8,7 @@ metaclass name in PLANNERS; `support.py` derives the list of mapped kinds from i
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import Any
 
 import scemlmodel as scm
 
@@ -151,7 +152,7 @@ def _lane_change(
 
 
 def arrived(
-    ctx: Context, node: scm.ActionNode, name: str, position: dict, tolerance: str
+    ctx: Context, node: scm.ActionNode, name: str, position: dict[str, Any], tolerance: str
 ) -> Condition:
     """The reference actor is within `tolerance` of `position` (version-specific element)."""
     kind = "reach_position" if ctx.traits.reach_position else "distance"

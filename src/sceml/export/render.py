@@ -52,5 +52,5 @@ def render_tree(view: View) -> etree._ElementTree:
 
 def serialise(tree: etree._ElementTree) -> bytes:
     """Indented UTF-8 bytes with an XML declaration: the bytes written to disk."""
-    body = etree.tostring(tree, pretty_print=True, xml_declaration=False, encoding="UTF-8")
+    body: bytes = etree.tostring(tree, pretty_print=True, xml_declaration=False, encoding="UTF-8")
     return _DECLARATION + body

@@ -4,7 +4,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ..schema import SUPPORTED_VERSIONS as VERSIONS
+from ..schema import SUPPORTED_VERSIONS
+
+#: The OpenSCENARIO versions the exporter writes.
+VERSIONS = SUPPORTED_VERSIONS
 
 
 @dataclass(frozen=True)

@@ -109,7 +109,8 @@ def _lhs_design(plan: Plan, d: int) -> NDArray[np.float64]:
     from scipy.stats import qmc  # slow to import; only Latin hypercube sampling needs it
 
     sampler = qmc.LatinHypercube(d, rng=np.random.default_rng(plan.seed))
-    return sampler.random(plan.n)
+    design: NDArray[np.float64] = sampler.random(plan.n)
+    return design
 
 
 def _map_uniforms(space: ParameterSpace, uniforms: NDArray[np.float64]) -> NDArray[np.float64]:

@@ -61,7 +61,7 @@ class Dimension:
         # Imported here: scipy.stats takes half a second to import, and only sampling needs it.
         from scipy.stats import truncnorm
 
-        drawn = truncnorm.ppf(u, a, b, loc=self.mean, scale=self.sd)
+        drawn: NDArray[np.float64] = truncnorm.ppf(u, a, b, loc=self.mean, scale=self.sd)
         return np.clip(drawn, self.low, self.high)
 
     def nominal(self) -> float:

@@ -10,7 +10,7 @@ from __future__ import annotations
 import re
 from collections.abc import Mapping, Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from lxml import etree
 
@@ -20,6 +20,9 @@ from .. import schema
 from ..errors import SceMLError
 from ..io import model_path, write_atomically
 from .apply import FlatTemplate
+
+if TYPE_CHECKING:
+    from ..export.writer import XoscDocument
 
 
 class XoscWriter:
@@ -34,7 +37,7 @@ class XoscWriter:
 
     def document(
         self, scenario: scm.Scenario, target: Path, parameters: Mapping[Any, Any] | None = None
-    ) -> Any:
+    ) -> XoscDocument:
         """The export's document (bytes and tree) for a scenario that will be written to `target`."""
         return self._build(
             scenario,

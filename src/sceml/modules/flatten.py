@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import Any
 
 from pyecore.ecore import EObject
 
@@ -89,7 +90,7 @@ class _Expansion:
         self.graph.flows.clear()
         self.graph.flows.extend(flows)
 
-    def where(self, obj: EObject) -> dict:
+    def where(self, obj: EObject) -> dict[str, Any]:
         """Location keywords of the element `obj` was copied from."""
         return location(self.origins.get(obj, obj))
 
@@ -177,8 +178,8 @@ def _ports(
 def _bind_roles(
     use: scm.ModuleUse,
     definition: scm.ModuleDefinition,
-    nodes: list,
-    where: Callable[[EObject], dict],
+    nodes: list[EObject],
+    where: Callable[[EObject], dict[str, Any]],
 ) -> None:
     bound = {binding.role: binding.actor for binding in use.bindings}
     actors: dict[EObject, EObject] = {}
@@ -201,8 +202,8 @@ def _bind_roles(
 def _bind_parameters(
     use: scm.ModuleUse,
     definition: scm.ModuleDefinition,
-    nodes: list,
-    where: Callable[[EObject], dict],
+    nodes: list[EObject],
+    where: Callable[[EObject], dict[str, Any]],
 ) -> None:
     overrides = {override.parameter: override.value for override in use.overrides}
     declared = {parameter.name: parameter for parameter in definition.parameters}
@@ -229,7 +230,7 @@ def _bind_parameters(
         )
 
 
-def _with_contents(nodes: list) -> list[EObject]:
+def _with_contents(nodes: list[EObject]) -> list[EObject]:
     return [obj for node in nodes for obj in (node, *all_contents(node))]
 
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 from pyecore.ecore import EObject, EProxy
 
@@ -19,7 +20,7 @@ def unwrap(obj: EObject) -> EObject:
     return obj._wrapped if isinstance(obj, EProxy) and obj.resolved else obj
 
 
-def location(obj: EObject) -> dict:
+def location(obj: EObject) -> dict[str, Any]:
     """File, line and model path of an element, as keyword arguments for a SceMLError."""
     resource = obj.eResource
     if resource is None or not resource.contents:
@@ -34,7 +35,7 @@ def location(obj: EObject) -> dict:
 
 
 def resolved_definition(
-    use: scm.ModuleUse, located: Callable[[EObject], dict] = location
+    use: scm.ModuleUse, located: Callable[[EObject], dict[str, Any]] = location
 ) -> scm.ModuleDefinition:
     """The definition a use refers to, loaded if it lives in another file.
 

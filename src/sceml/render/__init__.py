@@ -78,7 +78,8 @@ def to_bytes(graph: graphviz.Digraph, fmt: str) -> bytes:
     if fmt not in FORMATS:
         raise RenderError(f"unknown output format {fmt!r}; use one of {', '.join(FORMATS)}")
     try:
-        return graph.pipe(format=fmt)
+        picture: bytes = graph.pipe(format=fmt)
+        return picture
     except graphviz.ExecutableNotFound:
         raise RenderError(
             "Graphviz's `dot` program is not installed (Debian: apt-get install graphviz)"

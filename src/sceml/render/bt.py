@@ -129,7 +129,7 @@ class _Reducer:
     """Series-parallel reduction over edges that carry partial trees."""
 
     def __init__(
-        self, source: EObject, sink: EObject, nodes: list, modules: Modules, scope: Scope
+        self, source: EObject, sink: EObject, nodes: list[EObject], modules: Modules, scope: Scope
     ) -> None:
         self.source, self.sink, self.nodes = source, sink, nodes
         self.modules, self.scope = modules, scope

@@ -19,7 +19,7 @@ import scemlmodel as scm
 from .. import catalog, params
 from ..errors import SceMLError
 from ..graph import actors, root_node
-from ..modules.flatten import resolved_definition
+from ..modules.resolve import resolved_definition
 
 #: Features every action node has that labels show in other ways, or never.
 _NOT_PARAMETERS = {

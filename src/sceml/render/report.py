@@ -148,7 +148,8 @@ def _mark(svg_bytes: bytes, rows: list[DiagnosticRow]) -> str:
         severity = worst.get(group.get("id", ""))
         if severity is not None:
             group.set("class", f"{group.get('class', '')} sceml-has-{severity}")
-    return etree.tostring(svg, encoding="unicode")
+    text: str = etree.tostring(svg, encoding="unicode")
+    return text
 
 
 def _actor_row(actor: scm.Actor) -> dict[str, str]:

@@ -34,7 +34,7 @@ def iter_diagnostics(
     in their own file. A rule that fails unexpectedly becomes a SCEML-X000 diagnostic.
     """
     context = Context(model, document, limits or Limits(), osc_version, osc_profile)
-    seen: set[tuple[str, str, str | None]] = set()
+    seen: set[_Key] = set()
     for obj in _objects(model, context):
         for rule in registry.rules_for(obj.eClass):
             yield from _unique(_run(rule, obj, context, document), seen)
@@ -81,7 +81,11 @@ def _objects(model: EObject, context: Context) -> Iterator[EObject]:
                     pending.append(definition)
 
 
-def _unique(diagnostics: Iterator[Diagnostic], seen: set) -> Iterator[Diagnostic]:
+#: What makes two diagnostics the same: code, message, fragment and file.
+_Key = tuple[str, str, str | None, str | None]
+
+
+def _unique(diagnostics: Iterator[Diagnostic], seen: set[_Key]) -> Iterator[Diagnostic]:
     for diagnostic in diagnostics:
         key = (diagnostic.code, diagnostic.message, diagnostic.fragment, diagnostic.file)
         if key not in seen:

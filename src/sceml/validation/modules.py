@@ -202,9 +202,11 @@ def no_recursion(definition: scm.ModuleDefinition, context: Context) -> Iterator
         yield definition, f"module {definition.name!r} uses itself: {names}"
 
 
-def _path_back_to(start: scm.ModuleDefinition, context: Context) -> list | None:
+def _path_back_to(
+    start: scm.ModuleDefinition, context: Context
+) -> list[scm.ModuleDefinition] | None:
     """The definitions leading from `start` back to itself through uses, or None."""
-    stack: list[tuple[scm.ModuleDefinition, list]] = [(start, [])]
+    stack: list[tuple[scm.ModuleDefinition, list[scm.ModuleDefinition]]] = [(start, [])]
     visited: set[EObject] = set()
     while stack:
         definition, path = stack.pop()

@@ -48,16 +48,17 @@ _KINDS = (
 
 def highest(value: EObject | None) -> float | None:
     """The largest number a parameter value allows, or None when it states none."""
+    bound: float | None = None
     if isinstance(value, scm.Value):
-        return value.value
-    if isinstance(value, scm.Range | scm.UniformDistribution):
-        return value.max
-    if isinstance(value, scm.NormalDistribution):
-        return value.upperBound if value.upperBound is not None else value.mean
-    if isinstance(value, scm.DiscreteDistribution):
+        bound = value.value
+    elif isinstance(value, scm.Range | scm.UniformDistribution):
+        bound = value.max
+    elif isinstance(value, scm.NormalDistribution):
+        bound = value.upperBound if value.upperBound is not None else value.mean
+    elif isinstance(value, scm.DiscreteDistribution):
         options = [option.value for option in value.options if option.value is not None]
-        return max(options) if options else None
-    return None
+        bound = max(options) if options else None
+    return bound
 
 
 def _actor_of(owner: EObject) -> scm.Actor | None:

@@ -38,7 +38,9 @@ _CATEGORIES = {
 Conflict = tuple[scm.Maneuver, scm.Maneuver, str]
 
 
-def _previous_in_group(order: list) -> tuple[dict[EObject, int], dict[EObject, list]]:
+def _previous_in_group(
+    order: list[EObject],
+) -> tuple[dict[EObject, int], dict[EObject, list[tuple[EObject, str]]]]:
     """Bit index of every maneuver, and for each the previous member of each of its groups."""
     bit: dict[EObject, int] = {}
     previous: dict[EObject, list[tuple[EObject, str]]] = {}
@@ -55,15 +57,17 @@ def _previous_in_group(order: list) -> tuple[dict[EObject, int], dict[EObject, l
     return bit, previous
 
 
-def _adjacency(graph: scm.Graph) -> tuple[list, dict[EObject, list], dict[EObject, int]]:
+def _adjacency(
+    graph: scm.Graph,
+) -> tuple[list[EObject], dict[EObject, list[EObject]], dict[EObject, int]]:
     """Kahn's order, predecessors per node and successor counts, from the graph's own flows.
 
     Read from `graph.flows` rather than the nodes' incoming/outgoing lists, so that flows that
     are dangling or leave the graph are simply not part of the order.
     """
     members = set(graph.nodes)
-    sources: dict[EObject, list] = {node: [] for node in graph.nodes}
-    targets: dict[EObject, list] = {node: [] for node in graph.nodes}
+    sources: dict[EObject, list[EObject]] = {node: [] for node in graph.nodes}
+    targets: dict[EObject, list[EObject]] = {node: [] for node in graph.nodes}
     for flow in graph.flows:
         if flow.source in members and flow.target in members:
             sources[flow.target].append(flow.source)

@@ -16,7 +16,7 @@ ERROR, WARNING = Severity.ERROR, Severity.WARNING
 PAPER = "paper §Language Validation"
 
 
-def _names(nodes: list) -> str:
+def _names(nodes: list[scm.GraphElement]) -> str:
     shown = ", ".join(repr(str(node.name)) for node in nodes[:5])
     return shown + (f" and {len(nodes) - 5} more" if len(nodes) > 5 else "")
 
@@ -64,13 +64,17 @@ def end_has_no_output(end: scm.EndNode, context: Context) -> Iterator[Finding]:
         yield end, f"end node {end.name!r} has {len(end.outgoing)} outgoing flow(s)"
 
 
-def _starts_and_ends(graph: scm.Graph) -> tuple[list, list]:
+def _starts_and_ends(
+    graph: scm.Graph,
+) -> tuple[list[scm.GraphElement], list[scm.GraphElement]]:
     if isinstance(graph, scm.ModuleDefinition):
         return nodes_of(graph, scm.InPort), nodes_of(graph, scm.OutPort)
     return nodes_of(graph, scm.RootNode), nodes_of(graph, scm.EndNode)
 
 
-def _reached(graph: scm.Graph, starts: list, *, backwards: bool) -> set:
+def _reached(
+    graph: scm.Graph, starts: list[scm.GraphElement], *, backwards: bool
+) -> set[scm.GraphElement]:
     """Nodes of `graph` reachable from `starts`; flows leaving the graph are not followed."""
     members = set(graph.nodes)
     seen = set(starts)
