@@ -272,6 +272,21 @@ def test_changing_an_actor_kind_keeps_every_reference(uis1: EditorSession) -> No
     assert len(on_bike) == 4 and all(isinstance(n.referenceActor, scm.Pedestrian) for n in on_bike)
 
 
+def test_an_actor_keeps_its_id_through_a_change_of_kind_and_its_undo(uis1: EditorSession) -> None:
+    # The browser keys the actor's panel by id: a new id would re-create it under the cursor.
+    bike = actor_id(uis1.view(), "bike")
+    changed = uis1.apply([{"op": "set_actor", "actor": bike, "field": "kind", "value": "Van"}])
+    assert actor_id(changed, "bike") == bike
+    renamed = uis1.apply([{"op": "set_actor", "actor": bike, "field": "name", "value": "van"}])
+    assert actor_id(renamed, "van") == bike
+    uis1.undo()
+    undone = uis1.undo()
+    assert actor_id(undone, "bike") == bike
+    assert next(a for a in undone["actors"] if a["id"] == bike)["kind"] == "Bicycle"
+    again = uis1.apply([{"op": "set_actor", "actor": bike, "field": "name", "value": "rider"}])
+    assert next(a for a in again["actors"] if a["id"] == bike)["kind"] == "Bicycle"
+
+
 def test_remove_actor_clears_references(uis1: EditorSession) -> None:
     ego = actor_id(uis1.view(), "ego")
     after = roundtrip(uis1, [{"op": "remove_actor", "actor": ego}])

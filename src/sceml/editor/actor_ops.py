@@ -87,7 +87,8 @@ def _change_kind(ctx: EditContext, actor: scm.Actor, cls: type) -> None:
             ctx.rec.set(replacement, feature.name, held)
     for holder, name in referring:
         ctx.rec.set(holder, name, replacement)
-    ctx.ids.of(replacement, "a")
+    ctx.ids.of(actor, "a")
+    ctx.ids.inherit(replacement, actor)
 
 
 def set_actor_parameter(ctx: EditContext, op: dict[str, Any]) -> None:

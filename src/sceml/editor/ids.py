@@ -15,6 +15,7 @@ class Ids:
     def __init__(self) -> None:
         self._ids: dict[EObject, str] = {}
         self._objects: dict[str, EObject] = {}
+        self._heirs: dict[str, list[EObject]] = {}
         self._counter = 0
 
     def of(self, obj: EObject, prefix: str) -> str:
@@ -29,8 +30,24 @@ class Ids:
         return made
 
     def find(self, identifier: object) -> EObject | None:
-        """The object with this id, or None."""
-        return self._objects.get(identifier) if isinstance(identifier, str) else None
+        """The object with this id, or None (of objects sharing an id, the one in the model)."""
+        if not isinstance(identifier, str) or identifier not in self._objects:
+            return None
+        found = self._objects[identifier]
+        for heir in self._heirs.get(identifier, ()):
+            if heir.eContainer() is not None:
+                return heir
+        return found
+
+    def inherit(self, heir: EObject, ancestor: EObject) -> None:
+        """Give `heir` the id of `ancestor`, which it replaces in the model (an actor's new kind).
+
+        Only one of them is in the model at a time (undo swaps them back), so the browser keeps
+        one id, and the panel the user is typing in is not re-created under the cursor.
+        """
+        identifier = self._ids[ancestor]
+        self._ids[heir] = identifier
+        self._heirs.setdefault(identifier, []).append(heir)
 
     def known(self, obj: EObject) -> str | None:
         """The id of `obj` if it has one already."""

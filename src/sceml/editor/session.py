@@ -89,6 +89,8 @@ class EditorSession:
 
     def _new_scenario(self, path: Path) -> io.Document:
         builder = ScenarioBuilder(path.stem, level=self.options.level)
+        # The environment the panel shows is the one the file gets: noon, clear, dry.
+        builder.environment()
         # Root above End with room between: the first picture of a new scenario, instead of
         # two unconnected nodes that automatic layout would pack side by side.
         builder.root.diagramPosition = scm.DiagramPosition(x=0.0, y=0.0)
