@@ -7,6 +7,7 @@ import re
 from pathlib import Path
 
 import pytest
+from browser import CHROMIUM
 from playwright.sync_api import Locator, Page, Response, expect
 
 from sceml import io
@@ -17,7 +18,7 @@ EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 # CI installs Chromium (scripts/setup.sh), so there a missing browser is a failure, not a skip.
 pytestmark = pytest.mark.skipif(
-    not Path("/usr/bin/chromium").exists() and not os.environ.get("CI"),
+    not CHROMIUM.exists() and not os.environ.get("CI"),
     reason="Debian's chromium (/usr/bin/chromium) is not installed",
 )
 

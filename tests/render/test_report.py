@@ -8,6 +8,7 @@ import shutil
 from pathlib import Path
 
 import pytest
+from browser import CHROMIUM, CHROMIUM_ARGS
 
 import scemlmodel as scm
 from sceml import io
@@ -17,17 +18,6 @@ from sceml.params import span
 from sceml.render.report import build_report
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
-CHROMIUM = Path("/usr/bin/chromium")
-CHROMIUM_ARGS = [
-    "--headless",
-    "--no-sandbox",
-    "--disable-gpu",
-    "--disable-quic",
-    "--no-first-run",
-    "--disable-background-networking",
-    "--disable-component-update",
-    "--disable-sync",
-]
 
 
 def broken_document(tmp_path: Path) -> io.Document:
