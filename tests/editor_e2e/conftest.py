@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
+import re
 import signal
-import socket
 import subprocess
 import sys
 import time
@@ -16,12 +16,7 @@ import pytest
 from browser import CHROMIUM, CHROMIUM_ARGS
 
 SCEML = Path(sys.executable).parent / "sceml"
-
-
-def free_port() -> int:
-    with socket.socket() as probe:
-        probe.bind(("127.0.0.1", 0))
-        return probe.getsockname()[1]
+URL = re.compile(r"http://127\.0\.0\.1:\d+/")
 
 
 def _stop(process: subprocess.Popen[bytes]) -> None:
@@ -36,32 +31,34 @@ def _stop(process: subprocess.Popen[bytes]) -> None:
 
 @pytest.fixture
 def editor(tmp_path: Path) -> Iterator[Callable[..., str]]:
-    """Start `sceml edit PATH --no-browser --port N [extra]`; answer its URL once /api/view answers."""
+    """Start `sceml edit PATH --no-browser [extra]`; answer its URL once /api/view answers."""
     started: list[subprocess.Popen[bytes]] = []
 
     def start(path: Path, *extra: str) -> str:
-        port = free_port()
-        log = (tmp_path / f"server-{port}.log").open("wb")
-        process = subprocess.Popen(
-            [str(SCEML), "edit", str(path), "--no-browser", "--port", str(port), *extra],
-            stdout=log,
-            stderr=subprocess.STDOUT,
-        )
-        log.close()
+        # The server picks its own free port and prints the URL once it is bound: a port chosen
+        # here could be taken meanwhile, or answered by another run's server.
+        log_path = tmp_path / f"server-{len(started)}.log"
+        with log_path.open("wb") as log:
+            process = subprocess.Popen(
+                [str(SCEML), "edit", str(path), "--no-browser", *extra],
+                stdout=log,
+                stderr=subprocess.STDOUT,
+            )
         started.append(process)
-        url = f"http://127.0.0.1:{port}/"
         deadline = time.monotonic() + 20
         while True:
-            try:
-                with urllib.request.urlopen(url + "api/view", timeout=2) as answer:
-                    if answer.status == 200:
-                        return url
-            except (urllib.error.URLError, ConnectionError, TimeoutError):
-                pass
+            announced = URL.search(log_path.read_text(errors="replace"))
+            if announced:
+                try:
+                    with urllib.request.urlopen(announced[0] + "api/view", timeout=2) as answer:
+                        if answer.status == 200:
+                            return announced[0]
+                except (urllib.error.URLError, ConnectionError, TimeoutError):
+                    pass
             if process.poll() is not None or time.monotonic() > deadline:
                 _stop(process)
-                output = (tmp_path / f"server-{port}.log").read_text(errors="replace")
-                pytest.fail(f"sceml edit did not answer on {url}:\n{output}")
+                output = log_path.read_text(errors="replace")
+                pytest.fail(f"sceml edit did not start:\n{output}")
             time.sleep(0.1)
 
     yield start
