@@ -19,7 +19,7 @@ from sceml.validation import validate
 def client_for(path: Path, **options: object) -> TestClient:
     session = EditorSession(SessionOptions(**options))  # type: ignore[arg-type]
     session.open(path)
-    return TestClient(create_app(session))
+    return TestClient(create_app(session), base_url="http://127.0.0.1:8765")
 
 
 @pytest.fixture
@@ -156,3 +156,22 @@ def test_the_built_page_is_served(
     (tmp_path / "index.html").write_text("<html>editor</html>", encoding="utf-8")
     monkeypatch.setattr(app_module, "static_folder", lambda: tmp_path)
     assert client.get("/").text == "<html>editor</html>"
+
+
+def test_other_sites_cannot_edit_or_save(client: TestClient, examples_copy: Path) -> None:
+    target = examples_copy / "uis1-concrete.xmi"
+    before = target.read_bytes()
+    # A page of another site posting to the editor (no preflight for a text/plain body).
+    hostile = {"origin": "http://evil.example", "content-type": "text/plain"}
+    ops = '{"ops": [{"op": "add_node", "kind": "Stop"}]}'
+    answer = client.post("/api/ops", content=ops, headers=hostile)
+    assert answer.status_code == 403 and "another site" in answer.json()["error"]
+    assert client.post("/api/save", content="{}", headers=hostile).status_code == 403
+    assert target.read_bytes() == before
+    assert client.get("/api/view").json()["dirty"] is False
+    # DNS rebinding: a foreign host name that resolves to 127.0.0.1.
+    assert client.get("/api/view", headers={"host": "evil.example"}).status_code == 400
+    # The editor's own page names its own origin.
+    own = {"origin": "http://127.0.0.1:8765"}
+    answer = client.post("/api/ops", content=ops, headers=own)
+    assert answer.status_code == 200

@@ -10,6 +10,8 @@ from typing import Any
 
 from starlette.applications import Starlette
 from starlette.concurrency import run_in_threadpool
+from starlette.middleware import Middleware
+from starlette.middleware.trustedhost import TrustedHostMiddleware
 from starlette.requests import Request
 from starlette.responses import FileResponse, HTMLResponse, JSONResponse, Response
 from starlette.routing import Mount, Route
@@ -18,6 +20,9 @@ from starlette.staticfiles import StaticFiles
 from ..errors import SceMLError
 from .errors import EditorError, ExportRefused
 from .session import EditorSession
+
+#: The host names the editor answers to; it listens on 127.0.0.1 only.
+LOCAL_HOSTS = ["127.0.0.1", "localhost"]
 
 MISSING_BUNDLE = """<!doctype html>
 <html lang="en"><head><meta charset="utf-8"><title>SceML editor: page not built</title></head>
@@ -35,6 +40,12 @@ def static_folder() -> Path:
     return Path(str(resources.files("sceml.editor"))) / "static"
 
 
+def _same_origin(request: Request) -> bool:
+    """Whether a request comes from the editor's own page (browsers name the page's origin)."""
+    origin = request.headers.get("origin")
+    return origin is None or origin == f"{request.url.scheme}://{request.headers.get('host')}"
+
+
 def _error(message: str, status: int, **extra: Any) -> JSONResponse:
     return JSONResponse({"error": message, **extra}, status_code=status)
 
@@ -49,6 +60,9 @@ class Api:
     async def call(self, request: Request, action: Callable[[dict[str, Any]], Any]) -> Response:
         """Read the JSON body, run `action` under the lock, answer JSON or a protocol error."""
         body: dict[str, Any] = {}
+        if request.method == "POST" and not _same_origin(request):
+            # Any web page the user visits could post to 127.0.0.1; only this page may edit.
+            return _error("a request from another site was refused", 403)
         if request.method == "POST":
             raw = await request.body()
             try:
@@ -127,4 +141,6 @@ def create_app(session: EditorSession) -> Starlette:
         *Api(session).routes(),
         Mount("/assets", app=assets, name="assets"),
     ]
-    return Starlette(routes=routes)
+    # Only names of this machine: a DNS-rebinding page gets its own host name refused.
+    local = Middleware(TrustedHostMiddleware, allowed_hosts=LOCAL_HOSTS)
+    return Starlette(routes=routes, middleware=[local])
