@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from functools import cache
 from pathlib import Path
 from typing import Any
 
@@ -18,8 +19,12 @@ def _item(kind: str, module: str | None = None, library: str | None = None) -> d
     return {"kind": kind, "label": module or kind, "module": module, "library": library}
 
 
-def node_groups() -> list[dict[str, Any]]:
-    """One group per action-node category (catalog order), then the joins."""
+@cache
+def node_groups() -> tuple[dict[str, Any], ...]:
+    """One group per action-node category (catalog order), then the joins.
+
+    The metamodel fixes them, so they are built once, not for every view; nobody changes them.
+    """
     groups = []
     for category in catalog.CATEGORIES:
         kinds = [c.__name__ for c in catalog.action_node_kinds() if catalog.category(c) == category]
@@ -40,7 +45,7 @@ def node_groups() -> list[dict[str, Any]]:
             "items": [_item(k) for k in JOIN_KINDS],
         }
     )
-    return groups
+    return tuple(groups)
 
 
 def library_group(library: scm.Library, shown_path: str) -> dict[str, Any]:
@@ -67,8 +72,9 @@ def _roles(definition: scm.ModuleDefinition) -> list[dict[str, Any]]:
     ]
 
 
+@cache
 def choices() -> dict[str, list[str]]:
-    """The options of every select the panels show."""
+    """The options of every select the panels show (fixed by the metamodel; built once)."""
     return {
         "actorKinds": actor_kind_names(),
         "levels": enum_options(scm.AbstractionLevel),

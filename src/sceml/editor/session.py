@@ -102,12 +102,16 @@ class EditorSession:
 
     def open_definition(self, node_id: object, *, discard: bool = False) -> dict[str, Any]:
         """Edit the module definition a use of the current graph refers to, in its library."""
-        use = EditContext(self.graph, self.ids, self.find_library, self.clipboard).node(node_id)
+        use = self._context().node(node_id)
         definition = loaded_definition(use) if isinstance(use, scm.ModuleUse) else None
         if definition is None or definition.eResource is None:
             raise OperationError(f"{use.name} is not a module use whose library can be opened")
         library = Path(definition.eResource.uri.normalize())
         return self.open(library, module=str(definition.name), discard=discard)
+
+    def _context(self) -> EditContext:
+        """What an operation works on: the edited graph, its ids, libraries and clipboard."""
+        return EditContext(self.graph, self.ids, self.find_library, self.clipboard)
 
     # Libraries -----------------------------------------------------------------------------
 
@@ -142,7 +146,7 @@ class EditorSession:
         return list(dict.fromkeys(p.resolve() for p in found))
 
     def _palette(self) -> list[dict[str, Any]]:
-        groups = palette.node_groups()
+        groups = list(palette.node_groups())
         for path in self.library_paths():
             try:
                 library, _ = self.find_library(str(path))
@@ -218,7 +222,7 @@ class EditorSession:
         self._writable()
         if not isinstance(ops, list):
             raise OperationError("'ops' must be a list of operations")
-        ctx = EditContext(self.graph, self.ids, self.find_library, self.clipboard)
+        ctx = self._context()
 
         def edit(recorder: Any) -> None:
             ctx.rec = recorder
@@ -247,7 +251,7 @@ class EditorSession:
         """Keep deep copies of these nodes and the flows among them for `paste`."""
         if not isinstance(node_ids, list):
             raise OperationError("'nodes' must be a list of node ids")
-        ctx = EditContext(self.graph, self.ids, self.find_library, self.clipboard)
+        ctx = self._context()
         self.clipboard = copy_nodes(self.graph, [ctx.node(i) for i in node_ids])
         return len(self.clipboard.nodes)
 
