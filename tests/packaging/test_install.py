@@ -23,6 +23,7 @@ assert sceml.__file__.startswith(sys.argv[1]), sceml.__file__
 assert scemlmodel.__file__.startswith(sys.argv[1]), scemlmodel.__file__
 assert (resources.files("sceml.metamodel") / "scemlmodel.ecore").is_file()
 assert resources.files("sceml.templates").is_dir()
+assert (resources.files("sceml.templates") / "report.html.j2").is_file()
 assert catalog.parameter("Accelerate", "rate").default == 2.0
 print("ok")
 """
@@ -48,7 +49,8 @@ def test_wheel_contains_and_imports_everything(tmp_path: Path) -> None:
     names = zipfile.ZipFile(wheel).namelist()
     assert "scemlmodel/scemlmodel.py" in names
     assert "sceml/metamodel/scemlmodel.ecore" in names
-    assert any(n.startswith("sceml/templates/") for n in names)
+    assert "sceml/templates/openscenario.xosc.j2" in names
+    assert "sceml/templates/report.html.j2" in names
     unpacked = tmp_path / "unpacked"
     zipfile.ZipFile(wheel).extractall(unpacked)
     probe = subprocess.run(

@@ -15,7 +15,7 @@ from sceml import io
 from sceml.build import ScenarioBuilder
 from sceml.diagnostics import Diagnostic, Severity
 from sceml.params import span
-from sceml.render.report import build_report
+from sceml.render.report import TEMPLATE, Figure, build_report
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
@@ -68,6 +68,25 @@ def test_tables_list_actors_and_parameters(tmp_path: Path) -> None:
     assert "[5, 10] m/s = 18–36 km/h" in html  # a logical range, with km/h
     assert '<td class="status-default">default</td>' in html  # rate falls back to its default
     assert "Validation was not run" in build_report(document, None)
+
+
+def test_the_page_comes_from_a_template_file_of_the_shared_environment() -> None:
+    from importlib import resources
+
+    from sceml.templating import environment
+
+    assert (resources.files("sceml.templates") / TEMPLATE).is_file()
+    assert TEMPLATE in environment().list_templates()
+
+
+def test_extra_figures_follow_the_diagram_under_their_titles(tmp_path: Path) -> None:
+    document = broken_document(tmp_path)
+    figure = Figure("Map view", "map-view", '<svg xmlns="http://www.w3.org/2000/svg"><g/></svg>')
+    html = build_report(document, [], figures=[figure])
+    box = '<h2>Map view</h2>\n<div class="figure" id="map-view">\n<svg'
+    assert box in html
+    assert html.index('<div id="diagram">') < html.index(box) < html.index("<h2>Actors</h2>")
+    assert 'class="figure"' not in build_report(document, [])
 
 
 def test_module_internals_map_through_expanded_uses() -> None:

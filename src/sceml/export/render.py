@@ -1,4 +1,4 @@
-"""The Jinja environment (compiled once per process) and the text-to-tree step."""
+"""The OpenSCENARIO template (through the shared Jinja environment) and the text-to-tree step."""
 
 from __future__ import annotations
 
@@ -7,23 +7,11 @@ from functools import cache
 import jinja2
 from lxml import etree
 
+from ..templating import environment
 from .viewmodel import View
 
 TEMPLATE = "openscenario.xosc.j2"
 _DECLARATION = b'<?xml version="1.0" encoding="UTF-8"?>\n'
-
-
-@cache
-def environment() -> jinja2.Environment:
-    """Jinja with StrictUndefined and XML autoescaping; templates come from `sceml.templates`."""
-    return jinja2.Environment(
-        loader=jinja2.PackageLoader("sceml.templates", "."),
-        undefined=jinja2.StrictUndefined,
-        autoescape=True,
-        trim_blocks=True,
-        lstrip_blocks=True,
-        keep_trailing_newline=False,
-    )
 
 
 @cache

@@ -12,7 +12,6 @@ from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
-import jinja2
 from lxml import etree
 from pyecore.ecore import EObject
 
@@ -21,11 +20,13 @@ import scemlmodel as scm
 from .. import catalog, params
 from ..diagnostics import Diagnostic, Severity
 from ..graph import actors, root_node
-from ..io import Document, model_path
+from ..io import Document
+from ..templating import template
 from . import labels, to_bytes
 from .flow import Modules, flow_diagram
 
 _SVG_NAMESPACE = "http://www.w3.org/2000/svg"
+TEMPLATE = "report.html.j2"
 
 
 @dataclass(frozen=True)
@@ -38,6 +39,26 @@ class DiagnosticRow:
     @property
     def severity(self) -> str:
         return str(self.diagnostic.severity)
+
+    @property
+    def where(self) -> str:
+        """`file:line` of the diagnostic, as far as known."""
+        diagnostic = self.diagnostic
+        where = Path(diagnostic.file).name if diagnostic.file else ""
+        return where + (f":{diagnostic.line}" if diagnostic.line else "")
+
+
+@dataclass(frozen=True)
+class Figure:
+    """An extra figure of the report, shown after the diagram under its own heading.
+
+    `svg` is an inline SVG element as text (trusted: made by sceml, never by the input file);
+    `anchor` is the HTML id of the figure's box, so a page can link to it.
+    """
+
+    title: str
+    anchor: str
+    svg: str
 
 
 @dataclass(frozen=True)
@@ -67,8 +88,12 @@ def build_report(
     diagnostics: Sequence[Diagnostic] | None,
     *,
     modules: Modules = "expanded",
+    figures: Sequence[Figure] = (),
 ) -> str:
-    """The report as HTML text; `diagnostics` None means validation was not run."""
+    """The report as HTML text; `diagnostics` None means validation was not run.
+
+    `figures` are drawn after the scenario's diagram, in the order given.
+    """
     root = document.root
     diagram = flow_diagram(root, modules=modules)
     rows = [
@@ -77,11 +102,12 @@ def build_report(
     ]
     svg = _mark(to_bytes(diagram.graph, "svg"), rows)
     scenario = root if isinstance(root, scm.Scenario) else None
-    return _TEMPLATE.render(
+    return template(TEMPLATE).render(
         title=_title(document),
         file=document.path.name,
         root=root_node(scenario) if scenario is not None else None,
         svg=svg,
+        figures=figures,
         validated=diagnostics is not None,
         rows=rows,
         counts={s: sum(r.diagnostic.severity == s for r in rows) for s in reversed(Severity)},
@@ -231,130 +257,3 @@ def _parameter_rows(node: scm.ActionNode, scope: labels.Scope) -> Iterator[Param
         else:
             unit = labels.unit_text(spec.unit)
             yield ParameterRow(name, f"{spec.default:g} {unit}".strip(), unit, "default")
-
-
-def model_location(diagnostic: Diagnostic) -> str:
-    """`file:line` of a diagnostic, as far as known."""
-    where = Path(diagnostic.file).name if diagnostic.file else ""
-    return where + (f":{diagnostic.line}" if diagnostic.line else "")
-
-
-_ENVIRONMENT = jinja2.Environment(
-    autoescape=True, undefined=jinja2.StrictUndefined, trim_blocks=True, lstrip_blocks=True
-)
-_ENVIRONMENT.filters["location"] = model_location
-_ENVIRONMENT.globals["model_path"] = model_path
-
-_TEMPLATE = _ENVIRONMENT.from_string(
-    """<!DOCTYPE html>
-<html lang="en">
-<head>
-<meta charset="utf-8">
-<title>{{ title }} – SceML report</title>
-<style>
-/* Graphviz wraps a node's shapes in a link when it has a tooltip, hence descendant selectors. */
-body { font-family: "DejaVu Sans", sans-serif; margin: 1.5em; color: #202124; }
-h1 { font-size: 1.5em; } h2 { font-size: 1.2em; margin-top: 1.5em; }
-table { border-collapse: collapse; margin: .5em 0; font-size: .9em; }
-th, td { border: 1px solid #dadce0; padding: .25em .6em; text-align: left; vertical-align: top; }
-th { background: #f1f3f4; }
-#diagram { border: 1px solid #dadce0; padding: .5em; overflow: auto; max-height: 90vh; }
-#diagram svg { max-width: 100%; height: auto; }
-.severity-error { color: #b3261e; font-weight: bold; }
-.severity-warning { color: #b06000; font-weight: bold; }
-.severity-info { color: #1a56b0; }
-a[data-targets] { cursor: pointer; color: #1a56b0; text-decoration: underline; }
-tr.selected { background: #fef7e0; }
-.sceml-has-error polygon, .sceml-has-error ellipse, .sceml-has-error path { stroke: #d93025; stroke-width: 3px; }
-.sceml-has-warning polygon, .sceml-has-warning ellipse, .sceml-has-warning path { stroke: #f29900; stroke-width: 3px; }
-.sceml-highlight polygon, .sceml-highlight ellipse, .sceml-highlight path { stroke: #d500f9; stroke-width: 6px; stroke-dasharray: none; }
-.status-missing { color: #b3261e; } .status-default { color: #5f6368; }
-</style>
-</head>
-<body>
-<h1>{{ title }}</h1>
-<p>File <code>{{ file }}</code>
-{% if root %}
- · level <b>{{ root.level.name if root.level else "?" }}</b> · map <code>{{ root.map or "(none)" }}</code>
-{% endif %}
-</p>
-
-<h2 id="diagnostics">Validation</h2>
-{% if not validated %}
-<p>Validation was not run: this installation has no validator.</p>
-{% elif not rows %}
-<p>No problems found.</p>
-{% else %}
-<p>{% for severity, count in counts.items() %}{{ count }} {{ severity }}{{ "s" if count != 1 }}{{ ", " if not loop.last }}{% endfor %}. Click a diagnostic to highlight its element in the diagram.</p>
-<table id="diagnostic-table">
-<tr><th>Severity</th><th>Code</th><th>Message</th><th>Element</th><th>Where</th></tr>
-{% for row in rows %}
-<tr class="diagnostic">
-<td class="severity-{{ row.severity }}">{{ row.severity }}</td>
-<td>{{ row.diagnostic.code }}</td>
-<td>{% if row.targets %}<a data-targets="{{ row.targets | join(' ') }}" href="#diagram">{{ row.diagnostic.message }}</a>{% else %}{{ row.diagnostic.message }} <i>(not in the diagram)</i>{% endif %}</td>
-<td>{{ row.diagnostic.path or "" }}</td>
-<td>{{ row.diagnostic | location }}</td>
-</tr>
-{% endfor %}
-</table>
-{% endif %}
-
-<h2>Diagram</h2>
-<div id="diagram">
-{{ svg | safe }}
-</div>
-
-{% if actors %}
-<h2>Actors</h2>
-<table id="actor-table">
-<tr><th>Name</th><th>Kind</th><th>Ego</th><th>Start position</th><th>Initial speed</th><th>Size (l × w × h)</th><th>Model</th></tr>
-{% for actor in actors %}
-<tr><td>{{ actor.name }}</td><td>{{ actor.kind }}</td><td>{{ actor.ego }}</td><td>{{ actor.start }}</td><td>{{ actor.speed }}</td><td>{{ actor.size }}</td><td>{{ actor.model }}</td></tr>
-{% endfor %}
-</table>
-{% endif %}
-
-<h2>Parameters</h2>
-<table id="parameter-table">
-<tr><th>Node</th><th>Kind</th><th>Actors</th><th>Parameter</th><th>Value, range or distribution</th><th></th></tr>
-{% for node in nodes %}
-{% set span = [node.parameters | length, 1] | max %}
-{% for parameter in node.parameters or [none] %}
-<tr>
-{% if loop.first %}
-<td rowspan="{{ span }}">{% if node.targets %}<a data-targets="{{ node.targets | join(' ') }}" href="#diagram">{{ node.name }}</a>{% else %}{{ node.name }}{% endif %}</td>
-<td rowspan="{{ span }}">{{ node.kind }}</td>
-<td rowspan="{{ span }}">{{ node.actors }}</td>
-{% endif %}
-{% if parameter %}
-<td>{{ parameter.name }}</td><td>{{ parameter.shown }}</td><td class="status-{{ parameter.status }}">{{ parameter.status }}</td>
-{% else %}
-<td colspan="3"><i>no parameters</i></td>
-{% endif %}
-</tr>
-{% endfor %}
-{% endfor %}
-</table>
-
-<script>
-function scemlHighlight(link) {
-  document.querySelectorAll(".sceml-highlight").forEach(e => e.classList.remove("sceml-highlight"));
-  document.querySelectorAll("tr.selected").forEach(e => e.classList.remove("selected"));
-  let first = null;
-  for (const id of link.dataset.targets.split(" ")) {
-    const element = document.getElementById(id);
-    if (element) { element.classList.add("sceml-highlight"); first = first || element; }
-  }
-  link.closest("tr").classList.add("selected");
-  if (first) first.scrollIntoView({block: "center"});
-}
-document.querySelectorAll("a[data-targets]").forEach(link => link.addEventListener("click", event => {
-  event.preventDefault();
-  scemlHighlight(link);
-}));
-</script>
-</body>
-</html>
-"""
-)
