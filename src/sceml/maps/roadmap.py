@@ -1,0 +1,271 @@
+"""The road network of one OpenDRIVE file: lanes in lane coordinates and in the world.
+
+Conventions (those of OpenDRIVE and OpenSCENARIO): s runs along a road's reference line from 0 to
+its length; t is the lateral distance from the reference line, positive to the left; a lane
+position's offset is measured from the lane's centre line in the same direction as t. Positive
+lane ids lie left of the reference line. Headings are in rad, counter-clockwise from the world x
+axis. A lane's traffic runs along s for negative ids on a right-hand-traffic road (`rule="RHT"`,
+the default) and against s for positive ids; the other way round on left-hand-traffic roads.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from dataclasses import dataclass
+from functools import cached_property
+from pathlib import Path
+
+import numpy as np
+
+from .model import Junction, Lane, LaneSection, Road, piecewise
+from .planview import SAMPLE_STEP, ReferenceLine
+from .reader import parse_opendrive
+
+
+class PositionError(ValueError):
+    """A lane coordinate that names no lane of the map; the message says which part is wrong."""
+
+
+@dataclass(frozen=True)
+class WorldPose:
+    """A point of the plane and a heading (rad)."""
+
+    x: float
+    y: float
+    heading: float
+
+
+@dataclass(frozen=True)
+class LaneCoordinate:
+    """Where a world point lies on the map: road, lane, s, offset from the lane centre.
+
+    `outside` is how far the point lies outside the lane's edges (0 inside it).
+    """
+
+    road_id: str
+    lane_id: int
+    s: float
+    offset: float
+    lane_type: str
+    outside: float = 0.0
+
+
+@dataclass(frozen=True)
+class LaneBand:
+    """A lane at one s: its inner and outer edge (t) and its type."""
+
+    lane: Lane
+    inner: float
+    outer: float
+
+    @property
+    def centre(self) -> float:
+        return (self.inner + self.outer) / 2
+
+    @property
+    def width(self) -> float:
+        return abs(self.outer - self.inner)
+
+
+def wrap_angle(angle: float) -> float:
+    """`angle` in (-pi, pi]."""
+    wrapped = math.remainder(angle, 2 * math.pi)
+    return math.pi if wrapped == -math.pi else wrapped
+
+
+class RoadMap:
+    """Roads and junctions of an OpenDRIVE file, with coordinate conversions.
+
+    Build it with `load_map`; reference lines are evaluated when first needed.
+    """
+
+    def __init__(
+        self, path: Path, version: str, roads: list[Road], junctions: list[Junction]
+    ) -> None:
+        self.path = path
+        self.version = version
+        self.roads = {road.id: road for road in roads}
+        self.junctions = {junction.id: junction for junction in junctions}
+        self._lines: dict[str, ReferenceLine] = {}
+
+    # --- lanes -------------------------------------------------------------------------------
+
+    def road(self, road_id: str) -> Road:
+        """The road with this id, or PositionError."""
+        road = self.roads.get(str(road_id))
+        if road is None:
+            known = ", ".join(sorted(self.roads, key=_id_order)[:12])
+            raise PositionError(f"the map has no road {road_id!r} (roads: {known})")
+        return road
+
+    def reference_line(self, road_id: str) -> ReferenceLine:
+        """The reference line of a road (evaluated once)."""
+        line = self._lines.get(road_id)
+        if line is None:
+            road = self.road(road_id)
+            line = self._lines[road_id] = ReferenceLine(road.geometries, road.length)
+        return line
+
+    def bands(self, road: Road, s: float) -> list[LaneBand]:
+        """Every lane of the section in force at `s`, with its edges at `s`."""
+        section = road.section_at(s)
+        ds = s - section.s
+        base = piecewise(road.lane_offset, s) if road.lane_offset else 0.0
+        bands = []
+        for side, sign in ((section.left, 1.0), (section.right, -1.0)):
+            edge = base
+            for lane in side:
+                width = max(lane.width(ds), 0.0)
+                bands.append(LaneBand(lane, edge, edge + sign * width))
+                edge += sign * width
+        return bands
+
+    def band(self, road_id: str, lane_id: int, s: float) -> LaneBand:
+        """The lane `lane_id` of road `road_id` at `s`, or PositionError naming what is wrong."""
+        road = self.road(road_id)
+        if not -1e-6 <= s <= road.length + 1e-6:
+            raise PositionError(
+                f"s={s:g} m is outside road {road.id!r}, which is {road.length:g} m long"
+            )
+        for band in self.bands(road, s):
+            if band.lane.id == lane_id:
+                return band
+        lanes = ", ".join(str(b.lane.id) for b in self.bands(road, s))
+        raise PositionError(f"road {road.id!r} has no lane {lane_id} at s={s:g} (lanes: {lanes})")
+
+    def drives_along_s(self, road: Road, lane_id: int) -> bool:
+        """Whether traffic on the lane runs in the direction of increasing s."""
+        right_hand = road.rule.upper() != "LHT"
+        return (lane_id < 0) == right_hand
+
+    # --- conversions -------------------------------------------------------------------------
+
+    def lane_to_world(self, road_id: str, lane_id: int, s: float, offset: float = 0.0) -> WorldPose:
+        """World point of a lane position, heading in the lane's direction of traffic."""
+        road = self.road(road_id)
+        band = self.band(road.id, lane_id, s)
+        x, y, h = self.reference_line(road.id).pose(s)
+        t = band.centre + offset
+        heading = h if self.drives_along_s(road, lane_id) else h + math.pi
+        return WorldPose(x - t * math.sin(h), y + t * math.cos(h), wrap_angle(heading))
+
+    def world_to_lane(self, x: float, y: float, tolerance: float = 0.0) -> list[LaneCoordinate]:
+        """Every lane within `tolerance` m of (x, y), nearest lane centre first.
+
+        Inside a junction several connecting roads overlap, so a point may lie on several lanes.
+        """
+        found = []
+        for road in self.roads.values():
+            box = self._boxes.get(road.id)
+            if box is None or not (
+                box[0] - tolerance <= x <= box[2] + tolerance
+                and box[1] - tolerance <= y <= box[3] + tolerance
+            ):
+                continue
+            where = self.reference_line(road.id).project(x, y)
+            if where.beyond > tolerance + 1e-6:
+                continue
+            for band in self.bands(road, where.s):
+                low, high = sorted((band.inner, band.outer))
+                outside = max(low - where.t, where.t - high, 0.0)
+                if band.width > 0 and outside <= tolerance:
+                    found.append(
+                        LaneCoordinate(
+                            road.id,
+                            band.lane.id,
+                            where.s,
+                            where.t - band.centre,
+                            band.lane.type,
+                            max(outside, where.beyond),
+                        )
+                    )
+        return sorted(found, key=lambda c: (c.outside, abs(c.offset)))
+
+    def traffic_heading(self, road_id: str, lane_id: int, s: float) -> float:
+        """The direction of traffic on a lane at `s`."""
+        return self.lane_to_world(road_id, lane_id, s).heading
+
+    # --- drawing -----------------------------------------------------------------------------
+
+    def lane_outline(self, road: Road, section: LaneSection, lane_id: int) -> np.ndarray:
+        """The lane's outline as a closed polygon (N x 2), inner edge out and outer edge back."""
+        end = _section_end(road, section)
+        count = max(2, math.ceil((end - section.s) / SAMPLE_STEP) + 1)
+        line = self.reference_line(road.id)
+        inner, outer = [], []
+        for s in np.linspace(section.s, end, count):
+            x, y, h = line.pose(float(s))
+            band = next(b for b in self.bands(road, float(s)) if b.lane.id == lane_id)
+            normal = (-math.sin(h), math.cos(h))
+            inner.append((x + band.inner * normal[0], y + band.inner * normal[1]))
+            outer.append((x + band.outer * normal[0], y + band.outer * normal[1]))
+        return np.array(inner + outer[::-1])
+
+    def lane_centre_line(self, road: Road, section: LaneSection, lane_id: int) -> np.ndarray:
+        """The lane's centre line (N x 2) in the direction of increasing s."""
+        end = _section_end(road, section)
+        count = max(2, math.ceil((end - section.s) / SAMPLE_STEP) + 1)
+        points = []
+        for s in np.linspace(section.s, end, count):
+            x, y, h = self.reference_line(road.id).pose(float(s))
+            band = next(b for b in self.bands(road, float(s)) if b.lane.id == lane_id)
+            points.append((x - band.centre * math.sin(h), y + band.centre * math.cos(h)))
+        return np.array(points)
+
+    @cached_property
+    def _boxes(self) -> dict[str, tuple[float, float, float, float]]:
+        """Each road's bounding box, grown by its widest lane section."""
+        boxes = {}
+        for road in self.roads.values():
+            line = self.reference_line(road.id)
+            reach = max(
+                (sum(abs(b.outer - b.inner) for b in self.bands(road, s)) for s in line.s[::8]),
+                default=0.0,
+            )
+            reach += piecewise(road.lane_offset, 0.0) if road.lane_offset else 0.0
+            low = line.xy.min(axis=0) - reach
+            high = line.xy.max(axis=0) + reach
+            boxes[road.id] = (float(low[0]), float(low[1]), float(high[0]), float(high[1]))
+        return boxes
+
+    def bounds(self) -> tuple[float, float, float, float]:
+        """The box around every road: xmin, ymin, xmax, ymax."""
+        boxes = list(self._boxes.values()) or [(0.0, 0.0, 0.0, 0.0)]
+        return (
+            min(b[0] for b in boxes),
+            min(b[1] for b in boxes),
+            max(b[2] for b in boxes),
+            max(b[3] for b in boxes),
+        )
+
+
+def _section_end(road: Road, section: LaneSection) -> float:
+    later = [other.s for other in road.sections if other.s > section.s]
+    return min(later) if later else road.length
+
+
+def _id_order(road_id: str) -> tuple[int, str]:
+    return (int(road_id), "") if road_id.lstrip("-").isdigit() else (1 << 62, road_id)
+
+
+_cache: dict[tuple[str, int, int], RoadMap] = {}
+
+
+def load_map(path: str | os.PathLike[str]) -> RoadMap:
+    """The map in an OpenDRIVE file; read once per process while the file is unchanged."""
+    resolved = Path(path).resolve()
+    try:
+        stat = resolved.stat()
+        key: tuple[str, int, int] | None = (str(resolved), stat.st_mtime_ns, stat.st_size)
+    except OSError:
+        key = None  # the reader says what is wrong with the path
+    if key is not None and key in _cache:
+        return _cache[key]
+    version, roads, junctions = parse_opendrive(path)
+    road_map = RoadMap(resolved, version, roads, junctions)
+    if key is not None:
+        if len(_cache) >= 8:
+            _cache.pop(next(iter(_cache)))
+        _cache[key] = road_map
+    return road_map
