@@ -45,14 +45,23 @@ def test_export_refuses_a_logical_scenario_with_exit_1(examples_copy: Path, tmp_
     assert not out.exists()
 
 
-def test_export_carla_defaults_to_1_0_and_needs_a_town(examples_copy: Path, tmp_path: Path) -> None:
+def test_export_carla_defaults_to_1_0_on_the_scenarios_own_map(
+    examples_copy: Path, tmp_path: Path
+) -> None:
     out = tmp_path / "carla.xosc"
     args = [str(examples_copy / "uis2-concrete.xmi"), "-o", str(out), "--profile", "carla"]
-    refused = CliRunner().invoke(export, args)
-    assert refused.exit_code == 1 and "--town" in refused.output
-    done = CliRunner().invoke(export, [*args, "--town", "Town03"])
+    done = CliRunner().invoke(export, args)
     assert done.exit_code == 0, done.output
-    assert schema.declared_version(schema.parse_file(out)) == "1.0"
+    tree = schema.parse_file(out)
+    assert schema.declared_version(tree) == "1.0"
+    logic = tree.find("RoadNetwork/LogicFile").get("filepath")
+    assert logic.endswith("maps/intersection.xodr")
+    assert (out.parent / logic).resolve() == (
+        examples_copy.parent / "maps/intersection.xodr"
+    ).resolve()
+    town = CliRunner().invoke(export, [*args, "--town", "Town03"])
+    assert town.exit_code == 0, town.output
+    assert schema.parse_file(out).find("RoadNetwork/LogicFile").get("filepath") == "Town03"
 
 
 def test_export_missing_file_is_a_usage_error(tmp_path: Path) -> None:

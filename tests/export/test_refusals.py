@@ -70,9 +70,10 @@ def test_carla_refuses_versions_other_than_1_0(version: str) -> None:
         export(small(targetSpeed=8.0), version=version, profile="carla", town="Town03")
 
 
-def test_carla_needs_a_town() -> None:
-    with pytest.raises(ExportError, match="needs a CARLA town"):
-        export(small(targetSpeed=8.0), version="1.0", profile="carla")
+def test_carla_takes_the_scenarios_own_map_or_a_town() -> None:
+    # scenario_runner loads a LogicFile ending in .xodr as a standalone OpenDRIVE world.
+    tree = export(small(targetSpeed=8.0), version="1.0", profile="carla")
+    assert tree.find("RoadNetwork/LogicFile").get("filepath") == "map.xodr"
     tree = export(small(targetSpeed=8.0), version="1.0", profile="carla", town="Town03")
     assert tree.find("RoadNetwork/LogicFile").get("filepath") == "Town03"
 

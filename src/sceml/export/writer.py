@@ -15,7 +15,8 @@ from .. import graph, schema
 from ..diagnostics import Diagnostic
 from ..errors import ArgumentError, SceMLError
 from ..io import write_atomically
-from ..modules.flatten import flatten
+from ..maps.reference import is_town_name
+from ..modules.flatten import expand
 from . import checks
 from .render import render_tree, serialise
 from .support import unsupported_reason
@@ -76,19 +77,21 @@ def build_xosc(
     if request is not None:
         raise ExportError(request, [checks.error(checks.PROFILE, request)], file=source_path)
     _refuse(checks.level_problems(scenario), source_path)
-    flat = (
-        flatten(scenario) if any(isinstance(n, scm.ModuleUse) for n in scenario.nodes) else scenario
+    flattened = (
+        expand(scenario) if any(isinstance(n, scm.ModuleUse) for n in scenario.nodes) else None
     )
+    flat = flattened.scenario if flattened is not None else scenario
     if check_model:
         _refuse(checks.model_problems(scenario), source_path)
-    _refuse(list(checks.expressibility_problems(flat, version, profile)), source_path)
+    problems = checks.expressibility_problems(flat, version, profile)
+    _refuse(checks.traced(problems, flattened), source_path)
     root = graph.root_node(flat)
     assert root is not None  # level_problems refused scenarios without one
     options = Options(
         version=version,
         profile=profile,
         date=_file_header_date(date, root, source_path),
-        logic_file=logic_file(root.map, source_path, map_path, output_path, profile, town),
+        logic_file=logic_file(root.map, source_path, map_path, output_path, town),
         parameters=parameters,
     )
     try:
@@ -154,20 +157,17 @@ def header_date(text: str) -> str:
     return parsed.isoformat(timespec="seconds")
 
 
-def is_town_name(map_text: str) -> bool:
-    """A simulator town (e.g. `Town03`) rather than an OpenDRIVE file."""
-    return not map_text.lower().endswith(".xodr") and "/" not in map_text and "\\" not in map_text
-
-
 def logic_file(
     map_text: str | None,
     source_path: str | Path | None,
     map_path: str | Path | None,
     output_path: str | Path | None,
-    profile: str,
     town: str | None,
 ) -> str:
     """The LogicFile filepath: a town name as given, or the map file relative to the output.
+
+    Every profile writes the scenario's own .xodr as it is: CARLA's scenario_runner loads a
+    LogicFile that ends in .xodr as a standalone OpenDRIVE world.
 
     The model's map is relative to the scenario file (`source_path`); `map_path` overrides it
     (relative to the working directory). Without an output path the file is written as the
@@ -181,12 +181,6 @@ def logic_file(
         target = (Path(source_path).resolve().parent / map_text).resolve()
     else:
         target = None
-    if profile == "carla" and (target is not None or not map_text or not is_town_name(map_text)):
-        reason = (
-            f"the carla profile needs a CARLA town as map (e.g. Town03), not {str(map_text)!r}; "
-            "give one with --town"
-        )
-        raise ExportError(reason, [checks.error(checks.PROFILE, reason)], file=source_path)
     if target is None:
         return map_text or ""
     if output_path is None:

@@ -47,7 +47,7 @@ def parse_opendrive(path: str | os.PathLike[str]) -> tuple[str, list[Road], list
     seen: set[str] = set()
     for road in roads:
         if road.id in seen:
-            raise MapError(f"road id {road.id!r} is used twice", file=path, line=road.line)
+            raise MapError(f"road id {road.id!r} is used twice", file=str(path), line=road.line)
         seen.add(road.id)
     return version, roads, junctions
 
@@ -72,7 +72,9 @@ def _root(path: Path) -> etree._Element:
         tree = etree.ElementTree(etree.fromstring(data, hardened_parser(drop_comments=True)))
     except etree.XMLSyntaxError as error:
         line = error.position[0] if error.position else None
-        raise MapError(f"the map is not well-formed XML: {error.msg}", file=path, line=line) from None
+        raise MapError(
+            f"the map is not well-formed XML: {error.msg}", file=path, line=line
+        ) from None
     if has_dtd(tree):
         raise MapError("the map declares a DTD, which SceML refuses", file=path)
     root = tree.getroot()
@@ -112,7 +114,7 @@ class _Reader:
         value = element.get(name)
         if value is None:
             raise self._fail(element, f"<{element.tag}> has no {name}")
-        return value
+        return str(value)
 
     def poly3(self, element: etree._Element, start: str = "sOffset") -> Poly3:
         return Poly3(

@@ -1,0 +1,41 @@
+"""Which map a scenario names: an OpenDRIVE file (found relative to the scenario) or a town."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+
+def is_town_name(map_text: str) -> bool:
+    """A simulator town (e.g. `Town03`) rather than an OpenDRIVE file."""
+    return not map_text.lower().endswith(".xodr") and "/" not in map_text and "\\" not in map_text
+
+
+@dataclass(frozen=True)
+class MapReference:
+    """The root node's `map` text and what it names: a file path, or a simulator town."""
+
+    text: str
+    path: Path | None
+
+    @property
+    def is_town(self) -> bool:
+        return self.path is None
+
+
+def map_reference(map_text: str | None, scenario_file: str | Path | None) -> MapReference | None:
+    """What `map_text` names; a relative path is resolved from the scenario file's folder.
+
+    None when no map is named. A relative path of a model that has no file (built in Python) is
+    resolved from the working directory.
+    """
+    text = (map_text or "").strip()
+    if not text:
+        return None
+    if is_town_name(text):
+        return MapReference(text, None)
+    path = Path(text)
+    if not path.is_absolute():
+        base = Path(scenario_file).resolve().parent if scenario_file is not None else Path.cwd()
+        path = base / path
+    return MapReference(text, path.resolve())
