@@ -99,3 +99,15 @@ def test_check_xosc_unreadable_file_exits_2(tmp_path: Path) -> None:
     bad.write_text("<OpenSCENARIO>", encoding="utf-8")
     result = CliRunner().invoke(check_xosc, [str(bad)])
     assert result.exit_code == 2
+
+
+def test_export_places_problems_of_a_flattened_module_at_the_uses_line(
+    examples_copy: Path, tmp_path: Path
+) -> None:
+    source = examples_copy / "overtaking-concrete.xmi"
+    args = [str(source), "-o", str(tmp_path / "o.xosc"), "--profile", "carla", "--town", "T"]
+    result = CliRunner().invoke(export, args)
+    assert result.exit_code == 1
+    lines = source.read_text().splitlines()
+    use_line = next(i for i, text in enumerate(lines, 1) if 'name="Overtaking_1"' in text)
+    assert f"{source}:{use_line}: error[SCEML-X002] Overtaking_1.PassVehicle_1." in result.output

@@ -51,6 +51,18 @@ def test_invalid_model_is_refused_with_validation_diagnostics() -> None:
     assert any(code.startswith("SCEML-L") for code in codes(caught.value))
 
 
+def test_a_refused_node_of_a_module_is_placed_at_the_use_in_the_input() -> None:
+    document = io.load_scenario(EXAMPLES / "overtaking-concrete.xmi")
+    plain, use = document.root.nodes[2], document.root.nodes[3]
+    with pytest.raises(ExportError) as caught:
+        export(document.root, version="1.0", profile="carla", town="Town03")
+    placed = {d.path: d for d in caught.value.diagnostics}
+    inner = placed["Overtaking_1.PassVehicle_1.ChangeLaneRight_1.TimeElapsed_1"]
+    assert inner.element is use and inner.fragment == io.uri_fragment(use)
+    assert placed["KeepVelocity_1"].element is plain
+    assert placed["KeepVelocity_1"].fragment == io.uri_fragment(plain)
+
+
 @pytest.mark.parametrize("kind", ["TimeElapsed", "KeepVelocity"])
 def test_carla_refuses_delays_it_cannot_start_at_activation(kind: str) -> None:
     parameters = {"duration": 2.0}

@@ -60,3 +60,27 @@ def test_apply_needs_every_varied_value() -> None:
     logical = io.load_scenario(EXAMPLES / "uis2-logical.xmi").root
     with pytest.raises(LevelError, match="DriveDistance_1.speed"):
         apply(logical, {"ego.initialSpeed": 4.0})
+
+
+def test_template_follows_overrides_through_modules_nested_three_deep() -> None:
+    logical = io.load_scenario(EXAMPLES / "overtaking-logical.xmi").root
+    space = parameter_space(logical)
+    template = FlatTemplate(logical, space.paths)
+    for row in design(space, Plan("random", 3, seed=4)):
+        values = dict(zip(space.paths, (float(v) for v in row), strict=True))
+        assert differences(template.fill(row), flatten(apply(logical, values))) == []
+    speed = space.paths.index("Overtaking_1.passingSpeed")
+    assert [io.model_path(v) for v in template.slots_of(speed)] == [
+        "Overtaking_1.PassVehicle_1.Accelerate_1/targetSpeed"
+    ]
+
+
+def test_no_number_is_reserved_for_finding_where_values_land() -> None:
+    # The template once marked varied slots with a sentinel number and refused models using it.
+    logical = io.load_scenario(EXAMPLES / "uis2-logical.xmi").root
+    next(n for n in logical.nodes if n.name == "DriveDistance_1").distance.value = -1.5e300
+    space = parameter_space(logical)
+    template = FlatTemplate(logical, space.paths)
+    row = [5.0] * len(space.paths)
+    expected = flatten(apply(logical, dict(zip(space.paths, row, strict=True))))
+    assert differences(template.fill(row), expected) == []

@@ -128,6 +128,56 @@ def test_nesting_three_deep_flattens_with_scoped_names_roles_and_parameters() ->
     assert {p.name for p in predecessors(closing)} == {"Root"}
 
 
+def test_provenance_names_the_use_chain_and_the_definition_element_three_deep() -> None:
+    document = io.load(EXAMPLES / "overtaking-concrete.xmi")
+    result = expand(document.root)
+    by_name = {n.name: n for n in result.scenario.nodes}
+    outer = next(n for n in document.root.nodes if n.name == "Overtaking_1")
+
+    origin = result.origin(by_name["Overtaking_1.PassVehicle_1.ChangeLaneLeft_1.LaneChange_1"])
+    assert origin is not None and origin.from_module
+    assert [use.name for use in origin.uses] == [
+        "Overtaking_1",
+        "PassVehicle_1",
+        "ChangeLaneLeft_1",
+    ]
+    assert origin.uses[0] is outer and origin.in_scenario is outer
+    # The inner uses are those of the definitions, the element that of the innermost definition.
+    assert [use.eContainer().name for use in origin.uses[1:]] == ["Overtaking", "PassVehicle"]
+    assert origin.element.name == "LaneChange_1"
+    assert origin.element.eContainer().name == "ChangeLaneLeft"
+    assert origin.element.eResource.uri.normalize().endswith("sceml-library.xmi")
+
+    plain = document.root.nodes[2]
+    mine = result.origin(by_name["KeepVelocity_1"])
+    assert mine is not None and not mine.from_module
+    assert mine.element is plain and mine.in_scenario is plain
+    assert result.origin(result.scenario).element is document.root
+
+
+def test_provenance_traces_substituted_values_to_the_override_or_default() -> None:
+    document = io.load(EXAMPLES / "overtaking-concrete.xmi")
+    result = expand(document.root)
+    by_name = {n.name: n for n in result.scenario.nodes}
+    prefix = "Overtaking_1.PassVehicle_1."
+    # passingSpeed: the scenario's override, passed on through Overtaking to PassVehicle.
+    speed = result.origin(by_name[prefix + "Accelerate_1"].targetSpeed)
+    override = next(o for o in document.root.nodes[3].overrides if o.parameter == "passingSpeed")
+    assert speed is not None and speed.element is override.value
+    assert [use.name for use in speed.uses] == ["Overtaking_1", "PassVehicle_1"]
+    # The time to collision of ChangeLaneLeft is its own default.
+    time = result.origin(by_name[prefix + "ChangeLaneLeft_1.TimeToCollision_1"].time)
+    assert time is not None and time.element.eContainer().name == "timeToCollision"
+    assert time.element.eContainer().eContainer().name == "ChangeLaneLeft"
+
+
+def test_every_element_of_the_flat_scenario_has_an_origin_except_rewired_flows() -> None:
+    result = expand(io.load(EXAMPLES / "overtaking-logical.xmi").root)
+    missing = [o for o in result.scenario.eAllContents() if result.origin(o) is None]
+    assert missing and all(isinstance(o, scm.Flow) for o in missing)
+    assert all(result.origin(n) is not None for n in result.scenario.nodes)
+
+
 def test_an_override_reaches_the_innermost_node_at_the_logical_level() -> None:
     flat = flatten(io.load(EXAMPLES / "overtaking-logical.xmi").root)
     speed_up = next(n for n in flat.nodes if n.name == "Overtaking_1.PassVehicle_1.Accelerate_1")

@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
+from dataclasses import replace
 
 from pyecore.ecore import EObject
 
@@ -11,6 +12,7 @@ import scemlmodel as scm
 from .. import catalog, graph
 from ..diagnostics import Diagnostic, Severity
 from ..io import model_path, uri_fragment
+from ..modules.flatten import Flattened
 from ..validation import validate
 from .support import unsupported_reason
 
@@ -86,6 +88,22 @@ def expressibility_problems(flat: scm.Scenario, version: str, profile: str) -> I
         if isinstance(node, scm.ActionNode):
             yield from _actors_of(node)
             yield from _positions_of(node)
+
+
+def traced(problems: Iterable[Diagnostic], flattened: Flattened | None) -> list[Diagnostic]:
+    """Problems found on a flattened copy, placed at the input's element each copy stands for
+    (itself, or the outermost module use it was expanded from); the path keeps the copy's name."""
+    if flattened is None:
+        return list(problems)
+    return [_at_origin(problem, flattened) for problem in problems]
+
+
+def _at_origin(problem: Diagnostic, flattened: Flattened) -> Diagnostic:
+    origin = flattened.origin(problem.element) if problem.element is not None else None
+    if origin is None:
+        return problem
+    element = origin.in_scenario
+    return replace(problem, element=element, fragment=_fragment(element))
 
 
 def _actors_of(node: scm.ActionNode) -> Iterator[Diagnostic]:

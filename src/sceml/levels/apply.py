@@ -6,10 +6,11 @@ scenario once and then only rewrites numbers in place, so that for every sample
 
     template.fill(values)  equals  flatten(apply(logical, values))
 
-Where a sampled value lands after flattening is found by flattening once with a unique marker
-number in every varied slot: flatten itself decides where each module-use override goes (one
-module parameter may fill several slots, e.g. a destination used by a maneuver and a
-condition), so the mapping cannot drift from flatten's rules.
+Where a sampled value lands after flattening is read from flatten's provenance: each varied
+slot gets a Value, and the template's targets are the values of the flat scenario that were
+copied from it. Flatten itself decides where each module-use override goes (one module
+parameter may fill several slots, e.g. a destination used by a maneuver and a condition), so
+the mapping cannot drift from flatten's rules.
 """
 
 from __future__ import annotations
@@ -18,22 +19,15 @@ import os
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 
+from pyecore.ecore import EObject
+
 import scemlmodel as scm
 
 from ..copying import Copier
 from ..graph import root_node
 from ..io import model_path
-from ..modules.flatten import flatten
-from ..modules.resolve import resolved_definition
+from ..modules.flatten import expand
 from .paths import LevelError, place_value, resolve, slots, unresolved
-
-#: Marker numbers no scenario uses; varied path k is marked with _marker(k).
-_MARKER_BASE = -1.5e300
-
-
-def _marker(k: int) -> float:
-    # Multiplicative: at this magnitude, adding k would not change the float.
-    return _MARKER_BASE * (1 + k * 1e-6)
 
 
 def copy_scenario(scenario: scm.Scenario) -> scm.Scenario:
@@ -75,18 +69,22 @@ class FlatTemplate:
 
     def __init__(self, logical: scm.Scenario, paths: Sequence[str]) -> None:
         self.paths = tuple(paths)
-        markers = {_marker(k): k for k in range(len(self.paths))}
-        _refuse_markers_in(logical, markers)
         tagged = copy_scenario(logical)
         known = slots(tagged)
-        for path, k in zip(self.paths, range(len(self.paths)), strict=True):
-            place_value(resolve(tagged, path, known), _marker(k))
-        self.scenario = flatten(tagged)
+        placed: dict[EObject, list[int]] = {}
+        for k, path in enumerate(self.paths):
+            slot = resolve(tagged, path, known)
+            place_value(slot, 0.0)
+            placed.setdefault(slot.held(), []).append(k)
+        flattened = expand(tagged)
+        self.scenario = flattened.scenario
         set_level(self.scenario, "concrete")
         self.targets: list[list[scm.Value]] = [[] for _ in self.paths]
         for obj in self.scenario.eAllContents():
-            if isinstance(obj, scm.Value) and obj.value in markers:
-                self.targets[markers[obj.value]].append(obj)
+            origin = flattened.origin(obj)
+            if isinstance(obj, scm.Value) and origin is not None and origin.element in placed:
+                for k in placed[origin.element]:
+                    self.targets[k].append(obj)
             elif isinstance(obj, scm.ParameterValue) and not isinstance(obj, scm.Value):
                 raise LevelError(
                     f"{obj.eClass.name} is not among the sampled parameters; inside a module "
@@ -105,16 +103,6 @@ class FlatTemplate:
     def slots_of(self, index: int) -> list[scm.Value]:
         """The Value objects of the flattened scenario that path `index` fills."""
         return list(self.targets[index])
-
-
-def _refuse_markers_in(logical: scm.Scenario, markers: Mapping[float, int]) -> None:
-    objects = list(logical.eAllContents())
-    for use in [o for o in objects if isinstance(o, scm.ModuleUse)]:
-        objects.extend(resolved_definition(use).eAllContents())
-    for obj in objects:
-        numbers = [getattr(obj, name, None) for name in ("value", "min", "max", "mean")]
-        if any(isinstance(n, float) and n in markers for n in numbers):
-            raise LevelError(f"the model uses the reserved number {_MARKER_BASE:g}")
 
 
 def relocate_map(scenario: scm.Scenario, source: Path, target: Path) -> None:

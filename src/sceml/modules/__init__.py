@@ -6,7 +6,7 @@ ModuleUse that binds its roles to actors and may override its parameters. See do
 
 from .errors import ExtractError, FlattenError, UnknownModuleError
 from .extract import Region, RoleSpec, extract, find_region, parse_role
-from .flatten import Flattened, expand, flatten
+from .flatten import Flattened, Origin, expand, flatten
 from .library import (
     DefinitionDetail,
     DefinitionSummary,
@@ -27,6 +27,7 @@ __all__ = [
     "FlattenError",
     "FlattenReport",
     "Flattened",
+    "Origin",
     "Region",
     "RoleSpec",
     "UnknownModuleError",

@@ -11,7 +11,7 @@ from pyecore.ecore import EObject
 import scemlmodel as scm
 
 from ..collector import collector_paused
-from ..copying import Copier, copy_tree
+from ..copying import Copier
 from ..graph import predecessors, successors
 from ..io import model_path
 from ..traversal import all_contents, cross_references
@@ -19,15 +19,46 @@ from . import naming
 from .errors import FlattenError
 from .resolve import definition_key, location, resolved_definition, unwrap
 
-__all__ = ["FlattenError", "Flattened", "expand", "flatten"]
+__all__ = ["FlattenError", "Flattened", "Origin", "expand", "flatten"]
+
+
+@dataclass(frozen=True)
+class Origin:
+    """Where one element of a flattened scenario came from.
+
+    `element` is what it is a copy of: an element of the input scenario, or of a module
+    definition (in a library), or, for a value that replaced a parameter reference, the use's
+    override value or the parameter's default. `uses` are the module uses whose expansion put it
+    where it is, outermost first: the first is a node of the input scenario, the others belong
+    to module definitions. An element of the scenario's own graph has no uses.
+    """
+
+    element: EObject
+    uses: tuple[scm.ModuleUse, ...] = ()
+
+    @property
+    def from_module(self) -> bool:
+        """Whether the element was expanded from a module use."""
+        return bool(self.uses)
+
+    @property
+    def in_scenario(self) -> EObject:
+        """What the input scenario shows for it: the outermost use, or the element itself."""
+        return self.uses[0] if self.uses else self.element
 
 
 @dataclass
 class Flattened:
-    """A flattened copy of a scenario and the uses that were expanded, outermost first."""
+    """A flattened copy of a scenario, the uses that were expanded (outermost first), and the
+    origin of every element of the copy (flows made to rewire ports excepted: they copy none)."""
 
     scenario: scm.Scenario
     expanded: list[str] = field(default_factory=list)
+    origins: dict[EObject, Origin] = field(default_factory=dict)
+
+    def origin(self, obj: EObject) -> Origin | None:
+        """Where an element of the flattened scenario came from; None for one it does not hold."""
+        return self.origins.get(obj)
 
 
 def flatten(scenario: scm.Scenario) -> scm.Scenario:
@@ -35,13 +66,14 @@ def flatten(scenario: scm.Scenario) -> scm.Scenario:
 
     Expanded nodes are named `<use>.<node>` (e.g. `CrossingManeuver_1.Accelerate_1`), roles are
     replaced by the actors they are bound to, parameter references by the use's overrides or the
-    module's defaults, and flows into and out of a use are rewired through its ports.
+    module's defaults, and flows into and out of a use are rewired through its ports. Where each
+    element came from is told by `expand`; names are for people, not for finding that out.
     """
     return expand(scenario).scenario
 
 
 def expand(scenario: scm.Scenario) -> Flattened:
-    """Like `flatten`, and also report which uses were expanded."""
+    """Like `flatten`, and also report which uses were expanded and where each element came from."""
     with collector_paused():
         return _expand(scenario)
 
@@ -52,10 +84,10 @@ def _expand(scenario: scm.Scenario) -> Flattened:
     copier.copy_references()
     expansion = _Expansion(flat, {copy: original for original, copy in copier.copies.items()})
     for use in [node for node in flat.nodes if isinstance(node, scm.ModuleUse)]:
-        expansion.inline(use, ())
+        expansion.inline(use, (), ())
     expansion.commit()
     _check_self_contained(flat)
-    return Flattened(flat, expansion.expanded)
+    return Flattened(flat, expansion.expanded, expansion.provenance())
 
 
 class _Expansion:
@@ -65,6 +97,8 @@ class _Expansion:
         self.graph = graph
         # Copies are not in any file; errors point at the element they were copied from.
         self.origins = origins
+        # The uses expanded to make each copy, outermost first, as original model objects.
+        self.chains: dict[EObject, tuple[scm.ModuleUse, ...]] = {}
         self.taken = {str(node.name) for node in graph.nodes if node.name}
         self.expanded: list[str] = []
         # The graph's own collections are pyecore ordered sets, whose insert and remove cost
@@ -90,13 +124,39 @@ class _Expansion:
         self.graph.flows.clear()
         self.graph.flows.extend(flows)
 
+    def provenance(self) -> dict[EObject, Origin]:
+        """The origin of every element the flat graph holds in the end."""
+        held = [self.graph, *all_contents(self.graph)]
+        return {
+            obj: Origin(self.origins[obj], self.chains.get(obj, ()))
+            for obj in held
+            if obj in self.origins
+        }
+
+    def copied(self, copier: Copier, uses: tuple[scm.ModuleUse, ...]) -> None:
+        """Record the copies `copier` made, inside `uses`, by the original each one stands for."""
+        for source, copy in copier.copies.items():
+            self.origins[copy] = self.origins.get(source, source)
+            self.chains[copy] = uses
+
     def where(self, obj: EObject) -> dict[str, Any]:
         """Location keywords of the element `obj` was copied from."""
         return location(self.origins.get(obj, obj))
 
-    def inline(self, use: scm.ModuleUse, chain: tuple[tuple[tuple[str, str], str], ...]) -> None:
-        """Replace `use` by a copy of its definition's graph, then expand the uses inside it."""
-        definition = resolved_definition(self.origins.get(use, use), self.where)
+    def inline(
+        self,
+        use: scm.ModuleUse,
+        chain: tuple[tuple[tuple[str, str], str], ...],
+        uses: tuple[scm.ModuleUse, ...],
+    ) -> None:
+        """Replace `use` by a copy of its definition's graph, then expand the uses inside it.
+
+        `chain` holds the definitions entered so far (to refuse recursion), `uses` the original
+        uses expanded so far (the copies' provenance).
+        """
+        original = self.origins.get(use, use)
+        assert isinstance(original, scm.ModuleUse)
+        definition = resolved_definition(original, self.where)
         key = definition_key(definition)
         if any(seen == key for seen, _ in chain):
             names = " -> ".join(name for _, name in (*chain, (key, str(definition.name))))
@@ -107,15 +167,17 @@ class _Expansion:
         nodes = copier.copy_all(definition.nodes)
         flows = copier.copy_all(definition.flows)
         copier.copy_references()
-        self.origins.update({copy: original for original, copy in copier.copies.items()})
+        inside = (*uses, original)
+        self.copied(copier, inside)
         in_port, out_port = _ports(definition, nodes)
         _bind_roles(use, definition, nodes, self.where)
-        _bind_parameters(use, definition, nodes, self.where)
+        for value_copier in _bind_parameters(use, definition, nodes, self.where):
+            self.copied(value_copier, inside)
         self._place(use, nodes, flows, in_port, out_port)
         self.expanded.append(str(use.name))
         inner = (*chain, (key, str(definition.name)))
         for nested in [n for n in nodes if isinstance(n, scm.ModuleUse)]:
-            self.inline(nested, inner)
+            self.inline(nested, inner, inside)
 
     def _place(
         self,
@@ -204,7 +266,9 @@ def _bind_parameters(
     definition: scm.ModuleDefinition,
     nodes: list[EObject],
     where: Callable[[EObject], dict[str, Any]],
-) -> None:
+) -> list[Copier]:
+    """Replace each parameter reference by a copy of the value chosen for it; returns the copiers
+    that made those copies, so that each copy can be traced to the value it was made from."""
     overrides = {override.parameter: override.value for override in use.overrides}
     declared = {parameter.name: parameter for parameter in definition.parameters}
     unknown = sorted(set(overrides) - set(declared))
@@ -214,6 +278,7 @@ def _bind_parameters(
             f"(it has: {', '.join(declared) or 'none'})",
             **where(use),
         )
+    copiers: list[Copier] = []
     for ref in [o for o in _with_contents(nodes) if isinstance(o, scm.ParameterRef)]:
         parameter = ref.parameter
         if parameter is None or declared.get(parameter.name) is not unwrap(parameter):
@@ -226,8 +291,17 @@ def _bind_parameters(
             chosen = parameter.default
         # An unset value means the language default, as everywhere else in a scenario.
         ref.eContainer().eSet(
-            ref.eContainmentFeature(), copy_tree(chosen) if chosen is not None else None
+            ref.eContainmentFeature(), _copy(chosen, copiers) if chosen is not None else None
         )
+    return copiers
+
+
+def _copy(value: EObject, copiers: list[Copier]) -> EObject:
+    copier = Copier()
+    duplicate = copier.copy(value)
+    copier.copy_references()
+    copiers.append(copier)
+    return duplicate
 
 
 def _with_contents(nodes: list[EObject]) -> list[EObject]:

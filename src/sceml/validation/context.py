@@ -14,6 +14,7 @@ import scemlmodel as scm
 from .. import catalog
 from ..graph import root_node
 from ..io import Document
+from ..modules.flatten import Flattened, expand
 from .limits import Limits
 
 T = TypeVar("T")
@@ -29,35 +30,27 @@ def is_kind(class_name: str, kind: str) -> bool:
 class FlatView:
     """A scenario with its module uses expanded, and where each expanded node came from.
 
-    Flattening names a node `<use>.<node>`; a node whose name is not one of the original's plain
-    nodes came from a module and is traced back to the outermost use it was expanded from.
+    Flattening records the origin of every element it copies; a node expanded from a module
+    is traced back to the outermost use, the element of the scenario an engineer can change.
     """
 
-    scenario: scm.Scenario
+    flattened: Flattened
     original: scm.Scenario
 
-    def __post_init__(self) -> None:
-        self._plain: dict[str, EObject] = {}
-        self._uses: dict[str, EObject] = {}
-        for node in self.original.nodes:
-            table = self._uses if isinstance(node, scm.ModuleUse) else self._plain
-            table.setdefault(str(node.name), node)
+    @property
+    def scenario(self) -> scm.Scenario:
+        """The flattened scenario."""
+        return self.flattened.scenario
 
     def from_module(self, node: EObject) -> bool:
         """Whether a flat node was expanded from a module use."""
-        return str(node.name) not in self._plain
+        origin = self.flattened.origin(node)
+        return origin is None or origin.from_module
 
     def origin(self, node: EObject) -> EObject:
         """The original element a flat node stands for: itself, or the use it was expanded from."""
-        name = str(node.name)
-        if name in self._plain:
-            return self._plain[name]
-        prefix = name
-        while "." in prefix:
-            prefix = prefix.rsplit(".", 1)[0]
-            if prefix in self._uses:
-                return self._uses[prefix]
-        return self.original
+        origin = self.flattened.origin(node)
+        return origin.in_scenario if origin is not None else self.original
 
 
 @dataclass
@@ -114,10 +107,8 @@ class Context:
             return None
         if not any(isinstance(node, scm.ModuleUse) for node in scenario.nodes):
             return None
-        from ..modules.flatten import flatten  # imported late: flattening is optional here
-
         try:
-            self._flat = FlatView(flatten(scenario), scenario)
+            self._flat = FlatView(expand(scenario), scenario)
         except Exception as error:  # any reason at all: the module rules say what is wrong
             self.flat_failure = str(error) or type(error).__name__
         return self._flat
