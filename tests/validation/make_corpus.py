@@ -24,6 +24,8 @@ from sceml.params import discrete, normal, span, uniform
 HERE = Path(__file__).resolve().parent / "corpus"
 DATE = "2026-01-01T00:00:00"
 LIBRARY = "lib/modules.xmi"
+#: The repository's intersection map, from the corpus folder: the map rules (SCEML-R) read it.
+MAP = "../../../maps/intersection.xodr"
 
 Case = Callable[[Path], None]
 CASES: list[tuple[str, str, Case]] = []
@@ -41,7 +43,7 @@ def case(name: str, codes: str) -> Callable[[Case], Case]:
 
 def scenario(level: str = "concrete", **options: object) -> tuple[ScenarioBuilder, scm.Actor]:
     """A scenario with a map and one ego car, ready for one fault to be added."""
-    b = ScenarioBuilder("Case", map="town.xodr", level=level, date=DATE, **options)  # type: ignore[arg-type]
+    b = ScenarioBuilder("Case", map=MAP, level=level, date=DATE, **options)  # type: ignore[arg-type]
     ego = b.actor("Car", "ego", ego=True, start=lane(1, -1, 10.0), speed=5.0)
     return b, ego
 
@@ -123,7 +125,7 @@ def crossing_use(
 def two_roots(out: Path) -> None:
     b, ego = scenario()
     b.chain(b.root, b.add("Accelerate", ego, targetSpeed=8.0), b.end)
-    b.scenario.nodes.append(scm.RootNode(name="Root2", map="town.xodr"))
+    b.scenario.nodes.append(scm.RootNode(name="Root2", map=MAP))
     save(b.scenario, out, "s001-two-roots.xmi")
 
 
@@ -363,7 +365,7 @@ def empty_discrete(out: Path) -> None:
 @case("p007-negative-radius", "SCEML-P007")
 def negative_radius(out: Path) -> None:
     b, ego = scenario()
-    b.chain(b.root, b.add("InLocationRadius", ego, position=world(5, 5), radius=-2.0), b.end)
+    b.chain(b.root, b.add("InLocationRadius", ego, position=world(0, 0), radius=-2.0), b.end)
     save(b.scenario, out, "p007-negative-radius.xmi")
 
 
@@ -492,7 +494,8 @@ def unknown_role(out: Path) -> None:
     )
 
 
-@case("m004-car-as-crosser", "SCEML-M004")
+# The car's destination is the pedestrian's, on the sidewalk, so the map rule objects too.
+@case("m004-car-as-crosser", "SCEML-M004 SCEML-R004")
 def car_as_crosser(out: Path) -> None:
     crossing_use(
         out, "m004-car-as-crosser.xmi", lambda c: {"crosser": c["car"], "trigger": c["ego"]}
@@ -678,6 +681,90 @@ def time_of_day_functional(out: Path) -> None:
     save(b.scenario, out, "e004-time-of-day-functional.xmi")
 
 
+# The map (SPEC §12): maps/intersection.xodr, see docs/map.md -------------------------------------
+
+
+def on_map(
+    name: str, codes: str, *, level: str = "concrete", map_text: str = MAP
+) -> Callable[[Callable[[ScenarioBuilder, scm.Actor], None]], Case]:
+    """A case whose scenario (ego on road 1, lane -1 at s=10) gets one more part from `add`."""
+
+    def register(add: Callable[[ScenarioBuilder, scm.Actor], None]) -> Case:
+        def build(out: Path) -> None:
+            b, ego = scenario(level)
+            b.root.map = map_text
+            add(b, ego)
+            save(b.scenario, out, f"{name}.xmi")
+
+        return case(name, codes)(build)
+
+    return register
+
+
+def _accelerate(b: ScenarioBuilder, ego: scm.Actor) -> None:
+    b.chain(b.root, b.add("Accelerate", ego, targetSpeed=8.0), b.end)
+
+
+on_map("r001-missing-map", "SCEML-R001", map_text="../../../maps/missing.xodr")(_accelerate)
+on_map("r001-not-opendrive", "SCEML-R001", map_text="lib/modules.xmi")(_accelerate)
+on_map("r002-town-name", "SCEML-R002", map_text="Town03")(_accelerate)
+
+
+def _start(
+    position: scm.Position, kind: str = "Car"
+) -> Callable[[ScenarioBuilder, scm.Actor], None]:
+    def add(b: ScenarioBuilder, ego: scm.Actor) -> None:
+        other = b.actor(kind, "other", start=position)
+        b.chain(b.root, b.add("Accelerate", other, targetSpeed=1.0), b.end)
+
+    return add
+
+
+on_map("r003-unknown-road", "SCEML-R003")(_start(lane(99, -1, 10.0)))
+on_map("r003-unknown-lane", "SCEML-R003")(_start(lane(1, -3, 10.0)))
+on_map("r003-s-beyond-road", "SCEML-R003")(_start(lane(1, -1, 150.0)))
+on_map("r003-offset-outside-lane", "SCEML-R003")(_start(lane(1, -1, 20.0, offset=3.0)))
+on_map("r003-logical-s-range-beyond-road", "SCEML-R003", level="logical")(
+    _start(lane(1, -1, span(20.0, 120.0)))
+)
+on_map("r004-car-on-sidewalk", "SCEML-R004")(_start(lane(1, -2, 10.0)))
+on_map("r004-car-off-road", "SCEML-R004")(_start(world(30.0, 30.0, h=0.0)))
+# A pedestrian may stand on the roadway (it crosses it): clean.
+on_map("r004-pedestrian-on-roadway", "")(_start(lane(1, -1, 30.0), kind="Pedestrian"))
+# Lane 1 of the north arm carries traffic south; the car faces north on it.
+on_map("r005-heading-against-lane", "SCEML-R005")(_start(world(-1.75, 30.0, h=1.5708)))
+
+
+def _turn(kind: str, destination: scm.Position) -> Callable[[ScenarioBuilder, scm.Actor], None]:
+    """The car `other` comes from the north (road 1, lane 1) and turns to `destination`."""
+
+    def add(b: ScenarioBuilder, ego: scm.Actor) -> None:
+        other = b.actor("Car", "other", start=lane(1, 1, 30.0), speed=5.0)
+        b.chain(b.root, b.add(kind, other, destination=destination), b.end)
+
+    return add
+
+
+# From the north, the west arm (road 4) is a right turn and the east arm (road 2) a left one.
+on_map("r006-turn-left-clean", "")(_turn("TurnLeft", lane(2, -1, 20.0)))
+on_map("r006-turn-left-is-a-right-turn", "SCEML-R006")(_turn("TurnLeft", lane(4, -1, 20.0)))
+on_map("r006-turn-right-unreachable", "SCEML-R006")(_turn("TurnRight", lane(1, -1, 20.0)))
+
+
+def _walk(destination: scm.Position) -> Callable[[ScenarioBuilder, scm.Actor], None]:
+    """A pedestrian on the west arm's south sidewalk (road 4, lane 2) crosses to `destination`."""
+
+    def add(b: ScenarioBuilder, ego: scm.Actor) -> None:
+        walker = b.actor("Pedestrian", "walker", start=lane(4, 2, 1.0))
+        b.chain(b.root, b.add("Cross", walker, destination=destination), b.end)
+
+    return add
+
+
+on_map("r007-cross-clean", "")(_walk(lane(4, -2, 1.0)))
+on_map("r007-cross-along-the-sidewalk", "SCEML-R007")(_walk(lane(4, 2, 20.0)))
+
+
 # Several faults at once ----------------------------------------------------------------------
 
 
@@ -686,7 +773,7 @@ def time_of_day_functional(out: Path) -> None:
     "SCEML-A003 SCEML-A007 SCEML-L001 SCEML-P001 SCEML-P007 SCEML-E002",
 )
 def actors_and_values(out: Path) -> None:
-    b = ScenarioBuilder("Many", map="town.xodr", level="concrete", date=DATE)
+    b = ScenarioBuilder("Many", map=MAP, level="concrete", date=DATE)
     walker = b.actor("Pedestrian", "walker", start=lane(4, 2, 1.0))
     car = b.actor("Car", "car")
     run = b.add("Accelerate", walker, targetSpeed=span(2.0, 20.0))
@@ -729,7 +816,7 @@ def level_faults(out: Path) -> None:
     ego = cast["ego"]
     b.chain(b.root, b.add("Accelerate", ego, targetSpeed=uniform(9.0, 4.0), rate=span(3.0, 1.0)))
     shaky = b.add("Decelerate", ego, targetSpeed=discrete([1.0, 2.0], [0.0, 0.0]))
-    b.chain(b.scenario.nodes[-2], shaky, b.add("FollowTrajectory", ego, waypoints=[world(1, 2)]))
+    b.chain(b.scenario.nodes[-2], shaky, b.add("FollowTrajectory", ego, waypoints=[world(0, 0)]))
     use = b.use(
         definition(out, "CrossingManeuver"), {"crosser": cast["ego"], "trigger": cast["car"]}
     )

@@ -95,7 +95,8 @@ class RoadMap:
         """The road with this id, or PositionError."""
         road = self.roads.get(str(road_id))
         if road is None:
-            known = ", ".join(sorted(self.roads, key=_id_order)[:12])
+            ids = sorted(self.roads, key=_id_order)
+            known = ", ".join(ids[:12]) + (f" and {len(ids) - 12} more" if len(ids) > 12 else "")
             raise PositionError(f"the map has no road {road_id!r} (roads: {known})")
         return road
 

@@ -7,7 +7,16 @@
 Importing this package registers every rule of SPEC §6 (one module per area) in `REGISTRY`.
 """
 
-from . import actors, modules, parameters, plausibility, readiness, simultaneity, structure
+from . import (
+    actors,
+    map_rules,
+    modules,
+    parameters,
+    plausibility,
+    readiness,
+    simultaneity,
+    structure,
+)
 from .engine import INTERNAL_ERROR, is_valid, iter_diagnostics, validate
 from .limits import DEFAULT_LIMITS, Limits, LimitsError, load_limits
 from .registry import REGISTRY, Registry, Rule, constraint
@@ -28,4 +37,13 @@ __all__ = [
 ]
 
 # The rule modules register themselves on import; naming them keeps linters from dropping them.
-_RULE_MODULES = (actors, modules, parameters, plausibility, readiness, simultaneity, structure)
+_RULE_MODULES = (
+    actors,
+    map_rules,
+    modules,
+    parameters,
+    plausibility,
+    readiness,
+    simultaneity,
+    structure,
+)

@@ -18,7 +18,8 @@ INTRO = """\
 `sceml validate FILE...` checks scenarios and module libraries against the rules below (SPEC §6,
 the paper's rules 1-5, and what a scenario engineer would expect). Every diagnostic carries its
 rule code, severity, message, file, line and model path. Codes are stable: S structure, A actors,
-P parameters and levels, C simultaneity, L plausibility, M modules, E export readiness.
+P parameters and levels, C simultaneity, L plausibility, M modules, E export readiness, R the
+map.
 
 This file is generated from the rule registry: `python -m sceml.validation.docs >
 docs/validation-rules.md`. A test fails when it is stale.
@@ -45,6 +46,15 @@ docs/validation-rules.md`. A test fails when it is stale.
 - **Levels.** A functional scenario may leave anything unset. Logical and concrete ones need every
   value without a language default (SCEML-P002, SCEML-M006); concrete ones hold single values only
   (SCEML-P001).
+- **The map.** The R rules read the OpenDRIVE file the root node names (relative to the scenario
+  file) with `sceml.maps` (docs/map-reader.md). A simulator town name is not read (SCEML-R002,
+  info). A world position is on a lane when it lies within the lane's edges or at most 0.5 m
+  outside them; vehicles need driving lanes, bicycles may also use bike lanes and sidewalks,
+  pedestrians sidewalks and the roadway. A logical position is judged at the ends and the middle
+  of each range or distribution. A turn starts from the actor's start lane, or from the
+  destination of its latest earlier routed maneuver; after a lane change or overtake, any lane of
+  the road in the same direction. Turns: more than 30 degrees of heading change through the
+  junction's connecting road is a left or right turn, more than 150 degrees a U-turn.
 - **Internal errors.** A rule that fails unexpectedly on a malformed model does not stop the run:
   it becomes a diagnostic with code `{internal}` naming the rule, and all other rules still run.
 """

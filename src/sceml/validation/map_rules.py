@@ -1,0 +1,485 @@
+"""Map rules (SPEC §12): positions lie on the OpenDRIVE map the scenario names.
+
+They run whenever the root node's map is an `.xodr` path; a simulator town name is left alone
+with an info diagnostic. Positions inside module uses are checked with the values the use gives
+them (through modules). A world position is on a lane when it lies inside the lane's edges or
+within `POSITION_TOLERANCE` of them.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator
+from pathlib import Path
+
+from pyecore.ecore import EObject
+
+import scemlmodel as scm
+
+from ..diagnostics import Severity
+from ..graph import reachable, root_node
+from ..maps import (
+    BICYCLE_LANE_TYPES,
+    PEDESTRIAN_LANE_TYPES,
+    VEHICLE_LANE_TYPES,
+    LaneCoordinate,
+    MapError,
+    PositionError,
+    RoadMap,
+    load_map,
+    wrap_angle,
+)
+from ..maps.positions import Located, centre, locate, spread
+from ..maps.reference import MapReference, map_reference
+from ..maps.routes import routes_from
+from .context import Context, is_kind
+from .registry import Finding, constraint
+
+ERROR, WARNING, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
+#: How far outside a lane's edges a world position may lie and still be on it (m).
+POSITION_TOLERANCE = 0.5
+#: How far a vehicle's heading may differ from its lane's direction of traffic.
+HEADING_LIMIT = math.radians(45)
+_SOURCE = "SPEC §12"
+
+
+# --- which map, which actor -------------------------------------------------------------------
+
+
+def _reference(obj: EObject, context: Context) -> MapReference | None:
+    top: EObject | None = obj
+    while top is not None and not isinstance(top, scm.Scenario):
+        top = top.eContainer()
+    root = root_node(top) if isinstance(top, scm.Scenario) else None
+    if root is None:
+        return None  # a module definition on its own: its uses are checked in the scenario
+    file = context.document.path if context.document is not None else None
+    reference = map_reference(root.map, file)
+    # A model built in Python has no folder for a relative path to start from: it is checked
+    # against the map only when the path happens to resolve from the working directory.
+    unanchored = file is None and reference is not None and reference.path is not None
+    if unanchored and not Path(root.map).is_absolute() and not reference.path.is_file():  # type: ignore[union-attr]
+        return None
+    return reference
+
+
+def _loaded(reference: MapReference, context: Context) -> RoadMap | MapError:
+    def read() -> RoadMap | MapError:
+        try:
+            return load_map(reference.path)  # type: ignore[arg-type]
+        except MapError as error:
+            return error
+
+    return context.memo(("map", reference.path), read)
+
+
+def _map_of(obj: EObject, context: Context) -> RoadMap | None:
+    """The readable OpenDRIVE map `obj`'s scenario names, or None (no map, a town, unreadable)."""
+    reference = _reference(obj, context)
+    if reference is None or reference.is_town:
+        return None
+    loaded = _loaded(reference, context)
+    return loaded if isinstance(loaded, RoadMap) else None
+
+
+def _actor_of(position: EObject) -> scm.Actor | None:
+    owner = position.eContainer()
+    if isinstance(owner, scm.Actor):
+        return owner
+    actor = getattr(owner, "referenceActor", None)
+    return actor if isinstance(actor, scm.Actor) else None
+
+
+def _what(position: EObject) -> str:
+    """Whose position it is, in words: "start of actor 'ego'", "destination of TurnRight_1"."""
+    owner = position.eContainer()
+    feature = position.eContainmentFeature()
+    role = {"startPosition": "start", "waypoints": "waypoint"}.get(
+        str(feature.name) if feature is not None else "", str(getattr(feature, "name", "position"))
+    )
+    if isinstance(owner, scm.Actor):
+        return f"{role} of actor {owner.name!r}"
+    return f"{role} of {getattr(owner, 'name', None) or owner.eClass.name}"
+
+
+def _usable_lanes(actor: scm.Actor) -> tuple[frozenset[str], str]:
+    """The lane types an actor may be on, and what it needs in words."""
+    name = actor.eClass.name
+    if is_kind(name, "Pedestrian"):
+        return PEDESTRIAN_LANE_TYPES, "a sidewalk or the roadway"
+    if is_kind(name, "Bicycle"):
+        return BICYCLE_LANE_TYPES, "the roadway, a bike lane or a sidewalk"
+    return VEHICLE_LANE_TYPES, "a driving lane"
+
+
+def _is_vehicle(actor: scm.Actor) -> bool:
+    return not (is_kind(actor.eClass.name, "Pedestrian") or is_kind(actor.eClass.name, "Bicycle"))
+
+
+def _kind(actor: scm.Actor) -> str:
+    return str(actor.eClass.name).lower()
+
+
+def _at(x: float, y: float) -> str:
+    return f"({x:.2f}, {y:.2f})"
+
+
+def _lane_words(lane: LaneCoordinate) -> str:
+    return f"road {lane.road_id}, lane {lane.lane_id}"
+
+
+# --- the map itself ---------------------------------------------------------------------------
+
+
+@constraint(
+    "SCEML-R001",
+    ERROR,
+    "RootNode",
+    "a map given as an OpenDRIVE path names a readable OpenDRIVE file",
+    source=_SOURCE,
+)
+def map_file_is_opendrive(root: scm.RootNode, context: Context) -> Iterator[Finding]:
+    reference = _reference(root, context)
+    if reference is None or reference.is_town:
+        return
+    loaded = _loaded(reference, context)
+    if isinstance(loaded, MapError):
+        detail = loaded.message + (f" (line {loaded.line})" if loaded.line else "")
+        yield root, f"map {reference.text!r} ({reference.path}): {detail}"
+
+
+@constraint(
+    "SCEML-R002",
+    INFO,
+    "RootNode",
+    "a map given as a simulator town name is not read: positions are not checked against it",
+    source=_SOURCE,
+)
+def town_is_not_checked(root: scm.RootNode, context: Context) -> Iterator[Finding]:
+    reference = _reference(root, context)
+    if reference is not None and reference.is_town:
+        yield (
+            root,
+            (
+                f"map {reference.text!r} is a simulator town, not an OpenDRIVE file: "
+                "positions are not checked against it"
+            ),
+        )
+
+
+# --- positions --------------------------------------------------------------------------------
+
+
+@constraint(
+    "SCEML-R003",
+    ERROR,
+    "LanePosition",
+    "a lane position names a road and lane of the map, with s within the road and the offset "
+    "within the lane",
+    source=_SOURCE,
+    through_modules=True,
+)
+def lane_position_exists(position: scm.LanePosition, context: Context) -> Iterator[Finding]:
+    road_map = _map_of(position, context)
+    if road_map is None or position.roadId is None or position.laneId is None:
+        return
+    what = _what(position)
+    for s in spread(position.s) or []:
+        try:
+            band = road_map.band(str(position.roadId), int(position.laneId), s)
+        except PositionError as error:
+            yield position, f"{what}: {error}"
+            return
+        for offset in spread(position.offset, 0.0) or []:
+            if abs(offset) > band.width / 2 + 1e-6:
+                yield (
+                    position,
+                    (
+                        f"{what}: offset {offset:g} m leaves lane {position.laneId} of road "
+                        f"{position.roadId}, which is {band.width:g} m wide at s={s:g}"
+                    ),
+                )
+                return
+
+
+@constraint(
+    "SCEML-R004",
+    ERROR,
+    ("WorldPosition", "LanePosition"),
+    "a position lies on a lane that fits its actor: driving lanes for vehicles; the roadway, "
+    "sidewalks and bike lanes for bicycles and pedestrians",
+    source=_SOURCE,
+    through_modules=True,
+)
+def position_fits_actor(position: EObject, context: Context) -> Iterator[Finding]:
+    road_map = _map_of(position, context)
+    actor = _actor_of(position)
+    if road_map is None or actor is None:
+        return
+    usable, needs = _usable_lanes(actor)
+    what = _what(position)
+    try:
+        points = locate(position, road_map)
+    except PositionError:
+        return  # SCEML-R003 says what is wrong with the lane position
+    for point in points:
+        if point.lane is not None:
+            road_id, lane_id, s, _ = point.lane
+            lane_type = road_map.band(road_id, lane_id, s).lane.type
+            if lane_type not in usable:
+                yield (
+                    position,
+                    (
+                        f"{what}: lane {lane_id} of road {road_id} is a {lane_type} lane; "
+                        f"a {_kind(actor)} needs {needs}"
+                    ),
+                )
+                return
+            continue
+        lanes = road_map.world_to_lane(point.x, point.y, POSITION_TOLERANCE)
+        if not lanes:
+            yield (
+                position,
+                f"{what}: {_at(point.x, point.y)} is off the road network{_nearest(road_map, point)}",
+            )
+            return
+        if not any(lane.lane_type in usable for lane in lanes):
+            lane = lanes[0]
+            yield (
+                position,
+                (
+                    f"{what}: {_at(point.x, point.y)} is on a {lane.lane_type} lane "
+                    f"({_lane_words(lane)}); a {_kind(actor)} needs {needs}"
+                ),
+            )
+            return
+
+
+def _nearest(road_map: RoadMap, point: Located) -> str:
+    lanes = road_map.world_to_lane(point.x, point.y, 50.0)
+    if not lanes:
+        return " (no lane within 50 m)"
+    lane = lanes[0]
+    return f" (the nearest lane, {_lane_words(lane)}, is {lane.outside:.1f} m away)"
+
+
+@constraint(
+    "SCEML-R005",
+    WARNING,
+    "WorldPosition",
+    "a vehicle's heading roughly follows its lane's direction of traffic (within 45 degrees)",
+    source=_SOURCE,
+    through_modules=True,
+)
+def heading_follows_lane(position: scm.WorldPosition, context: Context) -> Iterator[Finding]:
+    road_map = _map_of(position, context)
+    actor = _actor_of(position)
+    if road_map is None or actor is None or not _is_vehicle(actor):
+        return
+    if position.h is None and not isinstance(position.eContainer(), scm.Actor):
+        return  # a destination without a heading says nothing about direction
+    for point in locate(position, road_map):
+        heading = point.heading if point.heading is not None else 0.0
+        lanes = [
+            lane
+            for lane in road_map.world_to_lane(point.x, point.y, POSITION_TOLERANCE)
+            if lane.lane_type in VEHICLE_LANE_TYPES and lane.lane_type != "bidirectional"
+        ]
+        if not lanes:
+            continue  # SCEML-R004's business
+        deviations = [
+            abs(wrap_angle(heading - road_map.traffic_heading(lane.road_id, lane.lane_id, lane.s)))
+            for lane in lanes
+        ]
+        if min(deviations) > HEADING_LIMIT:
+            lane = lanes[deviations.index(min(deviations))]
+            traffic = road_map.traffic_heading(lane.road_id, lane.lane_id, lane.s)
+            yield (
+                position,
+                (
+                    f"{_what(position)}: heading {heading:.2f} rad differs by "
+                    f"{math.degrees(min(deviations)):.0f} degrees from the traffic on "
+                    f"{_lane_words(lane)} ({traffic:.2f} rad)"
+                    + ("; h is not set, so 0 is used" if position.h is None else "")
+                ),
+            )
+            return
+
+
+# --- routes -----------------------------------------------------------------------------------
+
+
+def _departure(node: scm.ActionNode) -> tuple[EObject | None, bool]:
+    """Where the actor is when `node` starts: the destination of its latest earlier routed
+    maneuver or trajectory, else its start position; and whether a lane change or overtake of
+    the actor since then leaves its lane open."""
+    actor = node.referenceActor
+    earlier = reachable([node], backwards=True) - {node}
+    mine = [n for n in earlier if isinstance(n, scm.ActionNode) and n.referenceActor is actor]
+    routed = [n for n in mine if isinstance(n, scm.RoutedManeuver | scm.FollowTrajectory)]
+    latest = [
+        n
+        for n in routed
+        if not any(n in reachable([o], backwards=True) for o in routed if o is not n)
+    ]
+    since = reachable(latest, backwards=False) if latest else set(earlier)
+    lane_open = any(isinstance(n, scm.LaneChange | scm.Overtake) for n in mine if n in since)
+    if latest:
+        last = latest[0]
+        if isinstance(last, scm.FollowTrajectory):
+            return (last.waypoints[-1] if last.waypoints else None), lane_open
+        return last.destination, lane_open
+    return (actor.startPosition if actor is not None else None), lane_open
+
+
+def _lanes_at(road_map: RoadMap, point: Located, usable: frozenset[str]) -> list[LaneCoordinate]:
+    if point.lane is not None:
+        road_id, lane_id, s, offset = point.lane
+        lane_type = road_map.band(road_id, lane_id, s).lane.type
+        return [LaneCoordinate(road_id, lane_id, s, offset, lane_type)]
+    return [
+        lane
+        for lane in road_map.world_to_lane(point.x, point.y, POSITION_TOLERANCE)
+        if lane.lane_type in usable
+    ]
+
+
+@constraint(
+    "SCEML-R006",
+    ERROR,
+    ("TurnLeft", "TurnRight"),
+    "a turn's destination is reachable from the actor's lane through the next junction's "
+    "connections, turning the named way",
+    source=_SOURCE,
+    through_modules=True,
+)
+def turn_follows_junction(node: scm.RoutedManeuver, context: Context) -> Iterator[Finding]:
+    road_map = _map_of(node, context)
+    actor = node.referenceActor
+    if (
+        road_map is None
+        or not isinstance(actor, scm.Actor)
+        or is_kind(actor.eClass.name, "Pedestrian")
+    ):
+        return
+    usable, _ = _usable_lanes(actor)
+    departure, lane_open = _departure(node)
+    try:
+        start = centre(departure, road_map)
+        goal = centre(node.destination, road_map)
+        if start is None or goal is None:
+            return
+        starts = _lanes_at(road_map, start, usable)
+        goals = _lanes_at(road_map, goal, usable)
+    except PositionError:
+        return  # SCEML-R003
+    if not starts or not goals:
+        return  # SCEML-R004
+    if start.heading is not None:
+        facing = [
+            lane
+            for lane in starts
+            if abs(
+                wrap_angle(
+                    start.heading - road_map.traffic_heading(lane.road_id, lane.lane_id, lane.s)
+                )
+            )
+            <= HEADING_LIMIT
+        ]
+        starts = facing or starts
+    if lane_open:  # after a lane change any lane of the road in the same direction will do
+        starts = _same_direction_lanes(road_map, starts, usable)
+    wanted = "left" if isinstance(node, scm.TurnLeft) else "right"
+    routes = [
+        route for lane in starts for route in routes_from(road_map, lane.road_id, lane.lane_id)
+    ]
+    arriving = [r for r in routes if any(r.reaches(g.road_id) for g in goals)]
+    if not routes:
+        lane = starts[0]
+        yield (
+            node.destination or node,
+            (
+                f"{node.name}: from {_lane_words(lane)} no junction connection leads anywhere, "
+                f"so the {wanted} turn cannot be driven"
+            ),
+        )
+    elif not arriving:
+        goal_lane = goals[0]
+        exits = sorted({f"{r.turn} to road {r.exit_road}" for r in routes})
+        yield (
+            node.destination or node,
+            (
+                f"{node.name}: the destination on {_lane_words(goal_lane)} cannot be reached from "
+                f"{_lane_words(starts[0])} through junction {routes[0].junction} "
+                f"(its connections go {', '.join(exits)})"
+            ),
+        )
+    elif not any(r.turn == wanted for r in arriving):
+        turns = " or ".join(sorted({_TURN_WORDS[r.turn] for r in arriving}))
+        yield (
+            node.destination or node,
+            f"{node.name}: the way to the destination from {_lane_words(starts[0])} is "
+            f"{turns} at junction {arriving[0].junction}, not a {wanted} turn",
+        )
+
+
+_TURN_WORDS = {
+    "left": "a left turn",
+    "right": "a right turn",
+    "straight": "straight on",
+    "u-turn": "a U-turn",
+}
+
+
+def _same_direction_lanes(
+    road_map: RoadMap, lanes: list[LaneCoordinate], usable: frozenset[str]
+) -> list[LaneCoordinate]:
+    widened = list(lanes)
+    for lane in lanes:
+        road = road_map.road(lane.road_id)
+        along = road_map.drives_along_s(road, lane.lane_id)
+        for band in road_map.bands(road, lane.s):
+            same = road_map.drives_along_s(road, band.lane.id) == along
+            if same and band.lane.type in usable and band.lane.id != lane.lane_id:
+                widened.append(
+                    LaneCoordinate(lane.road_id, band.lane.id, lane.s, 0.0, band.lane.type)
+                )
+    return widened
+
+
+#: Points along a crossing path that are tested for lying on the roadway.
+_CROSSING_SAMPLES = 40
+
+
+@constraint(
+    "SCEML-R007",
+    ERROR,
+    "Cross",
+    "a Cross destination lies across the road: the way there crosses a driving lane",
+    source=_SOURCE,
+    through_modules=True,
+)
+def cross_crosses_the_road(node: scm.Cross, context: Context) -> Iterator[Finding]:
+    road_map = _map_of(node, context)
+    if road_map is None or node.referenceActor is None:
+        return
+    departure, _ = _departure(node)
+    try:
+        start = centre(departure, road_map)
+        goal = centre(node.destination, road_map)
+    except PositionError:
+        return
+    if start is None or goal is None:
+        return
+    for i in range(1, _CROSSING_SAMPLES):
+        x = start.x + (goal.x - start.x) * i / _CROSSING_SAMPLES
+        y = start.y + (goal.y - start.y) * i / _CROSSING_SAMPLES
+        if any(lane.lane_type in VEHICLE_LANE_TYPES for lane in road_map.world_to_lane(x, y)):
+            return
+    yield (
+        node.destination or node,
+        (
+            f"{node.name}: the way from {_at(start.x, start.y)} to the destination "
+            f"{_at(goal.x, goal.y)} crosses no driving lane, so it does not cross the road"
+        ),
+    )
