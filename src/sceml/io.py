@@ -543,11 +543,13 @@ def _resolution_failure(href: str, error: BaseException) -> str:
     return f"cannot resolve {href!r}: {file or 'this file'} has no element {fragment!r}"
 
 
-def save(root: EObject, path: str | Path) -> Path:
+def save(root: EObject, path: str | Path, *, origin: str | Path | None = None) -> Path:
     """Write a model atomically: to a temporary file beside `path`, then renamed over it.
 
-    Cross-file references are written relative to `path`. On any failure the previous file, if
-    any, is left as it was.
+    Cross-file references are written relative to `path`, and so is a relative map path: it is
+    read relative to `origin`, the file the model (or the model it was derived from, for a
+    flattened or sampled copy) was loaded from; by default the model's own file. On any failure
+    the previous file, if any, is left as it was.
     """
     path = Path(path)
     resource = root.eResource
@@ -559,7 +561,8 @@ def save(root: EObject, path: str | Path) -> Path:
     _refuse_unreadable_values(root, path)
     buffer = _MemoryURI(str(path))
     original_uri = resource.uri
-    moved_maps = _rebase_map_paths(root, Path(original_uri.normalize()).parent, path.parent)
+    source = Path(origin) if origin is not None else Path(original_uri.normalize())
+    moved_maps = _rebase_map_paths(root, source.parent, path.parent)
     resource.uri = URI(str(path))
     try:
         # Defaults are written out: `kind="Pedestrian"` and `value="0.0"` read better than an

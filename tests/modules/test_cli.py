@@ -11,6 +11,7 @@ from click.testing import CliRunner
 from sceml import io
 from sceml.cli.flatten import flatten
 from sceml.cli.module import module
+from sceml.validation import validate
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 LIBRARY = EXAMPLES / "library" / "sceml-library.xmi"
@@ -78,6 +79,17 @@ def test_flatten_writes_a_file_without_uses(tmp_path: Path) -> None:
     assert result.output.startswith(f"{out}: 11 nodes; 4 module uses expanded (Overtaking_1, ")
     names = {n.name for n in io.load(out).root.nodes}
     assert "Overtaking_1.PassVehicle_1.ChangeLaneLeft_1.LaneChange_1" in names
+
+
+def test_flatten_into_another_folder_keeps_the_map_reachable(tmp_path: Path) -> None:
+    out = tmp_path / "deeper" / "still" / "flat.xmi"
+    out.parent.mkdir(parents=True)
+    result = run(flatten, EXAMPLES / "uis2-concrete.xmi", "-o", out)
+    assert result.exit_code == 0, result.output
+    root = next(n for n in io.load(out).root.nodes if n.eClass.name == "RootNode")
+    assert (out.parent / root.map).resolve() == (EXAMPLES.parent / "maps/intersection.xodr")
+    found = validate(io.load(out).root, document=io.load(out))
+    assert not [d for d in found if d.code.startswith("SCEML-R")], found
 
 
 def test_flatten_of_a_broken_reference_exits_1_without_writing(

@@ -53,7 +53,7 @@ def flatten_file(
     path, output = Path(path), Path(output)
     document = io.load_scenario(path, allow=allowed_roots)
     flattened = expand(document.root)
-    io.save(flattened.scenario, output)
+    io.save(flattened.scenario, output, origin=path)
     return FlattenReport(output, flattened.expanded, len(flattened.scenario.nodes))
 
 
