@@ -22,6 +22,10 @@ ACTOR_ANNOTATION = "http://sceml.org/actor"
 #: A parameter whose default depends on the actor kind (its bounding box).
 ACTOR_DEFAULT = "actor"
 
+#: Signs a parameter annotation may require: above zero, or zero and above.
+POSITIVE = "positive"
+NON_NEGATIVE = "nonNegative"
+
 CATEGORIES = ("longitudinal", "lateral", "composite", "condition")
 
 #: Features that only say how a node is drawn (the editor's layout); never a parameter or a meaning.
@@ -30,12 +34,18 @@ NOTATION_FEATURES = frozenset({"diagramPosition"})
 
 @dataclass(frozen=True)
 class ParameterSpec:
-    """One numeric parameter of a kind: its feature name, SI unit and language default."""
+    """One numeric parameter of a kind: its feature name, SI unit and language default.
+
+    `sign` is `positive` (above zero), `nonNegative` (zero or above) or None (any number);
+    `limit` names the actor limit that bounds it (a key of the limits file, e.g. `max_speed`).
+    """
 
     name: str
     unit: str
     default: float | None
     per_actor_default: bool = False
+    sign: str | None = None
+    limit: str | None = None
 
     @property
     def required(self) -> bool:
@@ -129,7 +139,16 @@ def _parameters(name: str) -> tuple[ParameterSpec, ...]:
         raw_default = details.get("default")
         per_actor = raw_default == ACTOR_DEFAULT
         default = None if raw_default is None or per_actor else float(raw_default)
-        specs.append(ParameterSpec(feature.name, details.get("unit", ""), default, per_actor))
+        specs.append(
+            ParameterSpec(
+                feature.name,
+                details.get("unit", ""),
+                default,
+                per_actor,
+                details.get("sign"),
+                details.get("limit"),
+            )
+        )
     return tuple(specs)
 
 
@@ -139,6 +158,38 @@ def parameter(kind: EObject | EClass | type | str, name: str) -> ParameterSpec:
         if spec.name == name:
             return spec
     raise KeyError(f"{class_name(kind)} has no parameter {name!r}")
+
+
+def sign(kind: EObject | EClass | type | str, name: str) -> str | None:
+    """`positive`, `nonNegative` or None: what the metamodel requires of a parameter's numbers.
+
+    None as well for a feature that is no annotated parameter (an override's value, say).
+    """
+    try:
+        return parameter(kind, name).sign
+    except KeyError:
+        return None
+
+
+def limited(kind: EObject | EClass | type | str, limit: str) -> tuple[str, ...]:
+    """The parameters of a kind that an actor limit (e.g. `max_speed`) bounds."""
+    return tuple(spec.name for spec in parameters(kind) if spec.limit == limit)
+
+
+def limited_kinds() -> tuple[str, ...]:
+    """Every metaclass that declares a parameter bounded by an actor limit, in metamodel order."""
+    return tuple(
+        name
+        for name, eclass in _ecore_classes().items()
+        if any(_declares_limit(feature) for feature in eclass.eStructuralFeatures)
+    )
+
+
+def _declares_limit(feature: object) -> bool:
+    return any(
+        a.source == PARAMETER_ANNOTATION and "limit" in dict(a.details.items())
+        for a in getattr(feature, "eAnnotations", ())
+    )
 
 
 def actor_dimensions(kind: EObject | EClass | type | str) -> dict[str, float]:

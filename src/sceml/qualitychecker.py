@@ -46,6 +46,7 @@ from typing import Any, Final, cast
 from lxml import etree
 
 from sceml import schema
+from sceml.diagnostics import Diagnostic, Severity
 from sceml.errors import SceMLError
 
 __all__ = [
@@ -53,8 +54,18 @@ __all__ = [
     "QualityCheckerError",
     "QualityIssue",
     "QualityReport",
+    "quality_diagnostics",
     "run_quality_checker",
 ]
+
+#: Diagnostic codes of the checker's own outcomes (its issues keep their rule UIDs).
+FAILED_CODE: Final = "XOSC-QC"
+SKIPPED_CODE: Final = "XOSC-QC-SKIPPED"
+_SEVERITIES: Final = {
+    "error": Severity.ERROR,
+    "warning": Severity.WARNING,
+    "information": Severity.INFO,
+}
 
 _BUNDLE_MODULE: Final = "qc_openscenario"
 _RUN_LOCK = threading.Lock()
@@ -79,6 +90,17 @@ class QualityIssue:
     def __str__(self) -> str:
         where = f"line {self.line}" if self.line is not None else (self.xpath or "")
         return f"[{self.level}] {self.rule_uid}: {self.message}" + (f" ({where})" if where else "")
+
+    def diagnostic(self, file: str | None = None) -> Diagnostic:
+        """The issue as a Diagnostic under its rule UID; an unknown level counts as an error."""
+        return Diagnostic(
+            _SEVERITIES.get(self.level, Severity.ERROR),
+            self.rule_uid,
+            self.message,
+            path=self.xpath,
+            file=file,
+            line=self.line,
+        )
 
 
 @dataclass(frozen=True, slots=True)
@@ -110,6 +132,22 @@ class QualityReport:
     @property
     def skipped_checkers(self) -> tuple[str, ...]:
         return tuple(c for c, s in self.checker_statuses.items() if s.status == "skipped")
+
+
+def quality_diagnostics(path: Path, version: str) -> list[Diagnostic]:
+    """The checker's findings on one file as Diagnostics; below 1.2 an INFO that it did not run,
+    and a checker that cannot run an ERROR (XOSC-QC) rather than an exception."""
+    if version in ("1.0", "1.1"):
+        message = (
+            f"ASAM Quality Checker rules apply from OpenSCENARIO 1.2; {version} got the XSD only"
+        )
+        return [Diagnostic(Severity.INFO, SKIPPED_CODE, message, file=str(path))]
+    try:
+        report = run_quality_checker(path)
+    except QualityCheckerError as error:
+        message = f"Quality Checker failed: {error.message}"
+        return [Diagnostic(Severity.ERROR, FAILED_CODE, message, file=str(path))]
+    return [issue.diagnostic(str(path)) for issue in report.issues]
 
 
 def run_quality_checker(

@@ -31,6 +31,7 @@ from typing import TYPE_CHECKING, Any, Final, TypeAlias
 
 from lxml import etree
 
+from sceml.diagnostics import Diagnostic, Severity
 from sceml.errors import SceMLError
 from sceml.safexml import doctype_line, hardened_parser, has_dtd, max_bytes_limit, size_problem
 
@@ -45,12 +46,16 @@ __all__ = [
     "UnsafeXMLError",
     "UnsupportedVersionError",
     "XMLParseError",
+    "XSD_CODE",
     "declared_version",
     "is_valid_tree",
     "parse_file",
     "validate_file",
     "validate_tree",
 ]
+
+#: The code of every schema violation reported as a Diagnostic.
+XSD_CODE: Final = "XOSC-XSD"
 
 #: The OpenSCENARIO versions SceML checks and writes: the one list every module and option reads.
 SUPPORTED_VERSIONS: Final[tuple[str, ...]] = ("1.0", "1.1", "1.2", "1.3")
@@ -116,6 +121,17 @@ class SchemaIssue:
 
     def __str__(self) -> str:
         return self.message
+
+    def diagnostic(self, version: str, file: str | None = None) -> Diagnostic:
+        """The violation as an error Diagnostic (code XOSC-XSD) of `file`, if given."""
+        return Diagnostic(
+            Severity.ERROR,
+            XSD_CODE,
+            f"OpenSCENARIO {version} XSD: {self.reason}",
+            path=self.path,
+            file=file,
+            line=self.line,
+        )
 
 
 def _xsd_bytes(version: str) -> bytes:

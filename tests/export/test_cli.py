@@ -110,4 +110,6 @@ def test_export_places_problems_of_a_flattened_module_at_the_uses_line(
     assert result.exit_code == 1
     lines = source.read_text().splitlines()
     use_line = next(i for i, text in enumerate(lines, 1) if 'name="Overtaking_1"' in text)
-    assert f"{source}:{use_line}: error[SCEML-X002] Overtaking_1.PassVehicle_1." in result.output
+    inner = "(Overtaking_1.PassVehicle_1.ChangeLaneRight_1.TimeElapsed_1)"
+    assert f"{source}:{use_line}: error[SCEML-E003] TimeElapsed cannot" in result.output
+    assert inner in result.output

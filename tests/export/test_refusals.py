@@ -58,6 +58,7 @@ def test_a_refused_node_of_a_module_is_placed_at_the_use_in_the_input() -> None:
         export(document.root, version="1.0", profile="carla", town="Town03")
     placed = {d.path: d for d in caught.value.diagnostics}
     inner = placed["Overtaking_1.PassVehicle_1.ChangeLaneRight_1.TimeElapsed_1"]
+    assert inner.code == "SCEML-E003"
     assert inner.element is use and inner.fragment == io.uri_fragment(use)
     assert placed["KeepVelocity_1"].element is plain
     assert placed["KeepVelocity_1"].fragment == io.uri_fragment(plain)
@@ -67,12 +68,12 @@ def test_a_refused_node_of_a_module_is_placed_at_the_use_in_the_input() -> None:
 def test_carla_refuses_delays_it_cannot_start_at_activation(kind: str) -> None:
     parameters = {"duration": 2.0}
     scenario = small(kind, **parameters)
-    with pytest.raises(
-        ExportError, match=f"{kind}_1: {kind} is not supported by the carla"
-    ) as caught:
+    with pytest.raises(ExportError, match=f"{kind} is not supported by the carla") as caught:
         export(scenario, version="1.0", profile="carla", town="Town03")
-    assert codes(caught.value) == {"SCEML-X002"}
-    assert "OpenSCENARIO 1.0, carla profile" in caught.value.diagnostics[0].message
+    # The validation rule `sceml validate --profile carla` reports, placed at the node.
+    assert codes(caught.value) == {"SCEML-E003"}
+    assert "OpenSCENARIO 1.0 (carla profile)" in caught.value.diagnostics[0].message
+    assert caught.value.diagnostics[0].path == f"{kind}_1"
     export(scenario, version="1.0")  # the generic profile can express it
 
 
@@ -97,8 +98,18 @@ def test_unknown_version_is_refused() -> None:
 
 def test_missing_destination_is_refused_naming_the_node() -> None:
     scenario = small("TurnRight")
-    with pytest.raises(ExportError, match="TurnRight_1 has no destination"):
+    with pytest.raises(ExportError, match="TurnRight_1.destination is missing") as caught:
         export(scenario, check_model=False)
+    assert codes(caught.value) == {"SCEML-P002"}  # the validation rule, not a copy of it
+
+
+def test_export_checks_are_the_registrys_rules() -> None:
+    from sceml.export import checks
+    from sceml.validation import REGISTRY
+
+    rules = checks.export_rules().rules()
+    assert [rule.code for rule in rules] == list(checks.EXPORT_RULE_CODES)
+    assert all(rule is REGISTRY.rule(rule.code) for rule in rules)
 
 
 def test_every_kind_maps_in_every_version_of_the_generic_profile() -> None:

@@ -40,7 +40,7 @@ def test_samples_breaking_a_rule_are_skipped_with_a_reason(tmp_path: Path) -> No
     row = [5.0, 7.0, -1.0, 10.0, 15.0, 1.5]  # InLocationRadius_2.radius below zero
     record = worker.run(0, row)
     assert record.status == "skipped"
-    assert record.reason == "InLocationRadius_2.radius must be > 0"
+    assert record.reason == "validation: SCEML-P007 at InLocationRadius_2.radius"
     assert list(tmp_path.glob("*.xosc")) == []
     walking_fast = worker.run(1, [5.0, 7.0, 4.0, 10.0, 15.0, 9.0])  # a pedestrian at 9 m/s
     assert walking_fast.status == "skipped" and "SCEML-L001" in walking_fast.reason

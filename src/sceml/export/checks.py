@@ -1,26 +1,38 @@
-"""Refusals before mapping: wrong level, invalid model, or something a version cannot express."""
+"""Refusals before mapping: wrong level, invalid model, or something a version cannot express.
+
+The model checks are the validation registry's rules (a subset, run on the flattened scenario);
+only the level and the profile request are the export's own.
+"""
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator
+from collections.abc import Iterable
 from dataclasses import replace
+from functools import cache
 
 from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
-from .. import catalog, graph
+from .. import graph
 from ..diagnostics import Diagnostic, Severity
 from ..io import model_path, uri_fragment
 from ..modules.flatten import Flattened
-from ..validation import validate
-from .support import unsupported_reason
+from ..validation import REGISTRY, Registry, iter_diagnostics, validate
 
 LEVEL = "SCEML-X001"
-UNSUPPORTED = "SCEML-X002"
-MISSING = "SCEML-X003"
-NOT_SINGLE = "SCEML-X004"
 PROFILE = "SCEML-X005"
+
+#: The registry's rules for what a mapping needs beyond a valid graph: a map, start positions,
+#: actors, destinations and positions, and node kinds the version and profile can express.
+EXPORT_RULE_CODES = (
+    "SCEML-A001",
+    "SCEML-A003",
+    "SCEML-E001",
+    "SCEML-E002",
+    "SCEML-E003",
+    "SCEML-P002",
+)
 
 
 def error(code: str, message: str, element: EObject | None = None) -> Diagnostic:
@@ -44,11 +56,17 @@ def _fragment(element: EObject) -> str | None:
         return None
 
 
+@cache
+def export_rules() -> Registry:
+    """The subset of the validation registry an export checks on the flattened scenario."""
+    return REGISTRY.subset(codes=EXPORT_RULE_CODES, severity=Severity.ERROR)
+
+
 def level_problems(scenario: scm.Scenario) -> list[Diagnostic]:
     """Only concrete scenarios can be exported (SPEC §5)."""
     root = graph.root_node(scenario)
     if root is None:
-        return [error(MISSING, "the scenario has no root node")]
+        return [error(LEVEL, "the scenario has no root node, so no abstraction level")]
     level = root.level.name if root.level is not None else "functional"
     if level != "concrete":
         return [
@@ -67,27 +85,13 @@ def model_problems(scenario: scm.Scenario) -> list[Diagnostic]:
     return [d for d in validate(scenario) if d.severity == Severity.ERROR]
 
 
-def expressibility_problems(flat: scm.Scenario, version: str, profile: str) -> Iterator[Diagnostic]:
-    """Node kinds the version/profile cannot express, and data the mapping needs but lacks."""
-    root = graph.root_node(flat)
-    if root is not None and not root.map:
-        yield error(MISSING, "the root node names no map", root)
-    for actor in graph.actors(flat):
-        if actor.startPosition is None:
-            yield error(MISSING, f"actor {actor.name!r} has no start position", actor)
-    for node in flat.nodes:
-        kind = node.eClass.name
-        reason = unsupported_reason(kind, version, profile)
-        if reason is not None:
-            yield error(
-                UNSUPPORTED,
-                f"{node.name}: {reason} (OpenSCENARIO {version}, {profile} profile)",
-                node,
-            )
-            continue
-        if isinstance(node, scm.ActionNode):
-            yield from _actors_of(node)
-            yield from _positions_of(node)
+def expressibility_problems(flat: scm.Scenario, version: str, profile: str) -> list[Diagnostic]:
+    """What the mapping needs of a (flattened) scenario: the registry's export rules, run with the
+    chosen version and profile (see `EXPORT_RULES`)."""
+    found = iter_diagnostics(
+        flat, registry=export_rules(), osc_version=version, osc_profile=profile
+    )
+    return [d for d in found if d.severity is Severity.ERROR]
 
 
 def traced(problems: Iterable[Diagnostic], flattened: Flattened | None) -> list[Diagnostic]:
@@ -104,19 +108,3 @@ def _at_origin(problem: Diagnostic, flattened: Flattened) -> Diagnostic:
         return problem
     element = origin.in_scenario
     return replace(problem, element=element, fragment=_fragment(element))
-
-
-def _actors_of(node: scm.ActionNode) -> Iterator[Diagnostic]:
-    if not isinstance(node.referenceActor, scm.Actor):
-        yield error(MISSING, f"{node.name} has no reference actor", node)
-    if catalog.needs_target(node) and not isinstance(node.targetActor, scm.Actor):
-        yield error(MISSING, f"{node.name} needs a target actor", node)
-
-
-def _positions_of(node: scm.ActionNode) -> Iterator[Diagnostic]:
-    if isinstance(node, scm.RoutedManeuver) and node.destination is None:
-        yield error(MISSING, f"{node.name} has no destination", node)
-    if isinstance(node, scm.InLocationRadius) and node.position is None:
-        yield error(MISSING, f"{node.name} has no position", node)
-    if isinstance(node, scm.FollowTrajectory) and not node.waypoints:
-        yield error(MISSING, f"{node.name} has no waypoints", node)

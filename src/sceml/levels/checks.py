@@ -2,9 +2,10 @@
 
 Sampling changes numbers only, never the graph, so what can go wrong per sample is a value:
 a radius or duration that is not positive, a negative speed (the wide tails of a distribution
-reach there), or a value the validation rules find implausible for its actor. The physical
-checks here are cheap and always run; the validation package's parameter and plausibility
-rules then skip a sample too.
+reach there), or a value the validation rules find implausible for its actor. Those are the
+validation registry's value rules (parameters and plausibility), run here on the sampled values
+only; this module has no rules of its own, so a sample is skipped exactly when `sceml validate`
+would refuse it for its values.
 """
 
 from __future__ import annotations
@@ -12,6 +13,8 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from functools import cache
 from typing import Any
+
+from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
@@ -22,9 +25,8 @@ from ..validation.limits import Limits
 from ..validation.registry import findings
 from .apply import FlatTemplate
 
-#: Features whose value must be > 0, and the fragments of names whose value must be >= 0.
-_POSITIVE = frozenset({"radius", "tolerance", "duration", "distance", "maxDuration", "time"})
-_NON_NEGATIVE = ("speed", "Speed", "rate", "length", "width", "height", "gap")
+#: The rule families whose outcome depends on parameter values: parameters and plausibility.
+VALUE_RULE_PREFIXES = ("SCEML-P", "SCEML-L")
 
 Validator = Callable[[scm.Scenario], list[str]]
 
@@ -33,36 +35,14 @@ class SampleChecker:
     """Decides, per sample, whether it is skipped and why (a short, countable reason)."""
 
     def __init__(self, template: FlatTemplate, validator: Validator | None = None) -> None:
-        self.rules: list[tuple[str, str]] = []
-        for path, targets in zip(template.paths, template.targets, strict=True):
-            features = {t.eContainmentFeature().name for t in targets}
-            self.rules.append((path, _rule_for(features)))
         self.validator = validator if validator is not None else _validation_hook(template)
 
     def problem(self, scenario: scm.Scenario, row: Sequence[float]) -> str | None:
         """Why this sample must be skipped, or None if it may be written."""
-        for (path, rule), number in zip(self.rules, row, strict=True):
-            if rule == ">0" and not number > 0:
-                return f"{path} must be > 0"
-            if rule == ">=0" and not number >= 0:
-                return f"{path} must be >= 0"
-        if self.validator is not None:
-            codes = self.validator(scenario)
-            if codes:
-                return "validation: " + ", ".join(sorted(set(codes)))
+        reasons = self.validator(scenario)
+        if reasons:
+            return "validation: " + ", ".join(sorted(set(reasons)))
         return None
-
-
-def _rule_for(features: set[str]) -> str:
-    if features & _POSITIVE:
-        return ">0"
-    if any(fragment in name for name in features for fragment in _NON_NEGATIVE):
-        return ">=0"
-    return ""
-
-
-#: The rule families whose outcome depends on parameter values: parameters and plausibility.
-VALUE_RULE_PREFIXES = ("SCEML-P", "SCEML-L")
 
 
 def validate_model(scenario: scm.Scenario) -> list[Diagnostic]:
@@ -71,16 +51,13 @@ def validate_model(scenario: scm.Scenario) -> list[Diagnostic]:
 
 
 @cache
-def _value_registry() -> Registry:
-    registry = Registry()
-    for rule in REGISTRY.rules():
-        if rule.code.startswith(VALUE_RULE_PREFIXES):
-            registry.register(rule)
-    return registry
+def value_rules() -> Registry:
+    """The registry's value-dependent error rules: the only ones a sample can newly break."""
+    return REGISTRY.subset(families=VALUE_RULE_PREFIXES, severity=Severity.ERROR)
 
 
 def _validation_hook(template: FlatTemplate) -> Validator:
-    """Error codes of the value-dependent rules for one sample.
+    """Reasons (rule code, and the sampled path it is about) of the value rules for one sample.
 
     Sampling changes numbers, never the graph, actors or modules, so structure, actor, module,
     simultaneity and readiness rules are checked once on the logical scenario (by the caller).
@@ -90,28 +67,36 @@ def _validation_hook(template: FlatTemplate) -> Validator:
     eAllContents for every sample cost more than the export itself.
     """
     context = Context(template.scenario, None, Limits(), None)
+    paths = {
+        target: path
+        for path, targets in zip(template.paths, template.targets, strict=True)
+        for target in targets
+    }
     plan = []
     for obj in _holders(template):
-        rules = tuple(
-            rule
-            for rule in _value_registry().rules_for(obj.eClass)
-            if rule.severity >= Severity.ERROR
-        )
+        rules = value_rules().rules_for(obj.eClass)
         if rules:
             plan.append((obj, rules))
 
-    def codes(scenario: scm.Scenario) -> list[str]:
+    def reasons(scenario: scm.Scenario) -> list[str]:
         found = []
         for obj, rules in plan:
             for rule in rules:
                 try:
-                    if next(iter(findings(rule.check, obj, context)), None) is not None:
-                        found.append(rule.code)
+                    first = next(iter(findings(rule.check, obj, context)), None)
                 except Exception:  # a rule that breaks on odd values skips the sample, loudly
                     found.append("SCEML-X000")
+                    continue
+                if first is not None:
+                    found.append(_reason(rule.code, first[0], paths))
         return found
 
-    return codes
+    return reasons
+
+
+def _reason(code: str, element: EObject, paths: dict[Any, str]) -> str:
+    path = paths.get(element)
+    return f"{code} at {path}" if path is not None else code
 
 
 def _holders(template: FlatTemplate) -> list[Any]:

@@ -17,26 +17,6 @@ from .registry import Finding, constraint
 
 ERROR = Severity.ERROR
 
-#: Parameters that must be above zero, or at least zero, by their feature name.
-POSITIVE = frozenset(
-    {
-        "radius",
-        "tolerance",
-        "duration",
-        "distance",
-        "rate",
-        "time",
-        "gap",
-        "laneChangeDistance",
-        "length",
-        "width",
-        "height",
-        "maxDuration",
-        "fogVisualRange",
-    }
-)
-NON_NEGATIVE = frozenset({"speed", "targetSpeed", "initialSpeed", "precipitationIntensity", "s"})
-
 #: Positions a node kind needs at the logical and concrete levels: (kind, feature, minimum count).
 REQUIRED_POSITIONS = (
     ("RoutedManeuver", "destination", 1),
@@ -209,18 +189,18 @@ def discrete_distribution_well_formed(
     through_modules=True,
 )
 def values_physically_meaningful(value: EObject, context: Context) -> Iterator[Finding]:
-    feature = value.eContainmentFeature()
-    name = feature.name if feature is not None else ""
+    feature, owner = value.eContainmentFeature(), value.eContainer()
+    sign = catalog.sign(owner.eClass.name, feature.name) if feature is not None else None
     stated = numbers(value)
     if not all(math.isfinite(number) for number in stated):
         yield value, f"{parameter_path(value)} is {describe(value)}: not a finite number"
         return
-    if name in POSITIVE and any(number <= 0 for number in stated):
+    if sign == catalog.POSITIVE and any(number <= 0 for number in stated):
         yield (
             value,
             f"{parameter_path(value)} is {describe(value, _unit(value))}; it must be above 0",
         )
-    elif name in NON_NEGATIVE and any(number < 0 for number in stated):
+    elif sign == catalog.NON_NEGATIVE and any(number < 0 for number in stated):
         yield value, f"{parameter_path(value)} is {describe(value, _unit(value))}; it must be >= 0"
 
 

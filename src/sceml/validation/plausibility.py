@@ -14,36 +14,17 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
+from .. import catalog
 from ..diagnostics import Severity
 from ..params import describe
-from .context import Context, is_kind
+from .context import Context
 from .parameters import parameter_path
 from .registry import Finding, constraint
 
 ERROR = Severity.ERROR
 
-#: Which parameter of which kind each limit bounds.
-LIMITED_PARAMETERS: dict[str, tuple[tuple[str, str], ...]] = {
-    "max_speed": (
-        ("Actor", "initialSpeed"),
-        ("Accelerate", "targetSpeed"),
-        ("Decelerate", "targetSpeed"),
-        ("DriveDistance", "speed"),
-        ("Overtake", "speed"),
-        ("SpeedCondition", "speed"),
-    ),
-    "max_acceleration": (("Accelerate", "rate"),),
-    "max_deceleration": (("Decelerate", "rate"), ("Stop", "rate")),
-}
-_KINDS = (
-    "Actor",
-    "Accelerate",
-    "Decelerate",
-    "DriveDistance",
-    "Overtake",
-    "SpeedCondition",
-    "Stop",
-)
+#: The kinds with a parameter an actor limit bounds; which one, the metamodel's `limit` says.
+_KINDS = catalog.limited_kinds()
 
 
 def highest(value: EObject | None) -> float | None:
@@ -77,9 +58,7 @@ def _over_limit(owner: EObject, context: Context, key: str, unit: str) -> Iterat
     limit = context.limits.limit(kind, key)
     if limit is None:
         return
-    for holder_kind, name in LIMITED_PARAMETERS[key]:
-        if not is_kind(owner.eClass.name, holder_kind):
-            continue
+    for name in catalog.limited(owner.eClass.name, key):
         value = owner.eGet(name)
         top = highest(value)
         if top is not None and top > limit:

@@ -66,6 +66,24 @@ class Registry:
         """One rule by its code."""
         return self._rules[code]
 
+    def subset(
+        self,
+        *,
+        codes: Iterable[str] = (),
+        families: Iterable[str] = (),
+        severity: Severity = Severity.INFO,
+    ) -> Registry:
+        """A registry of some of these rules: those named in `codes` or whose code starts with one
+        of `families` (e.g. `SCEML-P`), at `severity` or above; the rules are the same objects."""
+        wanted, prefixes = set(codes), tuple(families)
+        chosen = Registry()
+        for rule in self.rules():
+            if (
+                rule.code in wanted or rule.code.startswith(prefixes)
+            ) and rule.severity >= severity:
+                chosen.register(rule)
+        return chosen
+
     def rules_for(self, eclass: EClass) -> tuple[Rule, ...]:
         """The rules registered on `eclass` or any of its superclasses, ordered by code."""
         cached = self._by_eclass.get(eclass)

@@ -1,0 +1,28 @@
+"""Check one OpenSCENARIO file: the XSD of its declared version, then ASAM's Quality Checker."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from . import schema
+from .errors import SceMLError
+from .qualitychecker import quality_diagnostics
+from .report import FileReport
+
+
+def check_file(path: Path, quality: bool = True) -> FileReport:
+    """Every finding on `path` as a Diagnostic; the Quality Checker runs (1.2+) on a file that
+    passes its XSD. A file that cannot be read at all is reported as unreadable, not raised."""
+    try:
+        tree = schema.parse_file(path)
+        version = schema.declared_version(tree)
+    except (SceMLError, OSError) as error:
+        reason = error.message if isinstance(error, SceMLError) else str(error.strerror)
+        line = getattr(error, "line", None)
+        return FileReport(str(path), unreadable=(f"line {line}: " if line else "") + reason)
+    diagnostics = [
+        issue.diagnostic(version, str(path)) for issue in schema.validate_tree(tree, version)
+    ]
+    if quality and not diagnostics:
+        diagnostics.extend(quality_diagnostics(path, version))
+    return FileReport(str(path), diagnostics)

@@ -1,0 +1,41 @@
+"""XSD and Quality Checker findings come out of the library as Diagnostics, not CLI-made rows."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from sceml.diagnostics import Severity
+from sceml.qualitychecker import QualityIssue, quality_diagnostics
+from sceml.xosc_check import check_file
+
+DATA = Path(__file__).parent / "data"
+
+
+def test_an_xsd_violation_is_an_error_diagnostic_with_line_and_path() -> None:
+    path = DATA / "invalid_missing_attribute_1_2.xosc"
+    report = check_file(path, quality=False)
+    assert report.unreadable is None and report.diagnostics
+    first = report.diagnostics[0]
+    assert (first.severity, first.code, first.file) == (Severity.ERROR, "XOSC-XSD", str(path))
+    assert first.line and first.path and first.message.startswith("OpenSCENARIO 1.2 XSD: ")
+
+
+def test_quality_checker_levels_map_to_severities() -> None:
+    issue = QualityIssue("asam.net:xosc:1.0.0:rule", "checker", "warning", "odd", 7, None, "/X")
+    diagnostic = issue.diagnostic("f.xosc")
+    assert (diagnostic.severity, diagnostic.code, diagnostic.line) == (
+        Severity.WARNING,
+        "asam.net:xosc:1.0.0:rule",
+        7,
+    )
+    assert QualityIssue("r", "c", "fatal?", "m").diagnostic().severity is Severity.ERROR
+
+
+def test_before_1_2_the_checker_says_it_did_not_run() -> None:
+    [skipped] = quality_diagnostics(DATA / "minimal_1_0.xosc", "1.0")
+    assert (skipped.severity, skipped.code) == (Severity.INFO, "XOSC-QC-SKIPPED")
+
+
+def test_an_unsafe_file_is_unreadable_not_raised() -> None:
+    report = check_file(DATA / "xxe.xosc")
+    assert report.unreadable and not report.diagnostics
