@@ -1,7 +1,9 @@
 """What every XML reader of SceML shares: a size limit, a hardened parser, and refusing DTDs.
 
-Scenario and library XMI (`sceml.io`) and OpenSCENARIO files (`sceml.schema`) are read through
-these pieces; each reader keeps its own error types and messages.
+Scenario and library XMI (`sceml.io`), OpenSCENARIO files (`sceml.schema`), OpenDRIVE maps
+(`sceml.maps`), and the XML SceML makes itself (the export's text, Graphviz's SVG) are all parsed
+with `hardened_parser`: it is the only place that builds an lxml parser. Each reader keeps its
+own error types and messages.
 """
 
 from __future__ import annotations
@@ -46,12 +48,16 @@ def _amount(size: int, single: bool = False) -> str:
     return f"{size / 2**20:.1f}".removesuffix(".0") + " MiB"
 
 
-def hardened_parser(*, drop_comments: bool = False) -> etree.XMLParser:
+def hardened_parser(
+    *, drop_comments: bool = False, drop_blank_text: bool = False
+) -> etree.XMLParser:
     """A parser with DTDs, entities and network access off.
 
-    Neither file kind needs them, and they are how billion-laughs and XXE attacks get in. A fresh
-    parser per call: lxml parsers must not be shared between threads, and one costs microseconds.
-    `drop_comments` also drops comments and processing instructions (pyecore cannot decode them).
+    No file kind SceML reads needs them, and they are how billion-laughs and XXE attacks get in.
+    A fresh parser per call: lxml parsers must not be shared between threads, and one costs
+    microseconds. `drop_comments` also drops comments and processing instructions (pyecore
+    cannot decode them); `drop_blank_text` drops whitespace-only text, so that a tree
+    pretty-prints with consistent indentation.
     """
     return etree.XMLParser(
         resolve_entities=False,
@@ -61,6 +67,7 @@ def hardened_parser(*, drop_comments: bool = False) -> etree.XMLParser:
         huge_tree=False,
         remove_comments=drop_comments,
         remove_pis=drop_comments,
+        remove_blank_text=drop_blank_text,
     )
 
 

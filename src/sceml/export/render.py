@@ -7,6 +7,7 @@ from functools import cache
 import jinja2
 from lxml import etree
 
+from ..safexml import hardened_parser
 from ..templating import environment
 from .viewmodel import View
 
@@ -22,9 +23,7 @@ def _template() -> jinja2.Template:
 def _parser() -> etree.XMLParser:
     # The text is our own, but the parser is locked down anyway; blank text is dropped so the
     # tree pretty-prints with consistent indentation.
-    return etree.XMLParser(
-        remove_blank_text=True, resolve_entities=False, no_network=True, load_dtd=False
-    )
+    return hardened_parser(drop_blank_text=True)
 
 
 def render_text(view: View) -> str:

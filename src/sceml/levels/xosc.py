@@ -19,6 +19,7 @@ import scemlmodel as scm
 from .. import schema
 from ..errors import SceMLError
 from ..io import model_path, write_atomically
+from ..safexml import hardened_parser
 from .apply import FlatTemplate
 
 if TYPE_CHECKING:
@@ -134,4 +135,4 @@ def _declarations(data: bytes) -> tuple[int, int]:
 
 
 def _parser() -> etree.XMLParser:
-    return etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False)
+    return hardened_parser()

@@ -21,6 +21,7 @@ from .. import catalog, params
 from ..diagnostics import Diagnostic, Severity
 from ..graph import actors, root_node
 from ..io import Document
+from ..safexml import hardened_parser
 from ..templating import template
 from . import labels, to_bytes
 from .flow import Modules, flow_diagram
@@ -164,8 +165,7 @@ def _targets(
 
 def _mark(svg_bytes: bytes, rows: list[DiagnosticRow]) -> str:
     """The SVG element as text, with elements that carry diagnostics marked by severity."""
-    parser = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False)
-    svg = etree.fromstring(svg_bytes, parser=parser)
+    svg = etree.fromstring(svg_bytes, parser=hardened_parser())
     worst: dict[str, Severity] = {}
     for row in rows:
         for target in row.targets:
