@@ -58,6 +58,19 @@ __all__ = [
     "run_quality_checker",
 ]
 
+
+def _number(version: str) -> tuple[int, ...]:
+    """`1.2` as (1, 2), so that versions compare as numbers."""
+    return tuple(int(part) for part in version.split("."))
+
+
+#: The first OpenSCENARIO version the bundle applies its rules to; the versions come from
+#: `schema.SUPPORTED_VERSIONS`, the one list.
+FIRST_CHECKED_VERSION: Final = "1.2"
+CHECKED_VERSIONS: Final = tuple(
+    v for v in schema.SUPPORTED_VERSIONS if _number(v) >= _number(FIRST_CHECKED_VERSION)
+)
+
 #: Diagnostic codes of the checker's own outcomes (its issues keep their rule UIDs).
 FAILED_CODE: Final = "XOSC-QC"
 SKIPPED_CODE: Final = "XOSC-QC-SKIPPED"
@@ -68,6 +81,7 @@ _SEVERITIES: Final = {
 }
 
 _BUNDLE_MODULE: Final = "qc_openscenario"
+
 _RUN_LOCK = threading.Lock()
 
 
@@ -137,9 +151,10 @@ class QualityReport:
 def quality_diagnostics(path: Path, version: str) -> list[Diagnostic]:
     """The checker's findings on one file as Diagnostics; below 1.2 an INFO that it did not run,
     and a checker that cannot run an ERROR (XOSC-QC) rather than an exception."""
-    if version in ("1.0", "1.1"):
+    if version not in CHECKED_VERSIONS:
         message = (
-            f"ASAM Quality Checker rules apply from OpenSCENARIO 1.2; {version} got the XSD only"
+            f"ASAM Quality Checker rules apply from OpenSCENARIO {FIRST_CHECKED_VERSION}; "
+            f"{version} got the XSD only"
         )
         return [Diagnostic(Severity.INFO, SKIPPED_CODE, message, file=str(path))]
     try:
@@ -371,7 +386,7 @@ def _to_report(input_path: Path, version: str | None, result: Any) -> QualityRep
                     xpath=xpath,
                 )
             )
-    below_1_2 = version is not None and tuple(int(p) for p in version.split(".")) < (1, 2)
+    below_1_2 = version is not None and _number(version) < _number(FIRST_CHECKED_VERSION)
     return QualityReport(
         path=input_path,
         version=version,

@@ -39,3 +39,13 @@ def test_before_1_2_the_checker_says_it_did_not_run() -> None:
 def test_an_unsafe_file_is_unreadable_not_raised() -> None:
     report = check_file(DATA / "xxe.xosc")
     assert report.unreadable and not report.diagnostics
+
+
+def test_the_checked_versions_come_from_the_one_versions_list() -> None:
+    from sceml import qualitychecker, schema
+
+    assert set(qualitychecker.CHECKED_VERSIONS) < set(schema.SUPPORTED_VERSIONS)
+    assert (
+        tuple(v for v in schema.SUPPORTED_VERSIONS if v not in ("1.0", "1.1"))
+        == qualitychecker.CHECKED_VERSIONS
+    )
