@@ -7,19 +7,28 @@
     [1]
 
 Why SceML reads OpenDRIVE this way (and not with one of the PyPI readers): docs/map-reader.md.
+`RoadMap` and `load_map` are imported when first used: they bring numpy and pyclothoids, which
+validating a scenario without a map, or starting the CLI, should not pay for.
 """
 
-from .model import BICYCLE_LANE_TYPES, PEDESTRIAN_LANE_TYPES, VEHICLE_LANE_TYPES
-from .reader import MapError
-from .roadmap import (
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+from .model import (
+    BICYCLE_LANE_TYPES,
+    PEDESTRIAN_LANE_TYPES,
+    VEHICLE_LANE_TYPES,
     LaneBand,
     LaneCoordinate,
     PositionError,
-    RoadMap,
     WorldPose,
-    load_map,
     wrap_angle,
 )
+from .reader import MapError
+
+if TYPE_CHECKING:
+    from .roadmap import RoadMap, load_map
 
 __all__ = [
     "BICYCLE_LANE_TYPES",
@@ -34,3 +43,11 @@ __all__ = [
     "load_map",
     "wrap_angle",
 ]
+
+
+def __getattr__(name: str) -> Any:
+    if name in ("RoadMap", "load_map"):
+        from . import roadmap
+
+        return getattr(roadmap, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

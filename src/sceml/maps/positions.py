@@ -11,12 +11,16 @@ from __future__ import annotations
 
 import itertools
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
-from .roadmap import PositionError, RoadMap, WorldPose, wrap_angle
+from .model import PositionError, WorldPose, wrap_angle
+
+if TYPE_CHECKING:
+    from .roadmap import RoadMap
 
 
 def spread(parameter: EObject | None, default: float | None = None) -> list[float] | None:

@@ -12,66 +12,24 @@ from __future__ import annotations
 
 import math
 import os
-from dataclasses import dataclass
 from functools import cached_property
 from pathlib import Path
 
 import numpy as np
 
-from .model import Junction, Lane, LaneSection, Road, piecewise
+from .model import (
+    Junction,
+    LaneBand,
+    LaneCoordinate,
+    LaneSection,
+    PositionError,
+    Road,
+    WorldPose,
+    piecewise,
+    wrap_angle,
+)
 from .planview import SAMPLE_STEP, ReferenceLine
 from .reader import parse_opendrive
-
-
-class PositionError(ValueError):
-    """A lane coordinate that names no lane of the map; the message says which part is wrong."""
-
-
-@dataclass(frozen=True)
-class WorldPose:
-    """A point of the plane and a heading (rad)."""
-
-    x: float
-    y: float
-    heading: float
-
-
-@dataclass(frozen=True)
-class LaneCoordinate:
-    """Where a world point lies on the map: road, lane, s, offset from the lane centre.
-
-    `outside` is how far the point lies outside the lane's edges (0 inside it).
-    """
-
-    road_id: str
-    lane_id: int
-    s: float
-    offset: float
-    lane_type: str
-    outside: float = 0.0
-
-
-@dataclass(frozen=True)
-class LaneBand:
-    """A lane at one s: its inner and outer edge (t) and its type."""
-
-    lane: Lane
-    inner: float
-    outer: float
-
-    @property
-    def centre(self) -> float:
-        return (self.inner + self.outer) / 2
-
-    @property
-    def width(self) -> float:
-        return abs(self.outer - self.inner)
-
-
-def wrap_angle(angle: float) -> float:
-    """`angle` in (-pi, pi]."""
-    wrapped = math.remainder(angle, 2 * math.pi)
-    return math.pi if wrapped == -math.pi else wrapped
 
 
 class RoadMap:

@@ -11,9 +11,12 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
-from .model import Road
-from .roadmap import PositionError, RoadMap, wrap_angle
+from .model import PositionError, Road, wrap_angle
+
+if TYPE_CHECKING:
+    from .roadmap import RoadMap
 
 STRAIGHT_LIMIT = math.radians(30)
 U_TURN_LIMIT = math.radians(150)

@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 from collections.abc import Iterator
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from pyecore.ecore import EObject
 
@@ -25,8 +26,6 @@ from ..maps import (
     LaneCoordinate,
     MapError,
     PositionError,
-    RoadMap,
-    load_map,
     wrap_angle,
 )
 from ..maps.positions import Located, centre, locate, spread
@@ -34,6 +33,9 @@ from ..maps.reference import MapReference, map_reference
 from ..maps.routes import routes_from
 from .context import Context, is_kind
 from .registry import Finding, constraint
+
+if TYPE_CHECKING:
+    from ..maps.roadmap import RoadMap
 
 ERROR, WARNING, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
 #: How far outside a lane's edges a world position may lie and still be on it (m).
@@ -65,6 +67,8 @@ def _reference(obj: EObject, context: Context) -> MapReference | None:
 
 def _loaded(reference: MapReference, context: Context) -> RoadMap | MapError:
     def read() -> RoadMap | MapError:
+        from ..maps.roadmap import load_map  # numpy and pyclothoids only when a map is read
+
         try:
             return load_map(reference.path)  # type: ignore[arg-type]
         except MapError as error:
@@ -79,7 +83,7 @@ def _map_of(obj: EObject, context: Context) -> RoadMap | None:
     if reference is None or reference.is_town:
         return None
     loaded = _loaded(reference, context)
-    return loaded if isinstance(loaded, RoadMap) else None
+    return None if isinstance(loaded, MapError) else loaded
 
 
 def _actor_of(position: EObject) -> scm.Actor | None:
