@@ -219,6 +219,25 @@ def test_set_position_and_waypoints(uis1: EditorSession) -> None:
         )
 
 
+def test_a_start_moved_onto_the_sidewalk_is_flagged_on_the_actor_and_undo_clears_it(
+    uis1: EditorSession,
+) -> None:
+    ego = actor_id(uis1.view(), "ego")
+    sidewalk = {
+        "type": "lane",
+        "roadId": "3",
+        "laneId": 2,
+        "s": {"type": "value", "value": 30.0},
+        "offset": None,
+    }
+    after = uis1.apply([{"op": "set_actor_position", "actor": ego, "value": sidewalk}])
+    flagged = [d for d in after["diagnostics"] if d["code"] == "SCEML-R004"]
+    assert len(flagged) == 1 and "sidewalk" in flagged[0]["message"], flagged
+    assert flagged[0]["actor"] == ego
+    undone = uis1.undo()
+    assert not [d for d in undone["diagnostics"] if d["code"].startswith("SCEML-R")]
+
+
 def test_actor_operations(uis1: EditorSession) -> None:
     after = roundtrip(uis1, [{"op": "add_actor", "kind": "Truck"}])
     assert [a["name"] for a in after["actors"]] == ["ego", "bike", "truck_1"]
