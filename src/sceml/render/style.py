@@ -310,3 +310,18 @@ def style_data() -> dict[str, object]:
         "font": FONT,
         "edge": {"color": EDGE_ATTRIBUTES["color"]},
     }
+
+
+# --- The map view (`sceml render --view map`): a top view of the start situation. -----------------
+
+#: Lane fills by OpenDRIVE lane type; any other type gets MAP_OTHER_LANE_FILL.
+MAP_LANE_FILLS = {"driving": "#5f6368", "sidewalk": "#dadce0"}
+MAP_OTHER_LANE_FILL = "#a8adb3"
+MAP_LANE_EDGE = "#3c4043"
+MAP_LANE_MARKING = "#ffffff"
+MAP_BACKGROUND = "#f8f9fa"
+#: The ego is blue, as the paper's Fig. 1a draws it; the other actors take these in turn.
+MAP_EGO_COLOUR = "#1a73e8"
+MAP_ACTOR_COLOURS = ("#e8710a", "#188038", "#a142f4", "#d93025", "#129eaf", "#e52592", "#8d6e63")
+#: Radii and positions no actor owns (a condition without a reference actor).
+MAP_NEUTRAL_COLOUR = "#202124"
