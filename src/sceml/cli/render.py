@@ -7,7 +7,9 @@ from typing import cast
 
 import click
 
-from ..io import load, model_path, unresolved_references, write_atomically
+import scemlmodel as scm
+
+from ..io import Document, load, model_path, unresolved_references, write_atomically
 from ..render import FORMATS, ModuleChoiceError, View, diagram, to_bytes
 from ..render.flow import Modules
 from .common import SceMLCommand, allow_option
@@ -35,10 +37,20 @@ def output_format(path: Path) -> str:
 )
 @click.option(
     "--view",
-    type=click.Choice(["flow", "bt"]),
+    type=click.Choice(["flow", "bt", "map"]),
     default="flow",
     show_default=True,
-    help="flow: the SceML notation; bt: the same scenario as a behavior tree.",
+    help="flow: the SceML notation; bt: the same scenario as a behavior tree; map: the start "
+    "situation from above on the scenario's OpenDRIVE map (lanes, actors with heading and size, "
+    "destinations, waypoints, condition radii; logical ranges shaded).",
+)
+@click.option(
+    "--extent",
+    type=click.Choice(["scenario", "map"]),
+    default="scenario",
+    show_default=True,
+    help="For --view map: scenario shows what the scenario uses (actors, targets, radii) with "
+    "15 m around it and at least the junction; map shows every road.",
 )
 @click.option(
     "--modules",
@@ -63,27 +75,23 @@ def render(
     modules: str,
     legend: bool,
     module: str | None,
+    extent: str,
     allow: tuple[Path, ...],
 ) -> None:
     """Draw FILE, a scenario or a module library (.xmi), as a diagram.
 
     Exits 0 when the diagram is written, 1 when it is written but a module use's definition
-    cannot be loaded (drawn as broken), 2 for usage errors or unreadable input.
+    cannot be loaded (drawn as broken), 2 for usage errors or unreadable input. The map view
+    needs a scenario whose map is an OpenDRIVE (.xodr) file: a simulator town, no map, or a map
+    file that cannot be read exits 2 and writes nothing.
     """
     fmt = output_format(output)
-    try:
-        document = load(file, allow=allow)
-        root = document.root
-        graph = diagram(
-            root,
-            view=cast(View, view),
-            modules=cast(Modules, modules),
-            legend=legend,
-            module=module,
-        )
-        write_atomically(output, to_bytes(graph, fmt))
-    except ModuleChoiceError as error:
-        raise click.UsageError(error.message) from None
+    document = load(file, allow=allow)
+    root = document.root
+    if view == "map":
+        _render_map(document, output, fmt, extent)
+    else:
+        _render_diagram(document, output, fmt, view, modules, legend, module)
     click.echo(f"wrote {output}")
     # The diagram draws a broken module use as such; the exit status still says it is broken.
     broken = list(unresolved_references(root))
@@ -93,3 +101,39 @@ def render(
         click.echo(f"Error: {where}: {reason} ({model_path(holder)})", err=True)
     if broken:
         raise SystemExit(1)
+
+
+def _render_diagram(
+    document: Document,
+    output: Path,
+    fmt: str,
+    view: str,
+    modules: str,
+    legend: bool,
+    module: str | None,
+) -> None:
+    """The flow or behavior-tree diagram, through Graphviz."""
+    try:
+        graph = diagram(
+            document.root,
+            view=cast(View, view),
+            modules=cast(Modules, modules),
+            legend=legend,
+            module=module,
+        )
+        write_atomically(output, to_bytes(graph, fmt))
+    except ModuleChoiceError as error:
+        raise click.UsageError(error.message) from None
+
+
+def _render_map(document: Document, output: Path, fmt: str, extent: str) -> None:
+    """The map view; what it could not place is said on standard error."""
+    if not isinstance(document.root, scm.Scenario):
+        raise click.UsageError("the map view draws scenarios, not module libraries")
+    # matplotlib is loaded only when a map is drawn: the other commands start faster without it.
+    from ..render.mapview import Extent, map_view
+
+    picture = map_view(document.root, document.path, fmt, extent=cast(Extent, extent))
+    write_atomically(output, picture.data)
+    for note in picture.notes:
+        click.echo(f"Note: {note}", err=True)

@@ -10,7 +10,7 @@ import click
 from ..diagnostics import Severity
 from ..io import load, write_atomically
 from ..render.flow import Modules
-from ..render.report import build_report
+from ..render.report import build_report, report_figures
 from ..validation import validate
 from .common import SceMLCommand, allow_option
 
@@ -33,7 +33,11 @@ from .common import SceMLCommand, allow_option
 )
 @allow_option
 def report(file: Path, output: Path, modules: str, allow: tuple[Path, ...]) -> None:
-    """Write a review report of FILE: diagram, validation diagnostics, actors and parameters.
+    """Write a review report of FILE: diagram, map view, validation diagnostics, actors and
+    parameters.
+
+    The map view (as `sceml render --view map` draws it) is included when the scenario's map is
+    a readable OpenDRIVE file; otherwise the page says why there is none.
 
     Clicking a diagnostic in the page highlights its element in the diagram. Exits 0 when the
     model has no errors, 1 when it has errors (the report is written either way), 2 for usage
@@ -43,7 +47,9 @@ def report(file: Path, output: Path, modules: str, allow: tuple[Path, ...]) -> N
         raise click.BadParameter("the report is HTML; name a .html file", param_hint="'-o'")
     document = load(file, allow=allow)
     diagnostics = validate(document.root, document=document)
-    html = build_report(document, diagnostics, modules=cast(Modules, modules))
+    html = build_report(
+        document, diagnostics, modules=cast(Modules, modules), figures=report_figures(document)
+    )
     write_atomically(output, html.encode("utf-8"))
     errors = sum(d.severity == Severity.ERROR for d in diagnostics)
     click.echo(

@@ -53,13 +53,15 @@ class DiagnosticRow:
 class Figure:
     """An extra figure of the report, shown after the diagram under its own heading.
 
-    `svg` is an inline SVG element as text (trusted: made by sceml, never by the input file);
+    `svg` is an inline SVG element as text (trusted: made by sceml, never by the input file),
+    or empty when there is no picture; `note` is shown with it (e.g. why there is no picture);
     `anchor` is the HTML id of the figure's box, so a page can link to it.
     """
 
     title: str
     anchor: str
     svg: str
+    note: str = ""
 
 
 @dataclass(frozen=True)
@@ -115,6 +117,16 @@ def build_report(
         actors=[_actor_row(actor) for actor in (actors(scenario) if scenario else [])],
         nodes=list(_node_rows(root, diagram.ids)),
     )
+
+
+def report_figures(document: Document) -> list[Figure]:
+    """The figures `sceml report` adds after the diagram: a scenario's map view (or why none)."""
+    if not isinstance(document.root, scm.Scenario):
+        return []
+    # matplotlib is loaded only when a scenario's report is made.
+    from .mapview import report_figure
+
+    return [report_figure(document)]
 
 
 def _title(document: Document) -> str:
