@@ -1,9 +1,10 @@
 """Regenerate the pictures in docs/diagrams/ from the reference examples.
 
-    .venv/bin/python docs/diagrams/build_diagrams.py [--no-screenshot]
+    .venv/bin/python docs/diagrams/build_diagrams.py [--no-screenshot] [--only-maps]
 
 Writes SVG and PNG of UIS1 and UIS2 (flow and behavior-tree views), the CrossingManeuver library
-module on its own, the legend, and the HTML review report of UIS2 with a screenshot of it taken
+module on its own, the legend, the map views of UIS1 and UIS2 (concrete, and UIS2 logical as
+PNG), and the HTML review report of UIS2 with a screenshot of it taken
 in headless Chromium (/usr/bin/chromium through Playwright), skipped when that is not installed.
 """
 
@@ -15,10 +16,11 @@ from pathlib import Path
 
 import graphviz
 
-from sceml.cli.report import run_validation
 from sceml.io import load, write_atomically
 from sceml.render import diagram, legend_graph, to_bytes
-from sceml.render.report import build_report
+from sceml.render.mapview import map_view
+from sceml.render.report import build_report, report_figures
+from sceml.validation import validate
 
 HERE = Path(__file__).resolve().parent
 EXAMPLES = HERE.parent.parent / "examples"
@@ -61,11 +63,29 @@ def build_pictures() -> list[Path]:
     return [*written, legend]
 
 
+def build_map_views() -> list[Path]:
+    """The map views (`sceml render FILE --view map`) of UIS1 and UIS2."""
+    written = []
+    for example, stem, formats in (
+        ("uis1-concrete.xmi", "uis1-map", ("svg", "png")),
+        ("uis2-concrete.xmi", "uis2-map", ("svg", "png")),
+        ("uis2-logical.xmi", "uis2-logical-map", ("png",)),
+    ):
+        document = load(EXAMPLES / example)
+        for fmt in formats:
+            path = HERE / f"{stem}.{fmt}"
+            write_atomically(path, map_view(document.root, document.path, fmt).data)
+            written.append(path)
+    return written
+
+
 def build_report_page() -> Path:
-    """The UIS2 review report, validated when a validator is installed."""
+    """The UIS2 review report, validated, with its map view."""
     document = load(EXAMPLES / "uis2-logical.xmi")
     page = HERE / "uis2-report.html"
-    write_atomically(page, build_report(document, run_validation(document)).encode("utf-8"))
+    diagnostics = validate(document.root, document=document)
+    html = build_report(document, diagnostics, figures=report_figures(document))
+    write_atomically(page, html.encode("utf-8"))
     return page
 
 
@@ -97,8 +117,13 @@ def main(argv: list[str] | None = None) -> None:
     """Command-line entry point."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--no-screenshot", action="store_true", help="skip the browser step")
+    parser.add_argument("--only-maps", action="store_true", help="draw the map views only")
     arguments = parser.parse_args(argv)
-    written = [*build_pictures(), build_report_page()]
+    if arguments.only_maps:
+        for path in build_map_views():
+            print(path.relative_to(HERE.parent.parent))
+        return
+    written = [*build_pictures(), *build_map_views(), build_report_page()]
     if not arguments.no_screenshot and CHROMIUM.exists():
         written.append(screenshot(written[-1], HERE / "uis2-report.png"))
     for path in written:
