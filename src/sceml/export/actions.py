@@ -182,7 +182,11 @@ def plan_trajectory(ctx: Context, node: scm.ActionNode, groups: list[Group]) -> 
     entity = ctx.entity(node.referenceActor)
     points = [node.destination] if isinstance(node, scm.Cross) else list(node.waypoints)
     here = {"kind": "relative_object", "entity": entity, "dx": "0.0", "dy": "0.0"}
-    vertices = [here, *(ctx.position(point) for point in points)]
+    # No vertex carries a heading: the actor then faces along its path. With a heading on any
+    # vertex, esmini keeps the actor's own heading at the start, and a path that starts across
+    # it (a pedestrian facing along the kerb, crossing) is taken as driven backwards and ends in
+    # the step it starts (docs/openscenario-mapping.md, "Trajectories").
+    vertices = [here, *({**ctx.position(point), "h": None} for point in points)]
     data = {"trajectory": ctx.names.claim(f"{name}_path"), "vertices": vertices}
     event = Event(name, entity, [Action(ctx.action_name(name), "trajectory", data)], groups)
     end = arrived(ctx, node, f"{name}_arrived", vertices[-1], ctx.values.text(node, "tolerance"))
