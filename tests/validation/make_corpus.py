@@ -681,6 +681,14 @@ def time_of_day_functional(out: Path) -> None:
     save(b.scenario, out, "e004-time-of-day-functional.xmi")
 
 
+@case("e005-date-yesterday", "SCEML-E005")
+def date_not_iso(out: Path) -> None:
+    b, ego = scenario()
+    b.root.date = "yesterday"  # the builder refuses it; a hand-edited file can have it
+    b.chain(b.root, b.add("Accelerate", ego, targetSpeed=8.0), b.end)
+    save(b.scenario, out, "e005-date-yesterday.xmi")
+
+
 # The map (SPEC §12): maps/intersection.xodr, see docs/map.md -------------------------------------
 
 

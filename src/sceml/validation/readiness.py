@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterator
+from datetime import datetime
 
 from pyecore.ecore import EObject
 
@@ -61,6 +62,27 @@ def time_of_day_is_valid(environment: scm.Environment, context: Context) -> Iter
     text = environment.timeOfDay
     if text is not None and not is_time_of_day(text):
         yield environment, f"time of day {text!r} is not HH:MM:SS (00:00:00 to 23:59:59)"
+
+
+def is_iso_date(text: str) -> bool:
+    """Whether `text` is an ISO 8601 date (and time) that the export can write as xsd:dateTime."""
+    try:
+        datetime.fromisoformat(text)
+    except ValueError:
+        return False
+    return True
+
+
+@constraint(
+    "SCEML-E005",
+    ERROR,
+    "RootNode",
+    "the root node's date, when given, is an ISO 8601 date and time (e.g. 2026-01-01T12:00:00)",
+)
+def date_is_iso(root: scm.RootNode, context: Context) -> Iterator[Finding]:
+    text = root.date
+    if text is not None and text.strip() and not is_iso_date(text):
+        yield root, f"date {text!r} is not an ISO 8601 date, e.g. 2026-01-01T12:00:00"
 
 
 def _used_kinds(scenario: scm.Scenario, context: Context) -> dict[str, EObject]:
