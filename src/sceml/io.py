@@ -21,7 +21,7 @@ from pyecore.resources.xmi import XMIOptions, XMIResource
 import scemlmodel as scm
 
 from .collector import collector_paused
-from .errors import LoadError, SaveError
+from .errors import LoadError, SaveError, SceMLError
 from .safexml import (  # noqa: F401 (the size limit is part of this module's API)
     DEFAULT_MAX_BYTES,
     MAX_BYTES_VARIABLE,
@@ -530,6 +530,22 @@ def unresolved_references(root: EObject) -> Iterator[tuple[EObject, str, str]]:
             target.force_resolve()
         except Exception as error:  # pyecore wraps our LoadError, or raises its own for fragments
             yield obj, href, _resolution_failure(href, error)
+
+
+def broken_references(document: Document) -> list[SceMLError]:
+    """Every module use of a loaded file whose definition cannot be had, located in the file.
+
+    The file itself was read, so these are errors of its content (exit 1), not unusable input.
+    """
+    return [
+        SceMLError(
+            reason,
+            file=document.path,
+            line=document.line_of(holder),
+            element=model_path(holder),
+        )
+        for holder, _href, reason in unresolved_references(document.root)
+    ]
 
 
 def _resolution_failure(href: str, error: BaseException) -> str:

@@ -27,6 +27,16 @@ class ReportedError(click.ClickException):
         setattr(self, "exit_code", error.exit_code)  # noqa: B010
 
 
+def exit_if_broken(errors: list[SceMLError]) -> None:
+    """Report errors found after a command did its work (e.g. broken module references in a
+    file that was still summarised or drawn), one `Error:` line each as for a raised SceMLError,
+    then exit 1 if there were any."""
+    for error in errors:
+        click.echo(f"Error: {error}", err=True)
+    if errors:
+        raise click.exceptions.Exit(1)
+
+
 class SceMLCommand(click.Command):
     """The base of every command: the one place a SceMLError becomes a message and exit code.
 

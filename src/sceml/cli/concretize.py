@@ -10,7 +10,6 @@ import scemlmodel as scm
 
 from .. import io
 from ..diagnostics import Severity
-from ..errors import SceMLError
 from ..levels.apply import relocate_map
 from ..levels.checks import validate_model
 from ..levels.concretize import concretize as make_concrete
@@ -65,10 +64,5 @@ def report_validation(model: scm.Scenario, output: Path) -> None:
 
 def _refuse_unresolved(document: io.Document) -> None:
     # The copy concretize works on has no file, so report a broken reference here, located.
-    for holder, _href, reason in io.unresolved_references(document.root):
-        raise SceMLError(
-            reason,
-            file=document.path,
-            line=document.line_of(holder),
-            element=io.model_path(holder),
-        )
+    for error in io.broken_references(document):
+        raise error

@@ -9,8 +9,8 @@ from pathlib import Path
 import click
 
 from ..info import Summary, summarize
-from ..io import load, model_path, unresolved_references
-from .common import SceMLCommand, allow_option
+from ..io import broken_references, load
+from .common import SceMLCommand, allow_option, exit_if_broken
 
 
 @click.command(cls=SceMLCommand)
@@ -30,13 +30,7 @@ def info(file: Path, as_json: bool, allow: tuple[Path, ...]) -> None:
     else:
         for text in _text(summary, file):
             click.echo(text)
-    broken = list(unresolved_references(document.root))
-    for holder, _href, reason in broken:
-        line = document.line_of(holder)
-        where = f"{file}:{line}" if line else str(file)
-        click.echo(f"Error: {where}: {reason} ({model_path(holder)})", err=True)
-    if broken:
-        raise SystemExit(1)
+    exit_if_broken(list(broken_references(document)))
 
 
 def _text(summary: Summary, file: Path) -> list[str]:

@@ -9,10 +9,10 @@ import click
 
 import scemlmodel as scm
 
-from ..io import Document, load, model_path, unresolved_references, write_atomically
+from ..io import Document, broken_references, load, write_atomically
 from ..render import FORMATS, ModuleChoiceError, View, diagram, to_bytes
 from ..render.flow import Modules
-from .common import SceMLCommand, allow_option
+from .common import SceMLCommand, allow_option, exit_if_broken
 
 
 def output_format(path: Path) -> str:
@@ -87,20 +87,13 @@ def render(
     """
     fmt = output_format(output)
     document = load(file, allow=allow)
-    root = document.root
     if view == "map":
         _render_map(document, output, fmt, extent)
     else:
         _render_diagram(document, output, fmt, view, modules, legend, module)
     click.echo(f"wrote {output}")
     # The diagram draws a broken module use as such; the exit status still says it is broken.
-    broken = list(unresolved_references(root))
-    for holder, _href, reason in broken:
-        line = document.line_of(holder)
-        where = f"{file}:{line}" if line else str(file)
-        click.echo(f"Error: {where}: {reason} ({model_path(holder)})", err=True)
-    if broken:
-        raise SystemExit(1)
+    exit_if_broken(list(broken_references(document)))
 
 
 def _render_diagram(
