@@ -100,6 +100,7 @@ def files(folder: Path) -> list[Path]:
 
 
 def test_every_command_is_scanned() -> None:
+    # `edit` is scanned by test_edit_refuses_bad_input_before_serving.
     assert set(COMMANDS) == set(_leaf_commands()) - {"dev generate", "dev class-diagram", "edit"}
 
 
@@ -125,6 +126,23 @@ def test_bad_input(tmp_path: Path, command: str, kind: str) -> None:
         assert files(out) == [report] and "unreadable" in report.read_text()
     else:
         assert files(out) == [], files(out)
+
+
+@pytest.mark.parametrize("kind", ["folder", "malformed", "hostile", "missing folder"])
+def test_edit_refuses_bad_input_before_serving(tmp_path: Path, kind: str) -> None:
+    # `edit` serves until Ctrl-C, so it has no good-arguments run here; a missing FILE is a new
+    # scenario, so "missing" means a file in a folder that does not exist. `run` returning at
+    # all (within the deadline) shows that no server was started.
+    bad = tmp_path / "absent" / "new.xmi"
+    if kind != "missing folder":
+        bad = BAD_INPUTS[kind](tmp_path / "in", False)
+    if kind == "folder":
+        bad.mkdir()
+    before = files(tmp_path)
+    code, output = run(["edit", str(bad), "--no-browser"])
+    assert code == 2, output
+    assert "http://" not in output and str(bad.name) in output, output
+    assert files(tmp_path) == before
 
 
 @pytest.mark.parametrize("command", sorted(set(COMMANDS) - READS_ONLY))
