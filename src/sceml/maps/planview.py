@@ -20,6 +20,7 @@ from .model import Geometry
 #: Sampling step of the polyline that projection starts from; Newton steps then refine s.
 SAMPLE_STEP = 0.5  # m
 _CUBIC_SAMPLES = 400
+_NEWTON_STEPS = 8
 
 Pose = tuple[float, float, float]  # x, y, heading
 
@@ -108,6 +109,9 @@ class ReferenceLine:
         poses = np.array([self.pose(float(s)) for s in self.s])
         self.xy = poses[:, :2]
         self.heading = poses[:, 2]
+        # Mean curvature of each polyline segment: the Newton step of `project` needs it.
+        spans = np.maximum(np.diff(self.s), 1e-12)
+        self._curvature = np.diff(np.unwrap(self.heading)) / spans
 
     def pose(self, s: float) -> Pose:
         """Point and heading of the reference line at `s` (clamped to the road)."""
@@ -129,10 +133,20 @@ class ReferenceLine:
         nearest = a + u[:, None] * d
         index = int(np.argmin(np.einsum("ij,ij->i", nearest - point, nearest - point)))
         s = float(self.s[index] + u[index] * (self.s[index + 1] - self.s[index]))
-        for _ in range(3):  # Newton on the along-track residual; the polyline start is close
+        # Newton on the along-track residual. Its derivative is -(1 - k*t): a point t off a line
+        # of curvature k moves 1/(1 - k*t) metres of s per metre along, so a plain `s += along`
+        # converges only by a factor k*t per step (up to 0.8 on the junction's tight lanes).
+        curvature = float(self._curvature[index])
+        for _ in range(_NEWTON_STEPS):
             px, py, h = self.pose(s)
             along = (x - px) * math.cos(h) + (y - py) * math.sin(h)
-            s = min(max(s + along, 0.0), self.length)
+            t = -(x - px) * math.sin(h) + (y - py) * math.cos(h)
+            scale = 1.0 - curvature * t
+            step = along / scale if scale > 0.2 else along  # near the centre of curvature
+            next_s = min(max(s + step, 0.0), self.length)
+            if abs(next_s - s) < 1e-10:
+                break
+            s = next_s
         px, py, h = self.pose(s)
         along = (x - px) * math.cos(h) + (y - py) * math.sin(h)
         t = -(x - px) * math.sin(h) + (y - py) * math.cos(h)

@@ -50,12 +50,16 @@ def spread(parameter: EObject | None, default: float | None = None) -> list[floa
 
 
 def nominal(parameter: EObject | None, default: float | None = None) -> float | None:
-    """One representative number: the value, a range's middle, a distribution's mean."""
+    """One representative number: the value, a range's middle, a distribution's mean.
+
+    A discrete distribution gives its middle option in order of size (the mean of two).
+    """
     numbers = spread(parameter, default)
     if not numbers:
         return None
     if isinstance(parameter, scm.NormalDistribution):
         return float(parameter.mean)
+    numbers = sorted(numbers)  # a discrete distribution lists its options in any order
     return numbers[len(numbers) // 2] if len(numbers) != 2 else sum(numbers) / 2
 
 

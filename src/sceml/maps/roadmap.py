@@ -174,15 +174,20 @@ class RoadMap:
 
     @cached_property
     def _boxes(self) -> dict[str, tuple[float, float, float, float]]:
-        """Each road's bounding box, grown by its widest lane section."""
+        """Each road's bounding box, grown by its widest lane section and its lane offset."""
         boxes = {}
         for road in self.roads.values():
             line = self.reference_line(road.id)
+            # The offset counts by its size wherever it is largest: a negative one moves the
+            # right lanes further out, and it may grow along the road.
             reach = max(
-                (sum(abs(b.outer - b.inner) for b in self.bands(road, s)) for s in line.s[::8]),
+                (
+                    sum(abs(b.outer - b.inner) for b in self.bands(road, s))
+                    + (abs(piecewise(road.lane_offset, s)) if road.lane_offset else 0.0)
+                    for s in line.s
+                ),
                 default=0.0,
             )
-            reach += piecewise(road.lane_offset, 0.0) if road.lane_offset else 0.0
             low = line.xy.min(axis=0) - reach
             high = line.xy.max(axis=0) + reach
             boxes[road.id] = (float(low[0]), float(low[1]), float(high[0]), float(high[1]))
