@@ -10,7 +10,7 @@ import pytest
 from click.testing import CliRunner, Result
 
 from sceml import io, safexml
-from sceml.cli import cli
+from sceml.cli import cli, commands
 from sceml.render import diagram, to_bytes
 
 from ..render.svgtools import groups, parse, text_of
@@ -60,7 +60,8 @@ def test_export_reports_each_problem_once_with_its_line(
 
 
 def _commands(group: click.Group, prefix: tuple[str, ...] = ()):  # type: ignore[no-untyped-def]
-    for name, command in group.commands.items():
+    listed = commands() if group is cli else group.commands
+    for name, command in listed.items():
         if isinstance(command, click.Group):
             yield from _commands(command, (*prefix, name))
         else:

@@ -12,7 +12,7 @@ import click
 import pytest
 from click.testing import CliRunner
 
-from sceml.cli import cli
+from sceml.cli import cli, commands
 from sceml.cli.common import Parsed
 
 from .test_corpus import deadline
@@ -73,7 +73,7 @@ BAD_INPUTS = {
 
 def _leaf_commands() -> dict[str, click.Command]:
     found = {}
-    for name, command in cli.commands.items():
+    for name, command in commands().items():
         if isinstance(command, click.Group):
             found.update({f"{name} {sub}": c for sub, c in command.commands.items()})
         else:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import importlib
 import sys
 from collections.abc import Callable, Iterable, Iterator
 from contextlib import contextmanager
@@ -65,6 +66,35 @@ class SceMLGroup(click.Group):
 
 
 SceMLGroup.group_class = SceMLGroup
+
+
+class LazySceMLGroup(SceMLGroup):
+    """A SceMLGroup whose commands are imported by name when first asked for.
+
+    `lazy_commands` maps each command name to "module:attribute" within this package.
+    """
+
+    def __init__(self, *args: Any, lazy_commands: dict[str, str], **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        self.lazy_commands = dict(lazy_commands)
+
+    def list_commands(self, ctx: click.Context) -> list[str]:
+        return [
+            *self.lazy_commands,
+            *(n for n in super().list_commands(ctx) if n not in self.lazy_commands),
+        ]
+
+    def get_command(self, ctx: click.Context, cmd_name: str) -> click.Command | None:
+        target = self.lazy_commands.get(cmd_name)
+        if target is None or cmd_name in self.commands:
+            return super().get_command(ctx, cmd_name)
+        module_name, attribute = target.split(":")
+        module = importlib.import_module(f"{__package__}.{module_name}")
+        command = getattr(module, attribute)
+        if not isinstance(command, click.Command):
+            raise TypeError(f"{target} is not a click command")
+        self.add_command(command, cmd_name)
+        return command
 
 
 class Parsed(click.ParamType[Any]):

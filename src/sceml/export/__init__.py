@@ -26,16 +26,44 @@ literal.
 `support.unsupported_reason(kind, version, profile)` says why a node kind cannot be exported.
 """
 
-from .support import supported_kinds, unsupported_reason
-from .values import ParameterDeclarationSpec
-from .writer import (
-    ExportError,
-    InvalidOutputError,
-    XoscDocument,
-    build_xosc,
-    export,
-    export_to_file,
-)
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from .support import supported_kinds, unsupported_reason
+    from .values import ParameterDeclarationSpec
+    from .writer import (
+        ExportError,
+        InvalidOutputError,
+        XoscDocument,
+        build_xosc,
+        export,
+        export_to_file,
+    )
+
+#: Where each public name lives. Imported on first use, so that importing a light submodule
+#: (`sceml.export.versions`, `sceml.export.support`) does not load Jinja2 and the templates.
+_HOMES = {
+    "supported_kinds": "support",
+    "unsupported_reason": "support",
+    "ParameterDeclarationSpec": "values",
+    "ExportError": "writer",
+    "InvalidOutputError": "writer",
+    "XoscDocument": "writer",
+    "build_xosc": "writer",
+    "export": "writer",
+    "export_to_file": "writer",
+}
+
+
+def __getattr__(name: str) -> Any:
+    home = _HOMES.get(name)
+    if home is None:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    return getattr(importlib.import_module(f"{__name__}.{home}"), name)
+
 
 __all__ = [
     "ExportError",
