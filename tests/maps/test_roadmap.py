@@ -483,3 +483,22 @@ def test_locate_lane_positions_on_our_map(our_map: RoadMap) -> None:
     with pytest.raises(PositionError, match="no road '99'"):
         locate(lane("99", 1, 30.0), our_map)
     assert centre(lane("99", 1, 30.0), our_map) is None
+
+
+def test_lane_sections_listed_out_of_order_are_read_by_s(tmp_path: Path) -> None:
+    text = evaluator.XODR.read_text(encoding="utf-8")
+    # Road 1 gets a second lane section at s=50, written before the first one.
+    start = text.index('<road rule="RHT" id="1"')
+    first = text.index("<laneSection", start)
+    end = text.index("</laneSection>", first) + len("</laneSection>")
+    section = text[first:end]
+    later = section.replace('<laneSection s="0"', '<laneSection s="50"').replace(
+        'type="sidewalk"', 'type="biking"'
+    )
+    changed = text[:first] + later + section + text[end:]
+    path = tmp_path / "sections.xodr"
+    path.write_text(changed, encoding="utf-8")
+    road = load_map(path).road("1")
+    assert [section.s for section in road.sections] == [0.0, 50.0]
+    assert road.section_at(20.0).lane(2).type == "sidewalk"
+    assert road.section_at(70.0).lane(2).type == "biking"

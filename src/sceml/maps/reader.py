@@ -141,7 +141,14 @@ class _Reader:
             rule=element.get("rule", "RHT"),
             geometries=tuple(self.geometry(g) for g in plan_view.iterfind("geometry")),
             lane_offset=tuple(self.poly3(o, "s") for o in lanes.iterfind("laneOffset")),
-            sections=tuple(self.section(s) for s in lanes.iterfind("laneSection")),
+            # Some writers (scenariogeneration with uneven lane definitions) list sections out
+            # of order; `Road.section_at` needs them by s.
+            sections=tuple(
+                sorted(
+                    (self.section(s) for s in lanes.iterfind("laneSection")),
+                    key=lambda section: section.s,
+                )
+            ),
             predecessor=self.road_link(link, "predecessor"),
             successor=self.road_link(link, "successor"),
             line=element.sourceline,
