@@ -34,5 +34,10 @@ python=${PYTHON:-python3}
   || { echo "setup: SceML needs Python >= 3.11 (set PYTHON=...)" >&2; exit 2; }
 [ -x .venv/bin/python ] || "$python" -m venv .venv
 .venv/bin/python -m pip install -q --disable-pip-version-check -e '.[dev]'
+# ASAM's OpenDRIVE checker, for the tests of our map (tests/maps/test_opendrive_checker.py). Its
+# 1.0.0 release pins pyclothoids < 0.2, numpy < 2 and xmlschema < 4, older than ours, so pip
+# cannot resolve it with SceML; it runs fine on ours, so it is installed without its pins.
+.venv/bin/python -m pip install -q --disable-pip-version-check --no-deps \
+  asam-qc-opendrive==1.0.0 transforms3d==0.4.2 semver==3.1.1
 bash scripts/build-web.sh
 echo "setup: ready (.venv/bin/sceml)"
