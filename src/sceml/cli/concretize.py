@@ -10,7 +10,6 @@ import scemlmodel as scm
 
 from .. import io
 from ..diagnostics import Severity
-from ..levels.apply import relocate_map
 from ..levels.checks import validate_model
 from ..levels.concretize import concretize as make_concrete
 from ..levels.concretize import parse_assignment
@@ -48,8 +47,7 @@ def concretize(
     document = io.load_scenario(file, allow=allow)
     _refuse_unresolved(document)
     result = make_concrete(document.root, dict(assignments))
-    relocate_map(result, file, output)
-    io.save(result, output)
+    io.save(result, output, origin=file)
     click.echo(f"wrote {output}")
     report_validation(result, output)
 

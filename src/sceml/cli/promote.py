@@ -7,7 +7,6 @@ from pathlib import Path
 import click
 
 from .. import io
-from ..levels.apply import relocate_map
 from ..levels.paths import UnknownPathError
 from ..levels.promote import load_ranges
 from ..levels.promote import promote as make_logical
@@ -48,7 +47,6 @@ def promote(file: Path, ranges_file: Path, output: Path, allow: tuple[Path, ...]
     except UnknownPathError as error:
         error.file = error.file or str(ranges_file)
         raise
-    relocate_map(result, file, output)
-    io.save(result, output)
+    io.save(result, output, origin=file)
     click.echo(f"wrote {output}")
     report_validation(result, output)

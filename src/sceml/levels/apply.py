@@ -15,9 +15,7 @@ the mapping cannot drift from flatten's rules.
 
 from __future__ import annotations
 
-import os
 from collections.abc import Mapping, Sequence
-from pathlib import Path
 
 from pyecore.ecore import EObject
 
@@ -103,17 +101,3 @@ class FlatTemplate:
     def slots_of(self, index: int) -> list[scm.Value]:
         """The Value objects of the flattened scenario that path `index` fills."""
         return list(self.targets[index])
-
-
-def relocate_map(scenario: scm.Scenario, source: Path, target: Path) -> None:
-    """Keep a relative map path pointing at the same file when the model moves to `target`.
-
-    A map that is not a relative path to an existing file (a simulator town name such as
-    `Town01`, or an absolute path) is left as it is.
-    """
-    root = root_node(scenario)
-    if root is None or not root.map or Path(root.map).is_absolute():
-        return
-    map_file = (source.resolve().parent / root.map).resolve()
-    if map_file.is_file():
-        root.map = Path(os.path.relpath(map_file, target.resolve().parent)).as_posix()

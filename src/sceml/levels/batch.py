@@ -27,7 +27,7 @@ import scemlmodel as scm
 
 from .. import io
 from ..errors import SceMLError
-from .apply import FlatTemplate, copy_scenario, relocate_map, set_level
+from .apply import FlatTemplate, copy_scenario, set_level
 from .checks import SampleChecker
 from .manifest import SampleRecord
 from .paths import place_value, resolve, slots
@@ -72,7 +72,6 @@ class Worker:
         self.xmi_copy = None
         if "xmi" in config.formats:
             self.xmi_copy = _xmi_working_copy(logical, config.paths)
-            relocate_map(self.xmi_copy.scenario, config.logical, config.out_dir / "sample.xmi")
 
     def run(self, index: int, values: Sequence[float]) -> SampleRecord:
         """Produce the files of one sample, or say why it is skipped."""
@@ -91,7 +90,7 @@ class Worker:
         if self.xmi_copy is not None:
             name = self.config.file_name(index, "xmi")
             self.xmi_copy.fill(row)
-            io.save(self.xmi_copy.scenario, self.config.out_dir / name)
+            io.save(self.xmi_copy.scenario, self.config.out_dir / name, origin=self.config.logical)
             files.append(name)
         return SampleRecord(index, row, files=tuple(files))
 
