@@ -1,13 +1,16 @@
-"""Check one OpenSCENARIO file: the XSD of its declared version, then ASAM's Quality Checker."""
+"""Check one OpenSCENARIO file: the XSD of its declared version, its positions against the map
+its LogicFile names, then ASAM's Quality Checker."""
 
 from __future__ import annotations
 
 from pathlib import Path
 
 from . import schema
+from .diagnostics import Severity
 from .errors import SceMLError
 from .qualitychecker import quality_diagnostics
 from .report import FileReport
+from .xosc_map import map_diagnostics
 
 
 def check_file(path: Path, quality: bool = True) -> FileReport:
@@ -23,6 +26,8 @@ def check_file(path: Path, quality: bool = True) -> FileReport:
     diagnostics = [
         issue.diagnostic(version, str(path)) for issue in schema.validate_tree(tree, version)
     ]
-    if quality and not diagnostics:
+    if not diagnostics:
+        diagnostics.extend(map_diagnostics(tree, path))
+    if quality and not any(d.severity is Severity.ERROR for d in diagnostics):
         diagnostics.extend(quality_diagnostics(path, version))
     return FileReport(str(path), diagnostics)
