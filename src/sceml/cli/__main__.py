@@ -1,0 +1,5 @@
+"""`python -m sceml.cli`: the same as the `sceml` command."""
+
+from . import main
+
+main()
