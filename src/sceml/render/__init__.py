@@ -9,6 +9,7 @@ from __future__ import annotations
 from typing import Literal
 
 import graphviz
+from pyecore.ecore import EProxy
 
 import scemlmodel as scm
 
@@ -23,10 +24,13 @@ FORMATS = ("svg", "png", "pdf")
 
 __all__ = [
     "FORMATS",
+    "MAX_DIAGRAM_NODES",
     "Diagram",
+    "DiagramTooLargeError",
     "ModuleChoiceError",
     "RenderError",
     "diagram",
+    "drawn_nodes",
     "flow_diagram",
     "legend_graph",
     "select_module",
@@ -52,6 +56,38 @@ def select_module(library: scm.Library, name: str | None) -> scm.ModuleDefinitio
     raise ModuleChoiceError(f"the library has no module {name!r}; it holds: {listed}")
 
 
+class DiagramTooLargeError(RenderError):
+    """A diagram with more boxes than a person can read, and than Graphviz lays out in seconds."""
+
+
+#: Boxes above which a diagram is refused: Graphviz's `dot` takes about 3 s for 5,000 boxes
+#: of a flow, 20 s for 10,000 and runs out of memory near 50,000 (benchmarks in issue 17).
+MAX_DIAGRAM_NODES = 5000
+
+
+def drawn_nodes(target: scm.Graph, modules: Modules) -> int:
+    """How many boxes a diagram of `target` has: its nodes, plus, when module uses are drawn
+    expanded, the nodes of each use's definition (recursively)."""
+    count = 0
+    pending: list[scm.Graph] = [target]
+    while pending:
+        graph = pending.pop()
+        count += len(graph.nodes)
+        if modules != "expanded":
+            continue
+        for node in graph.nodes:
+            if isinstance(node, scm.ModuleUse):
+                try:
+                    definition = node.definition
+                    if isinstance(definition, EProxy):
+                        definition = definition.force_resolve()
+                except Exception:  # a broken use is drawn as one box; its error is reported
+                    continue
+                if isinstance(definition, scm.ModuleDefinition):
+                    pending.append(definition)
+    return count
+
+
 def diagram(
     root: scm.Scenario | scm.Library,
     *,
@@ -59,8 +95,12 @@ def diagram(
     modules: Modules = "collapsed",
     legend: bool = False,
     module: str | None = None,
+    max_nodes: int = MAX_DIAGRAM_NODES,
 ) -> graphviz.Digraph:
-    """The Graphviz graph of a scenario, or of one module of a library, in the chosen view."""
+    """The Graphviz graph of a scenario, or of one module of a library, in the chosen view.
+
+    DiagramTooLargeError when it would have more than `max_nodes` boxes.
+    """
     target: scm.Scenario | scm.ModuleDefinition
     if isinstance(root, scm.Library):
         target = select_module(root, module)
@@ -68,6 +108,14 @@ def diagram(
         raise ModuleChoiceError("--module applies to module libraries, not to scenarios")
     else:
         target = root
+    boxes = drawn_nodes(target, modules)
+    if boxes > max_nodes:
+        raise DiagramTooLargeError(
+            f"the diagram would have {boxes:,} boxes, more than the {max_nodes:,} a person can "
+            "read and Graphviz lays out in seconds; draw one module of it, collapse module uses, "
+            "or raise the limit with --max-nodes (Graphviz needs minutes and gigabytes near "
+            "50,000)"
+        )
     if view == "bt":
         return bt_diagram(target, modules=modules, legend=legend)
     return flow_diagram(target, modules=modules, legend=legend).graph

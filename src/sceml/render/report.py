@@ -23,7 +23,7 @@ from ..graph import actors, root_node
 from ..io import Document
 from ..safexml import hardened_parser
 from ..templating import template
-from . import labels, to_bytes
+from . import MAX_DIAGRAM_NODES, labels, to_bytes
 from .flow import Modules, flow_diagram
 
 _SVG_NAMESPACE = "http://www.w3.org/2000/svg"
@@ -103,13 +103,20 @@ def build_report(
         DiagnosticRow(d, tuple(_targets(d, document, diagram.ids)))
         for d in sorted(diagnostics or (), key=lambda d: (-d.severity, d.line or 0, d.code))
     ]
-    svg = _mark(to_bytes(diagram.graph, "svg"), rows)
+    # Graphviz cannot lay out a diagram of tens of thousands of boxes in reasonable time or
+    # memory; the report then says so and keeps its tables.
+    boxes = sum(len(ids) for ids in diagram.ids.values())
+    too_large = boxes > MAX_DIAGRAM_NODES
+    svg = "" if too_large else _mark(to_bytes(diagram.graph, "svg"), rows)
     scenario = root if isinstance(root, scm.Scenario) else None
     return template(TEMPLATE).render(
         title=_title(document),
         file=document.path.name,
         root=root_node(scenario) if scenario is not None else None,
         svg=svg,
+        omitted=f"{boxes:,} boxes, more than the {MAX_DIAGRAM_NODES:,} drawn"
+        if too_large
+        else None,
         figures=figures,
         validated=diagnostics is not None,
         rows=rows,

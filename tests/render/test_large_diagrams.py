@@ -1,0 +1,68 @@
+"""Diagrams too large to read or lay out are refused quickly, not left to exhaust Graphviz."""
+
+from __future__ import annotations
+
+import sys
+import time
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+import sceml.render.report as report_module
+from sceml import io
+from sceml.cli import cli
+from sceml.render import DiagramTooLargeError, diagram, drawn_nodes
+from sceml.render.report import build_report
+
+REPO = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(REPO / "benchmarks"))
+from validate_scale import build_library, build_scenario  # noqa: E402
+
+EXAMPLES = REPO / "examples"
+
+
+@pytest.fixture(scope="module")
+def big(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """A 600-node synthetic scenario (and the library its module uses come from), on disk."""
+    folder = tmp_path_factory.mktemp("big")
+    library = build_library()
+    io.save(library, folder / "library.xmi")
+    pause = io.load_library(folder / "library.xmi").root.modules[0]
+    return io.save(build_scenario(600, pause), folder / "big.xmi")
+
+
+def test_a_diagram_above_the_limit_is_refused_in_well_under_a_second(big: Path) -> None:
+    root = io.load(big).root
+    count = drawn_nodes(root, "collapsed")
+    assert count == len(root.nodes)
+    start = time.perf_counter()
+    with pytest.raises(DiagramTooLargeError, match=f"{count:,} boxes, more than the 500"):
+        diagram(root, max_nodes=500)
+    assert time.perf_counter() - start < 1.0  # refused before anything is drawn
+    assert diagram(root, max_nodes=count) is not None
+
+
+def test_expanded_module_uses_count_their_definitions() -> None:
+    root = io.load(EXAMPLES / "uis2-concrete.xmi").root
+    crossing = io.load_library(EXAMPLES / "library" / "sceml-library.xmi").root
+    definition = next(m for m in crossing.modules if m.name == "CrossingManeuver")
+    assert drawn_nodes(root, "collapsed") == len(root.nodes)
+    assert drawn_nodes(root, "expanded") == len(root.nodes) + len(definition.nodes)
+
+
+def test_render_refuses_with_exit_1_and_writes_nothing(big: Path, tmp_path: Path) -> None:
+    out = tmp_path / "big.svg"
+    result = CliRunner().invoke(cli, ["render", str(big), "-o", str(out), "--max-nodes", "500"])
+    assert result.exit_code == 1, result.output
+    assert "--max-nodes" in result.output and "boxes" in result.output
+    assert not out.exists()
+
+
+def test_the_report_omits_the_diagram_and_keeps_its_tables(
+    big: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(report_module, "MAX_DIAGRAM_NODES", 500)
+    html = build_report(io.load(big), [])
+    assert "Diagram omitted:" in html and "<svg" not in html.split("<h2>Diagram</h2>")[1][:500]
+    assert "<h2>Parameters</h2>" in html or "Parameters" in html
