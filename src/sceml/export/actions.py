@@ -13,8 +13,10 @@ from typing import Any
 import scemlmodel as scm
 
 from .context import Action, Context, Event
+from .entities import performance
 from .speeds import speed_dynamics
 from .triggers import Condition, Group, delayed, finished, with_extra
+from .values import number
 
 Plan = tuple[list[Event], str]
 Planner = Callable[[Context, scm.GraphElement, list[Group]], Plan]
@@ -96,14 +98,16 @@ def plan_drive_distance(ctx: Context, node: scm.DriveDistance, groups: list[Grou
 
 @planner("Follow", "Approach")
 def plan_distance_keeping(ctx: Context, node: scm.ActionNode, groups: list[Group]) -> Plan:
-    """LongitudinalDistanceAction to the target; Follow keeps it (continuous) and finishes when
-    the gap is first reached, Approach ends when the gap is reached."""
+    """LongitudinalDistanceAction to the target, within the actor's limits; Follow keeps it
+    (continuous) and finishes when the gap is first reached, Approach ends when the gap is reached."""
     name = ctx.event_names[node]
     follow = isinstance(node, scm.Follow)
     data = {
         "target": ctx.entity(node.targetActor),
         "distance": ctx.values.text(node, "distance"),
         "continuous": "true" if follow else "false",
+        # Without limits esmini does not drive to the gap: it moves the actor there in one step.
+        "limits": performance(node.referenceActor),
     }
     event = Event(
         name,
@@ -113,13 +117,16 @@ def plan_distance_keeping(ctx: Context, node: scm.ActionNode, groups: list[Group
     )
     if not follow:
         return [event], name
+    # A controller closes in on the gap from above and holds it: "less than the gap" may never
+    # hold, so the gap counts as reached within a slack of max(1 m, 10 %).
+    gap = ctx.values.raw(node, "distance")
     close = Condition(
         f"{name}_gap_reached",
         "relative_distance",
         {
             "entity": ctx.entity(node.referenceActor),
             "target": ctx.entity(node.targetActor),
-            "value": ctx.values.text(node, "distance"),
+            "value": number(gap + max(1.0, gap / 10)),
             "rule": "lessThan",
             "type": "longitudinal",
         },

@@ -27,6 +27,8 @@ PERFORMANCE = {
     "motorbike": (55.556, 8.0, 10.0),
     "bicycle": (11.111, 2.0, 5.0),
 }
+#: A Pedestrian has no Performance element; its limits for actions that need some (walking pace).
+PEDESTRIAN_PERFORMANCE = (3.0, 1.5, 3.0)
 PEDESTRIAN_MASS = "80.0"
 
 
@@ -55,7 +57,6 @@ def entity(ctx: Context, actor: scm.Actor) -> dict[str, Any]:
             "properties": properties,
         }
     category = VEHICLE_CATEGORIES[kind]
-    max_speed, max_acceleration, max_deceleration = PERFORMANCE[category]
     wheel = (
         0.7
         if category in ("bicycle", "motorbike")
@@ -71,14 +72,23 @@ def entity(ctx: Context, actor: scm.Actor) -> dict[str, Any]:
         "model_name": actor.model or category,
         "category": category,
         "bbox": bbox,
-        "performance": {
-            "maxSpeed": number(max_speed),
-            "maxAcceleration": number(max_acceleration),
-            "maxDeceleration": number(max_deceleration),
-        },
+        "performance": performance(actor),
         "front_axle": _axle(0.5, wheel, track, round(length * 0.6, 6)),
         "rear_axle": _axle(0.0, wheel, track, 0.0),
         "properties": properties,
+    }
+
+
+def performance(actor: scm.Actor) -> dict[str, str]:
+    """The actor's limits as OpenSCENARIO attributes (maxSpeed, maxAcceleration, maxDeceleration):
+    the Vehicle's Performance, and the DynamicConstraints of actions that need limits."""
+    kind = actor.eClass.name
+    limits = PERFORMANCE[VEHICLE_CATEGORIES[kind]] if kind in VEHICLE_CATEGORIES else None
+    max_speed, max_acceleration, max_deceleration = limits or PEDESTRIAN_PERFORMANCE
+    return {
+        "maxSpeed": number(max_speed),
+        "maxAcceleration": number(max_acceleration),
+        "maxDeceleration": number(max_deceleration),
     }
 
 

@@ -1,0 +1,151 @@
+"""Kinematic actors: a point moving along a path at a speed, with a lateral offset and a box.
+
+Nothing here knows vehicle dynamics: speed changes at the rate a maneuver asks for, the heading
+is the path's (turned by the slope of a lane change), and the box turns with it.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import Protocol
+
+from .paths import Path
+
+#: Gap keeping (Follow, Approach): how fast the speed answers a gap error, and its limits.
+GAP_GAIN = 0.6  # 1/s
+GAP_ACCELERATION = 3.0  # m/s2
+GAP_DECELERATION = 6.0  # m/s2
+
+
+@dataclass(frozen=True)
+class Shift:
+    """A lateral move of `amount` m (left positive) over `length` m of path from `start`,
+    along half a cosine: no lateral speed at either end."""
+
+    start: float
+    length: float
+    amount: float
+
+    def progress(self, d: float) -> float:
+        return min(max((d - self.start) / self.length, 0.0), 1.0) if self.length > 0 else 1.0
+
+    def offset(self, d: float) -> float:
+        return self.amount * (1.0 - math.cos(math.pi * self.progress(d))) / 2.0
+
+    def slope(self, d: float) -> float:
+        u = self.progress(d)
+        if self.length <= 0 or u <= 0.0 or u >= 1.0:
+            return 0.0
+        return self.amount * math.pi / (2.0 * self.length) * math.sin(math.pi * u)
+
+
+class SpeedControl(Protocol):
+    """What decides an actor's speed at the end of the next step."""
+
+    def next_speed(self, actor: Actor, others: Mapping[str, Actor], dt: float) -> float: ...
+
+
+class Hold:
+    """Keep the speed: no longitudinal maneuver is running."""
+
+    def next_speed(self, actor: Actor, others: Mapping[str, Actor], dt: float) -> float:
+        return actor.speed
+
+
+@dataclass(frozen=True)
+class Ramp:
+    """Change the speed towards `target` at `rate` (m/s2); a step when `rate` is infinite."""
+
+    target: float
+    rate: float = math.inf
+
+    def next_speed(self, actor: Actor, others: Mapping[str, Actor], dt: float) -> float:
+        change = self.target - actor.speed
+        limit = self.rate * dt
+        return self.target if abs(change) <= limit else actor.speed + math.copysign(limit, change)
+
+
+@dataclass(frozen=True)
+class GapKeeping:
+    """Drive towards a gap of `distance` m (centre to centre, along the actor's heading) to
+    the `target` actor: its speed, corrected in proportion to the gap error."""
+
+    target: str
+    distance: float
+
+    def next_speed(self, actor: Actor, others: Mapping[str, Actor], dt: float) -> float:
+        lead = others[self.target]
+        gap = actor.gap_to(lead)
+        along = lead.speed * math.cos(lead.heading - actor.heading)
+        wanted = max(along + GAP_GAIN * (gap - self.distance), 0.0)
+        change = min(max(wanted - actor.speed, -GAP_DECELERATION * dt), GAP_ACCELERATION * dt)
+        return actor.speed + change
+
+
+class Actor:
+    """One actor's state: path, distance along it, lateral offset, speed and pose."""
+
+    def __init__(
+        self,
+        name: str,
+        kind: str,
+        ego: bool,
+        size: tuple[float, float],
+        path: Path,
+        speed: float,
+        lateral: float = 0.0,
+    ) -> None:
+        self.name, self.kind, self.ego = name, kind, ego
+        self.length, self.width = size
+        self.path = path
+        self.d = 0.0
+        self.lateral = lateral
+        self.shift: Shift | None = None
+        self.speed = speed
+        self.travelled = 0.0
+        self.control: SpeedControl = Hold()
+        self.x = self.y = self.heading = 0.0
+        self.place()
+
+    def place(self) -> None:
+        """Compute the pose from the path, the distance along it and the lateral offset."""
+        px, py, heading = self.path.pose(self.d)
+        offset, slope = self.lateral, 0.0
+        if self.shift is not None:
+            offset += self.shift.offset(self.d)
+            slope = self.shift.slope(self.d)
+        self.x = px - offset * math.sin(heading)
+        self.y = py + offset * math.cos(heading)
+        self.heading = heading + math.atan(slope)
+
+    def advance_to(self, speed: float, dt: float) -> None:
+        """Move one step ending at `speed`: the mean speed of the step gives the distance."""
+        speed = max(speed, 0.0)
+        step = (self.speed + speed) / 2.0 * dt
+        self.speed = speed
+        if step > 0.0:  # standing actors (waiting for their trigger) cost nothing
+            self.d += step
+            self.travelled += step
+            self.place()
+
+    def follow(self, path: Path, lateral: float = 0.0) -> None:
+        """Go on along a new path that starts where the actor is."""
+        self.path, self.d, self.lateral, self.shift = path, 0.0, lateral, None
+        self.place()
+
+    def settle_shift(self) -> None:
+        """A finished lateral move becomes part of the constant offset."""
+        if self.shift is not None:
+            self.lateral += self.shift.offset(self.d)
+            self.shift = None
+
+    def distance_to(self, x: float, y: float) -> float:
+        return math.hypot(self.x - x, self.y - y)
+
+    def gap_to(self, other: Actor) -> float:
+        """How far `other` is ahead, centre to centre, along this actor's heading."""
+        return (other.x - self.x) * math.cos(self.heading) + (other.y - self.y) * math.sin(
+            self.heading
+        )

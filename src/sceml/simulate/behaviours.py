@@ -1,0 +1,281 @@
+"""What each maneuver kind does to its actor, and when it has finished (SPEC §3).
+
+One class per kind, registered by metaclass name. `start` is called when the node is activated;
+`done` after every step (and at once) until it returns True. A maneuver *claims* the parts of
+its actor it controls (`speed`, `path`); a later maneuver claiming the same part supersedes it.
+Finishing follows the OpenSCENARIO export (docs/openscenario-mapping.md): speed changes when the
+target speed is reached, routed and trajectory maneuvers on arrival within their tolerance,
+DriveDistance when the distance is driven (counted from the node's start), Follow when the gap
+is reached (it keeps following afterwards), Overtake when the lane change back is done.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from typing import ClassVar
+
+from pyecore.ecore import EObject
+
+import scemlmodel as scm
+
+from ..params import concrete
+from . import lanes
+from .actors import Actor, GapKeeping, Hold, Ramp, Shift
+from .paths import LaneSpot, Path, straight
+from .world import World
+
+#: A lane change where the map names no lane beside the actor moves it this far.
+DEFAULT_LANE_WIDTH = 3.5  # m
+#: How close the gap of Follow/Approach must come to its distance to count as reached.
+GAP_TOLERANCE = 0.5  # m
+#: A path to a destination off the lanes goes on this far past it, straight.
+_BEYOND = 1.0
+
+
+class Behaviour:
+    """A running maneuver; subclasses set `claims` and implement `start` and `done`."""
+
+    claims: ClassVar[tuple[str, ...]] = ()
+
+    def __init__(self, node: EObject, world: World) -> None:
+        self.node = node
+        self.name = str(node.name)
+        self.actor: Actor = world.actor(node.referenceActor, self.name)
+
+    def start(self, world: World) -> None:
+        """Take control of the actor."""
+
+    def done(self, world: World) -> bool:
+        """Whether the goal is reached."""
+        return True
+
+    def release(self, world: World) -> None:
+        """Give control back when the maneuver is superseded (the actor keeps its speed)."""
+
+
+_KINDS: dict[str, type[Behaviour]] = {}
+
+
+def kind(*names: str) -> Callable[[type[Behaviour]], type[Behaviour]]:
+    def register(cls: type[Behaviour]) -> type[Behaviour]:
+        for name in names:
+            _KINDS[name] = cls
+        return cls
+
+    return register
+
+
+def behaviour_for(node: EObject, world: World) -> Behaviour | None:
+    """The behaviour of a maneuver node; None for a kind the preview does not know."""
+    cls = _KINDS.get(node.eClass.name)
+    return cls(node, world) if cls is not None else None
+
+
+def known_kinds() -> tuple[str, ...]:
+    return tuple(_KINDS)
+
+
+# --- longitudinal ---------------------------------------------------------------------------
+
+
+@kind("Accelerate", "Decelerate", "Stop")
+class SpeedChange(Behaviour):
+    """Change the speed linearly at `rate` to `targetSpeed` (Stop: to 0)."""
+
+    claims = ("speed",)
+
+    def start(self, world: World) -> None:
+        stop = isinstance(self.node, scm.Stop)
+        self.target = 0.0 if stop else concrete(self.node, "targetSpeed")
+        self.actor.control = Ramp(self.target, concrete(self.node, "rate"))
+
+    def done(self, world: World) -> bool:
+        return abs(self.actor.speed - self.target) < 1e-9
+
+
+@kind("KeepVelocity")
+class KeepVelocity(Behaviour):
+    """Nothing changes the speed for `duration` seconds."""
+
+    def start(self, world: World) -> None:
+        self.until = world.t + concrete(self.node, "duration")
+
+    def done(self, world: World) -> bool:
+        return world.t >= self.until - 1e-9
+
+
+@kind("DriveDistance")
+class DriveDistance(Behaviour):
+    """Step to `speed` and drive `distance` metres from the node's start."""
+
+    claims = ("speed",)
+
+    def start(self, world: World) -> None:
+        self.actor.control = Ramp(concrete(self.node, "speed"))
+        self.until = self.actor.travelled + concrete(self.node, "distance")
+
+    def done(self, world: World) -> bool:
+        return self.actor.travelled >= self.until - 1e-9
+
+
+@kind("Follow", "Approach")
+class GapManeuver(Behaviour):
+    """Close up to `distance` m behind the target; Follow keeps the gap afterwards."""
+
+    claims = ("speed",)
+
+    def start(self, world: World) -> None:
+        self.lead = world.actor(self.node.targetActor, self.name)
+        self.distance = concrete(self.node, "distance")
+        self.actor.control = GapKeeping(self.lead.name, self.distance)
+
+    def done(self, world: World) -> bool:
+        reached = self.actor.gap_to(self.lead) <= self.distance + GAP_TOLERANCE
+        if reached and isinstance(self.node, scm.Approach):
+            self.actor.control = Hold()
+        return reached
+
+
+# --- lateral --------------------------------------------------------------------------------
+
+
+class LaneShift:
+    """One lane change of an actor: the lateral profile, then the path on the new lane."""
+
+    def __init__(self, world: World, actor: Actor, side: str, distance: float, what: str) -> None:
+        self.actor = actor
+        spot = actor.path.spot(actor.d)
+        beside = None
+        if world.road_map is not None and spot is not None:
+            beside = lanes.neighbour(world.road_map, spot, side)
+        self.target = beside[0] if beside is not None else None
+        amount = (
+            beside[1] if beside is not None else DEFAULT_LANE_WIDTH * (1 if side == "left" else -1)
+        )
+        if beside is None:
+            world.note(f"{what}: no lane on the {side}; moved {DEFAULT_LANE_WIDTH:g} m sideways")
+        actor.shift = Shift(actor.d, distance, amount)
+
+    def finished(self, world: World) -> bool:
+        shift = self.actor.shift
+        if shift is None or shift.progress(self.actor.d) < 1.0:
+            return shift is None
+        self.actor.settle_shift()
+        spot = self.actor.path.spot(self.actor.d)
+        if self.target is not None and spot is not None and world.road_map is not None:
+            moved = LaneSpot(self.target.road, self.target.lane, spot.s, spot.forward)
+            lateral = self.actor.lateral - shift.amount
+            self.actor.follow(lanes.lane_path(world.road_map, moved), lateral)
+        return True
+
+
+@kind("LaneChange")
+class LaneChange(Behaviour):
+    """Move into the lane beside, along half a cosine over `distance` m."""
+
+    claims = ("path",)
+
+    def start(self, world: World) -> None:
+        side = str(self.node.direction.name if self.node.direction is not None else "left")
+        self.shift = LaneShift(world, self.actor, side, concrete(self.node, "distance"), self.name)
+
+    def done(self, world: World) -> bool:
+        return self.shift.finished(world)
+
+    def release(self, world: World) -> None:
+        self.actor.settle_shift()
+
+
+class Arrival(Behaviour):
+    """A maneuver that finishes when its actor comes within `tolerance` of a point."""
+
+    claims = ("path",)
+    goal: tuple[float, float]
+    tolerance: float
+
+    def done(self, world: World) -> bool:
+        return self.actor.distance_to(*self.goal) <= self.tolerance + 1e-9
+
+    def go_straight(self, points: list[tuple[float, float]]) -> None:
+        """Head straight through `points` from where the actor is, and on past the last."""
+        route = [(self.actor.x, self.actor.y), *points]
+        (ax, ay), (bx, by) = route[-2], route[-1]
+        length = math.hypot(bx - ax, by - ay) or 1.0
+        route.append((bx + (bx - ax) / length * _BEYOND, by + (by - ay) / length * _BEYOND))
+        self.actor.follow(straight(route))
+
+
+@kind("TurnLeft", "TurnRight")
+class Turn(Arrival):
+    """Through the next junction by a connection that turns the named way, to `destination`."""
+
+    def start(self, world: World) -> None:
+        self.goal = world.point(self.node.destination, f"{self.name}'s destination")
+        self.tolerance = concrete(self.node, "tolerance")
+        turn = "left" if isinstance(self.node, scm.TurnLeft) else "right"
+        spot = self.actor.path.spot(self.actor.d)
+        path: Path | None = None
+        if world.road_map is not None and spot is not None:
+            path = lanes.turn_path(world.road_map, spot, turn, self.goal)
+        if path is None:
+            world.note(
+                f"{self.name}: no {turn} turn from the actor's lane; it drives straight there"
+            )
+            self.go_straight([self.goal])
+        else:
+            self.actor.follow(path, self.actor.lateral)
+
+
+@kind("Cross")
+class Cross(Arrival):
+    """Straight across to `destination` at the current speed."""
+
+    def start(self, world: World) -> None:
+        self.goal = world.point(self.node.destination, f"{self.name}'s destination")
+        self.tolerance = concrete(self.node, "tolerance")
+        self.go_straight([self.goal])
+
+
+@kind("FollowTrajectory")
+class FollowTrajectory(Arrival):
+    """Along the polyline through the waypoints; finished at the last one."""
+
+    def start(self, world: World) -> None:
+        points = [
+            world.point(p, f"{self.name}'s waypoint {i + 1}")
+            for i, p in enumerate(self.node.waypoints)
+        ]
+        if not points:
+            points = [(self.actor.x, self.actor.y)]
+        self.goal = points[-1]
+        self.tolerance = concrete(self.node, "tolerance")
+        self.go_straight(points)
+
+
+@kind("Overtake")
+class Overtake(Behaviour):
+    """Out to the `side` lane at `speed`, past the target until `gap` m ahead, then back."""
+
+    claims = ("speed", "path")
+
+    def start(self, world: World) -> None:
+        self.lead = world.actor(self.node.targetActor, self.name)
+        self.side = str(self.node.side.name if self.node.side is not None else "left")
+        self.gap = concrete(self.node, "gap")
+        self.distance = concrete(self.node, "laneChangeDistance")
+        self.actor.control = Ramp(concrete(self.node, "speed"))
+        self.phase = "out"
+        self.shift = LaneShift(world, self.actor, self.side, self.distance, self.name)
+
+    def done(self, world: World) -> bool:
+        if self.phase == "out" and self.shift.finished(world):
+            self.phase = "pass"
+        if self.phase == "pass" and -self.actor.gap_to(self.lead) >= self.gap:
+            back = "right" if self.side == "left" else "left"
+            self.shift = LaneShift(world, self.actor, back, self.distance, self.name)
+            self.phase = "back"
+        return self.phase == "back" and self.shift.finished(world)
+
+    def release(self, world: World) -> None:
+        self.actor.settle_shift()

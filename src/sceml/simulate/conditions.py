@@ -1,0 +1,98 @@
+"""When each condition kind holds (SPEC §3): a test of the actors' state, registered by name.
+
+A condition is evaluated only after its activation, at the activation instant and after every
+step, until it first holds. Distances are between actor reference points (centres), like the
+export's `freespace="false"`.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+
+from pyecore.ecore import EObject
+
+from ..params import concrete
+from .geometry import time_to_collision_now
+from .world import World
+
+Test = Callable[[World], bool]
+
+_KINDS: dict[str, Callable[[EObject, World], Test]] = {}
+
+
+def kind(
+    name: str,
+) -> Callable[[Callable[[EObject, World], Test]], Callable[[EObject, World], Test]]:
+    def register(make: Callable[[EObject, World], Test]) -> Callable[[EObject, World], Test]:
+        _KINDS[name] = make
+        return make
+
+    return register
+
+
+def condition_for(node: EObject, world: World) -> Test | None:
+    """The test of a condition node, set up at its activation; None for an unknown kind."""
+    make = _KINDS.get(node.eClass.name)
+    return make(node, world) if make is not None else None
+
+
+def _compare(rule: EObject | None, value: float, threshold: float, previous: float | None) -> bool:
+    name = getattr(rule, "name", "greaterThan")
+    if name == "lessThan":
+        return value < threshold
+    if name == "equalTo":
+        crossed = previous is not None and (previous - threshold) * (value - threshold) <= 0
+        return abs(value - threshold) < 1e-6 or crossed
+    return value > threshold
+
+
+@kind("InLocationRadius")
+def in_location_radius(node: EObject, world: World) -> Test:
+    actor = world.actor(node.referenceActor, str(node.name))
+    x, y = world.point(node.position, f"{node.name}'s position")
+    radius = concrete(node, "radius")
+    return lambda w: actor.distance_to(x, y) <= radius + 1e-9
+
+
+@kind("InVehicleRadius")
+def in_vehicle_radius(node: EObject, world: World) -> Test:
+    actor = world.actor(node.referenceActor, str(node.name))
+    other = world.actor(node.targetActor, str(node.name))
+    radius = concrete(node, "radius")
+    return lambda w: actor.distance_to(other.x, other.y) <= radius + 1e-9
+
+
+@kind("TimeElapsed")
+def time_elapsed(node: EObject, world: World) -> Test:
+    until = world.t + concrete(node, "duration")
+    return lambda w: w.t >= until - 1e-9
+
+
+@kind("SpeedCondition")
+def speed_condition(node: EObject, world: World) -> Test:
+    actor = world.actor(node.referenceActor, str(node.name))
+    threshold = concrete(node, "speed")
+    previous: list[float | None] = [None]
+
+    def holds(w: World) -> bool:
+        result = _compare(node.rule, actor.speed, threshold, previous[0])
+        previous[0] = actor.speed
+        return result
+
+    return holds
+
+
+@kind("TimeToCollision")
+def time_to_collision(node: EObject, world: World) -> Test:
+    actor = world.actor(node.referenceActor, str(node.name))
+    other = world.actor(node.targetActor, str(node.name))
+    threshold = concrete(node, "time")
+
+    def holds(w: World) -> bool:
+        ttc = time_to_collision_now(actor, other)
+        if math.isinf(ttc):
+            return getattr(node.rule, "name", "lessThan") == "greaterThan"
+        return _compare(node.rule, ttc, threshold, None)
+
+    return holds

@@ -1,0 +1,183 @@
+"""The scheduler: SPEC §3 on a concrete scenario, one fixed time step after another.
+
+At t = 0 the root finishes and actors stand at their starts. At each instant every active
+node is checked; a node that finishes activates each successor whose incoming flows are
+satisfied (one predecessor finished for an ordinary node, all for JoinAllFinished and a
+join-all end, one for JoinOneFinished and a join-one end), and a newly activated node is
+checked at once, so zero-time chains (joins, conditions that already hold) settle in the same
+instant. Then all actors take one step, each speed decided from the same state. The run ends
+when the end node finishes or at the maximum duration.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+from pyecore.ecore import EObject
+
+import scemlmodel as scm
+
+from ..graph import predecessors, successors
+from .behaviours import Behaviour, behaviour_for
+from .conditions import Test, condition_for
+from .run import END_NODE, MAX_DURATION, NodeRecord
+from .world import SimulationError, World
+
+
+@dataclass(eq=False)
+class NodeState:
+    """One node while the scenario runs."""
+
+    node: EObject
+    name: str
+    kind: str
+    actor: str | None
+    needs_all: bool
+    predecessors: list[NodeState] = field(default_factory=list)
+    successors: list[NodeState] = field(default_factory=list)
+    started: float | None = None
+    finished: float | None = None
+    behaviour: Behaviour | None = None
+    test: Test | None = None
+    note: str = ""
+
+    def ready(self) -> bool:
+        done = [p.finished is not None for p in self.predecessors]
+        return bool(done) and (all(done) if self.needs_all else any(done))
+
+    def record(self) -> NodeRecord:
+        return NodeRecord(self.name, self.kind, self.actor, self.started, self.finished, self.note)
+
+
+class Scheduler:
+    """The flow semantics over a world; `advance` runs one step, `ended` says when to stop."""
+
+    def __init__(self, nodes: list[EObject], world: World) -> None:
+        self.world = world
+        self.states = {node: _state(node) for node in nodes}
+        for node, state in self.states.items():
+            state.predecessors = [self.states[p] for p in predecessors(node) if p in self.states]
+            state.successors = [self.states[s] for s in successors(node) if s in self.states]
+        self.active: list[NodeState] = []
+        self.owners: dict[tuple[str, str], NodeState] = {}
+        self.ended = False
+
+    def begin(self) -> None:
+        """The root nodes finish at t = 0 and what follows them is activated."""
+        self._settle([s for s in self.states.values() if isinstance(s.node, scm.RootNode)])
+
+    def check(self) -> None:
+        """Check every active node at the current instant and settle what follows."""
+        finished = [state for state in list(self.active) if self._done(state)]
+        self._settle(finished)
+
+    def timeline(self) -> tuple[NodeRecord, ...]:
+        return tuple(state.record() for state in self.states.values())
+
+    # --- the flow semantics ------------------------------------------------------------------
+
+    def _settle(self, finished: list[NodeState]) -> None:
+        queue = deque(finished)
+        while queue:
+            state = queue.popleft()
+            if state.finished is not None:
+                continue
+            self._finish(state)
+            if isinstance(state.node, scm.EndNode):
+                self.ended = True
+                return
+            for successor in state.successors:
+                if successor.started is None and successor.ready():
+                    queue.extend(self._activate(successor))
+
+    def _finish(self, state: NodeState) -> None:
+        state.finished = self.world.t
+        if state.started is None:
+            state.started = self.world.t
+        if state in self.active:
+            self.active.remove(state)
+        for key, owner in list(self.owners.items()):
+            if owner is state:
+                del self.owners[key]
+
+    def _activate(self, state: NodeState) -> list[NodeState]:
+        """Start a node; the nodes that finish because of it (itself, superseded ones)."""
+        state.started = self.world.t
+        node = state.node
+        if isinstance(node, scm.Condition):
+            state.test = condition_for(node, self.world)
+            if state.test is None:
+                state.note = "this condition kind is not simulated: it never holds"
+        elif isinstance(node, scm.Maneuver):
+            return self._start_maneuver(state)
+        elif not isinstance(node, scm.EndNode | scm.JoiningPolicy | scm.InPort | scm.OutPort):
+            state.note = f"a {state.kind} is not simulated: it finishes at once"
+            return [state]
+        else:
+            return [state]  # joins and ports finish when activated; so does a ready end node
+        self.active.append(state)
+        return [state] if self._done(state) else []
+
+    def _start_maneuver(self, state: NodeState) -> list[NodeState]:
+        behaviour = behaviour_for(state.node, self.world)
+        if behaviour is None:
+            state.note = f"{state.kind} is not simulated: it finishes at once"
+            return [state]
+        superseded = []
+        for part in behaviour.claims:
+            previous = self.owners.get((behaviour.actor.name, part))
+            if previous is not None and previous.finished is None:
+                previous.note = f"superseded by {state.name}"
+                if previous.behaviour is not None:
+                    previous.behaviour.release(self.world)
+                superseded.append(previous)
+            self.owners[(behaviour.actor.name, part)] = state
+        state.behaviour = behaviour
+        behaviour.start(self.world)
+        self.active.append(state)
+        return [*superseded, state] if behaviour.done(self.world) else superseded
+
+    def _done(self, state: NodeState) -> bool:
+        if state.behaviour is not None:
+            return state.behaviour.done(self.world)
+        return state.test is not None and state.test(self.world)
+
+
+def _state(node: EObject) -> NodeState:
+    actor = getattr(node, "referenceActor", None)
+    needs_all = not isinstance(node, scm.JoinOneFinished) and not (
+        isinstance(node, scm.EndNode) and getattr(node.policy, "name", "joinAll") == "joinOne"
+    )
+    return NodeState(
+        node,
+        str(node.name),
+        node.eClass.name,
+        str(actor.name) if actor is not None else None,
+        needs_all,
+    )
+
+
+def run_schedule(scheduler: Scheduler, max_duration: float, record: Callable[[], None]) -> str:
+    """Step until the end node finishes or the maximum duration; the reason it ended.
+
+    `record` is called with no arguments after each instant settles.
+    """
+    world = scheduler.world
+    if world.dt <= 0:
+        raise SimulationError(f"the time step must be positive, got {world.dt:g} s")
+    steps = round(max_duration / world.dt)
+    scheduler.begin()
+    record()
+    actors = list(world.actors.values())
+    for k in range(1, steps + 1):
+        if scheduler.ended:
+            return END_NODE
+        speeds = [actor.control.next_speed(actor, world.actors, world.dt) for actor in actors]
+        for actor, speed in zip(actors, speeds, strict=True):
+            actor.advance_to(speed, world.dt)
+        world.t = round(k * world.dt, 9)
+        scheduler.check()
+        record()
+    return END_NODE if scheduler.ended else MAX_DURATION

@@ -1,0 +1,88 @@
+"""Actors at their start: place, heading, path ahead, speed and box, from the model and map."""
+
+from __future__ import annotations
+
+import math
+
+import scemlmodel as scm
+
+from ..maps import LaneCoordinate, PositionError, RoadMap
+from ..params import concrete
+from . import lanes
+from .actors import Actor
+from .paths import LaneSpot, heading_path
+from .world import SimulationError
+
+
+def make_actor(actor: scm.Actor, road_map: RoadMap | None) -> Actor:
+    """An actor at its start position with its initial speed, following its lane if on one."""
+    name = str(actor.name)
+    size = (concrete(actor, "length"), concrete(actor, "width"))
+    speed = concrete(actor, "initialSpeed")
+    position = actor.startPosition
+    try:
+        if isinstance(position, scm.LanePosition):
+            return _on_lane(actor, position, road_map, size, speed)
+        if isinstance(position, scm.WorldPosition):
+            return _in_world(actor, position, road_map, size, speed)
+    except (PositionError, ValueError) as error:
+        raise SimulationError(f"{name}'s start position: {error}", element=name) from None
+    raise SimulationError(f"{name} has no start position", element=name)
+
+
+def _on_lane(
+    actor: scm.Actor,
+    position: scm.LanePosition,
+    road_map: RoadMap | None,
+    size: tuple[float, float],
+    speed: float,
+) -> Actor:
+    if road_map is None:
+        raise SimulationError(
+            f"{actor.name} starts on a lane, which needs an OpenDRIVE map", element=str(actor.name)
+        )
+    s, offset = concrete(position, "s"), concrete(position, "offset")
+    road_map.band(str(position.roadId), int(position.laneId), s)  # PositionError when off the map
+    spot = lanes.start_spot(road_map, str(position.roadId), int(position.laneId), s)
+    lateral = offset if spot.forward else -offset
+    return Actor(*_identity(actor), size, lanes.lane_path(road_map, spot), speed, lateral)
+
+
+def _in_world(
+    actor: scm.Actor,
+    position: scm.WorldPosition,
+    road_map: RoadMap | None,
+    size: tuple[float, float],
+    speed: float,
+) -> Actor:
+    x, y = concrete(position, "x"), concrete(position, "y")
+    heading = concrete(position, "h")
+    spot = _lane_under(road_map, x, y, heading) if road_map is not None else None
+    if spot is None or road_map is None:
+        return Actor(*_identity(actor), size, heading_path(x, y, heading), speed)
+    coordinate, forward = spot
+    lane_spot = LaneSpot(coordinate.road_id, coordinate.lane_id, coordinate.s, forward)
+    lateral = coordinate.offset if forward else -coordinate.offset
+    return Actor(*_identity(actor), size, lanes.lane_path(road_map, lane_spot), speed, lateral)
+
+
+def _lane_under(
+    road_map: RoadMap, x: float, y: float, heading: float
+) -> tuple[LaneCoordinate, bool] | None:
+    """The lane under a world point whose direction (either way along s) is nearest the heading.
+
+    An actor facing across its lane (a pedestrian waiting at a kerb) stays off the lanes.
+    """
+    best: tuple[LaneCoordinate, bool, float] | None = None
+    for coordinate in road_map.world_to_lane(x, y):
+        _, _, along = road_map.reference_line(coordinate.road_id).pose(coordinate.s)
+        cosine = math.cos(heading - along)
+        if abs(cosine) < math.cos(math.radians(45)):
+            continue
+        if best is None or abs(cosine) > best[2]:
+            best = (coordinate, cosine > 0, abs(cosine))
+    return None if best is None else (best[0], best[1])
+
+
+def _identity(actor: scm.Actor) -> tuple[str, str, bool]:
+    return str(actor.name), actor.eClass.name, bool(actor.isEgo)
