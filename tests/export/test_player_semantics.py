@@ -208,3 +208,21 @@ def test_follow_counts_its_gap_reached_with_slack(version: str) -> None:
     close = next(marker.iter("RelativeDistanceCondition"))
     assert close.get("rule") == "lessThan"
     assert float(close.get("value")) == float(follow.get("distance")) + 1.5
+
+
+@pytest.mark.parametrize("version", VERSIONS)
+def test_keep_velocity_holds_the_speed_and_ends_after_its_duration(version: str) -> None:
+    """A KeepVelocity that wrote no action left a continuous Follow in charge in esmini: the
+    actor kept following a braking lead. Its event sets the speed it has (+0 m/s, step), which
+    ends such an action; the node finishes `duration` seconds after its activation."""
+    flat, document, events_of = exported("every-kind", version, "generic")
+    first, finish = events_of["KeepVelocity_1"]
+    assert finish == f"{first}{SEPARATOR}kept"
+    event = document.find(f".//Event[@name='{first}']")
+    target = event.find(".//SpeedAction/SpeedActionTarget/RelativeTargetSpeed")
+    assert target is not None
+    assert (target.get("entityRef"), target.get("value")) == ("ego", "0.0")
+    assert (target.get("speedTargetValueType"), target.get("continuous")) == ("delta", "false")
+    kept = document.find(f".//Event[@name='{finish}']")
+    delays = {c.get("delay") for c in kept.iter("Condition")}
+    assert delays == {"1.0"}

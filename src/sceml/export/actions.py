@@ -266,14 +266,28 @@ def plan_in_vehicle(ctx: Context, node: scm.InVehicleRadius, groups: list[Group]
     return _marker(ctx, node, with_extra(groups, close), ctx.entity(node.referenceActor))
 
 
-@planner("TimeElapsed", "KeepVelocity")
+@planner("TimeElapsed")
 def plan_duration(ctx: Context, node: scm.ActionNode, groups: list[Group]) -> Plan:
-    """A marker whose activation conditions carry the duration as their delay.
-
-    KeepVelocity maps the same way: nothing changes the speed, so the node is its duration.
-    """
+    """A marker whose activation conditions carry the duration as their delay."""
     duration = ctx.values.text(node, "duration")
     return _marker(ctx, node, delayed(groups, duration), ctx.entity(node.referenceActor))
+
+
+@planner("KeepVelocity")
+def plan_keep_velocity(ctx: Context, node: scm.KeepVelocity, groups: list[Group]) -> Plan:
+    """Hold the speed the actor has (a step SpeedAction by +0 m/s, which also ends a continuous
+    longitudinal action such as Follow's), finished by a marker delayed by the duration."""
+    name = ctx.event_names[node]
+    entity = ctx.entity(node.referenceActor)
+    hold = Action(ctx.action_name(name), "speed_hold", {"entity": entity})
+    kept = ctx.extra_event(node, "kept")
+    done = Event(
+        kept,
+        entity,
+        [ctx.marker_action(kept, kept)],
+        delayed(groups, ctx.values.text(node, "duration")),
+    )
+    return [Event(name, entity, [hold], groups), done], kept
 
 
 @planner("SpeedCondition")
