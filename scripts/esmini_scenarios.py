@@ -8,7 +8,7 @@ nodes and a join-one end node, conditions after conditions, and modules nested t
 joins inside. All positions lie on `maps/intersection.xodr` (docs/map.md for its layout: the
 junction is at the origin, each arm is a straight 100 m road whose s counts away from it):
 
-  longitudinal.xmi   east arm: Accelerate, Follow, Decelerate, Approach, Stop, KeepVelocity,
+  longitudinal.xmi   east arm: Accelerate, Follow, KeepVelocity, Decelerate, Approach, Stop,
                      DriveDistance; SpeedCondition -> TimeToCollision -> InVehicleRadius
   junction.xmi       TurnRight, TurnLeft, LaneChange, Cross, FollowTrajectory, InLocationRadius,
                      TimeElapsed; a JoinOneFinished and a JoinAllFinished
@@ -61,6 +61,7 @@ def build_longitudinal(map_text: str) -> scm.Scenario:
         b.root,
         b.add("Accelerate", ego, targetSpeed=8.0, rate=2.0),
         b.add("Follow", ego, target=truck, distance=15.0),
+        b.add("KeepVelocity", ego, duration=1.0),
         b.add("Decelerate", ego, targetSpeed=3.0, rate=2.0),
         b.add("Approach", ego, target=truck, distance=10.0),
         b.add("Stop", ego, rate=4.0),
