@@ -22,6 +22,7 @@ COMMANDS = {
     "concretize": "concretize:concretize",
     "promote": "promote:promote",
     "sample": "sample:sample",
+    "simulate": "simulate:simulate_command",
     "export-distribution": "export_logical:export_distribution_command",
     "module": "module:module",
     "flatten": "flatten:flatten",

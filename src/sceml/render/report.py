@@ -127,13 +127,16 @@ def build_report(
 
 
 def report_figures(document: Document) -> list[Figure]:
-    """The figures `sceml report` adds after the diagram: a scenario's map view (or why none)."""
+    """The figures `sceml report` adds after the diagram: a scenario's map view (or why none),
+    and for a concrete scenario the preview run's timeline and metrics."""
     if not isinstance(document.root, scm.Scenario):
         return []
     # matplotlib is loaded only when a scenario's report is made.
+    from ..simulate.report import report_figure as preview_figure
     from .mapview import report_figure
 
-    return [report_figure(document)]
+    preview = preview_figure(document)
+    return [report_figure(document), *([preview] if preview is not None else [])]
 
 
 def _title(document: Document) -> str:

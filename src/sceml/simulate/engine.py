@@ -25,6 +25,9 @@ from .conditions import Test, condition_for
 from .run import END_NODE, MAX_DURATION, NodeRecord
 from .world import SimulationError, World
 
+#: Steps between two calls of a progress callback.
+PROGRESS_EVERY = 200
+
 
 @dataclass(eq=False)
 class NodeState:
@@ -159,10 +162,16 @@ def _state(node: EObject) -> NodeState:
     )
 
 
-def run_schedule(scheduler: Scheduler, max_duration: float, record: Callable[[], None]) -> str:
+def run_schedule(
+    scheduler: Scheduler,
+    max_duration: float,
+    record: Callable[[], None],
+    progress: Callable[[int, int], None] | None = None,
+) -> str:
     """Step until the end node finishes or the maximum duration; the reason it ended.
 
-    `record` is called with no arguments after each instant settles.
+    `record` is called with no arguments after each instant settles; `progress`, if given,
+    with (steps done, most steps) every `PROGRESS_EVERY` steps.
     """
     world = scheduler.world
     if world.dt <= 0:
@@ -180,4 +189,6 @@ def run_schedule(scheduler: Scheduler, max_duration: float, record: Callable[[],
         world.t = round(k * world.dt, 9)
         scheduler.check()
         record()
+        if progress is not None and k % PROGRESS_EVERY == 0:
+            progress(k, steps)
     return END_NODE if scheduler.ended else MAX_DURATION

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
@@ -30,11 +31,13 @@ def simulate(
     *,
     step: float = DEFAULT_STEP,
     road_map: RoadMap | None = None,
+    progress: Callable[[int, int], None] | None = None,
 ) -> Run:
     """Run a concrete scenario with kinematic actors on its map (module uses flattened first).
 
     The map is the OpenDRIVE file the root names, relative to `scenario_file`, unless
     `road_map` is given. SimulationError when the scenario is not concrete or cannot be set up.
+    `progress` is called with (steps done, most steps) now and then on long runs.
     """
     if not step > 0:
         raise SimulationError(f"the time step must be positive, got {step:g} s")
@@ -66,7 +69,7 @@ def simulate(
         times.append(world.t)
         rows.append([(a.x, a.y, a.heading, a.speed) for a in world.actors.values()])
 
-    reason = run_schedule(scheduler, concrete(flat_root, "maxDuration"), record)
+    reason = run_schedule(scheduler, concrete(flat_root, "maxDuration"), record, progress)
     states = np.array(rows, dtype=float).reshape(len(rows), len(names), 4).transpose(1, 0, 2)
     states[:, :, 2] = np.unwrap(states[:, :, 2], axis=1)
     time_array = np.array(times)
