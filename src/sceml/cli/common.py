@@ -204,3 +204,27 @@ def emit_report(text: str, output: Path | None) -> None:
         write_atomically(output, text.encode("utf-8"))
     else:
         click.echo(text, nl=False)
+
+
+def executor_options(command: F) -> F:
+    """--executor and --scheduler, on every command that runs batch work (sceml.executors).
+
+    The command checks them with `sceml.executors.check` before it starts any work.
+    """
+    from ..executors import EXECUTORS, INSTALL_HINT  # the engines load only when a run opens one
+
+    command = click.option(
+        "--scheduler",
+        metavar="ADDRESS",
+        default=None,
+        help="A running Dask scheduler, e.g. tcp://10.0.0.5:8786 (with --executor dask); "
+        "without it the dask executor starts a LocalCluster of --workers processes.",
+    )(command)
+    return click.option(
+        "--executor",
+        type=click.Choice(EXECUTORS),
+        default="processes",
+        show_default=True,
+        help="local: in this process; processes: a pool of --workers processes (one runs "
+        f"in-process); dask: a Dask cluster (needs {INSTALL_HINT}).",
+    )(command)

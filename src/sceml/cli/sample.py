@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import os
 import sys
 import time
 from collections import Counter
@@ -16,15 +15,16 @@ import scemlmodel as scm
 from .. import io
 from ..diagnostics import Severity
 from ..errors import ArgumentError, SceMLError
+from ..executors import check, open_executor
 from ..graph import root_node
-from ..levels.batch import BatchConfig, run_batch
+from ..levels.batch import BatchConfig, BatchResult, run_batch
 from ..levels.manifest import SampleRecord, write_manifest
 from ..levels.paths import LevelError
 from ..levels.sampling import STRATEGIES, plan_for, values_at
 from ..levels.space import parameter_space
 from ..schema import SUPPORTED_VERSIONS
 from ..validation import validate
-from .common import SceMLCommand, allow_option, echo_diagnostics
+from .common import SceMLCommand, allow_option, echo_diagnostics, executor_options
 
 _FORMATS = {"xmi": ("xmi",), "xosc": ("xosc",), "both": ("xosc", "xmi")}
 
@@ -74,7 +74,8 @@ _FORMATS = {"xmi": ("xmi",), "xosc": ("xosc",), "both": ("xosc", "xmi")}
     "--workers",
     type=click.IntRange(min=1),
     default=None,
-    help="Worker processes [default: the number of CPUs].",
+    help="Worker processes of the processes executor, or of the dask executor's LocalCluster "
+    "[default: the number of CPUs].",
 )
 @click.option(
     "--index",
@@ -83,6 +84,7 @@ _FORMATS = {"xmi": ("xmi",), "xosc": ("xosc",), "both": ("xosc", "xmi")}
     help="Write only sample INDEX of the run given by the other options (same seed, and for "
     "lhs the same --n); its values are printed and no manifest is written.",
 )
+@executor_options
 @allow_option
 def sample(
     logical: Path,
@@ -94,6 +96,8 @@ def sample(
     osc_version: str,
     workers: int | None,
     index: int | None,
+    executor: str,
+    scheduler: str | None,
     allow: tuple[Path, ...],
 ) -> None:
     """Sample the logical scenario LOGICAL into concrete scenarios in DIR.
@@ -101,7 +105,9 @@ def sample(
     Every sample is reproducible from (seed, index) alone. Samples whose values break a rule
     (e.g. a negative speed drawn from a wide distribution) are skipped and counted. A manifest
     lists each sample's index, status, files and the value of every varied parameter.
+    The files are the same whichever executor runs the samples.
     """
+    check(executor, scheduler)
     try:
         document = io.load_scenario(logical, allow=allow)
         scenario = document.root
@@ -128,7 +134,8 @@ def sample(
         width=max(5, len(str(max(plan.n - 1, 0)))),
     )
     started = time.perf_counter()
-    records = _run(config, indices, rows, workers)
+    result = _run(config, indices, rows, executor, scheduler, workers)
+    records = result.records
     elapsed = time.perf_counter() - started
     if index is None:
         run = {
@@ -139,13 +146,42 @@ def sample(
             "format": file_format,
             "osc_version": osc_version,
         }
+        if result.interrupted:
+            run["interrupted"] = True
         write_manifest(out_dir, space.paths, records, run)
     else:
         for path, value in zip(space.paths, rows[0], strict=True):
             click.echo(f"{path} = {float(value)!r}")
     click.echo(_summary(records, elapsed))
+    _exit_status(result, len(indices))
+
+
+def _exit_status(result: BatchResult, planned: int) -> None:
+    records = result.records
+    if result.interrupted:
+        click.echo(
+            f"Interrupted: {len(records)} of {planned} samples done; the manifest lists what "
+            "was written.",
+            err=True,
+        )
+        raise click.exceptions.Exit(130)
+    failed = sorted(r.index for r in records if r.status == "failed")
+    if failed:
+        click.echo(f"Error: samples lost with their worker: {_ranges(failed)}", err=True)
+        raise click.exceptions.Exit(1)
     if records and all(r.status != "written" for r in records):
         raise click.exceptions.Exit(1)
+
+
+def _ranges(indices: list[int]) -> str:
+    """`3-5, 9` for [3, 4, 5, 9]."""
+    spans: list[list[int]] = []
+    for i in indices:
+        if spans and spans[-1][1] == i - 1:
+            spans[-1][1] = i
+        else:
+            spans.append([i, i])
+    return ", ".join(f"{a}-{b}" if a != b else f"{a}" for a, b in spans)
 
 
 def _require_logical(scenario: scm.Scenario, file: Path) -> None:
@@ -165,23 +201,28 @@ def _require_valid(document: io.Document, file: Path) -> None:
 
 
 def _run(
-    config: BatchConfig, indices: np.ndarray, rows: np.ndarray, workers: int | None
-) -> list[SampleRecord]:
-    records: list[SampleRecord] = []
+    config: BatchConfig,
+    indices: np.ndarray,
+    rows: np.ndarray,
+    executor: str,
+    scheduler: str | None,
+    workers: int | None,
+) -> BatchResult:
     # The bar is for a person at a terminal; logs and pipes would only get a stray label.
     hidden = not sys.stderr.isatty()
-    with click.progressbar(
-        length=len(indices), label="sampling", file=sys.stderr, hidden=hidden
-    ) as bar:
-        for record in run_batch(config, indices, rows, workers=workers or os.cpu_count()):
-            records.append(record)
-            bar.update(1)
-    return records
+    with (
+        open_executor(executor, workers=workers, scheduler=scheduler) as runner,
+        click.progressbar(
+            length=len(indices), label="sampling", file=sys.stderr, hidden=hidden
+        ) as bar,
+    ):
+        return run_batch(config, indices, rows, executor=runner, progress=bar.update)
 
 
 def _summary(records: list[SampleRecord], elapsed: float) -> str:
     written = sum(1 for r in records if r.status == "written")
-    reasons = Counter(r.reason for r in records if r.status != "written")
+    failed = sum(1 for r in records if r.status == "failed")
+    reasons = Counter(r.reason for r in records if r.status == "skipped")
     skipped = sum(reasons.values())
     why = (
         f" ({'; '.join(f'{reason}: {count}' for reason, count in reasons.most_common())})"
@@ -190,4 +231,5 @@ def _summary(records: list[SampleRecord], elapsed: float) -> str:
     )
     files = sum(len(r.files) for r in records)
     rate = files / elapsed if elapsed > 0 else 0.0
-    return f"{written} written, {skipped} skipped{why}, {elapsed:.2f} s, {rate:.0f} files/s"
+    lost = f", {failed} failed" if failed else ""
+    return f"{written} written, {skipped} skipped{why}{lost}, {elapsed:.2f} s, {rate:.0f} files/s"

@@ -1,32 +1,45 @@
-"""The fast batch path: sample a logical scenario into many concrete files on every core.
+"""The fast batch path: sample a logical scenario into many concrete files on any executor.
 
-Per worker process, once: load the logical scenario, flatten it into a `FlatTemplate`, load the
-XSD, and render the export once with a placeholder for every sampled number (`SampleXosc`).
-Per sample: write its numbers into the template in place (no model copy), run the value
-checks, fill the placeholders to get the document text, parse it once, validate the tree
-against the XSD and write the text atomically. Samples whose values break a rule are skipped
-and reported, not written. The first sample of each worker is also exported in full and
-compared byte for byte; if they differ, that worker exports every sample in full.
+The caller computes every sample's values (cheap arrays; seeds never leave it, so LHS designs
+stay whole and no result depends on which worker finishes first), cuts them into chunks and
+hands them to an executor (`sceml.executors`: in-process, a process pool or a Dask cluster).
 
-The parent process computes every sample's values (cheap arrays) and hands them out in
-chunks, so workers never need the sampling state and LHS designs stay whole.
+Workers do not share the caller's file system. Each one receives a `BatchPayload`: the run's
+configuration and the bytes of every file the logical scenario reads (itself and its module
+libraries; the map is not read, only named). It recreates those files under their absolute
+paths inside a private temporary folder, so that every path relative to the output (the map's
+LogicFile, library references of .xmi files) comes out as it would on the caller. Once per
+worker: load the logical scenario, flatten it into a `FlatTemplate`, load the XSD and render
+the export once with a placeholder for every sampled number (`SampleXosc`). Per sample: write
+its numbers into the template in place (no model copy), run the value checks, fill the
+placeholders and check the document against the XSD. Samples whose values break a rule are
+skipped with a reason. The first sample of each worker is also exported in full and compared
+byte for byte; if they differ, that worker exports every sample in full.
+
+Workers return file contents; only the caller writes, each file atomically, and a sample's
+record is kept only once all its files are written. So the manifest lists exactly the files on
+disk, also after Ctrl-C or a lost worker, and no half-written file is left.
 """
 
 from __future__ import annotations
 
-import multiprocessing
-import os
-from collections.abc import Iterator, Sequence
-from dataclasses import dataclass
+import shutil
+import tempfile
+import weakref
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
+from lxml import etree
 from numpy.typing import NDArray
 
 import scemlmodel as scm
 
-from .. import io
+from .. import io, schema
 from ..errors import SceMLError
+from ..executors import Executor, open_executor
+from ..safexml import hardened_parser
 from .apply import FlatTemplate, copy_scenario, set_level
 from .checks import SampleChecker
 from .manifest import SampleRecord
@@ -55,8 +68,20 @@ class BatchConfig:
         return f"{self.stem}_{index:0{self.width}d}.{suffix}"
 
 
+@dataclass(frozen=True)
+class Produced:
+    """One sample's record and the contents of its files, by file name."""
+
+    record: SampleRecord
+    files: tuple[tuple[str, bytes], ...] = ()
+
+
 class Worker:
-    """Everything one process needs to turn sample values into files, built once."""
+    """Everything one worker needs to turn sample values into file contents, built once.
+
+    Output paths are computed relative to `config.out_dir`, which also holds the .xmi files
+    while they are serialised.
+    """
 
     def __init__(self, config: BatchConfig) -> None:
         self.config = config
@@ -73,28 +98,35 @@ class Worker:
         if "xmi" in config.formats:
             self.xmi_copy = _xmi_working_copy(logical, config.paths)
 
-    def run(self, index: int, values: Sequence[float]) -> SampleRecord:
-        """Produce the files of one sample, or say why it is skipped."""
+    def produce(self, index: int, values: Sequence[float]) -> Produced:
+        """The files of one sample, or its record saying why it is skipped."""
         row = tuple(float(v) for v in values)
         flat = self.template.fill(row)
         problem = self.checker.problem(flat, row)
         if problem is not None:
-            return SampleRecord(index, row, status="skipped", reason=problem)
+            return Produced(SampleRecord(index, row, status="skipped", reason=problem))
         files = []
         if self.xosc is not None:
             name = self.config.file_name(index, "xosc")
-            problem = self._write_xosc(flat, row, self.config.out_dir / name)
-            if problem is not None:
-                return SampleRecord(index, row, status="skipped", reason=problem)
-            files.append(name)
+            data, problem = self._xosc_bytes(flat, row, self.config.out_dir / name)
+            if data is None:
+                return Produced(SampleRecord(index, row, status="skipped", reason=problem))
+            files.append((name, data))
         if self.xmi_copy is not None:
             name = self.config.file_name(index, "xmi")
             self.xmi_copy.fill(row)
-            io.save(self.xmi_copy.scenario, self.config.out_dir / name, origin=self.config.logical)
-            files.append(name)
-        return SampleRecord(index, row, files=tuple(files))
+            files.append((name, self._xmi_bytes(self.config.out_dir / name)))
+        record = SampleRecord(index, row, files=tuple(name for name, _ in files))
+        return Produced(record, tuple(files))
 
-    def _write_xosc(self, flat: scm.Scenario, row: Sequence[float], target: Path) -> str | None:
+    def run(self, index: int, values: Sequence[float]) -> SampleRecord:
+        """Produce one sample and write its files into `config.out_dir`."""
+        produced = self.produce(index, values)
+        return write_sample(self.config.out_dir, produced)
+
+    def _xosc_bytes(
+        self, flat: scm.Scenario, row: Sequence[float], target: Path
+    ) -> tuple[bytes | None, str]:
         assert self.xosc is not None
         if self.fast is not None and not self.verified:
             # One full export per worker confirms that substitution reproduces it exactly.
@@ -102,8 +134,44 @@ class Worker:
             if not self.fast.matches(flat, row):
                 self.fast = None
         if self.fast is not None:
-            return self.fast.write(row, target)
-        return self.xosc.write(flat, target)
+            data = self.fast.render(row)
+            problem = _schema_problem(data, self.xosc.version)
+            return (None, problem) if problem else (data, "")
+        try:
+            return self.xosc.document(flat, target).data, ""
+        except SceMLError as error:  # ExportError, or InvalidOutputError for an XSD failure
+            return None, f"export: {error.message}"
+
+    def _xmi_bytes(self, target: Path) -> bytes:
+        assert self.xmi_copy is not None
+        # io.save writes references relative to the file it saves, so it saves where the file
+        # belongs (the worker's copy of the output folder) and the bytes are read back.
+        io.save(self.xmi_copy.scenario, target, origin=self.config.logical)
+        try:
+            return target.read_bytes()
+        finally:
+            target.unlink()
+
+
+def _schema_problem(data: bytes, version: str) -> str:
+    tree = etree.fromstring(data, hardened_parser())
+    if schema.is_valid_tree(tree, version):
+        return ""
+    return f"xsd: {schema.validate_tree(tree, version)[0].reason}"
+
+
+def write_sample(folder: Path, produced: Produced) -> SampleRecord:
+    """Write one sample's files atomically; if that is cut short, none of them stays."""
+    written: list[Path] = []
+    try:
+        for name, data in produced.files:
+            io.write_atomically(folder / name, data)
+            written.append(folder / name)
+    except BaseException:
+        for path in written:
+            path.unlink(missing_ok=True)
+        raise
+    return produced.record
 
 
 def _fast_path(writer: XoscWriter, template: FlatTemplate, probe: Path) -> SampleXosc | None:
@@ -138,18 +206,104 @@ def _xmi_working_copy(logical: scm.Scenario, paths: Sequence[str]) -> _XmiCopy:
     return _XmiCopy(working, targets)
 
 
-_WORKER: Worker | None = None
+@dataclass(frozen=True)
+class BatchPayload:
+    """What a worker receives: the run's configuration, and the input files as bytes.
+
+    Paths in `config` are absolute, as the caller resolved them; `inputs` maps each such path
+    of a file the logical scenario reads to its contents.
+    """
+
+    config: BatchConfig
+    inputs: tuple[tuple[str, bytes], ...]
 
 
-def _initialise(config: BatchConfig) -> None:
-    global _WORKER
-    _WORKER = Worker(config)
+def make_payload(config: BatchConfig) -> BatchPayload:
+    """The payload of a run: the logical scenario and every module library it reaches."""
+    config = replace(
+        config,
+        logical=config.logical.resolve(),
+        out_dir=config.out_dir.resolve(),
+        allow=tuple(p.resolve() for p in config.allow),
+    )
+    document = io.load_scenario(config.logical, allow=config.allow)
+    files: set[Path] = set()
+    while (found := _loaded_files(document)) != files:  # a library may use another's modules
+        files = found
+        for resource in list(document.resource_set.resources.values()):
+            for root in resource.contents:
+                # Resolving is the point; a broken reference fails in the worker as it would here.
+                list(io.unresolved_references(root))
+    inputs = tuple(sorted((str(path), path.read_bytes()) for path in files))
+    return BatchPayload(config, inputs)
 
 
-def _run_chunk(chunk: tuple[NDArray[np.int64], NDArray[np.float64]]) -> list[SampleRecord]:
-    assert _WORKER is not None, "worker used before its initializer ran"
+def _loaded_files(document: io.Document) -> set[Path]:
+    found = set()
+    for resource in document.resource_set.resources.values():
+        path = Path(resource.uri.normalize()).resolve()
+        if path.is_file():
+            found.add(path)
+    return found
+
+
+def _mirrored(root: Path, path: Path) -> Path:
+    """Where a caller's absolute path lives inside a worker's private folder."""
+    return root.joinpath(*path.parts[1:])
+
+
+class WorkerState:
+    """A worker's private copy of the inputs and the `Worker` built on it.
+
+    The folder goes when the state does (when its run ends, or the worker process exits).
+    """
+
+    def __init__(self, worker: Worker, folder: Path) -> None:
+        self.worker = worker
+        self.folder = folder
+        weakref.finalize(self, shutil.rmtree, folder, ignore_errors=True)
+
+
+def setup_worker(payload: BatchPayload) -> WorkerState:
+    """Recreate the payload's files in a private folder and build a Worker on them."""
+    root = Path(tempfile.mkdtemp(prefix="sceml-worker-")).resolve()
+    try:
+        for name, data in payload.inputs:
+            target = _mirrored(root, Path(name))
+            target.parent.mkdir(parents=True, exist_ok=True)
+            target.write_bytes(data)
+        config = replace(
+            payload.config,
+            logical=_mirrored(root, payload.config.logical),
+            out_dir=_mirrored(root, payload.config.out_dir),
+            allow=(root,),
+        )
+        config.out_dir.mkdir(parents=True, exist_ok=True)
+        return WorkerState(Worker(config), root)
+    except BaseException:
+        shutil.rmtree(root, ignore_errors=True)
+        raise
+
+
+Chunk = tuple[NDArray[np.int64], NDArray[np.float64]]
+
+
+def produce_chunk(state: WorkerState, chunk: Chunk) -> list[Produced]:
+    """The files of every sample of a chunk."""
     indices, rows = chunk
-    return [_WORKER.run(int(i), row) for i, row in zip(indices, rows, strict=True)]
+    return [state.worker.produce(int(i), row) for i, row in zip(indices, rows, strict=True)]
+
+
+@dataclass
+class BatchResult:
+    """The records of a run, in the order samples finished, and whether Ctrl-C cut it short."""
+
+    records: list[SampleRecord]
+    interrupted: bool = False
+
+
+#: Called with the number of samples just finished (written, skipped or failed).
+Progress = Callable[[int], None]
 
 
 def run_batch(
@@ -157,39 +311,71 @@ def run_batch(
     indices: NDArray[np.int64],
     rows: NDArray[np.float64],
     *,
+    executor: Executor | None = None,
     workers: int | None = None,
     chunk_size: int | None = None,
-) -> Iterator[SampleRecord]:
-    """Produce every sample's files; records come as samples finish (in no fixed order).
+    progress: Progress | None = None,
+) -> BatchResult:
+    """Produce every sample's files on `executor` (default: a local pool of `workers`
+    processes) and write them into `config.out_dir` as they arrive.
 
-    When it fails, the output folder, if it made it, is removed again unless files were written.
+    A sample whose chunk was lost (its task failed, or its worker died beyond the executor's
+    retries) is recorded as `failed` and has no files. Ctrl-C stops the run: the remaining
+    tasks are cancelled and the result, marked interrupted, holds the samples written so far.
+    When the run fails, the output folder, if it made it, is removed again unless files were
+    written.
     """
     created = io.make_folder(config.out_dir)
     try:
-        yield from _records(config, indices, rows, workers, chunk_size)
+        payload = make_payload(config)
+        if executor is not None:
+            return _collect(payload, indices, rows, executor, chunk_size, progress)
+        with open_executor("processes", workers=workers) as own:
+            return _collect(payload, indices, rows, own, chunk_size, progress)
     except BaseException:
         io.remove_folders(created)
         raise
 
 
-def _records(
-    config: BatchConfig,
+def _collect(
+    payload: BatchPayload,
     indices: NDArray[np.int64],
     rows: NDArray[np.float64],
-    workers: int | None,
+    executor: Executor,
     chunk_size: int | None,
-) -> Iterator[SampleRecord]:
-    workers = max(1, min(workers or os.cpu_count() or 1, len(indices) or 1))
-    if workers == 1:
-        worker = Worker(config)
-        for index, row in zip(indices, rows, strict=True):
-            yield worker.run(int(index), row)
-        return
-    size = chunk_size or max(1, min(64, len(indices) // (workers * 8) or 1))
-    chunks = [(indices[i : i + size], rows[i : i + size]) for i in range(0, len(indices), size)]
-    # fork shares the parent's imported modules, so a worker starts in milliseconds.
-    method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
-    context = multiprocessing.get_context(method)
-    with context.Pool(workers, initializer=_initialise, initargs=(config,)) as pool:
-        for records in pool.imap_unordered(_run_chunk, chunks):
-            yield from records
+    progress: Progress | None,
+) -> BatchResult:
+    folder = payload.config.out_dir
+    chunks = _chunks(indices, rows, chunk_size or _chunk_size(len(indices), executor))
+    result = BatchResult([])
+    outcomes = executor.map_unordered(setup_worker, produce_chunk, payload, chunks)
+    try:
+        for outcome in outcomes:
+            if outcome.error is not None or outcome.result is None:
+                result.records.extend(_failed(chunks[outcome.item], outcome.error or "no result"))
+            else:
+                for produced in outcome.result:
+                    result.records.append(write_sample(folder, produced))
+            if progress is not None:
+                progress(len(chunks[outcome.item][0]))
+    except KeyboardInterrupt:
+        result.interrupted = True
+    finally:
+        outcomes.close()  # cancels what has not run yet
+    return result
+
+
+def _chunk_size(count: int, executor: Executor) -> int:
+    return max(1, min(executor.max_chunk, count // (executor.parallelism * 8) or 1))
+
+
+def _chunks(indices: NDArray[np.int64], rows: NDArray[np.float64], size: int) -> list[Chunk]:
+    return [(indices[i : i + size], rows[i : i + size]) for i in range(0, len(indices), size)]
+
+
+def _failed(chunk: Chunk, error: str) -> list[SampleRecord]:
+    indices, rows = chunk
+    return [
+        SampleRecord(int(i), tuple(float(v) for v in row), status="failed", reason=f"lost: {error}")
+        for i, row in zip(indices, rows, strict=True)
+    ]
