@@ -688,6 +688,26 @@ class Condition(ActionNode):
         super().__init__(**kwargs)
 
 
+class OpaqueAction(ActionNode):
+    """An OpenSCENARIO action or condition that no SceML kind expresses, kept verbatim by sceml import so that nothing is lost: it is drawn, validated as a node and exported back as it was read. The reference actor is the entity it acts on or that triggers it (the ego for a global action)."""
+    xml = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    sourceLine = EAttribute(eType=EIntegerObject, unique=True, derived=False, changeable=True)
+    sourceVersion = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+
+    def __init__(self, *, xml=None, sourceLine=None, sourceVersion=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if xml is not None:
+            self.xml = xml
+
+        if sourceLine is not None:
+            self.sourceLine = sourceLine
+
+        if sourceVersion is not None:
+            self.sourceVersion = sourceVersion
+
+
 class JoinAllFinished(JoiningPolicy):
     """Finishes when all of its predecessors have finished."""
 

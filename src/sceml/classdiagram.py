@@ -66,6 +66,7 @@ VIEWS: dict[str, tuple[str, ...]] = {
         "TimeElapsed",
         "SpeedCondition",
         "TimeToCollision",
+        "OpaqueAction",
         "Participant",
         "Position",
     ),

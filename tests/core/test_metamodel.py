@@ -139,8 +139,10 @@ def test_spec_concepts_exist(package) -> None:
 
 
 def test_every_action_kind_has_category_complexity_and_typed_parameters() -> None:
-    kinds = catalog.action_node_kinds()
+    # OpaqueAction (what `sceml import` keeps verbatim) is no paper kind: category "opaque".
+    kinds = [k for k in catalog.action_node_kinds() if k.__name__ != "OpaqueAction"]
     assert len(kinds) == 18
+    assert catalog.category("OpaqueAction") == "opaque"
     for kind in kinds:
         assert catalog.category(kind) in catalog.CATEGORIES, kind
         assert catalog.complexity(kind) in (1, 2, 3), kind

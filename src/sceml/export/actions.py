@@ -315,3 +315,6 @@ def plan_ttc(ctx: Context, node: scm.TimeToCollision, groups: list[Group]) -> Pl
     }
     check = Condition(f"{name}_ttc", "ttc", data)
     return _marker(ctx, node, with_extra(groups, check), ctx.entity(node.referenceActor))
+
+
+from . import opaque  # noqa: E402, F401  (registers the OpaqueAction planner of sceml import)
