@@ -67,7 +67,12 @@ def new_digraph(name: str) -> graphviz.Digraph:
 def look_of(node: EObject) -> style.Look:
     """The look of a graph element by its metaclass and, for action nodes, its category."""
     if isinstance(node, scm.ActionNode):
-        return style.CATEGORY_LOOKS.get(catalog.category(node) or "", style.UNKNOWN)
+        category = catalog.category(node) or ""
+        return (
+            style.OPAQUE
+            if category == "opaque"
+            else style.CATEGORY_LOOKS.get(category, style.UNKNOWN)
+        )
     looks = {
         scm.RootNode: style.ROOT,
         scm.EndNode: style.END,

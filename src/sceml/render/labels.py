@@ -9,6 +9,7 @@ gives them (override, else the module's default).
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, field
 
@@ -173,6 +174,8 @@ def _reference_items(name: str, held: object, unit: str, scope: Scope) -> Iterat
 
 def action_lines(node: scm.ActionNode, scope: Scope) -> list[str]:
     """The lines under an action node's kind: its actors, then `name: value` per set parameter."""
+    if isinstance(node, scm.OpaqueAction):
+        return [actor_line(node, scope), *opaque_lines(node)]
     return [actor_line(node, scope), *(f"{k}: {v}" for k, v in parameter_items(node, scope))]
 
 
@@ -229,3 +232,35 @@ def definition_lines(definition: scm.ModuleDefinition) -> list[str]:
         shown = params.describe(default, unit_text(unit)) if default is not None else "required"
         lines.append(f"${parameter.name} ({unit or 'no unit'}): {shown}")
     return lines
+
+
+def opaque_lines(node: scm.OpaqueAction) -> list[str]:
+    """What an opaque node keeps: the OpenSCENARIO element's kind and the line it came from."""
+    match = _OPAQUE_TAGS.findall(str(node.xml or ""))
+    inner = [
+        tag
+        for tag in match[1:]
+        if tag.endswith(("Action", "Condition")) and tag not in _WRAPPERS
+    ]
+    what = f"{match[0]} {inner[0]}" if match and inner else (match[0] if match else "(empty)")
+    where = f"OpenSCENARIO {node.sourceVersion or '?'}, line {node.sourceLine or '?'}"
+    return [what, where]
+
+
+#: Element names in a kept element, in document order (the XML is our own serialisation).
+_OPAQUE_TAGS = re.compile(r"<([A-Za-z]+)")
+#: Wrappers skipped when naming what an opaque node does.
+_WRAPPERS = {
+    "PrivateAction",
+    "GlobalAction",
+    "LongitudinalAction",
+    "LateralAction",
+    "RoutingAction",
+    "ByEntityCondition",
+    "ByValueCondition",
+    "TriggeringEntities",
+    "EntityRef",
+    "EntityCondition",
+    "EntityAction",
+    "InfrastructureAction",
+}

@@ -136,6 +136,13 @@ OUT_PORT = Look(
     ),
 )
 UNKNOWN = Look("sceml-unknown", "Unknown element", _box("white", "black"))
+#: An OpaqueAction (kept verbatim by `sceml import`): grey and dashed, so it reads as "not
+#: understood by SceML" next to the coloured kinds; its category in the metamodel is `opaque`.
+OPAQUE = Look(
+    "sceml-opaque",
+    "Kept from import (opaque)",
+    (("shape", "box"), ("style", "filled,dashed"), ("fillcolor", "#e0e0e0"), ("color", "#616161")),
+)
 
 
 def _bt_composite(symbol: str) -> tuple[tuple[str, str], ...]:
@@ -282,6 +289,7 @@ EDITOR_LOOKS = {
     "brokenModule": BROKEN_MODULE,
     "inPort": IN_PORT,
     "outPort": OUT_PORT,
+    "opaque": OPAQUE,
 }
 
 
