@@ -19,6 +19,7 @@ COMMANDS = {
     "report": "report:report",
     "export": "export:export",
     "check-xosc": "check_xosc:check_xosc",
+    "import": "import_:import_command",
     "concretize": "concretize:concretize",
     "promote": "promote:promote",
     "sample": "sample:sample",

@@ -1,0 +1,292 @@
+"""One OpenSCENARIO action of one actor to one SceML maneuver node, or None (kept opaque).
+
+Speed to Accelerate/Decelerate/Stop, longitudinal distance to Follow/Approach, a lane change by
+one lane to LaneChange, routing to TurnLeft/TurnRight/Cross (`geometry.py`), a polyline
+trajectory to FollowTrajectory (Cross for a SceML export's two-point crossing).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+from lxml import etree
+
+import scemlmodel as scm
+
+from .. import catalog
+from .context import Build, last_name
+from .geometry import classify
+from .opaque import summary
+from .positions import number, position
+
+
+@dataclass
+class Motion:
+    """What the import knows of each actor so far: its last speed and where it last went."""
+
+    speed: dict[str, float] = field(default_factory=dict)
+    place: dict[str, scm.Position | None] = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class Request:
+    """One action to map: the element, its actor, the node name wanted and the kind hint."""
+
+    element: etree._Element
+    actor: scm.Actor
+    name: str
+    #: The node kind a SceML export's event name states (e.g. `Decelerate`), or None.
+    hint: str | None = None
+
+
+Mapper = Callable[[Build, Request, etree._Element, Motion], scm.ActionNode | str]
+
+_MAPPERS: dict[str, Mapper] = {}
+
+
+def _maps(path: str) -> Callable[[Mapper], Mapper]:
+    def register(function: Mapper) -> Mapper:
+        _MAPPERS[path] = function
+        return function
+
+    return register
+
+
+def map_action(build: Build, request: Request, motion: Motion) -> scm.ActionNode | str:
+    """The node an Action stands for (added to the scenario), or why it has no SceML kind."""
+    for path, mapper in _MAPPERS.items():
+        found = request.element.find(path)
+        if found is not None:
+            return mapper(build, request, found, motion)
+    what = summary(request.element).split(" ")[-1]
+    return f"SceML has no kind for {what}"
+
+
+def _add(build: Build, request: Request, kind: str, **values: object) -> scm.ActionNode:
+    node: scm.ActionNode = getattr(scm, kind)()
+    node.referenceActor = request.actor
+    numeric = {spec.name for spec in catalog.parameters(kind)}
+    for key, value in values.items():
+        if value is None:
+            continue
+        node.eSet(key, scm.Value(value=float(value)) if key in numeric else value)  # type: ignore[arg-type]
+    build.add(node, request.name)
+    build.report.add(
+        "mapped",
+        f"{node.name}: <{request.element.get('name')}> -> {kind}",
+        build.where(request.element),
+        str(node.name),
+    )
+    return node
+
+
+def _guess(build: Build, request: Request, message: str) -> None:
+    build.report.add("guessed", f"{request.name}: {message}", build.where(request.element))
+
+
+@_maps("PrivateAction/LongitudinalAction/SpeedAction")
+def _speed(
+    build: Build, request: Request, speed: etree._Element, motion: Motion
+) -> scm.ActionNode | str:
+    target = speed.find("SpeedActionTarget/AbsoluteTargetSpeed")
+    if target is None:
+        return "a relative target speed has no SceML kind"
+    value = number(target, "value")
+    actor = str(request.actor.name)
+    before = motion.speed.get(actor)
+    if request.hint in ("Accelerate", "Decelerate", "Stop") and (
+        request.hint != "Stop" or value == 0
+    ):
+        kind = request.hint
+    elif value == 0:
+        kind = "Stop"
+    else:
+        kind = "Decelerate" if before is not None and value < before else "Accelerate"
+        if before is None:
+            _guess(build, request, "the speed before is unknown: taken as Accelerate")
+    rate = _rate(build, request, speed.find("SpeedActionDynamics"), before, value)
+    motion.speed[actor] = value
+    if kind == "Stop":
+        return _add(build, request, kind, rate=rate)
+    return _add(build, request, kind, targetSpeed=value, rate=rate)
+
+
+def _rate(
+    build: Build,
+    request: Request,
+    dynamics: etree._Element | None,
+    before: float | None,
+    after: float,
+) -> float | None:
+    """The rate (m/s²) of a speed change; None (the language default) when it cannot be read."""
+    if dynamics is None:
+        return None
+    shape, dimension = dynamics.get("dynamicsShape"), dynamics.get("dynamicsDimension")
+    # Some files write a deceleration as a negative rate; the rate is a magnitude.
+    value = abs(number(dynamics, "value", 0.0))
+    if shape != "linear" and shape != "step":
+        _guess(build, request, f"a {shape} speed change read as linear")
+    if shape == "step" or value <= 0:
+        _guess(build, request, "an instantaneous speed change: the language's default rate")
+        return None
+    if dimension == "rate":
+        return value
+    if before is None or before == after:
+        _guess(
+            build,
+            request,
+            f"the speed before is unknown: the {dimension} is not converted to a rate",
+        )
+        return None
+    _guess(
+        build,
+        request,
+        f"the rate computed from the {dimension} and the speed before ({before} m/s)",
+    )
+    if dimension == "time":
+        return abs(after - before) / value
+    return abs(after * after - before * before) / (2 * value)
+
+
+@_maps("PrivateAction/LongitudinalAction/LongitudinalDistanceAction")
+def _distance(
+    build: Build, request: Request, keep: etree._Element, motion: Motion
+) -> scm.ActionNode | str:
+    if keep.get("distance") is None:
+        return "a time gap has no SceML kind (Follow and Approach keep a distance)"
+    target = build.actor(keep.get("entityRef"), keep)
+    kind = "Follow" if keep.get("continuous") == "true" else "Approach"
+    node = _add(build, request, kind, distance=number(keep, "distance"))
+    node.targetActor = target
+    return node
+
+
+@_maps("PrivateAction/LateralAction/LaneChangeAction")
+def _lane_change(
+    build: Build, request: Request, change: etree._Element, motion: Motion
+) -> scm.ActionNode | str:
+    relative = change.find("LaneChangeTarget/RelativeTargetLane")
+    if relative is None:
+        return "a change to an absolute lane has no SceML kind"
+    reference = build.actor(relative.get("entityRef"), relative)
+    lanes = int(float(str(relative.get("value"))))
+    direction: str | None = "left" if lanes > 0 else "right"
+    if reference is not request.actor or abs(lanes) != 1:
+        direction = _towards(request.actor, reference, lanes)
+        if direction is None:
+            return "a change by more than one lane, or to another actor's lane, has no SceML kind"
+        _guess(
+            build, request, f"the change into {reference.name}'s lane read as one lane {direction}"
+        )
+    dynamics = change.find("LaneChangeActionDynamics")
+    distance = None
+    if dynamics is not None and dynamics.get("dynamicsDimension") == "distance":
+        distance = number(dynamics, "value")
+    elif dynamics is not None:
+        speed = motion.speed.get(str(request.actor.name))
+        if speed:
+            distance = speed * number(dynamics, "value")
+            _guess(
+                build,
+                request,
+                f"the lane change's {dynamics.get('dynamicsDimension')} taken at {speed} m/s as {distance:g} m",
+            )
+    node = _add(build, request, "LaneChange", distance=distance)
+    node.direction = scm.LaneChangeDirection.getEEnumLiteral(direction)
+    return node
+
+
+def _towards(actor: scm.Actor, reference: scm.Actor, lanes: int) -> str | None:
+    """left/right for a change into another actor's lane, from both start lanes on one road."""
+    mine, theirs = actor.startPosition, reference.startPosition
+    if (
+        lanes != 0
+        or not isinstance(mine, scm.LanePosition)
+        or not isinstance(theirs, scm.LanePosition)
+    ):
+        return None
+    if (
+        mine.roadId != theirs.roadId
+        or mine.laneId * theirs.laneId <= 0
+        or mine.laneId == theirs.laneId
+    ):
+        return None
+    # Lanes are numbered outwards from the centre line on both sides; the centre is on the left.
+    return "left" if abs(theirs.laneId) < abs(mine.laneId) else "right"
+
+
+@_maps("PrivateAction/RoutingAction/AcquirePositionAction")
+def _acquire(
+    build: Build, request: Request, acquire: etree._Element, motion: Motion
+) -> scm.ActionNode | str:
+    return _routed(build, request, position(acquire), motion)
+
+
+@_maps("PrivateAction/RoutingAction/AssignRouteAction")
+def _route(
+    build: Build, request: Request, assign: etree._Element, motion: Motion
+) -> scm.ActionNode | str:
+    waypoints = assign.findall("Route/Waypoint")
+    if not waypoints:
+        return "a route from a catalog has no SceML kind"
+    if len(waypoints) > 2:
+        _guess(
+            build, request, f"a route of {len(waypoints)} waypoints read as a route to its last one"
+        )
+    return _routed(build, request, position(waypoints[-1]), motion)
+
+
+def _routed(
+    build: Build, request: Request, destination: scm.Position | None, motion: Motion
+) -> scm.ActionNode | str:
+    if destination is None:
+        return "the destination is not a world or lane position"
+    actor = str(request.actor.name)
+    start = motion.place.get(actor, request.actor.startPosition)
+    turn = classify(start, destination, build.road_map)
+    kind = turn.kind
+    if request.hint in ("TurnLeft", "TurnRight", "Cross"):
+        kind = request.hint
+    elif turn.guessed:
+        _guess(build, request, f"{kind}: {turn.how}")
+    node = _add(build, request, kind)
+    node.destination = destination
+    motion.place[actor] = destination
+    return node
+
+
+@_maps("PrivateAction/RoutingAction/FollowTrajectoryAction")
+def _trajectory(
+    build: Build, request: Request, follow: etree._Element, motion: Motion
+) -> scm.ActionNode | str:
+    shape = follow.find(".//Trajectory/Shape")
+    polyline = None if shape is None else shape.find("Polyline")
+    if polyline is None:
+        return "only polyline trajectories map (FollowTrajectory); clothoids and NURBS do not"
+    vertices = polyline.findall("Vertex")
+    if vertices and _is_self(vertices[0], request.actor):
+        vertices = vertices[1:]
+    points = [position(vertex) for vertex in vertices]
+    if not points or any(point is None for point in points):
+        return "a trajectory vertex is not a world or lane position"
+    actor = str(request.actor.name)
+    motion.place[actor] = points[-1]
+    if request.hint == "Cross" and len(points) == 1:
+        node = _add(build, request, "Cross")
+        node.destination = points[0]
+        return node
+    node = _add(build, request, "FollowTrajectory")
+    node.waypoints.extend(points)
+    return node
+
+
+def _is_self(vertex: etree._Element, actor: scm.Actor) -> bool:
+    """A vertex at the actor's own position (SceML's exports start their polylines there)."""
+    here = vertex.find("Position/RelativeObjectPosition")
+    return (
+        here is not None
+        and last_name(str(here.get("entityRef"))) == actor.name
+        and float(here.get("dx", "0")) == 0.0
+        and float(here.get("dy", "0")) == 0.0
+    )

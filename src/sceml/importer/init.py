@@ -1,0 +1,124 @@
+"""Init to the root: start positions, initial speeds and the environment; any other Init
+action becomes an opaque node right after the root (it runs at the start, as it did)."""
+
+from __future__ import annotations
+
+from copy import deepcopy
+
+from lxml import etree
+
+import scemlmodel as scm
+
+from .context import Build
+from .opaque import opaque_node
+from .positions import number, position
+
+#: fractionalCloudCover (1.2+) -> cloud state; eight oktas is overcast or, with dim sun, rainy.
+OKTAS = {
+    "zeroOktas": "free",
+    "oneOktas": "free",
+    "twoOktas": "free",
+    "threeOktas": "cloudy",
+    "fourOktas": "cloudy",
+    "fiveOktas": "cloudy",
+    "sixOktas": "overcast",
+    "sevenOktas": "overcast",
+    "eightOktas": "overcast",
+    "nineOktas": "overcast",
+}
+#: SceML writes rainy skies with this sun (lux or the older intensity) or less.
+RAINY_SUN = 10000.0
+CLOUD_STATES = {"free", "cloudy", "overcast", "rainy"}
+
+
+def read_init(build: Build) -> list[scm.GraphElement]:
+    """Apply the Init actions; returns the opaque nodes made for the ones SceML cannot hold."""
+    actions = build.source.root.find("Storyboard/Init/Actions")
+    kept: list[scm.GraphElement] = []
+    for item in [] if actions is None else actions:
+        if not isinstance(item.tag, str):
+            continue
+        if item.tag == "Private":
+            actor = build.actor(item.get("entityRef"), item)
+            for private in item.iterchildren("PrivateAction"):
+                if not _private(build, actor, private):
+                    kept.append(_keep(build, private, actor))
+        elif item.tag == "GlobalAction" and item.find("EnvironmentAction") is not None:
+            _environment(build, item.find("EnvironmentAction/Environment"))
+        else:
+            kept.append(_keep(build, item, build.default_actor()))
+    return kept
+
+
+def _keep(build: Build, element: etree._Element, actor: scm.Actor) -> scm.GraphElement:
+    """An Init action as an opaque node performed at the start (wrapped as an Action)."""
+    wrapper = etree.Element("Action", name=f"init_{element.sourceline}")
+    wrapper.append(deepcopy(element))
+    why = "an Init action SceML has no field for; performed at the start"
+    node = opaque_node(build, wrapper, actor, f"Init_{actor.name}", why, build.where(element))
+    build.flow(build.root, node)
+    return node
+
+
+def _private(build: Build, actor: scm.Actor, private: etree._Element) -> bool:
+    """Apply a teleport or speed action to the actor; False when it is something else."""
+    teleport = private.find("TeleportAction")
+    if teleport is not None:
+        start = position(teleport)
+        if start is None:
+            return False
+        actor.startPosition = start
+        build.report.add("mapped", f"{actor.name}: start position", build.where(teleport))
+        return True
+    speed = private.find("LongitudinalAction/SpeedAction")
+    target = None if speed is None else speed.find("SpeedActionTarget/AbsoluteTargetSpeed")
+    if speed is None or target is None:
+        return False
+    actor.initialSpeed = scm.Value(value=number(target, "value"))
+    build.report.add("mapped", f"{actor.name}: initial speed", build.where(speed))
+    dynamics = speed.find("SpeedActionDynamics")
+    if dynamics is not None and dynamics.get("dynamicsShape") != "step":
+        build.report.add(
+            "guessed",
+            f"{actor.name}: the Init speed change ({dynamics.get('dynamicsShape')}) taken as the "
+            "initial speed",
+            build.where(speed),
+        )
+    return True
+
+
+def _environment(build: Build, element: etree._Element | None) -> None:
+    if element is None:
+        return
+    environment = scm.Environment()
+    time = element.find("TimeOfDay")
+    if time is not None and "T" in str(time.get("dateTime", "")):
+        environment.timeOfDay = str(time.get("dateTime")).split("T", 1)[1][:8]
+    weather = element.find("Weather")
+    if weather is not None:
+        environment.cloudState = scm.CloudState.getEEnumLiteral(_cloud(weather))
+        fog = weather.find("Fog")
+        if fog is not None and fog.get("visualRange") is not None:
+            environment.fogVisualRange = scm.Value(value=number(fog, "visualRange"))
+        rain = weather.find("Precipitation")
+        if rain is not None:
+            kind = rain.get("precipitationType", "dry")
+            environment.precipitation = scm.PrecipitationType.getEEnumLiteral(
+                kind if kind in ("dry", "rain", "snow") else "dry"
+            )
+            amount = rain.get("precipitationIntensity", rain.get("intensity"))
+            if amount is not None:
+                environment.precipitationIntensity = scm.Value(value=float(amount))
+    build.root.environment = environment
+    build.report.add("mapped", "environment -> root", build.where(element))
+
+
+def _cloud(weather: etree._Element) -> str:
+    sun = weather.find("Sun")
+    light = None if sun is None else sun.get("illuminance", sun.get("intensity"))
+    state = weather.get("cloudState")
+    if state is None:
+        state = OKTAS.get(str(weather.get("fractionalCloudCover")), "free")
+        if state == "overcast" and light is not None and float(light) <= RAINY_SUN:
+            state = "rainy"
+    return state if state in CLOUD_STATES else "overcast"

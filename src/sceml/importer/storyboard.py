@@ -1,0 +1,279 @@
+"""The Storyboard to the graph: each Event to nodes, in the order their triggers need them.
+
+Events are imported on demand: reading a StartTrigger that waits for another element imports
+that element first, so a trigger that (through others) waits for itself is found and refused as
+circular. A SceML export's marker and extra events are folded back (`markers.py`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from lxml import etree
+
+import scemlmodel as scm
+
+from . import markers
+from .actions import Motion, Request, map_action
+from .context import Build, last_name
+from .opaque import opaque_node
+from .triggers import Trigger
+
+#: States that mean "has finished" and "has started" (the others are read as started).
+FINISHED = ("completeState", "endTransition", "stopTransition", "skipTransition")
+
+
+@dataclass
+class Event:
+    """One Event with where it sits: its actors and the act whose start it waits for."""
+
+    element: etree._Element
+    name: str
+    actors: list[scm.Actor]
+    act: str
+
+
+@dataclass
+class Storyboard:
+    """The import of the Storyboard's events, one node (or a few) per event."""
+
+    build: Build
+    motion: Motion = field(default_factory=Motion)
+    events: dict[str, Event] = field(default_factory=dict)
+    #: Element name (action, maneuver, group, act, story) -> the events it holds.
+    holds: dict[str, list[str]] = field(default_factory=dict)
+    #: Action name -> (its event, its index among the event's actions).
+    actions: dict[str, tuple[str, int]] = field(default_factory=dict)
+    finish: dict[str, scm.GraphElement] = field(default_factory=dict)
+    started: dict[str, scm.GraphElement] = field(default_factory=dict)
+    by_action: dict[tuple[str, int], scm.GraphElement] = field(default_factory=dict)
+    act_start: dict[str, scm.GraphElement] = field(default_factory=dict)
+    acts: dict[str, etree._Element] = field(default_factory=dict)
+    _busy: list[str] = field(default_factory=list)
+    _joins: dict[str, scm.GraphElement] = field(default_factory=dict)
+
+    def collect(self) -> None:
+        """Index every story element by name; each actor starts at its initial speed."""
+        for actor in self.build.actors.values():
+            if isinstance(actor.initialSpeed, scm.Value):
+                self.motion.speed[str(actor.name)] = float(actor.initialSpeed.value)
+        storyboard = self.build.source.root.find("Storyboard")
+        assert storyboard is not None
+        for story in storyboard.iterchildren("Story"):
+            if self.build.root.scenarioName is None:
+                self.build.root.scenarioName = story.get("name")
+            for act in story.iterchildren("Act"):
+                self.acts[str(act.get("name"))] = act
+                self._act(str(story.get("name")), act)
+                stop = act.find("StopTrigger")
+                if stop is not None and len(stop):
+                    self.build.report.add(
+                        "not represented",
+                        f"act {act.get('name')!r}: its StopTrigger (SceML nodes are not cancelled)",
+                        self.build.where(stop),
+                    )
+
+    def _act(self, story: str, act: etree._Element) -> None:
+        act_name = str(act.get("name"))
+        for group in act.iterchildren("ManeuverGroup"):
+            actors = self._actors(group)
+            for maneuver in group.iterchildren("Maneuver"):
+                for event in maneuver.iterchildren("Event"):
+                    name = str(event.get("name"))
+                    if name in self.events:
+                        raise self.build.source.error(f"two events are named {name!r}", event)
+                    self.events[name] = Event(event, name, actors, act_name)
+                    for holder in (story, act_name, group.get("name"), maneuver.get("name")):
+                        self.holds.setdefault(str(holder), []).append(name)
+                    for index, action in enumerate(event.iterchildren("Action")):
+                        self.actions.setdefault(str(action.get("name")), (name, index))
+                    count = int(event.get("maximumExecutionCount", "1"))
+                    if count > 1:
+                        self.build.report.add(
+                            "not represented",
+                            f"event {name!r} may run {count} times; SceML runs each node once",
+                            self.build.where(event),
+                        )
+
+    def _actors(self, group: etree._Element) -> list[scm.Actor]:
+        refs = group.findall("Actors/EntityRef")
+        if refs:
+            return [self.build.actor(ref.get("entityRef"), ref) for ref in refs]
+        self.build.report.add(
+            "guessed",
+            f"maneuver group {group.get('name')!r} names no actor: its actions are given to the ego",
+            self.build.where(group),
+        )
+        return [self.build.default_actor()]
+
+    def run(self) -> None:
+        """Import every event, in document order (triggers pull in what they wait for)."""
+        for name in list(self.events):
+            self.event(name)
+
+    # --- one event --------------------------------------------------------------------------
+
+    def event(self, name: str) -> scm.GraphElement:
+        """The node whose finish is the event's completion (importing the event if needed)."""
+        if name in self.finish:
+            return self.finish[name]
+        info = self.events[name]
+        if name in self._busy:
+            chain = " -> ".join([*self._busy[self._busy.index(name) :], name])
+            raise self.build.source.error(
+                f"circular trigger: {chain}", info.element.find("StartTrigger")
+            )
+        self._busy.append(name)
+        try:
+            node = self._import(info)
+        finally:
+            self._busy.pop()
+        self.finish[name] = node
+        return node
+
+    def _import(self, info: Event) -> scm.GraphElement:
+        folded = markers.base_of(
+            self.build, info.name, {n: e.element for n, e in self.events.items()}
+        )
+        if folded is not None:
+            return self.event(folded[0])
+        actor = info.actors[0]
+        kind = markers.hint(self.build, info.name)
+        trigger = Trigger(
+            self.build,
+            self.resolve,
+            self._act_start(info.act),
+            actor,
+            "KeepVelocity" if kind == "KeepVelocity" else "TimeElapsed",
+        )
+        start = info.element.find("StartTrigger")
+        if markers.is_marker(self.build, info.element):
+            node = trigger.node(start, info.name, info.name)
+            self.started[info.name] = node
+            self._report_marker(info, node)
+            return node
+        activation = trigger.node(start, None, f"{info.name}_start")
+        self.started[info.name] = activation
+        nodes: list[scm.GraphElement] = []
+        #: Per actor, the node a step speed change leaves for the next action to follow.
+        after: dict[str, scm.GraphElement] = {}
+        for index, action in enumerate(info.element.iterchildren("Action")):
+            for each in info.actors:
+                made = self._action(info, action, each, kind)
+                before = after.pop(str(each.name), activation)
+                if before is not activation:
+                    nodes.remove(before)
+                    self.build.report.add(
+                        "guessed",
+                        f"{made.name}: after {before.name}, an instantaneous speed change of the "
+                        "same event (SceML runs one longitudinal maneuver of an actor at a time)",
+                        self.build.where(action),
+                    )
+                self.build.flow(before, made)
+                self.by_action[(info.name, index)] = made
+                nodes.append(made)
+                if _is_step_speed(action):
+                    after[str(each.name)] = made
+        if len(nodes) == 1:
+            return nodes[0]
+        join = self.build.add(scm.JoinAllFinished(), f"{info.name}_done")
+        for made in nodes:
+            self.build.flow(made, join)
+        return join
+
+    def _report_marker(self, info: Event, node: scm.GraphElement) -> None:
+        told = any(entry.node == node.name for entry in self.build.report.entries)
+        if node.name == info.name and not told:
+            self.build.report.add(
+                "mapped",
+                f"{node.name}: SceML marker event -> {node.eClass.name}",
+                self.build.where(info.element),
+                str(node.name),
+            )
+
+    def _action(
+        self, info: Event, action: etree._Element, actor: scm.Actor, kind: str | None
+    ) -> scm.GraphElement:
+        request = Request(action, actor, info.name, kind)
+        extras = {
+            suffix: self.events[f"{info.name}__{suffix}"].element
+            for suffix in markers.SUFFIXES
+            if f"{info.name}__{suffix}" in self.events and self.build.from_sceml
+        }
+        made: scm.ActionNode | str | None = None
+        if kind == "DriveDistance" and "driven" in extras:
+            made = markers.drive_distance(self.build, request, extras["driven"], self.motion)
+        elif kind == "KeepVelocity" and "kept" in extras:
+            made = markers.keep_velocity(self.build, request, extras["kept"])
+        elif kind == "Overtake" and "back" in extras:
+            made = markers.overtake(self.build, info.element, request, extras["back"], self.motion)
+        if made is None:
+            made = map_action(self.build, request, self.motion)
+        if isinstance(made, str):
+            return opaque_node(self.build, action, actor, info.name, made)
+        arrival = extras.get("arrived")
+        limit = None if arrival is None else markers.tolerance(arrival)
+        if limit is not None and made.eClass.findEStructuralFeature("tolerance") is not None:
+            made.tolerance = scm.Value(value=limit)
+        return made
+
+    def _act_start(self, act: str) -> scm.GraphElement:
+        if act not in self.act_start:
+            element = self.acts[act]
+            trigger = Trigger(self.build, self.resolve, self.build.root, self.build.default_actor())
+            self.act_start[act] = trigger.node(element.find("StartTrigger"), None, f"{act}_start")
+        return self.act_start[act]
+
+    # --- what a StoryboardElementStateCondition waits for -----------------------------------
+
+    def resolve(self, state: etree._Element) -> scm.GraphElement:
+        """The node a state condition refers to: finished, or (other states) started."""
+        ref = last_name(str(state.get("storyboardElementRef")))
+        kind = state.get("storyboardElementType")
+        done = state.get("state") in FINISHED
+        if kind == "event" and ref in self.events:
+            node = self.event(ref)
+            return node if done else self._started(ref, state)
+        if kind == "action" and ref in self.actions:
+            event, index = self.actions[ref]
+            self.event(event)
+            return (
+                self.by_action.get((event, index), self.finish[event])
+                if done
+                else self._started(event, state)
+            )
+        if ref in self.holds and kind in ("maneuver", "maneuverGroup", "act", "story"):
+            names = self.holds[ref]
+            if not done:
+                return self._started(names[0], state)
+            return self._all_of(ref, [self.event(n) for n in names])
+        raise self.build.source.error(
+            f"the condition refers to an unknown {kind} {ref!r} (dangling storyboard reference)",
+            state,
+        )
+
+    def _started(self, event: str, state: etree._Element) -> scm.GraphElement:
+        self.event(event)
+        self.build.report.add(
+            "guessed",
+            f"'{state.get('state')}' of {state.get('storyboardElementRef')!r} read as: when it is activated",
+            self.build.where(state),
+        )
+        return self.started[event]
+
+    def _all_of(self, holder: str, nodes: list[scm.GraphElement]) -> scm.GraphElement:
+        unique = [n for i, n in enumerate(nodes) if all(n is not m for m in nodes[:i])]
+        if len(unique) == 1:
+            return unique[0]
+        if holder not in self._joins:
+            join = self.build.add(scm.JoinAllFinished(), f"{holder}_done")
+            for node in unique:
+                self.build.flow(node, join)
+            self._joins[holder] = join
+        return self._joins[holder]
+
+
+def _is_step_speed(action: etree._Element) -> bool:
+    """A speed action that changes the speed at once (it completes as soon as it starts)."""
+    dynamics = action.find("PrivateAction/LongitudinalAction/SpeedAction/SpeedActionDynamics")
+    return dynamics is not None and dynamics.get("dynamicsShape") == "step"
