@@ -13,6 +13,7 @@ from lxml import etree
 
 import scemlmodel as scm
 
+from .. import params
 from . import markers
 from .actions import Motion, Request, map_action
 from .context import Build, last_name
@@ -55,8 +56,7 @@ class Storyboard:
     def collect(self) -> None:
         """Index every story element by name; each actor starts at its initial speed."""
         for actor in self.build.actors.values():
-            if isinstance(actor.initialSpeed, scm.Value):
-                self.motion.speed[str(actor.name)] = float(actor.initialSpeed.value)
+            self.motion.speed[str(actor.name)] = params.concrete(actor, "initialSpeed")
         storyboard = self.build.source.root.find("Storyboard")
         assert storyboard is not None
         for story in storyboard.iterchildren("Story"):
