@@ -238,9 +238,7 @@ def opaque_lines(node: scm.OpaqueAction) -> list[str]:
     """What an opaque node keeps: the OpenSCENARIO element's kind and the line it came from."""
     match = _OPAQUE_TAGS.findall(str(node.xml or ""))
     inner = [
-        tag
-        for tag in match[1:]
-        if tag.endswith(("Action", "Condition")) and tag not in _WRAPPERS
+        tag for tag in match[1:] if tag.endswith(("Action", "Condition")) and tag not in _WRAPPERS
     ]
     what = f"{match[0]} {inner[0]}" if match and inner else (match[0] if match else "(empty)")
     where = f"OpenSCENARIO {node.sourceVersion or '?'}, line {node.sourceLine or '?'}"
