@@ -272,7 +272,8 @@ def _trajectory(
         return "a trajectory vertex is not a world or lane position"
     actor = str(request.actor.name)
     motion.place[actor] = points[-1]
-    if request.hint == "Cross" and len(points) == 1:
+    # One point after the actor itself is a straight crossing to it (SceML's Cross).
+    if len(points) == 1 and request.hint != "FollowTrajectory":
         node = _add(build, request, "Cross")
         node.destination = points[0]
         return node
