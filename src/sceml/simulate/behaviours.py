@@ -79,6 +79,12 @@ def known_kinds() -> tuple[str, ...]:
 # --- longitudinal ---------------------------------------------------------------------------
 
 
+def step_speed(actor: Actor, speed: float) -> None:
+    """A step change of speed: it holds from this instant (the export's step SpeedAction)."""
+    actor.speed = speed
+    actor.control = Ramp(speed)
+
+
 @kind("Accelerate", "Decelerate", "Stop")
 class SpeedChange(Behaviour):
     """Change the speed linearly at `rate` to `targetSpeed` (Stop: to 0)."""
@@ -112,7 +118,7 @@ class DriveDistance(Behaviour):
     claims = ("speed",)
 
     def start(self, world: World) -> None:
-        self.actor.control = Ramp(concrete(self.node, "speed"))
+        step_speed(self.actor, concrete(self.node, "speed"))
         self.until = self.actor.travelled + concrete(self.node, "distance")
 
     def done(self, world: World) -> bool:
@@ -264,7 +270,7 @@ class Overtake(Behaviour):
         self.side = str(self.node.side.name if self.node.side is not None else "left")
         self.gap = concrete(self.node, "gap")
         self.distance = concrete(self.node, "laneChangeDistance")
-        self.actor.control = Ramp(concrete(self.node, "speed"))
+        step_speed(self.actor, concrete(self.node, "speed"))
         self.phase = "out"
         self.shift = LaneShift(world, self.actor, self.side, self.distance, self.name)
 

@@ -1,0 +1,93 @@
+"""Actors on the project's intersection map (maps/intersection.xodr, docs/map.md).
+
+The east arm, road 2, runs from (9, 0) due east for 100 m; its lane -1 (traffic along s) has
+its centre at y = -1.75, lane 1 (the other way) at y = +1.75, both 3.5 m wide.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from conftest import REPO
+
+from sceml.build import ScenarioBuilder, lane, world
+from sceml.simulate import END_NODE, simulate
+
+MAP = str(REPO / "maps" / "intersection.xodr")
+
+
+def builder() -> ScenarioBuilder:
+    return ScenarioBuilder("map", map=MAP, level="concrete", max_duration=30.0)
+
+
+def test_an_actor_follows_its_lane_centre_line() -> None:
+    b = builder()
+    ego = b.actor("Car", "ego", ego=True, start=lane(2, -1, 10.0), speed=10.0)
+    b.chain(b.root, b.add("TimeElapsed", ego, duration=3.0), b.end)
+    run = simulate(b.scenario, Path(MAP))
+    # s = 10 is x = 19; after 3 s at 10 m/s, x = 49, still on the centre line y = -1.75.
+    x, y, heading, _ = run.states[0, -1]
+    assert (x, y, heading) == pytest.approx((49.0, -1.75, 0.0), abs=1e-6)
+
+
+def test_a_lane_change_ends_on_the_lane_beside_after_its_distance() -> None:
+    b = builder()
+    ego = b.actor("Car", "ego", ego=True, start=lane(2, -1, 10.0), speed=10.0)
+    change = b.add("LaneChange", ego, direction="left", distance=20.0)
+    b.chain(b.root, change, b.end)
+    run = simulate(b.scenario, Path(MAP))
+    # 20 m at 10 m/s: 2 s, from x = 19 to x = 39, one lane (3.5 m) to the left, still eastwards.
+    assert run.node(change.name).finished == pytest.approx(2.0)
+    x, y, heading, _ = run.states[0, -1]
+    assert (x, y) == pytest.approx((39.0, 1.75), abs=1e-6)
+    assert heading == pytest.approx(0.0, abs=1e-6)
+    # Half-way the half cosine has moved it half the way: y = -1.75 + 1.75 = 0 at x = 29.
+    k = int(round(1.0 / run.step))
+    assert run.states[0, k, :2] == pytest.approx((29.0, 0.0), abs=1e-6)
+
+
+def test_follow_closes_up_to_the_gap_and_keeps_it() -> None:
+    b = builder()
+    ego = b.actor("Car", "ego", ego=True, start=lane(2, -1, 5.0), speed=12.0)
+    lead = b.actor("Car", "lead", start=lane(2, -1, 45.0), speed=8.0)
+    follow = b.add("Follow", ego, target=lead, distance=15.0)
+    b.chain(b.root, follow, b.add("TimeElapsed", ego, duration=15.0), b.end)
+    run = simulate(b.scenario, Path(MAP))
+    assert run.node(follow.name).finished is not None
+    gap = run.states[1, -1, 0] - run.states[0, -1, 0]
+    assert gap == pytest.approx(15.0, abs=0.3)
+    assert run.states[0, -1, 3] == pytest.approx(8.0, abs=0.1)
+    assert not run.pair("ego", "lead").collision
+
+
+def test_a_right_turn_goes_through_the_junction_to_its_destination() -> None:
+    b = builder()
+    # South arm, road 3, lane 1 runs north towards the junction; the destination lies on the
+    # east arm's lane -1 (as in UIS1).
+    ego = b.actor("Car", "ego", ego=True, start=lane(3, 1, 20.0), speed=8.0)
+    turn = b.add("TurnRight", ego, destination=world(34.0, -1.75), tolerance=1.0)
+    b.chain(b.root, turn, b.end)
+    run = simulate(b.scenario, Path(MAP))
+    assert run.end_reason == END_NODE
+    x, y, heading, _ = run.states[0, -1]
+    assert abs(x - 34.0) <= 1.0 and y == pytest.approx(-1.75, abs=1e-3)
+    assert heading == pytest.approx(0.0, abs=1e-3)  # eastwards after turning right from north
+    assert not run.notes
+
+
+def test_overtake_passes_in_three_phases_and_returns_ahead_of_the_target() -> None:
+    b = builder()
+    ego = b.actor("Car", "ego", ego=True, start=lane(2, -1, 5.0), speed=10.0)
+    slow = b.actor("Truck", "truck", start=lane(2, -1, 25.0), speed=5.0)
+    overtake = b.add(
+        "Overtake", ego, target=slow, side="left", speed=15.0, gap=10.0, laneChangeDistance=15.0
+    )
+    b.chain(b.root, overtake, b.end)
+    run = simulate(b.scenario, Path(MAP))
+    assert run.node(overtake.name).finished is not None
+    ego_x, ego_y = run.states[0, -1, :2]
+    assert ego_y == pytest.approx(-1.75, abs=1e-6)  # back in its lane
+    assert ego_x - run.states[1, -1, 0] >= 10.0  # at least the gap ahead
+    assert run.states[0, :, 1].max() == pytest.approx(1.75, abs=1e-6)  # it used the other lane
+    assert not run.pair("ego", "truck").collision
