@@ -43,7 +43,7 @@ READERS = {
         "report",
         "export-distribution",
     ),
-    "xosc": ("check-xosc",),
+    "xosc": ("check-xosc", "import"),
     "config": ("limits", "ranges"),
 }
 

@@ -41,6 +41,7 @@ ENTRY_POINTS: dict[str, Callable[[Path, Path], list[str]]] = {
     "report": lambda file, out: ["report", str(file), "-o", str(out / "report.html")],
     "export-distribution": lambda file, out: ["export-distribution", str(file), "-o", str(out)],
     "check-xosc": lambda file, out: ["check-xosc", "--no-quality-checker", str(file)],
+    "import": lambda file, out: ["import", str(file), "-o", str(out / "imported.xmi")],
     "limits": lambda file, out: [
         "validate",
         "--limits",

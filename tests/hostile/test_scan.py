@@ -32,6 +32,7 @@ COMMANDS: dict[str, tuple[Path, Callable[[Path], list[str]]]] = {
     "report": (CONCRETE, lambda out: ["-o", str(out / "a.html")]),
     "flatten": (CONCRETE, lambda out: ["-o", str(out / "a.xmi")]),
     "check-xosc": (XOSC, lambda out: ["--no-quality-checker", "-o", str(out / "report.txt")]),
+    "import": (XOSC, lambda out: ["-o", str(out / "i.xmi")]),
     "concretize": (
         LOGICAL,
         lambda out: [
@@ -60,7 +61,9 @@ READS_ONLY = {"info", "module list", "module show"}
 #: Commands whose output is a report on their inputs, written whether or not they can be read.
 REPORTERS = {"validate", "check-xosc"}
 
-#: Bad input files by class; check-xosc reads OpenSCENARIO, the others SceML models.
+#: Commands that read OpenSCENARIO; the others read SceML models.
+XOSC_READERS = {"check-xosc", "import"}
+#: Bad input files by class, of the kind each command reads.
 BAD_INPUTS = {
     "missing": lambda tmp, xosc: tmp / ("missing.xosc" if xosc else "missing.xmi"),
     "folder": lambda tmp, xosc: tmp,
@@ -116,7 +119,7 @@ def test_good_arguments_work(tmp_path: Path, command: str) -> None:
 def test_bad_input(tmp_path: Path, command: str, kind: str) -> None:
     out = tmp_path / "out"
     out.mkdir()
-    bad = BAD_INPUTS[kind](tmp_path / "in", command == "check-xosc")
+    bad = BAD_INPUTS[kind](tmp_path / "in", command in XOSC_READERS)
     if kind == "folder":
         bad.mkdir()
     code, output = run(arguments(command, bad, out))

@@ -60,16 +60,16 @@ def read(path: str | Path) -> Source:
     except schema.SchemaError as error:
         raise XoscImportError(error.message, file=error.file or path, line=error.line) from None
     root = tree.getroot()
-    if root.tag != "OpenSCENARIO":
-        raise XoscImportError(
-            f"the document is a <{root.tag}>, not <OpenSCENARIO>", file=path, line=root.sourceline
-        )
     try:
         version = schema.declared_version(tree)
     except schema.UnsupportedVersionError as error:
         header = root.find("FileHeader")
         line = header.sourceline if header is not None else root.sourceline
         raise XoscImportError(error.message, file=path, line=line) from None
+    if root.tag != "OpenSCENARIO":
+        raise XoscImportError(
+            f"the document is a <{root.tag}>, not <OpenSCENARIO>", file=path, line=root.sourceline
+        )
     if root.find("Storyboard") is None:
         raise XoscImportError(
             "the file has no Storyboard: it is a catalog or a parameter distribution, not a "
