@@ -226,6 +226,24 @@ def _distributed() -> Any:
     return importlib.import_module("distributed")
 
 
+def _local_cluster(distributed: Any, workers: int) -> Any:
+    """A LocalCluster of single-threaded worker processes that leave Ctrl-C to this process.
+
+    A terminal sends Ctrl-C to every process in its foreground group; the workers would each
+    print a traceback while this process cancels their tasks and closes them in order. They
+    inherit an ignored SIGINT from the moment they are started.
+    """
+    in_main = threading.current_thread() is threading.main_thread()
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN) if in_main else None
+    try:
+        return distributed.LocalCluster(
+            n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None
+        )
+    finally:
+        if in_main:
+            signal.signal(signal.SIGINT, previous)
+
+
 # Per Dask worker thread: (token, state) of the run in progress. A worker thread serves one
 # run's tasks with one state; a new run (new token) replaces it.
 _DASK = threading.local()
@@ -253,12 +271,7 @@ class DaskExecutor(Executor):
         self.cluster: Any = None
         try:
             if scheduler is None:
-                self.cluster = distributed.LocalCluster(
-                    n_workers=workers or os.cpu_count() or 1,
-                    threads_per_worker=1,
-                    processes=True,
-                    dashboard_address=None,
-                )
+                self.cluster = _local_cluster(distributed, workers or os.cpu_count() or 1)
                 self.client: Any = distributed.Client(self.cluster)
             else:
                 self.client = distributed.Client(scheduler, timeout="10s")

@@ -177,6 +177,27 @@ def test_ctrl_c_cancels_the_rest_and_leaves_only_recorded_files(
     assert set(_files(tmp_path)) == {name for r in result.records for name in r.files}
 
 
+def test_ctrl_c_while_files_are_written_finishes_them_first(tmp_path: Path, monkeypatch) -> None:  # type: ignore[no-untyped-def]
+    real = io.write_atomically
+    sent = []
+
+    def ctrl_c_then_write(path: Path, data: bytes) -> None:
+        if not sent:
+            sent.append(path.name)
+            os.kill(os.getpid(), signal.SIGINT)  # as a terminal's Ctrl-C, mid-write
+        real(path, data)
+
+    monkeypatch.setattr(batch.io, "write_atomically", ctrl_c_then_write)
+    space, indices, rows = _uis2_rows(40)
+    with open_executor("local") as executor:
+        result = run_batch(
+            _config(tmp_path, space.paths), indices, rows, executor=executor, chunk_size=8
+        )
+    assert result.interrupted and sent == ["uis2_00000.xosc"]
+    assert [r.index for r in result.records] == list(range(8))  # the chunk being written
+    assert set(_files(tmp_path)) == {name for r in result.records for name in r.files}
+
+
 def test_without_dask_the_executor_option_says_how_to_install_it(
     tmp_path: Path, monkeypatch
 ) -> None:  # type: ignore[no-untyped-def]

@@ -24,9 +24,12 @@ disk, also after Ctrl-C or a lost worker, and no half-written file is left.
 from __future__ import annotations
 
 import shutil
+import signal
 import tempfile
+import threading
 import weakref
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
+from contextlib import contextmanager
 from dataclasses import dataclass, replace
 from pathlib import Path
 
@@ -354,8 +357,9 @@ def _collect(
             if outcome.error is not None or outcome.result is None:
                 result.records.extend(_failed(chunks[outcome.item], outcome.error or "no result"))
             else:
-                for produced in outcome.result:
-                    result.records.append(write_sample(folder, produced))
+                with _interrupt_deferred():
+                    for produced in outcome.result:
+                        result.records.append(write_sample(folder, produced))
             if progress is not None:
                 progress(len(chunks[outcome.item][0]))
     except KeyboardInterrupt:
@@ -363,6 +367,27 @@ def _collect(
     finally:
         outcomes.close()  # cancels what has not run yet
     return result
+
+
+@contextmanager
+def _interrupt_deferred() -> Iterator[None]:
+    """Hold Ctrl-C until the block is done, then raise it.
+
+    A KeyboardInterrupt between creating a temporary file and renaming it would leave the
+    temporary file behind; a chunk's files take milliseconds, so Ctrl-C waits for them.
+    Only the main thread receives signals; elsewhere this does nothing.
+    """
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    received: list[int] = []
+    previous = signal.signal(signal.SIGINT, lambda number, _frame: received.append(number))
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)
+        if received and callable(previous):
+            previous(signal.SIGINT, None)  # Python's own handler raises KeyboardInterrupt
 
 
 def _chunk_size(count: int, executor: Executor) -> int:
