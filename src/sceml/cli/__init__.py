@@ -24,6 +24,7 @@ COMMANDS = {
     "promote": "promote:promote",
     "sample": "sample:sample",
     "simulate": "simulate:simulate_command",
+    "explore": "explore:explore_command",
     "export-distribution": "export_logical:export_distribution_command",
     "module": "module:module",
     "flatten": "flatten:flatten",
