@@ -245,18 +245,23 @@ def _local_cluster(distributed: Any, workers: int) -> Any:
 
 
 # Per Dask worker thread: (token, state) of the run in progress. A worker thread serves one
-# run's tasks with one state; a new run (new token) replaces it.
-_DASK = threading.local()
+# run's tasks with one state; a new run (new token) replaces it. Kept in a module dict, not
+# thread-local storage, so that the process can let every state go (and clean up) as it ends.
+_DASK: dict[int, tuple[str, Any]] = {}
 
 
 def _dask_call(
     setup: Setup[Any, Any], task: Task[Any, T, R], payload: Any, token: str, item: T
 ) -> R:
-    if getattr(_DASK, "token", None) != token:
-        _DASK.state = None  # let the previous run's state go before building the next
-        _DASK.state = setup(payload)
-        _DASK.token = token
-    return task(_DASK.state, item)
+    thread = threading.get_ident()
+    held = _DASK.get(thread)
+    if held is None or held[0] != token:
+        if not _DASK:
+            # A worker process ends without running atexit; this runs at its end all the same.
+            multiprocessing.util.Finalize(None, _DASK.clear, exitpriority=10)
+        _DASK.pop(thread, None)  # let the previous run's state go before building the next
+        held = _DASK[thread] = (token, setup(payload))
+    return task(held[1], item)
 
 
 class DaskExecutor(Executor):
