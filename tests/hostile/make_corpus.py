@@ -42,6 +42,8 @@ READERS = {
         "concretize",
         "report",
         "export-distribution",
+        "simulate",
+        "explore",
     ),
     "xosc": ("check-xosc", "import"),
     "config": ("limits", "ranges"),

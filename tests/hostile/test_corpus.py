@@ -41,6 +41,8 @@ ENTRY_POINTS: dict[str, Callable[[Path, Path], list[str]]] = {
     "report": lambda file, out: ["report", str(file), "-o", str(out / "report.html")],
     "export-distribution": lambda file, out: ["export-distribution", str(file), "-o", str(out)],
     "check-xosc": lambda file, out: ["check-xosc", "--no-quality-checker", str(file)],
+    "simulate": lambda file, out: ["simulate", str(file), "-o", str(out / "run.html")],
+    "explore": lambda file, out: ["explore", str(file), "--budget", "2", "-o", str(out / "x")],
     "import": lambda file, out: ["import", str(file), "-o", str(out / "imported.xmi")],
     "limits": lambda file, out: [
         "validate",

@@ -47,6 +47,14 @@ COMMANDS: dict[str, tuple[Path, Callable[[Path], list[str]]]] = {
     ),
     "sample": (LOGICAL, lambda out: ["--n", "2", "--workers", "1", "-o", str(out / "s")]),
     "export-distribution": (LOGICAL, lambda out: ["-o", str(out / "d")]),
+    "simulate": (
+        CONCRETE,
+        lambda out: [
+            *("-o", str(out / "run.html"), "--csv", str(out / "t.csv")),
+            *("--json", str(out / "s.json")),
+        ],
+    ),
+    "explore": (LOGICAL, lambda out: ["--budget", "2", "--top", "1", "-o", str(out / "x")]),
     "module list": (EXAMPLES / "library" / "sceml-library.xmi", lambda out: []),
     "module show": (EXAMPLES / "library" / "sceml-library.xmi", lambda out: ["CrossingManeuver"]),
     "module extract": (
