@@ -59,6 +59,8 @@ WRITERS: dict[str, Callable[[Path], list[str]]] = {
         "-o",
         str(out / "a.xmi"),
     ],
+    "simulate": lambda out: ["simulate", str(UIS1), "-o", str(out / "run.html")],
+    "explore": lambda out: ["explore", str(LOGICAL), "--budget", "2", "--top", "1", "-o", str(out)],
     "validate": lambda out: ["validate", str(UIS1), "-o", str(out / "report.txt")],
     "check-xosc": lambda out: [
         "check-xosc",
