@@ -62,6 +62,12 @@ WRITERS: dict[str, Callable[[Path], list[str]]] = {
     "simulate": lambda out: ["simulate", str(UIS1), "-o", str(out / "run.html")],
     "explore": lambda out: ["explore", str(LOGICAL), "--budget", "2", "--top", "1", "-o", str(out)],
     "validate": lambda out: ["validate", str(UIS1), "-o", str(out / "report.txt")],
+    "import": lambda out: [
+        "import",
+        str(Path(__file__).resolve().parents[1] / "export/golden/uis1-1.3-generic.xosc"),
+        "-o",
+        str(out / "a.xmi"),
+    ],
     "check-xosc": lambda out: [
         "check-xosc",
         "--no-quality-checker",

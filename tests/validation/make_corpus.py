@@ -689,6 +689,16 @@ def date_not_iso(out: Path) -> None:
     save(b.scenario, out, "e005-date-yesterday.xmi")
 
 
+@case("e006-opaque-not-an-action", "SCEML-E006")
+def opaque_not_an_action(out: Path) -> None:
+    b, ego = scenario()
+    kept = scm.OpaqueAction(name="Kept", xml="<Event name='x'/>", sourceLine=7, sourceVersion="1.3")
+    kept.referenceActor = ego
+    b.scenario.nodes.append(kept)
+    b.chain(b.root, kept, b.end)
+    save(b.scenario, out, "e006-opaque-not-an-action.xmi")
+
+
 # The map (SPEC §12): maps/intersection.xodr, see docs/map.md -------------------------------------
 
 
