@@ -1,0 +1,28 @@
+"""Eclipse EMF reads a scenario that `sceml import` wrote, opaque nodes included, and writes it
+back so that SceML reads the same model."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from sceml import io
+from sceml.compare import differences
+from sceml.importer import import_to_file
+
+from .conftest import ECORE, REPO, Harness
+
+FILES = REPO / "tests" / "importer" / "files"
+
+
+def test_emf_reads_and_writes_an_imported_scenario_with_opaque_nodes(
+    emf: Harness, tmp_path: Path
+) -> None:
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    import_to_file(FILES / "alks-lane-keeping.xosc", source / "alks.xmi")
+    assert "OpaqueAction" in (source / "alks.xmi").read_text()
+    result = emf.run("roundtrip", ECORE, source, out, Path("alks.xmi"))
+    assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+    original, from_emf = io.load(source / "alks.xmi"), io.load(out / "alks.xmi")
+    assert differences(original.root, from_emf.root) == []
