@@ -101,5 +101,5 @@ def _value(number: float):  # type: ignore[no-untyped-def]
 def _copy_map(source: Path, target: Path) -> None:
     """The map path is relative: make it resolve from the temporary folder too."""
     scenario = io.load_scenario(target)
-    scenario.root.nodes[0].map = str((source.parent / scenario.root.nodes[0].map).resolve())
+    scenario.root.nodes[0].map = str((target.parent / scenario.root.nodes[0].map).resolve())
     io.save(scenario.root, target)

@@ -47,7 +47,7 @@ docs/validation-rules.md`. A test fails when it is stale.
   value without a language default (SCEML-P002, SCEML-M006); concrete ones hold single values only
   (SCEML-P001).
 - **The map.** The R rules read the OpenDRIVE file the root node names (relative to the scenario
-  file) with `sceml.maps` (docs/map-reader.md). A simulator town name is not read (SCEML-R002,
+  file; a model built in Python without a file is checked only against an absolute map path) with `sceml.maps` (docs/map-reader.md). A simulator town name is not read (SCEML-R002,
   info). A world position is on a lane when it lies within the lane's edges or at most 0.5 m
   outside them; vehicles need driving lanes, bicycles may also use bike lanes and sidewalks,
   pedestrians sidewalks and the roadway. A logical position is judged at the ends and the middle

@@ -29,7 +29,7 @@ from ..maps import (
     wrap_angle,
 )
 from ..maps.positions import Located, centre, locate, spread
-from ..maps.reference import MapReference, map_reference
+from ..maps.reference import MapReference, is_town_name, map_reference
 from ..maps.routes import routes_from
 from .context import Context, is_kind
 from .registry import Finding, constraint
@@ -56,13 +56,12 @@ def _reference(obj: EObject, context: Context) -> MapReference | None:
     if root is None:
         return None  # a module definition on its own: its uses are checked in the scenario
     file = context.document.path if context.document is not None else None
-    reference = map_reference(root.map, file)
-    # A model built in Python has no folder for a relative path to start from: it is checked
-    # against the map only when the path happens to resolve from the working directory.
-    unanchored = file is None and reference is not None and reference.path is not None
-    if unanchored and not Path(root.map).is_absolute() and not reference.path.is_file():  # type: ignore[union-attr]
+    # A model built in Python has no folder for a relative path to start from, and the working
+    # directory is an accident: it is checked against an absolute map path only.
+    text = (root.map or "").strip()
+    if file is None and text and not is_town_name(text) and not Path(text).is_absolute():
         return None
-    return reference
+    return map_reference(root.map, file)
 
 
 def _loaded(reference: MapReference, context: Context) -> RoadMap | MapError:
