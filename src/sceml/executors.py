@@ -236,8 +236,10 @@ def _local_cluster(distributed: Any, workers: int) -> Any:
     in_main = threading.current_thread() is threading.main_thread()
     previous = signal.signal(signal.SIGINT, signal.SIG_IGN) if in_main else None
     try:
+        # The scheduler's HTTP server (dashboard, metrics) on a free port: the default 8787 may be
+        # taken by another cluster, which distributed only warns about.
         return distributed.LocalCluster(
-            n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None
+            n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=":0"
         )
     finally:
         if in_main:
