@@ -3,7 +3,10 @@
 Two scenarios are equal when they have the same actors (kind, ego, start, initial speed, box,
 model) and, node by node, the same kind, actors and values, waiting for the same predecessors.
 Values are compared as a concrete scenario uses them (its own value, else the language default),
-rounded to the microunit the export writes. What an export cannot carry is left out on purpose,
+rounded to the microunit the export writes; a range or distribution (a logical import) is
+compared as the distribution it samples (`sceml.levels.space.dimension`): its levels with their
+relative weights, or its kind and parameters, so that a Range with a step and the equally
+weighted set a stochastic ParameterValueDistribution writes for it are equal. What an export cannot carry is left out on purpose,
 each for a stated reason below; node names are left out (the export makes them safe for
 OpenSCENARIO, so `a.b` comes back as `a_b`).
 """
@@ -20,6 +23,7 @@ from pyecore.ecore import EAttribute, EObject, EReference
 import scemlmodel as scm
 from sceml import catalog, graph, params
 from sceml.export.names import sanitize
+from sceml.levels.space import dimension
 
 #: Not behaviour: where the file is (map), what the header says (date, description, author),
 #: how the editor draws it (diagramPosition), the name.
@@ -36,7 +40,30 @@ SKIPPED = {
 
 
 def _number(owner: EObject, feature: str) -> str:
+    held = owner.eGet(feature)
+    if isinstance(held, scm.ParameterValue) and not isinstance(held, scm.Value):
+        return _spread(held)
     return f"{params.concrete(owner, feature):.6f}"
+
+
+def _spread(held: scm.ParameterValue) -> str:
+    """A range or distribution as what it samples."""
+    dim = dimension(feature_path(held), held)
+    if dim.is_set:
+        total = sum(dim.weights)
+        levels = ",".join(
+            f"{v:.6f}:{w / total:.6f}" for v, w in zip(dim.levels, dim.weights, strict=True)
+        )
+        return f"set({levels})"
+    if dim.kind == "uniform":
+        return f"uniform({dim.low:.6f},{dim.high:.6f})"
+    return f"normal({dim.mean:.6f},{dim.sd:.6f},{dim.low:.6f},{dim.high:.6f})"
+
+
+def feature_path(held: EObject) -> str:
+    """Where a value is, for messages."""
+    owner, feature = held.eContainer(), held.eContainmentFeature()
+    return f"{getattr(owner, 'name', owner.eClass.name)}.{getattr(feature, 'name', '?')}"
 
 
 def _position(position: EObject | None, heading: bool = True) -> str:

@@ -1,4 +1,5 @@
-"""`sceml import FILE.xosc -o FILE.xmi`: recover a SceML graph from an OpenSCENARIO file."""
+"""`sceml import FILE.xosc -o FILE.xmi [--distribution PVD.xosc]`: recover a SceML graph from an
+OpenSCENARIO file (logical where a ParameterValueDistribution varies it)."""
 
 from __future__ import annotations
 
@@ -30,24 +31,44 @@ from .common import SceMLCommand, echo_diagnostics
     help="OpenDRIVE file to use instead of the file's LogicFile (for the map and turn geometry).",
 )
 @click.option(
+    "--distribution",
+    type=click.Path(exists=True, dir_okay=False, path_type=Path),
+    metavar="PVD.xosc",
+    help="A ParameterValueDistribution (1.1+): the parameters it varies become ranges and "
+    "distributions, and the scenario logical.",
+)
+@click.option(
     "--report", "show_report", is_flag=True, help="Print what was mapped, kept opaque and guessed."
 )
-def import_command(file: Path, output: Path, map_path: Path | None, show_report: bool) -> None:
-    """Import the OpenSCENARIO 1.0-1.3 FILE as a concrete SceML scenario OUT.
+def import_command(
+    file: Path,
+    output: Path,
+    map_path: Path | None,
+    distribution: Path | None,
+    show_report: bool,
+) -> None:
+    """Import the OpenSCENARIO 1.0-1.3 FILE as a SceML scenario OUT.
+
+    The scenario is concrete, or logical with a ParameterValueDistribution: given with
+    --distribution, or as FILE itself (then the scenario its ScenarioFile names is read).
+    Each place a distributed `$parameter` fills becomes its range or distribution; what SceML
+    cannot represent keeps the declared value and is reported.
 
     Entities become actors, Init their start and speed, events maneuver nodes, start triggers
     flows, conditions and joins, the StopTrigger the end node. What has no SceML kind is kept as
     an opaque node with its XML and line (docs/import.md). The scenario is validated after it
     is written: exit 1 when it has errors, 2 when FILE cannot be used.
     """
-    imported = import_to_file(file, output, map_path=map_path)
+    imported = import_to_file(file, output, map_path=map_path, distribution=distribution)
     if show_report:
         click.echo(imported.report.text(), nl=False)
     counts = imported.report.counts()
     nodes = len(imported.scenario.nodes)
+    logical = f"; {len(imported.report.logical)} places logical" if imported.report.logical else ""
     click.echo(
-        f"{output}: {nodes} nodes from {file} (OpenSCENARIO {imported.report.version}); "
-        f"{counts['opaque']} kept opaque, {counts['guessed']} guessed"
+        f"{output}: {nodes} nodes from {imported.report.file} (OpenSCENARIO "
+        f"{imported.report.version}); {counts['opaque']} kept opaque, {counts['guessed']} "
+        f"guessed{logical}"
     )
     document = load_scenario(output)
     diagnostics = validate(document.root, document=document)

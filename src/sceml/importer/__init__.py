@@ -1,15 +1,19 @@
 """OpenSCENARIO 1.0-1.3 to SceML (SPEC §13): `sceml import` and its Python API.
 
-- `import_file(path, *, map_path=None)` returns `Imported(scenario, report)`: a concrete
-  scenario in memory and the `ImportReport` of what was mapped, kept opaque, guessed or not
-  represented;
-- `import_to_file(path, output, *, map_path=None)` also saves it (atomically, `sceml.io.save`).
+- `import_file(path, *, map_path=None, distribution=None)` returns `Imported(scenario, report)`:
+  a concrete scenario in memory and the `ImportReport` of what was mapped, kept opaque, guessed
+  or not represented; with a ParameterValueDistribution (`distribution`, or `path` itself being
+  one, which names its scenario) the scenario is logical where the distribution varies it;
+- `import_to_file(path, output, *, map_path=None, distribution=None)` also saves it
+  (atomically, `sceml.io.save`).
 
 Input that cannot be used (malformed XML, another version, an XSD violation, a missing catalog,
 a dangling reference, a circular trigger) raises `XoscImportError` with file and line, before
 anything is written. The stages: `reading` (parse, version, XSD), `catalogs`, `parameters`,
 `entities`, `init`, `storyboard` (events, `triggers`, `conditions`, `actions`, `markers`),
-`ending` (StopTrigger), `report`. docs/import.md says what maps to what.
+`ending` (StopTrigger), `report`; with a distribution `distribution` (reading it), `traced`
+(following its parameters into values) and `logical` (placing it). docs/import.md says what maps
+to what.
 """
 
 from __future__ import annotations
@@ -24,13 +28,15 @@ from .. import io
 from ..build import ScenarioBuilder
 from . import catalogs, markers, parameters
 from .context import Build
+from .distribution import Distribution, read_distribution
 from .ending import read_stop
 from .entities import read_entities
 from .errors import XoscImportError
 from .init import read_init
+from .logical import apply_distribution
 from .markers import marker_name
 from .overlaps import separate
-from .reading import Source, read
+from .reading import Source, is_distribution, load, read, scenario_source
 from .report import ImportReport
 from .storyboard import Storyboard
 
@@ -45,16 +51,30 @@ class Imported:
     report: ImportReport
 
 
-def import_file(path: str | Path, *, map_path: str | Path | None = None) -> Imported:
-    """Read an OpenSCENARIO file into a concrete SceML scenario (nothing is written).
+def import_file(
+    path: str | Path,
+    *,
+    map_path: str | Path | None = None,
+    distribution: str | Path | None = None,
+) -> Imported:
+    """Read an OpenSCENARIO file into a SceML scenario (nothing is written).
 
-    `map_path` names the OpenDRIVE file to use instead of the file's LogicFile.
+    `map_path` names the OpenDRIVE file to use instead of the file's LogicFile. `distribution`
+    names a ParameterValueDistribution whose parameters make the scenario logical; when `path`
+    is itself one, the scenario its ScenarioFile names is imported with it.
     """
-    source = read(path)
+    source, varied = _sources(Path(path), None if distribution is None else Path(distribution))
     report = ImportReport(str(source.path), source.version)
     report.catalog_entries = catalogs.resolve(source)
-    report.parameters = {k: v for k, v in parameters.resolve(source).items() if k != markers.MARKER}
+    resolved = parameters.resolve(source, () if varied is None else varied.specs)
+    report.parameters = {k: v for k, v in resolved.top.items() if k != markers.MARKER}
     build = _start(source, report, map_path)
+    if varied is not None and varied.scenario.resolve() != source.path.resolve():
+        report.add(
+            "guessed",
+            f"the distribution names {varied.scenario}; applied to {source.path} as asked",
+            varied.where(varied.scenario_line),
+        )
     _variables(build)
     read_entities(build)
     read_init(build)
@@ -63,16 +83,54 @@ def import_file(path: str | Path, *, map_path: str | Path | None = None) -> Impo
     storyboard.run()
     separate(build)
     read_stop(build, storyboard)
+    if varied is not None:
+        apply_distribution(build, varied, resolved.uses)
     return Imported(build.scenario, report)
 
 
 def import_to_file(
-    path: str | Path, output: str | Path, *, map_path: str | Path | None = None
+    path: str | Path,
+    output: str | Path,
+    *,
+    map_path: str | Path | None = None,
+    distribution: str | Path | None = None,
 ) -> Imported:
     """Import `path` and save the scenario as `output` (atomically; map path relative to it)."""
-    imported = import_file(path, map_path=map_path)
-    io.save(imported.scenario, output, origin=Path(path))
+    imported = import_file(path, map_path=map_path, distribution=distribution)
+    io.save(imported.scenario, output, origin=Path(imported.report.file))
     return imported
+
+
+def _sources(path: Path, distribution: Path | None) -> tuple[Source, Distribution | None]:
+    """The scenario to import and the distribution to apply (either file may be the PVD)."""
+    tree, version = load(path)
+    if not is_distribution(tree):
+        source = scenario_source(path, tree, version)
+        if distribution is None:
+            return source, None
+        pvd_tree, pvd_version = load(distribution)
+        if not is_distribution(pvd_tree):
+            raise XoscImportError(
+                "the file given as the distribution is no ParameterValueDistribution",
+                file=distribution,
+                line=pvd_tree.getroot().sourceline,
+            )
+        return source, read_distribution(distribution, pvd_tree, pvd_version)
+    if distribution is not None:
+        raise XoscImportError(
+            "the file is itself a ParameterValueDistribution; give the scenario, or drop "
+            "the distribution option",
+            file=path,
+            line=tree.getroot().sourceline,
+        )
+    varied = read_distribution(path, tree, version)
+    if not varied.scenario.is_file():
+        raise XoscImportError(
+            f"the ScenarioFile {varied.scenario.name!r} does not exist ({varied.scenario})",
+            file=path,
+            line=varied.scenario_line,
+        )
+    return read(varied.scenario), varied
 
 
 def _start(source: Source, report: ImportReport, map_path: str | Path | None) -> Build:

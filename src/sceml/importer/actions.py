@@ -15,6 +15,7 @@ from lxml import etree
 import scemlmodel as scm
 
 from .. import catalog
+from . import traced
 from .context import Build, last_name
 from .geometry import classify
 from .opaque import summary
@@ -70,7 +71,7 @@ def _add(build: Build, request: Request, kind: str, **values: object) -> scm.Act
     for key, value in values.items():
         if value is None:
             continue
-        node.eSet(key, scm.Value(value=float(value)) if key in numeric else value)  # type: ignore[arg-type]
+        node.eSet(key, traced.value(value) if key in numeric else value)  # type: ignore[arg-type]
     build.add(node, request.name)
     build.report.add(
         "mapped",
@@ -123,8 +124,10 @@ def _rate(
     if dynamics is None:
         return None
     shape, dimension = dynamics.get("dynamicsShape"), dynamics.get("dynamicsDimension")
-    # Some files write a deceleration as a negative rate; the rate is a magnitude.
-    value = abs(number(dynamics, "value", 0.0))
+    # Some files write a deceleration as a negative rate; the rate is a magnitude (a positive
+    # one is kept as read, so that a distributed rate is still recognised).
+    value = number(dynamics, "value", 0.0)
+    value = value if value >= 0 else -value
     if shape != "linear" and shape != "step":
         _guess(build, request, f"a {shape} speed change read as linear")
     if shape == "step" or value <= 0:

@@ -14,6 +14,7 @@ from lxml import etree
 
 import scemlmodel as scm
 
+from . import traced
 from .context import Build
 from .opaque import opaque_node
 from .positions import number, position
@@ -118,7 +119,7 @@ def _node(
     node: scm.ActionNode = getattr(scm, kind)()
     node.referenceActor = actor
     for key, value in values.items():
-        node.eSet(key, scm.Value(value=float(value)))
+        node.eSet(key, traced.value(value))
     build.add(node, wanted)
     return node
 

@@ -14,6 +14,7 @@ from ..build import GraphBuilder
 from ..safexml import hardened_parser
 from .reading import ORIGIN, Source
 from .report import ImportReport
+from .traced import TRACE
 
 if TYPE_CHECKING:
     from ..maps import RoadMap
@@ -90,7 +91,7 @@ def _last(reference: str) -> str:
 def kept_xml(element: etree._Element) -> str:
     """An element as the text an OpaqueAction keeps: resolved values, no import bookkeeping."""
     copy = etree.fromstring(etree.tostring(element, with_tail=False), hardened_parser())
-    etree.strip_attributes(copy, ORIGIN)
+    etree.strip_attributes(copy, ORIGIN, TRACE)
     for child in copy.iter():
         if child.tail is not None:
             child.tail = None

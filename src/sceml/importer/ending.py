@@ -11,7 +11,9 @@ from lxml import etree
 
 import scemlmodel as scm
 
+from . import traced
 from .context import Build
+from .positions import number
 from .storyboard import Storyboard
 from .triggers import Group, Trigger
 
@@ -28,7 +30,7 @@ def read_stop(build: Build, storyboard: Storyboard) -> None:
         else:
             groups.append(trigger.read(element))
     if limits:
-        build.root.maxDuration = scm.Value(value=min(limits))
+        build.root.maxDuration = traced.value(min(limits))
         build.report.add(
             "mapped", f"StopTrigger: maximum duration {min(limits):g} s", build.where(stop)
         )
@@ -68,7 +70,7 @@ def _time_limit(group: etree._Element) -> float | None:
         or clocks[0].get("rule") not in ("greaterThan", "greaterOrEqual")
     ):
         return None
-    value = float(str(clocks[0].get("value")))
+    value = number(clocks[0], "value")
     return value if value > 0 and float(conditions[0].get("delay", "0")) == 0 else None
 
 

@@ -9,7 +9,9 @@ from lxml import etree
 import scemlmodel as scm
 
 from .. import catalog
+from . import traced
 from .context import Build
+from .positions import number
 
 #: OpenSCENARIO vehicleCategory -> SceML actor kind (and whether that is a guess).
 VEHICLE_KINDS = {
@@ -109,9 +111,9 @@ def _dimensions(actor: scm.Actor, body: etree._Element) -> None:
         text = box.get(feature)
         if text is None:
             continue
-        value = float(text)
+        value = number(box, feature)
         if value > 0 and abs(value - defaults.get(feature, -1.0)) > 1e-9:
-            actor.eSet(feature, scm.Value(value=value))
+            actor.eSet(feature, traced.value(value))
 
 
 def _is_marked_ego(body: etree._Element) -> bool:

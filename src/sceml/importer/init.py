@@ -9,6 +9,7 @@ from lxml import etree
 
 import scemlmodel as scm
 
+from . import traced
 from .context import Build
 from .opaque import opaque_node
 from .positions import number, position
@@ -74,7 +75,7 @@ def _private(build: Build, actor: scm.Actor, private: etree._Element) -> bool:
     target = None if speed is None else speed.find("SpeedActionTarget/AbsoluteTargetSpeed")
     if speed is None or target is None:
         return False
-    actor.initialSpeed = scm.Value(value=number(target, "value"))
+    actor.initialSpeed = traced.value(number(target, "value"))
     build.report.add("mapped", f"{actor.name}: initial speed", build.where(speed))
     dynamics = speed.find("SpeedActionDynamics")
     if dynamics is not None and dynamics.get("dynamicsShape") != "step":
@@ -99,16 +100,18 @@ def _environment(build: Build, element: etree._Element | None) -> None:
         environment.cloudState = scm.CloudState.getEEnumLiteral(_cloud(weather))
         fog = weather.find("Fog")
         if fog is not None and fog.get("visualRange") is not None:
-            environment.fogVisualRange = scm.Value(value=number(fog, "visualRange"))
+            environment.fogVisualRange = traced.value(number(fog, "visualRange"))
         rain = weather.find("Precipitation")
         if rain is not None:
             kind = rain.get("precipitationType", "dry")
             environment.precipitation = scm.PrecipitationType.getEEnumLiteral(
                 kind if kind in ("dry", "rain", "snow") else "dry"
             )
-            amount = rain.get("precipitationIntensity", rain.get("intensity"))
-            if amount is not None:
-                environment.precipitationIntensity = scm.Value(value=float(amount))
+            key = (
+                "precipitationIntensity" if "precipitationIntensity" in rain.attrib else "intensity"
+            )
+            if rain.get(key) is not None:
+                environment.precipitationIntensity = traced.value(number(rain, key))
     build.root.environment = environment
     build.report.add("mapped", "environment -> root", build.where(element))
 

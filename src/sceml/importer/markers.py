@@ -127,7 +127,7 @@ def overtake(
 
 def keep_velocity(build: Build, request: Request, kept: etree._Element) -> scm.ActionNode | None:
     """A KeepVelocity from its speed-holding event and its delayed `__kept` marker."""
-    delays = {c.get("delay") for c in kept.iterfind("StartTrigger/ConditionGroup/Condition")}
-    if len(delays) != 1:
+    conditions = list(kept.iterfind("StartTrigger/ConditionGroup/Condition"))
+    if len({c.get("delay") for c in conditions}) != 1:
         return None
-    return _add(build, request, "KeepVelocity", duration=float(str(delays.pop())))
+    return _add(build, request, "KeepVelocity", duration=number(conditions[0], "delay"))

@@ -3,47 +3,140 @@
 A ParameterDeclarations element declares for its parent and everything below it; a declaration
 may use the ones declared before it. Every attribute that starts with `$` is replaced by its
 value, so later stages only see literals (the import report lists the parameters used).
+
+When a distribution varies some top-level parameters (`traced`), each attribute that is exactly
+`$name` of one of them is marked (`traced.mark`) and recorded as a `Use`, so that the values it
+becomes can be found in the model; a declaration whose value is exactly `$name` (a catalog
+entry's assigned parameter, an inner alias) passes the distribution on to its own name, and an
+inner declaration of the same name hides it. A use inside `${...}` is recorded as an expression:
+SceML cannot carry a distribution through arithmetic.
 """
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+import re
+from collections.abc import Collection, Mapping
+from dataclasses import dataclass, field
 
 from lxml import etree
 
+from . import traced as tracing
 from .expressions import ExpressionError, evaluate, text_of
 from .reading import Source
 
+_REFERENCE = re.compile(r"\$([A-Za-z_][A-Za-z0-9_]*)")
 
-def resolve(source: Source) -> dict[str, str]:
-    """Replace every parameter reference in the tree; returns the top-level declarations."""
-    top: dict[str, str] = {}
-    _resolve(source, source.root, {}, top)
-    return top
+
+@dataclass(frozen=True)
+class Use:
+    """One place the file uses a distributed parameter."""
+
+    parameter: str
+    element: str
+    attribute: str
+    file: str
+    line: int | None
+    #: Inside a `${...}` expression (the value is computed, so it keeps its declared value).
+    expression: bool = False
+
+    def place(self) -> tuple[str, int | None, str]:
+        """(parameter, line, attribute), as `traced.Traced.place` gives it."""
+        return self.parameter, self.line, self.attribute
+
+
+@dataclass
+class Resolved:
+    """The top-level declarations and the uses of the traced parameters."""
+
+    top: dict[str, str] = field(default_factory=dict)
+    uses: list[Use] = field(default_factory=list)
+
+
+@dataclass(frozen=True)
+class _Scope:
+    values: Mapping[str, str]
+    #: Name -> the traced top-level parameter it stands for.
+    origins: Mapping[str, str]
+
+
+def resolve(source: Source, traced: Collection[str] = ()) -> Resolved:
+    """Replace every parameter reference in the tree; `traced` names the distributed ones."""
+    resolved = Resolved()
+    _resolve(source, source.root, _Scope({}, {}), resolved, frozenset(traced))
+    return resolved
 
 
 def _resolve(
-    source: Source, element: etree._Element, scope: Mapping[str, str], top: dict[str, str]
+    source: Source,
+    element: etree._Element,
+    scope: _Scope,
+    resolved: Resolved,
+    traced: frozenset[str],
 ) -> None:
     declarations = element.find("ParameterDeclarations")
     if declarations is not None:
-        inner = dict(scope)
-        for declaration in declarations.iterchildren("ParameterDeclaration"):
-            _substitute(source, declaration, inner)
-            inner[str(declaration.get("name"))] = str(declaration.get("value", ""))
-        if element is source.root:
-            top.update(inner)
-        scope = inner
-    _substitute(source, element, scope)
+        scope = _declare(source, element, declarations, scope, resolved, traced)
+    _substitute(source, element, scope, resolved)
     for child in element:
         if isinstance(child.tag, str) and child is not declarations:
-            _resolve(source, child, scope, top)
+            _resolve(source, child, scope, resolved, traced)
 
 
-def _substitute(source: Source, element: etree._Element, scope: Mapping[str, str]) -> None:
+def _declare(
+    source: Source,
+    element: etree._Element,
+    declarations: etree._Element,
+    scope: _Scope,
+    resolved: Resolved,
+    traced: frozenset[str],
+) -> _Scope:
+    values, origins = dict(scope.values), dict(scope.origins)
+    top = element is source.root
+    for declaration in declarations.iterchildren("ParameterDeclaration"):
+        name, text = str(declaration.get("name")), str(declaration.get("value", ""))
+        alias = _REFERENCE.fullmatch(text)
+        origin = origins.get(alias.group(1)) if alias is not None else None
+        _substitute(source, declaration, _Scope(values, origins), None)
+        values[name] = str(declaration.get("value", ""))
+        origins.pop(name, None)
+        if top and name in traced:
+            origins[name] = name
+        elif origin is not None:
+            origins[name] = origin
+    if top:
+        resolved.top.update(values)
+    return _Scope(values, origins)
+
+
+def _substitute(
+    source: Source, element: etree._Element, scope: _Scope, resolved: Resolved | None
+) -> None:
     for key, value in element.attrib.items():
-        if value.startswith("$"):
-            element.set(key, _value(source, element, key, value, scope))
+        if not value.startswith("$"):
+            continue
+        if resolved is not None:
+            _trace(source, element, str(key), value, scope, resolved)
+        element.set(key, _value(source, element, key, value, scope.values))
+
+
+def _trace(
+    source: Source,
+    element: etree._Element,
+    key: str,
+    text: str,
+    scope: _Scope,
+    resolved: Resolved,
+) -> None:
+    expression = text.startswith("${")
+    names = _REFERENCE.findall(text) if expression else [text[1:]]
+    file, line = source.where(element)
+    for name in names:
+        origin = scope.origins.get(name)
+        if origin is None:
+            continue
+        resolved.uses.append(Use(origin, str(element.tag), key, file, line, expression))
+        if not expression:
+            tracing.mark(element, key, origin)
 
 
 def _value(

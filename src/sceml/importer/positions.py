@@ -6,7 +6,7 @@ from lxml import etree
 
 import scemlmodel as scm
 
-from ..build import lane, world
+from . import traced
 
 
 def position(holder: etree._Element | None) -> scm.Position | None:
@@ -22,33 +22,36 @@ def position(holder: etree._Element | None) -> scm.Position | None:
         return None
     try:
         if kind.tag == "WorldPosition":
-            found = world(_num(kind, "x"), _num(kind, "y"), _num(kind, "z", 0.0), 0.0)
-            if kind.get("h") is None:
-                found.h = None
-            else:
-                found.h = scm.Value(value=_num(kind, "h"))
-            return found
+            return scm.WorldPosition(
+                x=_value(kind, "x"),
+                y=_value(kind, "y"),
+                z=_value(kind, "z", 0.0),
+                h=None if kind.get("h") is None else _value(kind, "h"),
+            )
         if kind.tag == "LanePosition":
-            return lane(
-                str(kind.get("roadId")),
-                int(float(str(kind.get("laneId")))),
-                _num(kind, "s"),
-                _num(kind, "offset", 0.0),
+            return scm.LanePosition(
+                roadId=str(kind.get("roadId")),
+                laneId=int(float(str(kind.get("laneId")))),
+                s=_value(kind, "s"),
+                offset=_value(kind, "offset", 0.0),
             )
     except ValueError:
         return None
     return None
 
 
-def _num(element: etree._Element, key: str, default: float | None = None) -> float:
+def _value(element: etree._Element, key: str, default: float | None = None) -> scm.Value:
+    return traced.value(number(element, key, default))
+
+
+def number(element: etree._Element, key: str, default: float | None = None) -> float:
+    """A numeric attribute (already resolved); ValueError when missing without a default.
+
+    A number that was a distributed `$parameter` comes back Traced (`traced.py`).
+    """
     text = element.get(key)
     if text is None:
         if default is None:
             raise ValueError(key)
         return default
-    return float(text)
-
-
-def number(element: etree._Element, key: str, default: float | None = None) -> float:
-    """A numeric attribute (already resolved); ValueError when missing without a default."""
-    return _num(element, key, default)
+    return traced.read(element, key, float(text))

@@ -51,6 +51,11 @@ class Source:
 def read(path: str | Path) -> Source:
     """Parse and check an OpenSCENARIO 1.0-1.3 file; XoscImportError says why it cannot be used."""
     path = Path(path)
+    return scenario_source(path, *load(path))
+
+
+def load(path: Path) -> tuple[etree._ElementTree, str]:
+    """The parsed OpenSCENARIO document and its declared version (not yet checked by the XSD)."""
     try:
         tree = schema.parse_file(path)
     except OSError as error:
@@ -70,6 +75,17 @@ def read(path: str | Path) -> Source:
         raise XoscImportError(
             f"the document is a <{root.tag}>, not <OpenSCENARIO>", file=path, line=root.sourceline
         )
+    return tree, version
+
+
+def is_distribution(tree: etree._ElementTree) -> bool:
+    """Whether a loaded document is a ParameterValueDistribution."""
+    return tree.getroot().find("ParameterValueDistribution") is not None
+
+
+def scenario_source(path: Path, tree: etree._ElementTree, version: str) -> Source:
+    """A loaded document as the scenario to import, once it has a Storyboard and passes the XSD."""
+    root = tree.getroot()
     if root.find("Storyboard") is None:
         raise XoscImportError(
             "the file has no Storyboard: it is a catalog or a parameter distribution, not a "
@@ -77,6 +93,12 @@ def read(path: str | Path) -> Source:
             file=path,
             line=root.sourceline,
         )
+    check(path, tree, version)
+    return Source(path, version, tree)
+
+
+def check(path: Path, tree: etree._ElementTree, version: str) -> None:
+    """XoscImportError with the first XSD violation, if any."""
     issues = schema.validate_tree(tree, version)
     if issues:
         first = issues[0]
@@ -84,4 +106,3 @@ def read(path: str | Path) -> Source:
         raise XoscImportError(
             f"not valid OpenSCENARIO {version}: {first.reason}{more}", file=path, line=first.line
         )
-    return Source(path, version, tree)

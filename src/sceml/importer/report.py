@@ -30,6 +30,10 @@ class ImportReport:
     entries: list[Entry] = field(default_factory=list)
     parameters: dict[str, str] = field(default_factory=dict)
     catalog_entries: list[str] = field(default_factory=list)
+    #: The ParameterValueDistribution read with the file, if any.
+    distribution: str | None = None
+    #: What became logical: parameter path -> `$parameter: distribution`.
+    logical: dict[str, str] = field(default_factory=dict)
 
     def add(
         self,
@@ -61,6 +65,11 @@ class ImportReport:
         if self.parameters:
             used = ", ".join(f"{k}={v}" for k, v in sorted(self.parameters.items()))
             lines.append(f"parameters resolved: {used}")
+        if self.distribution is not None:
+            lines.append(
+                f"distribution {self.distribution}: {len(self.logical)} places logical"
+                + "".join(f"\n  {path} = {what}" for path, what in self.logical.items())
+            )
         if self.catalog_entries:
             lines.append(f"catalog entries used: {', '.join(sorted(set(self.catalog_entries)))}")
         for name in SECTIONS:

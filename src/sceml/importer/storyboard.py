@@ -14,7 +14,7 @@ from lxml import etree
 import scemlmodel as scm
 
 from .. import params
-from . import markers
+from . import markers, traced
 from .actions import Motion, Request, map_action
 from .context import Build, last_name
 from .opaque import opaque_node
@@ -214,7 +214,7 @@ class Storyboard:
         arrival = extras.get("arrived")
         limit = None if arrival is None else markers.tolerance(arrival)
         if limit is not None and made.eClass.findEStructuralFeature("tolerance") is not None:
-            made.tolerance = scm.Value(value=limit)
+            made.tolerance = traced.value(limit)
         return made
 
     def _act_start(self, act: str) -> scm.GraphElement:

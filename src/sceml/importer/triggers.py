@@ -16,8 +16,10 @@ from lxml import etree
 
 import scemlmodel as scm
 
+from . import traced
 from .conditions import condition_after
 from .context import Build
+from .positions import number
 
 #: Finds the node of a StoryboardElementStateCondition (it may import the element first).
 Resolver = Callable[[etree._Element], scm.GraphElement]
@@ -53,13 +55,13 @@ class Trigger:
         """One ConditionGroup: waits and conditions."""
         group = Group()
         for condition in element.iterchildren("Condition"):
-            delay = float(condition.get("delay", "0") or 0)
+            delay = number(condition, "delay", 0.0) if condition.get("delay") else 0.0
             state = condition.find("ByValueCondition/StoryboardElementStateCondition")
             clock = condition.find("ByValueCondition/SimulationTimeCondition")
             if state is not None:
                 group.after.append((self.resolve(state), delay))
             elif clock is not None and clock.get("rule") in ("greaterThan", "greaterOrEqual"):
-                group.after.append((self._clock(float(str(clock.get("value")))), delay))
+                group.after.append((self._clock(number(clock, "value")), delay))
             else:
                 group.conditions.append((condition, delay))
         return group
@@ -80,7 +82,7 @@ class Trigger:
         self, before: scm.GraphElement, seconds: float, wanted: str, kind: str, actor: scm.Actor
     ) -> scm.GraphElement:
         """A TimeElapsed (or KeepVelocity) of `seconds` after `before`."""
-        node: scm.ActionNode = getattr(scm, kind)(duration=scm.Value(value=seconds))
+        node: scm.ActionNode = getattr(scm, kind)(duration=traced.value(seconds))
         node.referenceActor = actor
         self.build.add(node, wanted)
         self.build.flow(before, node)
