@@ -5,17 +5,25 @@ from __future__ import annotations
 import sys
 from contextlib import nullcontext
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import click
 
-from ..io import load_scenario, write_atomically
+from ..executors import Executor, check, open_executor
+from ..io import Document, load_scenario, make_folder, remove_folders, write_atomically
 from ..schema import SUPPORTED_VERSIONS
-from .common import SceMLCommand, allow_option
+from .common import SceMLCommand, allow_option, executor_options
+
+if TYPE_CHECKING:
+    from ..explore import Exploration
 
 _METRICS = ("min-ttc", "min-distance", "collision", "pet")
 
 
-@click.command(cls=SceMLCommand)
+# Runs in this process unless asked otherwise, as before the executors (sample's default is
+# processes): a batch is a tenth of the budget at a few ms per run and starts its workers
+# afresh, so small searches gain little from more (figures in docs/simulate.md).
+@click.command(cls=SceMLCommand, context_settings={"default_map": {"executor": "local"}})
 @click.argument("logical", type=click.Path(exists=True, dir_okay=False, path_type=Path))
 @click.option(
     "--metric",
@@ -54,6 +62,14 @@ _METRICS = ("min-ttc", "min-distance", "collision", "pet")
     help="OpenSCENARIO version of the .xosc files.",
 )
 @click.option("--step", type=click.FloatRange(min=0.001, max=1.0), default=0.05, show_default=True)
+@click.option(
+    "--workers",
+    type=click.IntRange(min=1),
+    default=None,
+    help="Worker processes of the processes executor, or of the dask executor's LocalCluster "
+    "[default: the number of CPUs].",
+)
+@executor_options
 @allow_option
 def explore_command(
     logical: Path,
@@ -64,6 +80,9 @@ def explore_command(
     top: int,
     osc_version: str,
     step: float,
+    workers: int | None,
+    executor: str,
+    scheduler: str | None,
     allow: tuple[Path, ...],
 ) -> None:
     """Search the logical scenario LOGICAL for its most critical concrete scenarios.
@@ -73,29 +92,27 @@ def explore_command(
     is the kinematic preview of `sceml simulate` (docs/simulate.md). Writes DIR/runs.csv (every
     run, its values and metrics), DIR/parameter-space.png, and the --top most critical runs as
     DIR/<name>_critical_NN.xmi and .xosc.
+
+    Each batch of runs (the design, then each refinement) is simulated on --executor; the runs,
+    and so every file written, are the same whichever executor runs them.
     """
-    from ..explore import explore
     from ..explore.outputs import plot_space, runs_csv, write_critical
 
+    check(executor, scheduler)
     document = load_scenario(logical, allow=allow)
-    bar = (
-        click.progressbar(length=budget, label="exploring", file=sys.stderr)
-        if sys.stderr.isatty()
-        else None
-    )
-    with bar if bar is not None else nullcontext():
-        found = explore(
-            document.root,
-            logical,
-            metric=metric,
-            budget=budget,
-            seed=seed,
-            step=step,
-            progress=bar.update if bar is not None else None,
-        )
-    write_atomically(out_dir / "runs.csv", runs_csv(found).encode("utf-8"))
-    plot_space(found, out_dir / "parameter-space.png")
-    critical = write_critical(found, document.root, logical, out_dir, top, osc_version)
+    # Made before the search, so that an output that cannot be written fails now, not after it.
+    created = make_folder(out_dir)
+    try:
+        with open_executor(executor, workers=workers, scheduler=scheduler) as runner:
+            found = _search(
+                document, logical, runner, allow, metric=metric, budget=budget, seed=seed, step=step
+            )
+        write_atomically(out_dir / "runs.csv", runs_csv(found).encode("utf-8"))
+        plot_space(found, out_dir / "parameter-space.png")
+        critical = write_critical(found, document.root, logical, out_dir, top, osc_version)
+    except BaseException:
+        remove_folders(created)  # where nothing was written
+        raise
     ran = [e for e in found.evaluations if e.run is not None]
     collisions = sum(1 for e in ran if e.run is not None and e.run.collided)
     click.echo(
@@ -110,3 +127,36 @@ def explore_command(
         if problem:
             click.echo(f"    no .xosc: {problem}", err=True)
     click.echo(f"wrote {out_dir / 'runs.csv'}, {out_dir / 'parameter-space.png'}")
+
+
+def _search(
+    document: Document,
+    logical: Path,
+    runner: Executor,
+    allow: tuple[Path, ...],
+    *,
+    metric: str,
+    budget: int,
+    seed: int,
+    step: float,
+) -> Exploration:
+    """The search, with a progress bar when a person is watching."""
+    from ..explore import explore
+
+    bar = (
+        click.progressbar(length=budget, label="exploring", file=sys.stderr)
+        if sys.stderr.isatty()
+        else None
+    )
+    with bar if bar is not None else nullcontext():
+        return explore(
+            document.root,
+            logical,
+            metric=metric,
+            budget=budget,
+            seed=seed,
+            step=step,
+            progress=bar.update if bar is not None else None,
+            executor=runner,
+            allow=allow,
+        )

@@ -11,8 +11,10 @@ flattened concrete template (`levels.apply.FlatTemplate`, no copy per run) and s
    batch from it, clipped to the cube. Its spread never falls below `MIN_SPREAD`, so the search
    keeps looking around the critical region instead of collapsing on one point.
 
-Everything random comes from one `numpy.random.default_rng(seed)`: the same seed, budget and
-scenario give the same runs in the same order.
+Everything random comes from one `numpy.random.default_rng(seed)` in the caller: the same seed,
+budget and scenario give the same runs in the same order. Each batch (the design, then each
+refinement) is simulated on an executor (`sceml.executors`, see `workers`); results are put
+back in candidate order, so the executor changes how fast, never what.
 """
 
 from __future__ import annotations
@@ -27,10 +29,12 @@ from numpy.typing import NDArray
 import scemlmodel as scm
 
 from ..errors import SceMLError
+from ..executors import Executor, LocalExecutor
 from ..levels.apply import FlatTemplate
 from ..levels.space import ParameterSpace, parameter_space
-from ..simulate import Run, simulate
+from ..simulate import Run
 from .objective import METRICS
+from .workers import Result, make_search_payload, run_candidates
 
 ELITE_SHARE = 0.2
 MIN_SPREAD = 0.03
@@ -79,8 +83,15 @@ def explore(
     seed: int = 0,
     step: float = 0.05,
     progress: Callable[[int], None] | None = None,
+    executor: Executor | None = None,
+    allow: tuple[Path, ...] = (),
 ) -> Exploration:
-    """Search the logical scenario's parameter space for its most critical concrete runs."""
+    """Search the logical scenario's parameter space for its most critical concrete runs.
+
+    `logical` is what `logical_file` holds: workers simulate the file's bytes (and those of its
+    libraries, reachable with `allow` as for io.load_scenario, and its map). The runs happen on
+    `executor`, by default in this process.
+    """
     if metric not in METRICS:
         raise ExploreError(f"unknown metric {metric!r}; use one of {', '.join(METRICS)}")
     if budget < 2:
@@ -88,23 +99,22 @@ def explore(
     space = parameter_space(logical)
     if not space.dimensions:
         raise ExploreError("the scenario varies no parameter: simulate it instead")
-    template = FlatTemplate(logical, space.paths)
+    # Workers build their own; this one refuses a scenario that cannot be flattened before any
+    # worker starts, as every executor would then fail alike.
+    FlatTemplate(logical, space.paths)
+    payload = make_search_payload(logical, logical_file, space.paths, step=step, allow=allow)
+    runner = executor if executor is not None else LocalExecutor()
     rng = np.random.default_rng(seed)
     score = METRICS[metric]
     evaluations: list[Evaluation] = []
     cubes: list[NDArray[np.float64]] = []  # where each run lies in the unit cube
 
     def evaluate(cube: NDArray[np.float64], phase: str) -> None:
-        for u in cube:
+        values = [_values(space, u) for u in cube]
+        results = run_candidates(runner, payload, values, progress)
+        for u, row, result in zip(cube, values, results, strict=True):
             cubes.append(u)
-            values = tuple(
-                float(d.values(np.array([x]))[0]) for d, x in zip(space.dimensions, u, strict=True)
-            )
-            evaluations.append(
-                _run(template, logical_file, len(evaluations), phase, values, score, step)
-            )
-            if progress is not None:
-                progress(1)
+            evaluations.append(_evaluation(len(evaluations), phase, row, result, score))
 
     from scipy.stats import qmc  # slow to import: only a search needs it
 
@@ -117,20 +127,23 @@ def explore(
     return Exploration(space, metric, seed, tuple(evaluations))
 
 
-def _run(
-    template: FlatTemplate,
-    logical_file: str | Path,
+def _values(space: ParameterSpace, u: NDArray[np.float64]) -> tuple[float, ...]:
+    """The parameter values at a point of the unit cube."""
+    return tuple(
+        float(d.values(np.array([x]))[0]) for d, x in zip(space.dimensions, u, strict=True)
+    )
+
+
+def _evaluation(
     index: int,
     phase: str,
     values: tuple[float, ...],
+    result: Result,
     score: Callable[[Run], float],
-    step: float,
 ) -> Evaluation:
-    try:
-        run = simulate(template.fill(values), logical_file, step=step)
-    except SceMLError as error:
-        return Evaluation(index, phase, values, float("inf"), None, error.message)
-    return Evaluation(index, phase, values, score(run), run)
+    if isinstance(result, str):
+        return Evaluation(index, phase, values, float("inf"), None, result)
+    return Evaluation(index, phase, values, score(result), result)
 
 
 def _refined(
