@@ -10,6 +10,7 @@ import re
 import tempfile
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
+from functools import lru_cache
 from pathlib import Path
 from typing import Any
 
@@ -249,9 +250,17 @@ def _check_types(root: etree._Element, path: Path) -> None:
     """Refuse an xsi:type that names no concrete SceML class, in the file's own terms."""
     for element in root.iter(etree.Element):
         value = element.get(_XSI_TYPE)
-        problem = None if value is None else _type_problem(value, element.nsmap)
+        if value is None:
+            continue
+        # A file names a handful of types under one set of prefixes: judge each pair once.
+        problem = _type_problem_of(value, tuple(sorted(element.nsmap.items(), key=str)))
         if problem is not None:
             raise LoadError(problem, file=path, line=element.sourceline)
+
+
+@lru_cache(maxsize=1024)
+def _type_problem_of(value: str, namespaces: tuple[tuple[str | None, str], ...]) -> str | None:
+    return _type_problem(value, dict(namespaces))
 
 
 def _type_problem(value: str, namespaces: dict[str | None, str]) -> str | None:
