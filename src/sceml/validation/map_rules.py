@@ -52,9 +52,17 @@ def _reference(obj: EObject, context: Context) -> MapReference | None:
     top: EObject | None = obj
     while top is not None and not isinstance(top, scm.Scenario):
         top = top.eContainer()
-    root = root_node(top) if isinstance(top, scm.Scenario) else None
-    if root is None:
+    if not isinstance(top, scm.Scenario):
         return None  # a module definition on its own: its uses are checked in the scenario
+    # Once per scenario: finding the root node walks every node, and every position asks.
+    scenario = top
+    return context.memo(("map reference", scenario), lambda: _scenario_reference(scenario, context))
+
+
+def _scenario_reference(scenario: scm.Scenario, context: Context) -> MapReference | None:
+    root = root_node(scenario)
+    if root is None:
+        return None  # no root node, so no map (SCEML-S001 says so)
     file = context.document.path if context.document is not None else None
     # A model built in Python has no folder for a relative path to start from, and the working
     # directory is an accident: it is checked against an absolute map path only.
