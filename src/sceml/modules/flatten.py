@@ -311,14 +311,20 @@ def _with_contents(nodes: list[EObject]) -> list[EObject]:
 def _check_self_contained(flat: scm.Scenario) -> None:
     # Anything still pointing into a library (a role of another module, say) would make the
     # flattened file depend on the library it is meant to replace.
+    inside: dict[EObject, bool] = {}  # by target: thousands of nodes name the same few actors
     for obj in all_contents(flat):
         for feature in cross_references(obj.eClass):
             if feature.many:
                 continue
             target = obj.eGet(feature)
-            if target is not None and _root_of(unwrap(target)) is not flat:
+            if target is None:
+                continue
+            target = unwrap(target)
+            if target not in inside:
+                inside[target] = _root_of(target) is flat
+            if not inside[target]:
                 raise FlattenError(
-                    f"{feature.name} still refers to {model_path(unwrap(target))} outside the "
+                    f"{feature.name} still refers to {model_path(target)} outside the "
                     "scenario after expansion",
                     element=model_path(obj),
                 )
