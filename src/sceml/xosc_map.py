@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Final
 from lxml import etree
 
 from .diagnostics import Diagnostic, Severity
-from .maps import MapError, PositionError
+from .maps import MapError
 from .maps.reference import is_town_name
 
 if TYPE_CHECKING:
@@ -106,16 +106,8 @@ def _problem(element: etree._Element, values: dict[str, str], road_map: RoadMap)
         road, lane = element.get("roadId"), element.get("laneId")
         if s is None or road is None or lane is None or not lane.lstrip("-").isdigit():
             return None
-        try:
-            band = road_map.band(road, int(lane), s)
-        except PositionError as error:
-            return f"lane position: {error}"
-        if abs(offset) > band.width / 2 + 1e-6:
-            return (
-                f"lane position: offset {offset:g} m leaves lane {lane} of road {road}, "
-                f"which is {band.width:g} m wide at s={s:g}"
-            )
-        return None
+        problem = road_map.lane_problem(road, int(lane), s, offset)
+        return None if problem is None else f"lane position: {problem}"
     x, y = _number(element, "x", values), _number(element, "y", values)
     if x is None or y is None or road_map.world_to_lane(x, y, TOLERANCE):
         return None

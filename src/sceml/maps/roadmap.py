@@ -93,6 +93,20 @@ class RoadMap:
         lanes = ", ".join(str(b.lane.id) for b in self.bands(road, s))
         raise PositionError(f"road {road.id!r} has no lane {lane_id} at s={s:g} (lanes: {lanes})")
 
+    def lane_problem(self, road_id: str, lane_id: int, s: float, offset: float) -> str | None:
+        """What is wrong with a lane position (unknown road or lane, s off the road, offset
+        outside the lane), in words; None when it lies on the lane."""
+        try:
+            band = self.band(road_id, lane_id, s)
+        except PositionError as error:
+            return str(error)
+        if abs(offset) > band.width / 2 + 1e-6:
+            return (
+                f"offset {offset:g} m leaves lane {lane_id} of road {road_id}, "
+                f"which is {band.width:g} m wide at s={s:g}"
+            )
+        return None
+
     def drives_along_s(self, road: Road, lane_id: int) -> bool:
         """Whether traffic on the lane runs in the direction of increasing s."""
         right_hand = road.rule.upper() != "LHT"

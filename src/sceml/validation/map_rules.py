@@ -196,20 +196,10 @@ def lane_position_exists(position: scm.LanePosition, context: Context) -> Iterat
         return
     what = _what(position)
     for s in spread(position.s) or []:
-        try:
-            band = road_map.band(str(position.roadId), int(position.laneId), s)
-        except PositionError as error:
-            yield position, f"{what}: {error}"
-            return
         for offset in spread(position.offset, 0.0) or []:
-            if abs(offset) > band.width / 2 + 1e-6:
-                yield (
-                    position,
-                    (
-                        f"{what}: offset {offset:g} m leaves lane {position.laneId} of road "
-                        f"{position.roadId}, which is {band.width:g} m wide at s={s:g}"
-                    ),
-                )
+            problem = road_map.lane_problem(str(position.roadId), int(position.laneId), s, offset)
+            if problem is not None:
+                yield position, f"{what}: {problem}"
                 return
 
 
