@@ -26,6 +26,17 @@ def is_kind(class_name: str, kind: str) -> bool:
     return catalog.is_kind_of(class_name, kind)
 
 
+def performer(owner: EObject) -> scm.Actor | None:
+    """The actor whose values `owner` holds: itself, or the node's reference actor.
+
+    Inside a module definition the performer is a role; the flattened scenario binds it.
+    """
+    if isinstance(owner, scm.Actor):
+        return owner
+    actor = getattr(owner, "referenceActor", None)
+    return actor if isinstance(actor, scm.Actor) else None
+
+
 @dataclass
 class FlatView:
     """A scenario with its module uses expanded, and where each expanded node came from.

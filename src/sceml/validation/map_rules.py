@@ -31,7 +31,7 @@ from ..maps import (
 from ..maps.positions import Located, centre, locate, spread
 from ..maps.reference import MapReference, is_town_name, map_reference
 from ..maps.routes import routes_from
-from .context import Context, is_kind
+from .context import Context, is_kind, performer
 from .registry import Finding, constraint
 
 if TYPE_CHECKING:
@@ -91,14 +91,6 @@ def _map_of(obj: EObject, context: Context) -> RoadMap | None:
         return None
     loaded = _loaded(reference, context)
     return None if isinstance(loaded, MapError) else loaded
-
-
-def _actor_of(position: EObject) -> scm.Actor | None:
-    owner = position.eContainer()
-    if isinstance(owner, scm.Actor):
-        return owner
-    actor = getattr(owner, "referenceActor", None)
-    return actor if isinstance(actor, scm.Actor) else None
 
 
 def _what(position: EObject) -> str:
@@ -214,7 +206,7 @@ def lane_position_exists(position: scm.LanePosition, context: Context) -> Iterat
 )
 def position_fits_actor(position: EObject, context: Context) -> Iterator[Finding]:
     road_map = _map_of(position, context)
-    actor = _actor_of(position)
+    actor = performer(position.eContainer())
     if road_map is None or actor is None:
         return
     usable, needs = _usable_lanes(actor)
@@ -274,7 +266,7 @@ def _nearest(road_map: RoadMap, point: Located) -> str:
 )
 def heading_follows_lane(position: scm.WorldPosition, context: Context) -> Iterator[Finding]:
     road_map = _map_of(position, context)
-    actor = _actor_of(position)
+    actor = performer(position.eContainer())
     if road_map is None or actor is None or not _is_vehicle(actor):
         return
     if position.h is None and not isinstance(position.eContainer(), scm.Actor):

@@ -17,7 +17,7 @@ import scemlmodel as scm
 from .. import catalog
 from ..diagnostics import Severity
 from ..params import describe
-from .context import Context
+from .context import Context, performer
 from .parameters import parameter_path
 from .registry import Finding, constraint
 
@@ -42,16 +42,8 @@ def highest(value: EObject | None) -> float | None:
     return bound
 
 
-def _actor_of(owner: EObject) -> scm.Actor | None:
-    if isinstance(owner, scm.Actor):
-        return owner
-    actor = getattr(owner, "referenceActor", None)
-    # Inside a module definition the performer is a role; the flattened scenario binds it.
-    return actor if isinstance(actor, scm.Actor) else None
-
-
 def _over_limit(owner: EObject, context: Context, key: str, unit: str) -> Iterator[Finding]:
-    actor = _actor_of(owner)
+    actor = performer(owner)
     if actor is None:
         return
     kind = actor.eClass.name
