@@ -25,8 +25,14 @@ import scemlmodel as scm
 from ..errors import SceMLError
 from ..executors import Executor
 from ..graph import root_node
-from ..levels.batch import BatchConfig, BatchPayload, WorkerState, make_payload, setup_worker
-from ..levels.batch import _mirrored as mirrored
+from ..levels.batch import (
+    BatchConfig,
+    BatchPayload,
+    WorkerState,
+    make_payload,
+    mirrored,
+    setup_worker,
+)
 from ..maps.reference import map_reference
 from ..simulate import Run, simulate
 

@@ -250,7 +250,7 @@ def _loaded_files(document: io.Document) -> set[Path]:
     return found
 
 
-def _mirrored(root: Path, path: Path) -> Path:
+def mirrored(root: Path, path: Path) -> Path:
     """Where a caller's absolute path lives inside a worker's private folder."""
     return root.joinpath(*path.parts[1:])
 
@@ -272,13 +272,13 @@ def setup_worker(payload: BatchPayload) -> WorkerState:
     root = Path(tempfile.mkdtemp(prefix="sceml-worker-")).resolve()
     try:
         for name, data in payload.inputs:
-            target = _mirrored(root, Path(name))
+            target = mirrored(root, Path(name))
             target.parent.mkdir(parents=True, exist_ok=True)
             target.write_bytes(data)
         config = replace(
             payload.config,
-            logical=_mirrored(root, payload.config.logical),
-            out_dir=_mirrored(root, payload.config.out_dir),
+            logical=mirrored(root, payload.config.logical),
+            out_dir=mirrored(root, payload.config.out_dir),
             allow=(root,),
         )
         config.out_dir.mkdir(parents=True, exist_ok=True)
