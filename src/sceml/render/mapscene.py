@@ -347,26 +347,20 @@ def _lane_stretch(
 
 
 def convex_hull(points: Iterable[Point]) -> list[Point]:
-    """The convex hull, counter-clockwise (Andrew's monotone chain); fewer than three distinct
-    points give themselves (a segment or a point)."""
+    """The convex hull (scipy's Qhull), counter-clockwise from the lowest point in x then y;
+    points that span no area (fewer than three, or all on a line) give their two ends."""
+    from scipy.spatial import ConvexHull, QhullError  # only a logical map view needs it
+
     unique = sorted(set(points))
     if len(unique) < 3:
         return unique
-
-    def turn(o: Point, a: Point, b: Point) -> float:
-        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
-
-    def half(ordered: list[Point]) -> list[Point]:
-        chain: list[Point] = []
-        for point in ordered:
-            while len(chain) >= 2 and turn(chain[-2], chain[-1], point) <= 1e-12:
-                chain.pop()
-            chain.append(point)
-        return chain
-
-    lower, upper = half(unique), half(unique[::-1])
-    hull = lower[:-1] + upper[:-1]
-    return hull if len(hull) >= 2 else unique
+    try:
+        order = ConvexHull(np.array(unique)).vertices
+    except QhullError:  # collinear: the segment between the extreme points
+        return [unique[0], unique[-1]]
+    hull = [unique[i] for i in order]
+    first = hull.index(min(hull))
+    return hull[first:] + hull[:first]
 
 
 def junction_boxes(road_map: RoadMap) -> list[Box]:
