@@ -302,19 +302,26 @@ def heading_follows_lane(position: scm.WorldPosition, context: Context) -> Itera
 # --- routes -----------------------------------------------------------------------------------
 
 
-def _departure(node: scm.ActionNode) -> tuple[EObject | None, bool]:
+def _ancestors(node: EObject, context: Context) -> set[EObject]:
+    """Every node a path of flows leads from to `node`, itself excluded (once per run)."""
+    return context.memo(("ancestors", node), lambda: reachable([node], backwards=True) - {node})
+
+
+def _departure(node: scm.ActionNode, context: Context) -> tuple[EObject | None, bool]:
     """Where the actor is when `node` starts: the destination of its latest earlier routed
     maneuver or trajectory, else its start position; and whether a lane change or overtake of
     the actor since then leaves its lane open."""
     actor = node.referenceActor
-    earlier = reachable([node], backwards=True) - {node}
-    mine = [n for n in earlier if isinstance(n, scm.ActionNode) and n.referenceActor is actor]
-    routed = [n for n in mine if isinstance(n, scm.RoutedManeuver | scm.FollowTrajectory)]
-    latest = [
+    earlier = _ancestors(node, context)
+    # In the graph's own order, so that of two parallel latest maneuvers the same one counts.
+    mine = [
         n
-        for n in routed
-        if not any(n in reachable([o], backwards=True) for o in routed if o is not n)
+        for n in node.eContainer().nodes
+        if n in earlier and isinstance(n, scm.ActionNode) and n.referenceActor is actor
     ]
+    routed = [n for n in mine if isinstance(n, scm.RoutedManeuver | scm.FollowTrajectory)]
+    before_others = set().union(*(_ancestors(o, context) for o in routed))
+    latest = [n for n in routed if n not in before_others]
     since = reachable(latest, backwards=False) if latest else set(earlier)
     lane_open = any(isinstance(n, scm.LaneChange | scm.Overtake) for n in mine if n in since)
     if latest:
@@ -356,7 +363,7 @@ def turn_follows_junction(node: scm.RoutedManeuver, context: Context) -> Iterato
     ):
         return
     usable, _ = _usable_lanes(actor)
-    departure, lane_open = _departure(node)
+    departure, lane_open = _departure(node, context)
     try:
         start = centre(departure, road_map)
         goal = centre(node.destination, road_map)
@@ -456,7 +463,7 @@ def cross_crosses_the_road(node: scm.Cross, context: Context) -> Iterator[Findin
     road_map = _map_of(node, context)
     if road_map is None or node.referenceActor is None:
         return
-    departure, _ = _departure(node)
+    departure, _ = _departure(node, context)
     try:
         start = centre(departure, road_map)
         goal = centre(node.destination, road_map)
