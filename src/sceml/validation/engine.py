@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 
 from pyecore.ecore import EObject
 
@@ -34,15 +34,24 @@ def iter_diagnostics(
     in their own file. A rule that fails unexpectedly becomes a SCEML-X000 diagnostic.
     """
     context = Context(model, document, limits or Limits(), osc_version, osc_profile)
-    seen: set[_Key] = set()
-    for obj in _objects(model, context):
+    seen: set[Key] = set()
+    for obj in objects(model, context):
         for rule in registry.rules_for(obj.eClass):
-            yield from _unique(_run(rule, obj, context, document), seen)
+            yield from unique(run_rule(rule, obj, context, document), seen)
+    yield from unique(through_modules(context, document, registry), seen)
+
+
+def through_modules(
+    context: Context, document: Document | None, registry: Registry = REGISTRY
+) -> Iterator[Diagnostic]:
+    """The `through_modules` rules on the nodes the scenario's module uses expand to.
+
+    Values a module use gives its internals exist only once expanded; they are checked there and
+    reported at the use, where an engineer can change them. Nothing for a model without uses.
+    """
     flat = context.flat()
     if flat is None:
         return
-    # Values a module use gives its internals exist only once expanded; check them there, and
-    # report at the use, where an engineer can change them.
     for node in flat.scenario.nodes:
         if not flat.from_module(node):
             continue
@@ -50,8 +59,7 @@ def iter_diagnostics(
         for obj in (node, *all_contents(node)):
             for rule in registry.rules_for(obj.eClass):
                 if rule.through_modules:
-                    found = _run(rule, obj, context, document, at=origin)
-                    yield from _unique(found, seen)
+                    yield from run_rule(rule, obj, context, document, at=origin)
 
 
 def validate(model: EObject, **options: object) -> list[Diagnostic]:
@@ -66,7 +74,7 @@ def is_valid(model: EObject, **options: object) -> bool:
     return not any(d.severity is Severity.ERROR for d in diagnostics)
 
 
-def _objects(model: EObject, context: Context) -> Iterator[EObject]:
+def objects(model: EObject, context: Context) -> Iterator[EObject]:
     """The model, its contents, and the contents of every module definition reached from it."""
     visited: set[EObject] = set(model.modules) if isinstance(model, scm.Library) else set()
     pending: list[EObject] = [model]
@@ -82,10 +90,11 @@ def _objects(model: EObject, context: Context) -> Iterator[EObject]:
 
 
 #: What makes two diagnostics the same: code, message, fragment and file.
-_Key = tuple[str, str, str | None, str | None]
+Key = tuple[str, str, str | None, str | None]
 
 
-def _unique(diagnostics: Iterator[Diagnostic], seen: set[_Key]) -> Iterator[Diagnostic]:
+def unique(diagnostics: Iterable[Diagnostic], seen: set[Key]) -> Iterator[Diagnostic]:
+    """The diagnostics not yet in `seen` (which records them): a finding is reported once."""
     for diagnostic in diagnostics:
         key = (diagnostic.code, diagnostic.message, diagnostic.fragment, diagnostic.file)
         if key not in seen:
@@ -93,13 +102,14 @@ def _unique(diagnostics: Iterator[Diagnostic], seen: set[_Key]) -> Iterator[Diag
             yield diagnostic
 
 
-def _run(
+def run_rule(
     rule: Rule,
     obj: EObject,
     context: Context,
     document: Document | None,
     at: EObject | None = None,
 ) -> Iterator[Diagnostic]:
+    """One rule on one object, located at `at` if given; a crash becomes SCEML-X000."""
     try:
         found = list(findings(rule.check, obj, context))
     except Exception as error:  # a broken model must not stop the run; report and go on
