@@ -1,0 +1,420 @@
+"""Expand a scenario's module uses without copying the scenario itself.
+
+What a flattened scenario would hold is worked out here once: the scenario's own nodes (the
+originals, not copies), bound copies of every module use's internals, and the flows between them
+as a plain adjacency (`Wiring`). Validation reads that directly, so checking a 10,000-node
+scenario copies only what its module uses expand to. `flatten.expand` turns the same result into
+a real flat copy for the `flatten` command and the exporter; both therefore name, bind and wire
+expanded nodes in exactly the same way.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass, field
+from typing import Any
+
+from pyecore.ecore import EObject
+
+import scemlmodel as scm
+
+from ..collector import collector_paused
+from ..copying import Copier
+from ..io import model_path
+from ..traversal import all_contents, containments, cross_references
+from . import naming
+from .errors import FlattenError
+from .resolve import definition_key, location, resolved_definition, unwrap
+
+
+@dataclass(frozen=True)
+class Origin:
+    """Where one element of a flattened scenario came from.
+
+    `element` is what it is a copy of: an element of the input scenario, or of a module
+    definition (in a library), or, for a value that replaced a parameter reference, the use's
+    override value or the parameter's default. `uses` are the module uses whose expansion put it
+    where it is, outermost first: the first is a node of the input scenario, the others belong
+    to module definitions. An element of the scenario's own graph has no uses.
+    """
+
+    element: EObject
+    uses: tuple[scm.ModuleUse, ...] = ()
+
+    @property
+    def from_module(self) -> bool:
+        """Whether the element was expanded from a module use."""
+        return bool(self.uses)
+
+    @property
+    def in_scenario(self) -> EObject:
+        """What the input scenario shows for it: the outermost use, or the element itself."""
+        return self.uses[0] if self.uses else self.element
+
+
+class Edge:
+    """One flow of the expanded graph: its ends, and the Flow it stands for (None for a flow
+    made to rewire a use's ports)."""
+
+    __slots__ = ("alive", "flow", "source", "target")
+
+    def __init__(self, source: EObject | None, target: EObject | None, flow: EObject | None):
+        self.source = source
+        self.target = target
+        self.flow = flow
+        self.alive = True
+
+
+class Wiring:
+    """Flows as adjacency lists, kept in the order pyecore would keep `incoming` and `outgoing`
+    of the same flows, so that everything read from them comes out in the same order."""
+
+    def __init__(self) -> None:
+        self.edges: list[Edge] = []
+        self._incoming: dict[EObject, list[Edge]] = {}
+        self._outgoing: dict[EObject, list[Edge]] = {}
+
+    def connect(self, source: EObject | None, target: EObject | None, flow: EObject | None) -> None:
+        """Add a flow; a missing end leaves it dangling, as an unset Flow end does."""
+        edge = Edge(source, target, flow)
+        self.edges.append(edge)
+        if source is not None:
+            self._outgoing.setdefault(source, []).append(edge)
+        if target is not None:
+            self._incoming.setdefault(target, []).append(edge)
+
+    def cut(self, node: EObject) -> None:
+        """Remove every flow into or out of `node` (a use or port that is replaced)."""
+        for edge in [*self._incoming.pop(node, ()), *self._outgoing.pop(node, ())]:
+            edge.alive = False
+            if edge.source is not None and edge.source is not node:
+                self._outgoing[edge.source].remove(edge)
+            if edge.target is not None and edge.target is not node:
+                self._incoming[edge.target].remove(edge)
+
+    def predecessors(self, node: EObject) -> list[EObject]:
+        """Nodes with a flow into `node`, in flow order; dangling flows are skipped."""
+        return [e.source for e in self._incoming.get(node, ()) if e.source is not None]
+
+    def successors(self, node: EObject) -> list[EObject]:
+        """Nodes `node` has a flow to, in flow order; dangling flows are skipped."""
+        return [e.target for e in self._outgoing.get(node, ()) if e.target is not None]
+
+    def live(self) -> list[Edge]:
+        """The flows left in the end, in the order they were made."""
+        return [edge for edge in self.edges if edge.alive]
+
+
+@dataclass
+class Expansion:
+    """A scenario's module uses expanded: its nodes in reading order, their flows, and where each
+    copy came from. Nodes of the scenario's own graph are its original objects; module internals
+    are bound copies that belong to no container (see `holds`)."""
+
+    scenario: scm.Scenario
+    nodes: list[scm.GraphElement]
+    wiring: Wiring
+    expanded: list[str] = field(default_factory=list)
+    #: Every copy made (module internals, their contents, values given to parameters).
+    origins: dict[EObject, Origin] = field(default_factory=dict)
+
+    def holds(self, obj: EObject) -> bool:
+        """Whether `obj` is a copy made by the expansion (or inside one)."""
+        return obj in self.origins
+
+    def from_module(self, node: EObject) -> bool:
+        """Whether a node of the expanded graph was expanded from a module use."""
+        origin = self.origins.get(node)
+        return origin is not None and origin.from_module
+
+    def origin(self, node: EObject) -> EObject:
+        """The element of the input scenario a node stands for: itself, or the outermost use."""
+        origin = self.origins.get(node)
+        return origin.in_scenario if origin is not None else node
+
+    def predecessors(self, node: EObject) -> list[EObject]:
+        """Nodes of the expanded graph with a flow into `node`."""
+        return self.wiring.predecessors(node)
+
+    def successors(self, node: EObject) -> list[EObject]:
+        """Nodes of the expanded graph `node` has a flow to."""
+        return self.wiring.successors(node)
+
+    def flows(self) -> list[tuple[EObject, EObject]]:
+        """(source, target) of every flow of the expanded graph with both ends set."""
+        return [
+            (edge.source, edge.target)
+            for edge in self.wiring.live()
+            if edge.source is not None and edge.target is not None
+        ]
+
+
+def expansion(scenario: scm.Scenario) -> Expansion:
+    """Expand every module use of `scenario`, recursively; the scenario is left untouched.
+
+    Expanded nodes are named `<use>.<node>` (e.g. `CrossingManeuver_1.Accelerate_1`), roles are
+    replaced by the actors they are bound to, parameter references by the use's overrides or the
+    module's defaults, and flows into and out of a use are rewired through its ports.
+    FlattenError says why a use cannot be expanded.
+    """
+    with collector_paused():
+        builder = _Builder(scenario)
+        for use in [node for node in scenario.nodes if isinstance(node, scm.ModuleUse)]:
+            builder.inline(use, (), ())
+        result = builder.result()
+        _check_self_contained(result)
+        return result
+
+
+class _Builder:
+    """The state of one expansion: the wiring, the names taken, and where each copy came from."""
+
+    def __init__(self, scenario: scm.Scenario) -> None:
+        self.scenario = scenario
+        self.wiring = Wiring()
+        for flow in scenario.flows:
+            self.wiring.connect(flow.source, flow.target, flow)
+        # Copies are not in any file; errors point at the element they were copied from.
+        self.origins: dict[EObject, EObject] = {}
+        # The uses expanded to make each copy, outermost first, as original model objects.
+        self.chains: dict[EObject, tuple[scm.ModuleUse, ...]] = {}
+        self.taken = {str(node.name) for node in scenario.nodes if node.name}
+        self.expanded: list[str] = []
+        # The scenario's uses keep their (possibly empty) names; the names they expand under.
+        self.use_names: dict[EObject, str] = {}
+        self.replacements: dict[EObject, list[scm.GraphElement]] = {}
+
+    def result(self) -> Expansion:
+        """The expanded graph's nodes in reading order, with the wiring and provenance."""
+        nodes: list[scm.GraphElement] = []
+        pending = list(reversed(self.scenario.nodes))
+        while pending:
+            node = pending.pop()
+            if node in self.replacements:
+                pending.extend(reversed(self.replacements[node]))
+            else:
+                nodes.append(node)
+        origins = {copy: Origin(self.origins[copy], uses) for copy, uses in self.chains.items()}
+        return Expansion(self.scenario, nodes, self.wiring, self.expanded, origins)
+
+    def copied(self, copier: Copier, uses: tuple[scm.ModuleUse, ...]) -> None:
+        """Record the copies `copier` made, inside `uses`, by the original each one stands for."""
+        for source, copy in copier.copies.items():
+            self.origins[copy] = self.origins.get(source, source)
+            self.chains[copy] = uses
+
+    def where(self, obj: EObject) -> dict[str, Any]:
+        """Location keywords of the element `obj` was copied from."""
+        return location(self.origins.get(obj, obj))
+
+    def inline(
+        self,
+        use: scm.ModuleUse,
+        chain: tuple[tuple[tuple[str, str], str], ...],
+        uses: tuple[scm.ModuleUse, ...],
+    ) -> None:
+        """Replace `use` by a bound copy of its definition's nodes, then expand the uses inside.
+
+        `chain` holds the definitions entered so far (to refuse recursion), `uses` the original
+        uses expanded so far (the copies' provenance).
+        """
+        original = self.origins.get(use, use)
+        assert isinstance(original, scm.ModuleUse)
+        definition = resolved_definition(original, self.where)
+        key = definition_key(definition)
+        if any(seen == key for seen, _ in chain):
+            names = " -> ".join(name for _, name in (*chain, (key, str(definition.name))))
+            raise FlattenError(f"module uses itself: {names}", **self.where(use))
+        use_name = str(use.name) if use.name else naming.numbered(str(definition.name), self.taken)
+        self.use_names[use] = use_name
+        copier = Copier()
+        nodes = copier.copy_all(definition.nodes)
+        copier.copy_references()
+        for flow in definition.flows:
+            source, target = flow.source, flow.target
+            self.wiring.connect(
+                copier.copies.get(source, source), copier.copies.get(target, target), flow
+            )
+        inside = (*uses, original)
+        self.copied(copier, inside)
+        in_port, out_port = _ports(definition, nodes, self.wiring)
+        _bind_roles(use, definition, nodes, self.where)
+        for value_copier in _bind_parameters(use, definition, nodes, self.where):
+            self.copied(value_copier, inside)
+        self._place(use, use_name, nodes, in_port, out_port)
+        self.expanded.append(use_name)
+        inner = (*chain, (key, str(definition.name)))
+        for nested in [n for n in nodes if isinstance(n, scm.ModuleUse)]:
+            self.inline(nested, inner, inside)
+
+    def _place(
+        self,
+        use: scm.ModuleUse,
+        use_name: str,
+        nodes: list[scm.GraphElement],
+        in_port: scm.InPort,
+        out_port: scm.OutPort,
+    ) -> None:
+        for node in nodes:
+            node.name = naming.unique(naming.scoped(use_name, str(node.name)), self.taken)
+            self.taken.add(node.name)
+        self.replacements[use] = [n for n in nodes if n is not in_port and n is not out_port]
+        self._rewire(use, in_port, out_port)
+
+    def _rewire(self, use: scm.ModuleUse, in_port: scm.InPort, out_port: scm.OutPort) -> None:
+        wiring = self.wiring
+        entries = wiring.successors(in_port)
+        exits = wiring.predecessors(out_port)
+        before = wiring.predecessors(use)
+        after = wiring.successors(use)
+        # A module whose in-port leads straight to its out-port passes activation through.
+        sources = [*exits, *(before if out_port in entries else [])]
+        for source in before:
+            for entry in entries:
+                if entry is not out_port:
+                    wiring.connect(source, entry, None)
+        for exit_ in sources:
+            if exit_ is in_port:
+                continue
+            for target in after:
+                wiring.connect(exit_, target, None)
+        for node in (use, in_port, out_port):
+            wiring.cut(node)
+
+
+def _ports(
+    definition: scm.ModuleDefinition, nodes: list[scm.GraphElement], wiring: Wiring
+) -> tuple[scm.InPort, scm.OutPort]:
+    in_ports = [n for n in nodes if isinstance(n, scm.InPort)]
+    out_ports = [n for n in nodes if isinstance(n, scm.OutPort)]
+    if len(in_ports) != 1 or len(out_ports) != 1:
+        raise FlattenError(
+            f"module {definition.name!r} needs one in-port and one out-port, "
+            f"has {len(in_ports)} and {len(out_ports)}",
+            **location(definition),
+        )
+    in_port, out_port = in_ports[0], out_ports[0]
+    if not wiring.successors(in_port) or not wiring.predecessors(out_port):
+        unwired = in_port.name if not wiring.successors(in_port) else out_port.name
+        raise FlattenError(
+            f"module {definition.name!r}: port {unwired!r} is not wired", **location(definition)
+        )
+    return in_port, out_port
+
+
+def _bind_roles(
+    use: scm.ModuleUse,
+    definition: scm.ModuleDefinition,
+    nodes: list[EObject],
+    where: Callable[[EObject], dict[str, Any]],
+) -> None:
+    bound = {binding.role: binding.actor for binding in use.bindings}
+    actors: dict[EObject, EObject] = {}
+    for role in definition.roles:
+        if bound.get(role.name) is None:
+            raise FlattenError(
+                f"role {role.name!r} of module {definition.name!r} is not bound",
+                **where(use),
+            )
+        actors[role] = bound[role.name]
+    for obj in _with_contents(nodes):
+        for feature in cross_references(obj.eClass):
+            if feature.many:
+                continue
+            target = obj.eGet(feature)
+            if target is not None and unwrap(target) in actors:
+                obj.eSet(feature, actors[unwrap(target)])
+
+
+def _bind_parameters(
+    use: scm.ModuleUse,
+    definition: scm.ModuleDefinition,
+    nodes: list[EObject],
+    where: Callable[[EObject], dict[str, Any]],
+) -> list[Copier]:
+    """Replace each parameter reference by a copy of the value chosen for it; returns the copiers
+    that made those copies, so that each copy can be traced to the value it was made from."""
+    overrides = {override.parameter: override.value for override in use.overrides}
+    declared = {parameter.name: parameter for parameter in definition.parameters}
+    unknown = sorted(set(overrides) - set(declared))
+    if unknown:
+        raise FlattenError(
+            f"module {definition.name!r} has no parameter {unknown[0]!r} "
+            f"(it has: {', '.join(declared) or 'none'})",
+            **where(use),
+        )
+    copiers: list[Copier] = []
+    for ref in [o for o in _with_contents(nodes) if isinstance(o, scm.ParameterRef)]:
+        parameter = ref.parameter
+        if parameter is None or declared.get(parameter.name) is not unwrap(parameter):
+            raise FlattenError(
+                f"a parameter reference in module {definition.name!r} names no parameter of it",
+                **location(ref),
+            )
+        chosen = overrides.get(parameter.name)
+        if chosen is None:
+            chosen = parameter.default
+        # An unset value means the language default, as everywhere else in a scenario.
+        ref.eContainer().eSet(
+            ref.eContainmentFeature(), _copy(chosen, copiers) if chosen is not None else None
+        )
+    return copiers
+
+
+def _copy(value: EObject, copiers: list[Copier]) -> EObject:
+    copier = Copier()
+    duplicate = copier.copy(value)
+    copier.copy_references()
+    copiers.append(copier)
+    return duplicate
+
+
+def _with_contents(nodes: Iterable[EObject]) -> list[EObject]:
+    return [obj for node in nodes for obj in (node, *all_contents(node))]
+
+
+def _check_self_contained(result: Expansion) -> None:
+    # Anything still pointing into a library (a role of another module, say) would make the
+    # flattened scenario depend on the library it is meant to replace. Checked in the order of
+    # the flattened scenario's contents: its nodes, then the rest (its flows).
+    scenario = result.scenario
+    inside: dict[EObject, bool] = {}  # by target: thousands of nodes name the same few actors
+    for node in result.nodes:
+        for obj in (node, *all_contents(node)):
+            _check_references(obj, result, inside)
+    for feature in containments(scenario.eClass):
+        if feature.name == "nodes":
+            continue
+        held = scenario.eGet(feature)
+        for top in held if feature.many else [held] if held is not None else []:
+            for obj in (top, *all_contents(top)):
+                _check_references(obj, result, inside)
+
+
+def _check_references(obj: EObject, result: Expansion, inside: dict[EObject, bool]) -> None:
+    scenario = result.scenario
+    for feature in cross_references(obj.eClass):
+        if feature.many:
+            continue
+        target = obj.eGet(feature)
+        if target is None:
+            continue
+        target = unwrap(target)
+        if target not in inside:
+            top = _root_of(target)
+            inside[target] = top is scenario or result.holds(top)
+        if not inside[target]:
+            where = model_path(obj)
+            if result.holds(obj):  # a copy belongs to no container: name it in the scenario
+                where = "/".join(p for p in (model_path(scenario), where) if p)
+            raise FlattenError(
+                f"{feature.name} still refers to {model_path(target)} outside the "
+                "scenario after expansion",
+                element=where,
+            )
+
+
+def _root_of(obj: EObject) -> EObject:
+    while obj.eContainer() is not None:
+        obj = obj.eContainer()
+    return obj
