@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 from collections import deque
-from collections.abc import Iterable, Iterator
-from typing import TypeVar
+from collections.abc import Iterable, Iterator, Sequence
+from typing import Any, Protocol, TypeVar
 
 import scemlmodel as scm
 
@@ -42,11 +42,40 @@ def actors(scenario: scm.Scenario) -> list[scm.Actor]:
     return list(root.actors) if root is not None else []
 
 
+class Flows(Protocol):
+    """A graph to walk: its nodes in reading order, and each node's neighbours along flows.
+
+    A scenario or module definition is one (`OwnFlows`); so is a scenario with its module uses
+    expanded (`sceml.modules.expansion.Expansion`), whose flows are not Flow objects.
+    """
+
+    @property
+    def nodes(self) -> Sequence[Any]: ...
+
+    def predecessors(self, node: Any) -> list[Any]: ...
+
+    def successors(self, node: Any) -> list[Any]: ...
+
+
+class OwnFlows:
+    """A scenario's or module definition's own nodes and flows, as `Flows`."""
+
+    def __init__(self, graph: scm.Graph) -> None:
+        self.nodes: Sequence[scm.GraphElement] = graph.nodes
+
+    predecessors = staticmethod(predecessors)
+    successors = staticmethod(successors)
+
+
 def reachable(
-    starts: Iterable[scm.GraphElement], *, backwards: bool = False
-) -> set[scm.GraphElement]:
-    """Every node reachable from `starts` along flows (against them if `backwards`), starts included."""
-    step = predecessors if backwards else successors
+    starts: Iterable[Any], *, backwards: bool = False, flows: Flows | None = None
+) -> set[Any]:
+    """Every node reachable from `starts` along flows (against them if `backwards`), starts
+    included; along the nodes' own Flow objects unless another graph's `flows` are given."""
+    if flows is not None:
+        step = flows.predecessors if backwards else flows.successors
+    else:
+        step = predecessors if backwards else successors
     seen = set(starts)
     queue = deque(seen)
     while queue:

@@ -44,14 +44,43 @@ def cross_references(eclass: EClass) -> tuple[EReference, ...]:
     )
 
 
+@cache
+def _containment_names(eclass: EClass) -> tuple[tuple[str, bool], ...]:
+    return tuple((f.name, bool(f.many)) for f in containments(eclass))
+
+
 def contents(obj: EObject) -> Iterator[EObject]:
     """The objects `obj` directly contains, in feature order."""
-    for feature in containments(obj.eClass):
-        held = obj.eGet(feature)
-        if feature.many:
+    # pyecore keeps each feature's value in a holder in the instance's __dict__, made on first
+    # access; reading the holder directly skips the descriptor and eGet's checks (most of a
+    # walk's time) and does not create holders for features that were never set.
+    stored = obj.__dict__
+    for name, many in _containment_names(obj.eClass):
+        holder = stored.get(name)
+        if holder is None:
+            continue
+        held = holder._get() if hasattr(holder, "_get") else holder
+        if many:
             yield from held
         elif held is not None:
             yield held
+
+
+@cache
+def _single_reference_names(eclass: EClass) -> tuple[tuple[EReference, str], ...]:
+    return tuple((f, f.name) for f in cross_references(eclass) if not f.many)
+
+
+def single_references(obj: EObject) -> Iterator[tuple[EReference, EObject]]:
+    """(feature, target) of each single-valued cross-reference `obj` has set, in feature order."""
+    stored = obj.__dict__  # read like `contents` does, without the descriptor
+    for feature, name in _single_reference_names(obj.eClass):
+        holder = stored.get(name)
+        if holder is None:
+            continue
+        target = holder._get() if hasattr(holder, "_get") else holder
+        if target is not None:
+            yield feature, target
 
 
 def all_contents(obj: EObject) -> Iterator[EObject]:

@@ -17,7 +17,7 @@ def test_nodes_nested_three_deep_trace_to_the_outermost_use() -> None:
     flat = Context(scenario, None, Limits()).flat()
     assert flat is not None
     use = next(n for n in scenario.nodes if isinstance(n, scm.ModuleUse))
-    inner = next(n for n in flat.scenario.nodes if str(n.name).endswith("TimeToCollision_1"))
+    inner = next(n for n in flat.nodes if str(n.name).endswith("TimeToCollision_1"))
     assert flat.from_module(inner) and flat.origin(inner) is use
 
 
@@ -30,6 +30,6 @@ def test_plain_nodes_sharing_a_name_each_trace_to_themselves() -> None:
     plain.name = "CrossingManeuver_1.Waiting"
     flat = Context(scenario, None, Limits()).flat()
     assert flat is not None
-    copies = {flat.origin(n): n for n in flat.scenario.nodes if not flat.from_module(n)}
+    copies = {flat.origin(n): n for n in flat.nodes if not flat.from_module(n)}
     assert first in copies and second in copies and plain in copies
     assert copies[second] is not copies[first]

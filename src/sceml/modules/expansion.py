@@ -21,7 +21,7 @@ import scemlmodel as scm
 from ..collector import collector_paused
 from ..copying import Copier
 from ..io import model_path
-from ..traversal import all_contents, containments, cross_references
+from ..traversal import all_contents, containments, single_references
 from . import naming
 from .errors import FlattenError
 from .resolve import definition_key, location, resolved_definition, unwrap
@@ -183,6 +183,8 @@ class _Builder:
         # The scenario's uses keep their (possibly empty) names; the names they expand under.
         self.use_names: dict[EObject, str] = {}
         self.replacements: dict[EObject, list[scm.GraphElement]] = {}
+        # A definition's file and name, worked out once: it resolves the file's path.
+        self.keys: dict[EObject, tuple[str, str]] = {}
 
     def result(self) -> Expansion:
         """The expanded graph's nodes in reading order, with the wiring and provenance."""
@@ -221,7 +223,9 @@ class _Builder:
         original = self.origins.get(use, use)
         assert isinstance(original, scm.ModuleUse)
         definition = resolved_definition(original, self.where)
-        key = definition_key(definition)
+        key = self.keys.get(definition)
+        if key is None:
+            key = self.keys[definition] = definition_key(definition)
         if any(seen == key for seen, _ in chain):
             names = " -> ".join(name for _, name in (*chain, (key, str(definition.name))))
             raise FlattenError(f"module uses itself: {names}", **self.where(use))
@@ -318,11 +322,8 @@ def _bind_roles(
             )
         actors[role] = bound[role.name]
     for obj in _with_contents(nodes):
-        for feature in cross_references(obj.eClass):
-            if feature.many:
-                continue
-            target = obj.eGet(feature)
-            if target is not None and unwrap(target) in actors:
+        for feature, target in list(single_references(obj)):
+            if unwrap(target) in actors:
                 obj.eSet(feature, actors[unwrap(target)])
 
 
@@ -393,13 +394,8 @@ def _check_self_contained(result: Expansion) -> None:
 
 def _check_references(obj: EObject, result: Expansion, inside: dict[EObject, bool]) -> None:
     scenario = result.scenario
-    for feature in cross_references(obj.eClass):
-        if feature.many:
-            continue
-        target = obj.eGet(feature)
-        if target is None:
-            continue
-        target = unwrap(target)
+    for feature, held in single_references(obj):
+        target = unwrap(held)
         if target not in inside:
             top = _root_of(target)
             inside[target] = top is scenario or result.holds(top)

@@ -14,7 +14,7 @@ import scemlmodel as scm
 from .. import catalog
 from ..graph import root_node
 from ..io import Document
-from ..modules.flatten import Flattened, expand
+from ..modules.expansion import Expansion, expansion
 from .limits import Limits
 
 T = TypeVar("T")
@@ -38,33 +38,6 @@ def performer(owner: EObject) -> scm.Actor | None:
 
 
 @dataclass
-class FlatView:
-    """A scenario with its module uses expanded, and where each expanded node came from.
-
-    Flattening records the origin of every element it copies; a node expanded from a module
-    is traced back to the outermost use, the element of the scenario an engineer can change.
-    """
-
-    flattened: Flattened
-    original: scm.Scenario
-
-    @property
-    def scenario(self) -> scm.Scenario:
-        """The flattened scenario."""
-        return self.flattened.scenario
-
-    def from_module(self, node: EObject) -> bool:
-        """Whether a flat node was expanded from a module use."""
-        origin = self.flattened.origin(node)
-        return origin is None or origin.from_module
-
-    def origin(self, node: EObject) -> EObject:
-        """The original element a flat node stands for: itself, or the use it was expanded from."""
-        origin = self.flattened.origin(node)
-        return origin.in_scenario if origin is not None else self.original
-
-
-@dataclass
 class Context:
     """Shared state of one validation run; rules read it and never change the model."""
 
@@ -77,7 +50,7 @@ class Context:
     _memo: dict[object, object] = field(default_factory=dict)
     _definitions: dict[EObject, scm.ModuleDefinition | None] = field(default_factory=dict)
     _levels: dict[EObject, str | None] = field(default_factory=dict)
-    _flat: FlatView | None = None
+    _flat: Expansion | None = None
     _flat_done: bool = False
 
     def memo(self, key: object, compute: Callable[[], T]) -> T:
@@ -86,15 +59,24 @@ class Context:
             self._memo[key] = compute()
         return self._memo[key]  # type: ignore[return-value]
 
+    def home(self, obj: EObject) -> EObject:
+        """The model `obj` belongs to: its outermost container, or for a module internal copied
+        by the expansion (see `flat`), which has no container, the scenario it was expanded in."""
+        top = obj
+        while (container := top.eContainer()) is not None:
+            top = container
+        if self._flat is not None and self._flat.holds(top):
+            return self._flat.scenario
+        return top
+
     def level_of(self, obj: EObject) -> str | None:
         """The abstraction level governing `obj`; None inside module definitions, which have none."""
         current: EObject | None = obj
-        top = obj
         while current is not None:
             if isinstance(current, scm.ModuleDefinition):
                 return None
-            top = current
             current = current.eContainer()
+        top = self.home(obj)
         if top not in self._levels:
             root = root_node(top) if isinstance(top, scm.Scenario) else None
             level = root.level if root is not None else None
@@ -107,9 +89,12 @@ class Context:
             self._definitions[use] = _resolve(use)
         return self._definitions[use]
 
-    def flat(self) -> FlatView | None:
-        """The flattened scenario (computed once), or None when the root is not a scenario with
-        module uses or cannot be flattened (then `flat_failure` says why)."""
+    def flat(self) -> Expansion | None:
+        """The scenario with its module uses expanded (computed once), or None when the root is
+        not a scenario with module uses or they cannot be expanded (`flat_failure` says why).
+
+        The expansion copies only module internals; the scenario's own nodes are its originals.
+        """
         if self._flat_done:
             return self._flat
         self._flat_done = True
@@ -119,7 +104,7 @@ class Context:
         if not any(isinstance(node, scm.ModuleUse) for node in scenario.nodes):
             return None
         try:
-            self._flat = FlatView(expand(scenario), scenario)
+            self._flat = expansion(scenario)
         except Exception as error:  # any reason at all: the module rules say what is wrong
             self.flat_failure = str(error) or type(error).__name__
         return self._flat

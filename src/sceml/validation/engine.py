@@ -52,7 +52,7 @@ def through_modules(
     flat = context.flat()
     if flat is None:
         return
-    for node in flat.scenario.nodes:
+    for node in flat.nodes:
         if not flat.from_module(node):
             continue
         origin = flat.origin(node)

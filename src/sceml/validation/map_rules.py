@@ -18,7 +18,7 @@ from pyecore.ecore import EObject
 import scemlmodel as scm
 
 from ..diagnostics import Severity
-from ..graph import reachable, root_node
+from ..graph import Flows, OwnFlows, reachable, root_node
 from ..maps import (
     BICYCLE_LANE_TYPES,
     PEDESTRIAN_LANE_TYPES,
@@ -49,9 +49,7 @@ _SOURCE = "SPEC §12"
 
 
 def _reference(obj: EObject, context: Context) -> MapReference | None:
-    top: EObject | None = obj
-    while top is not None and not isinstance(top, scm.Scenario):
-        top = top.eContainer()
+    top = context.home(obj)
     if not isinstance(top, scm.Scenario):
         return None  # a module definition on its own: its uses are checked in the scenario
     # Once per scenario: finding the root node walks every node, and every position asks.
@@ -302,9 +300,22 @@ def heading_follows_lane(position: scm.WorldPosition, context: Context) -> Itera
 # --- routes -----------------------------------------------------------------------------------
 
 
-def _ancestors(node: EObject, context: Context) -> set[EObject]:
-    """Every node a path of flows leads from to `node`, itself excluded (once per run)."""
-    return context.memo(("ancestors", node), lambda: reachable([node], backwards=True) - {node})
+def _flows_of(node: EObject, context: Context) -> Flows:
+    """The graph `node` is read in: the expanded scenario for a module internal, else its own."""
+    graph = node.eContainer()
+    if graph is None:  # only the expansion's copies of module internals have no container
+        flat = context.flat()
+        if flat is not None and flat.holds(node):
+            return flat
+    return context.memo(("own flows", graph), lambda: OwnFlows(graph))
+
+
+def _ancestors(node: EObject, flows: Flows, context: Context) -> set[EObject]:
+    """Every node a path of flows leads from to `node`, itself excluded (once per run and graph)."""
+    return context.memo(
+        ("ancestors", id(flows), node),
+        lambda: reachable([node], backwards=True, flows=flows) - {node},
+    )
 
 
 def _departure(node: scm.ActionNode, context: Context) -> tuple[EObject | None, bool]:
@@ -312,17 +323,18 @@ def _departure(node: scm.ActionNode, context: Context) -> tuple[EObject | None, 
     maneuver or trajectory, else its start position; and whether a lane change or overtake of
     the actor since then leaves its lane open."""
     actor = node.referenceActor
-    earlier = _ancestors(node, context)
+    flows = _flows_of(node, context)
+    earlier = _ancestors(node, flows, context)
     # In the graph's own order, so that of two parallel latest maneuvers the same one counts.
     mine = [
         n
-        for n in node.eContainer().nodes
+        for n in flows.nodes
         if n in earlier and isinstance(n, scm.ActionNode) and n.referenceActor is actor
     ]
     routed = [n for n in mine if isinstance(n, scm.RoutedManeuver | scm.FollowTrajectory)]
-    before_others = set().union(*(_ancestors(o, context) for o in routed))
+    before_others = set().union(*(_ancestors(o, flows, context) for o in routed))
     latest = [n for n in routed if n not in before_others]
-    since = reachable(latest, backwards=False) if latest else set(earlier)
+    since = reachable(latest, backwards=False, flows=flows) if latest else set(earlier)
     lane_open = any(isinstance(n, scm.LaneChange | scm.Overtake) for n in mine if n in since)
     if latest:
         last = latest[0]

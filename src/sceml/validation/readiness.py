@@ -88,7 +88,7 @@ def date_is_iso(root: scm.RootNode, context: Context) -> Iterator[Finding]:
 def _used_kinds(scenario: scm.Scenario, context: Context) -> dict[str, EObject]:
     """The first node of each ModuleElement kind, module internals included (via the flat view)."""
     flat = context.flat()
-    nodes = flat.scenario.nodes if flat is not None else scenario.nodes
+    nodes = flat.nodes if flat is not None else scenario.nodes
     first: dict[str, EObject] = {}
     for node in nodes:
         if isinstance(node, scm.ModuleElement):

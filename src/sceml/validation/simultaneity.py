@@ -18,7 +18,7 @@ has been visited.
 from __future__ import annotations
 
 from collections import deque
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator, Sequence
 
 from pyecore.ecore import EObject
 
@@ -58,22 +58,22 @@ def _previous_in_group(
 
 
 def _adjacency(
-    graph: scm.Graph,
+    nodes: Sequence[EObject], flows: Iterable[tuple[EObject | None, EObject | None]]
 ) -> tuple[list[EObject], dict[EObject, list[EObject]], dict[EObject, int]]:
     """Kahn's order, predecessors per node and successor counts, from the graph's own flows.
 
-    Read from `graph.flows` rather than the nodes' incoming/outgoing lists, so that flows that
-    are dangling or leave the graph are simply not part of the order.
+    Read from the graph's flows rather than the nodes' incoming/outgoing lists, so that flows
+    that are dangling or leave the graph are simply not part of the order.
     """
-    members = set(graph.nodes)
-    sources: dict[EObject, list[EObject]] = {node: [] for node in graph.nodes}
-    targets: dict[EObject, list[EObject]] = {node: [] for node in graph.nodes}
-    for flow in graph.flows:
-        if flow.source in members and flow.target in members:
-            sources[flow.target].append(flow.source)
-            targets[flow.source].append(flow.target)
-    waiting = {node: len(sources[node]) for node in graph.nodes}
-    queue = deque(node for node in graph.nodes if waiting[node] == 0)
+    members = set(nodes)
+    sources: dict[EObject, list[EObject]] = {node: [] for node in nodes}
+    targets: dict[EObject, list[EObject]] = {node: [] for node in nodes}
+    for source, target in flows:
+        if source in members and target in members:
+            sources[target].append(source)
+            targets[source].append(target)
+    waiting = {node: len(sources[node]) for node in nodes}
+    queue = deque(node for node in nodes if waiting[node] == 0)
     order = []
     while queue:
         node = queue.popleft()
@@ -82,12 +82,15 @@ def _adjacency(
             waiting[target] -= 1
             if waiting[target] == 0:
                 queue.append(target)
-    return order, sources, {node: len(targets[node]) for node in graph.nodes}
+    return order, sources, {node: len(targets[node]) for node in nodes}
 
 
-def conflicts(graph: scm.Graph) -> list[Conflict]:
-    """Pairs of same-actor, same-category maneuvers that can run at the same time."""
-    order, sources, pending = _adjacency(graph)
+def conflicts(
+    nodes: Sequence[EObject], flows: Iterable[tuple[EObject | None, EObject | None]]
+) -> list[Conflict]:
+    """Pairs of same-actor, same-category maneuvers that can run at the same time, in the graph
+    of `nodes` and `flows` (source, target): a scenario's or module's, or an expanded one."""
+    order, sources, pending = _adjacency(nodes, flows)
     if len(order) < len(pending):
         return []  # S008 reports the cycle; the order is undefined there
     bit, previous = _previous_in_group(order)
@@ -140,7 +143,11 @@ def no_simultaneous_maneuvers(graph: scm.Graph, context: Context) -> Iterator[Fi
     if isinstance(graph, scm.ModuleDefinition) and not isinstance(context.root, scm.Library):
         return  # a used definition is checked expanded, inside the scenario that uses it
     flat = context.flat() if isinstance(graph, scm.Scenario) else None
-    for earlier, later, category in conflicts(flat.scenario if flat else graph):
+    if flat is not None:
+        found = conflicts(flat.nodes, flat.flows())
+    else:
+        found = conflicts(graph.nodes, [(flow.source, flow.target) for flow in graph.flows])
+    for earlier, later, category in found:
         actor = later.referenceActor.name
         element = flat.origin(later) if flat else later
         yield (
