@@ -34,15 +34,13 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
-from lxml import etree
 from numpy.typing import NDArray
 
 import scemlmodel as scm
 
-from .. import io, schema
+from .. import io
 from ..errors import SceMLError
 from ..executors import Executor, open_executor
-from ..safexml import hardened_parser
 from .apply import FlatTemplate, copy_scenario, set_level
 from .checks import SampleChecker
 from .manifest import SampleRecord
@@ -137,9 +135,9 @@ class Worker:
             if not self.fast.matches(flat, row):
                 self.fast = None
         if self.fast is not None:
-            data = self.fast.render(row)
-            problem = _schema_problem(data, self.xosc.version)
-            return (None, problem) if problem else (data, "")
+            texts = self.fast.texts(row)
+            problem = self.fast.schema_problem(row, texts)
+            return (None, problem) if problem else (self.fast.render(row, texts), "")
         try:
             return self.xosc.document(flat, target).data, ""
         except SceMLError as error:  # ExportError, or InvalidOutputError for an XSD failure
@@ -154,13 +152,6 @@ class Worker:
             return target.read_bytes()
         finally:
             target.unlink()
-
-
-def _schema_problem(data: bytes, version: str) -> str:
-    tree = etree.fromstring(data, hardened_parser())
-    if schema.is_valid_tree(tree, version):
-        return ""
-    return f"xsd: {schema.validate_tree(tree, version)[0].reason}"
 
 
 def write_sample(folder: Path, produced: Produced) -> SampleRecord:

@@ -61,6 +61,7 @@ class XoscWriter:
 
 _PLACEHOLDER = "SceMLsample"
 _TOKEN = re.compile(rb"\$" + _PLACEHOLDER.encode() + rb"(\d+)")
+_TEXT_TOKEN = re.compile(r"\$" + _PLACEHOLDER + r"(\d+)")
 
 
 class SampleXosc:
@@ -73,6 +74,14 @@ class SampleXosc:
     other value from them the bytes equal a full export. That is checked, not assumed:
     `matches` compares the result with a full export, and the batch uses this path only while
     those comparisons hold.
+
+    The XSD check works the same way. The placeholders sit in attribute values, so the template
+    is parsed once and each sample's numbers are set into those attributes of that one tree,
+    which is then validated: a sample costs no parse. A number as the export writes it (Python's
+    repr of a float: digits, `.`, `-`, `e`, `inf`, `nan`) holds nothing that XML would escape
+    or normalise, so the tree is the one parsing the sample's bytes would give; `matches`
+    checks that too. Should a placeholder sit anywhere but in an attribute, every sample is
+    parsed instead.
     """
 
     def __init__(self, writer: XoscWriter, template: FlatTemplate, target: Path) -> None:
@@ -94,27 +103,94 @@ class SampleXosc:
         marked = _with_declarations_of(marked, concrete)
         self.segments: list[bytes] = _TOKEN.split(marked)
         self.usable = self.render(row) == concrete
+        self._tree = _SlottedTree.of(marked, (len(self.segments) - 1) // 2)
+        if self._tree is not None and not self._tree.agrees(self.texts(row), concrete):
+            self._tree = None
 
-    def render(self, row: Sequence[float]) -> bytes:
-        """The document bytes of one sample."""
+    def texts(self, row: Sequence[float]) -> list[str]:
+        """Each sampled number as the export writes it."""
+        return [self._number(value) for value in row]
+
+    def render(self, row: Sequence[float], texts: Sequence[str] | None = None) -> bytes:
+        """The document bytes of one sample (`texts`: its `texts(row)`, if already made)."""
+        texts = self.texts(row) if texts is None else texts
         parts = list(self.segments)
         for position in range(1, len(parts), 2):
-            parts[position] = self._number(row[int(parts[position])]).encode()
+            parts[position] = texts[int(parts[position])].encode()
         return b"".join(parts)
 
+    def schema_problem(self, row: Sequence[float], texts: Sequence[str] | None = None) -> str:
+        """Why the sample's document fails the XSD (`xsd: reason`), or "" when it is valid."""
+        texts = self.texts(row) if texts is None else texts
+        if self._tree is None:
+            tree = etree.fromstring(self.render(row, texts), _parser())
+        else:
+            tree = self._tree.filled(texts)
+        if schema.is_valid_tree(tree, self.writer.version):
+            return ""
+        return f"xsd: {schema.validate_tree(tree, self.writer.version)[0].reason}"
+
     def matches(self, scenario: scm.Scenario, row: Sequence[float]) -> bool:
-        """Whether this path gives the same bytes as a full export of the filled template."""
-        return self.render(row) == self.writer.document(scenario, self.target).data
+        """Whether this path gives the same bytes as a full export of the filled template, and
+        the tree it checks is the one those bytes parse into."""
+        texts = self.texts(row)
+        data = self.render(row, texts)
+        if data != self.writer.document(scenario, self.target).data:
+            return False
+        if self._tree is not None and not self._tree.agrees(texts, data):
+            self._tree = None  # the bytes are right; check them by parsing from now on
+        return True
 
     def write(self, row: Sequence[float], target: Path) -> str | None:
         """Check the sample's document against the XSD and write it; a reason if it fails."""
-        data = self.render(row)
-        tree = etree.fromstring(data, _parser())
-        if not schema.is_valid_tree(tree, self.writer.version):
-            issue = schema.validate_tree(tree, self.writer.version)[0]
-            return f"xsd: {issue.reason}"
-        write_atomically(target, data)
+        texts = self.texts(row)
+        problem = self.schema_problem(row, texts)
+        if problem:
+            return problem
+        write_atomically(target, self.render(row, texts))
         return None
+
+
+class _SlottedTree:
+    """The parsed template with, for each attribute value holding placeholders, its parts."""
+
+    def __init__(
+        self, root: etree._Element, slots: list[tuple[etree._Element, str, list[str]]]
+    ) -> None:
+        self.root = root
+        self.slots = slots
+
+    @classmethod
+    def of(cls, marked: bytes, count: int) -> _SlottedTree | None:
+        """The tree of `marked`, or None unless all of its `count` placeholders are found in
+        attribute values."""
+        root = etree.fromstring(marked, _parser())
+        slots = []
+        found = 0
+        for element in root.iter():
+            for name, value in element.attrib.items():
+                parts = _TEXT_TOKEN.split(value)
+                if len(parts) > 1:
+                    slots.append((element, name, parts))
+                    found += len(parts) // 2
+        return cls(root, slots) if found == count else None
+
+    def filled(self, texts: Sequence[str]) -> etree._Element:
+        """The tree with the sample's numbers in place (the same tree, changed in place)."""
+        for element, name, parts in self.slots:
+            if len(parts) == 3 and not parts[0] and not parts[2]:  # the whole value: the usual case
+                element.set(name, texts[int(parts[1])])
+            else:
+                filled = list(parts)
+                for position in range(1, len(filled), 2):
+                    filled[position] = texts[int(filled[position])]
+                element.set(name, "".join(filled))
+        return self.root
+
+    def agrees(self, texts: Sequence[str], data: bytes) -> bool:
+        """Whether the tree filled with `texts` equals the tree that `data` parses into."""
+        parsed = etree.fromstring(data, _parser())
+        return bool(etree.tostring(self.filled(texts)) == etree.tostring(parsed))
 
 
 def _with_declarations_of(marked: bytes, concrete: bytes) -> bytes:
