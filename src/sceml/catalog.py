@@ -10,10 +10,12 @@ import importlib.resources
 from dataclasses import dataclass
 from functools import cache
 
-from pyecore.ecore import EClass, EObject, EReference
-from pyecore.resources import URI, ResourceSet
+from lxml import etree
+from pyecore.ecore import EClass, EObject
 
 import scemlmodel as scm
+
+from .safexml import hardened_parser
 
 NODE_ANNOTATION = "http://sceml.org/node"
 PARAMETER_ANNOTATION = "http://sceml.org/parameter"
@@ -53,30 +55,119 @@ class ParameterSpec:
         return self.default is None and not self.per_actor_default
 
 
+@dataclass(frozen=True)
+class _Feature:
+    """What the catalog reads of one structural feature in the .ecore."""
+
+    name: str
+    type_name: str  # the EClass a reference holds; "" for an attribute
+    annotations: dict[str, dict[str, str]]
+
+
+@dataclass(frozen=True)
+class _Class:
+    """What the catalog reads of one EClass in the .ecore."""
+
+    name: str
+    abstract: bool
+    supertypes: tuple[str, ...]
+    annotations: dict[str, dict[str, str]]
+    features: tuple[_Feature, ...]
+
+
 @cache
-def _ecore_classes() -> dict[str, EClass]:
-    """The EClasses of the shipped .ecore, by name, with their annotations."""
-    resource_set = ResourceSet()
-    ecore_file = importlib.resources.files("sceml.metamodel") / "scemlmodel.ecore"
-    with importlib.resources.as_file(ecore_file) as path:
-        resource = resource_set.get_resource(URI(str(path)))
-    package = resource.contents[0]
-    return {c.name: c for c in package.eClassifiers if isinstance(c, EClass)}
+def _ecore_classes() -> dict[str, _Class]:
+    """The EClasses of the shipped .ecore, by name, in file order, with their annotations.
+
+    Read with lxml: building pyecore's dynamic metamodel from the file cost about 20 ms of every
+    command's start-up, and the catalog needs only names, supertypes and annotations.
+    """
+    data = (importlib.resources.files("sceml.metamodel") / "scemlmodel.ecore").read_bytes()
+    package = etree.fromstring(data, parser=hardened_parser(drop_comments=True))
+    classes: dict[str, _Class] = {}
+    for classifier in package.iterfind("eClassifiers"):
+        if classifier.get(_XSI_TYPE) != "ecore:EClass":
+            continue
+        features = tuple(
+            _Feature(
+                str(feature.get("name")),
+                _local_type(feature.get("eType"))
+                if feature.get(_XSI_TYPE) == "ecore:EReference"
+                else "",
+                _annotations_of(feature),
+            )
+            for feature in classifier.iterfind("eStructuralFeatures")
+        )
+        classes[str(classifier.get("name"))] = _Class(
+            str(classifier.get("name")),
+            classifier.get("abstract") == "true",
+            tuple(_local_type(t) for t in (classifier.get("eSuperTypes") or "").split()),
+            _annotations_of(classifier),
+            features,
+        )
+    return classes
 
 
-def _annotation(eclass: EClass, source: str) -> dict[str, str]:
-    for annotation in eclass.eAnnotations:
-        if annotation.source == source:
-            return dict(annotation.details.items())
-    return {}
+_XSI_TYPE = "{http://www.w3.org/2001/XMLSchema-instance}type"
+
+
+def _local_type(reference: str | None) -> str:
+    """`#//ParameterValue` -> `ParameterValue`: the .ecore names its own classes this way."""
+    return (reference or "").rpartition("/")[2]
+
+
+def _annotations_of(element: object) -> dict[str, dict[str, str]]:
+    return {
+        str(annotation.get("source")): {
+            str(detail.get("key")): str(detail.get("value", ""))
+            for detail in annotation.iterfind("details")
+        }
+        for annotation in element.iterfind("eAnnotations")  # type: ignore[attr-defined]
+    }
+
+
+@cache
+def _all_supertypes(name: str) -> tuple[str, ...]:
+    """Every ancestor of a class, in the order pyecore's eAllSuperTypes gives them."""
+    found: dict[str, None] = {}
+
+    # Direct supertypes first, then each one's own, depth first, each once.
+    def walk(current: str) -> None:
+        direct = _ecore_classes()[current].supertypes
+        for parent in direct:
+            found.setdefault(parent, None)
+        for parent in direct:
+            walk(parent)
+
+    walk(name)
+    return tuple(found)
+
+
+def _all_features(name: str) -> list[_Feature]:
+    """A class's features, then its supertypes', depth first, each once (pyecore's order)."""
+    seen: dict[str, _Feature] = {}
+
+    def walk(current: str) -> None:
+        eclass = _ecore_classes()[current]
+        for feature in eclass.features:
+            seen.setdefault(f"{current}.{feature.name}", feature)
+        for parent in eclass.supertypes:
+            walk(parent)
+
+    walk(name)
+    return list(seen.values())
+
+
+def _annotation(eclass: _Class, source: str) -> dict[str, str]:
+    return dict(eclass.annotations.get(source, {}))
 
 
 def _inherited_annotation(class_name: str, source: str) -> dict[str, str]:
     """Annotation details merged along the superclass chain; the most specific class wins."""
-    eclass = _ecore_classes()[class_name]
+    classes = _ecore_classes()
     merged: dict[str, str] = {}
-    for ancestor in reversed([eclass, *eclass.eAllSuperTypes()]):
-        merged.update(_annotation(ancestor, source))
+    for ancestor in reversed([class_name, *_all_supertypes(class_name)]):
+        merged.update(_annotation(classes[ancestor], source))
     return merged
 
 
@@ -123,19 +214,11 @@ def parameters(kind: EObject | EClass | type | str) -> tuple[ParameterSpec, ...]
 
 @cache
 def _parameters(name: str) -> tuple[ParameterSpec, ...]:
-    eclass = _ecore_classes()[name]
     specs = []
-    for feature in eclass.eAllStructuralFeatures():
-        if not isinstance(feature, EReference) or feature.eType.name != "ParameterValue":
+    for feature in _all_features(name):
+        if feature.type_name != "ParameterValue":
             continue
-        details = next(
-            (
-                dict(a.details.items())
-                for a in feature.eAnnotations
-                if a.source == PARAMETER_ANNOTATION
-            ),
-            {},
-        )
+        details = feature.annotations.get(PARAMETER_ANNOTATION, {})
         raw_default = details.get("default")
         per_actor = raw_default == ACTOR_DEFAULT
         default = None if raw_default is None or per_actor else float(raw_default)
@@ -181,14 +264,7 @@ def limited_kinds() -> tuple[str, ...]:
     return tuple(
         name
         for name, eclass in _ecore_classes().items()
-        if any(_declares_limit(feature) for feature in eclass.eStructuralFeatures)
-    )
-
-
-def _declares_limit(feature: object) -> bool:
-    return any(
-        a.source == PARAMETER_ANNOTATION and "limit" in dict(a.details.items())
-        for a in getattr(feature, "eAnnotations", ())
+        if any("limit" in f.annotations.get(PARAMETER_ANNOTATION, {}) for f in eclass.features)
     )
 
 
@@ -210,7 +286,7 @@ def concrete_subclasses(base: str) -> tuple[type, ...]:
     for name, eclass in classes.items():
         if eclass.abstract:
             continue
-        if name == base or base in {s.name for s in eclass.eAllSuperTypes()}:
+        if name == base or base in _all_supertypes(name):
             result.append(getattr(scm, name))
     return tuple(result)
 
@@ -234,5 +310,4 @@ def is_kind_of(obj_or_class: EObject | str, kind_name: str) -> bool:
 def _is_kind_of(name: str, kind_name: str) -> bool:
     # Cached by name: pyecore recomputes eAllSuperTypes on every call, and validation asks this
     # for every node of every sample in a batch.
-    eclass = _ecore_classes()[name]
-    return eclass.name == kind_name or kind_name in {s.name for s in eclass.eAllSuperTypes()}
+    return name == kind_name or kind_name in _all_supertypes(name)

@@ -3,10 +3,13 @@
 from __future__ import annotations
 
 import html
+import importlib.resources
 from dataclasses import dataclass
+from functools import cache
 
 import graphviz
 from pyecore.ecore import EAttribute, EClass, EEnum, EReference
+from pyecore.resources import URI, ResourceSet
 
 from . import catalog
 
@@ -124,6 +127,16 @@ class Edge:
     style: dict[str, str]
 
 
+@cache
+def _metamodel_classes() -> dict[str, EClass]:
+    """The EClasses of the shipped .ecore as pyecore builds them: types, bounds and defaults."""
+    ecore_file = importlib.resources.files("sceml.metamodel") / "scemlmodel.ecore"
+    with importlib.resources.as_file(ecore_file) as path:
+        resource = ResourceSet().get_resource(URI(str(path)))
+    package = resource.contents[0]
+    return {c.name: c for c in package.eClassifiers if isinstance(c, EClass)}
+
+
 def _type_name(feature: EAttribute | EReference) -> str:
     name = str(feature.eType.name)
     bounds = "[*]" if feature.many else ("[0..1]" if feature.lowerBound == 0 else "[1]")
@@ -185,7 +198,7 @@ def _edges(eclass: EClass, show: set[str]) -> list[Edge]:
 
 def class_diagram(view: str) -> graphviz.Digraph:
     """The Graphviz graph of one view of the metamodel."""
-    classes = catalog._ecore_classes()
+    classes = _metamodel_classes()
     show = set(VIEWS[view])
     # Wide hierarchies (many sibling kinds) read better with subclasses stacked to the left.
     direction = "RL" if view == "actions" else "BT"
@@ -203,7 +216,7 @@ def class_diagram(view: str) -> graphviz.Digraph:
 
 def enum_table() -> list[tuple[str, list[str]]]:
     """Each enumeration with its literals, for the documentation."""
-    package = next(iter(catalog._ecore_classes().values())).ePackage
+    package = next(iter(_metamodel_classes().values())).ePackage
     return [
         (e.name, [literal.name for literal in e.eLiterals])
         for e in package.eClassifiers

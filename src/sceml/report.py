@@ -12,7 +12,6 @@ from dataclasses import dataclass, field
 
 from lxml import etree
 
-from . import __version__
 from .diagnostics import Diagnostic, Severity
 
 #: Version of the JSON shape; bumped when a field changes meaning or disappears.
@@ -99,6 +98,8 @@ def diagnostic_dict(diagnostic: Diagnostic) -> dict[str, object]:
 
 def format_json(reports: Sequence[FileReport], tool: str = "sceml validate") -> str:
     """The documented JSON report: a summary and, per file, its status and diagnostics."""
+    from . import __version__  # read from the package metadata: only when a report is written
+
     document = {
         "schema": JSON_SCHEMA_VERSION,
         "tool": tool,

@@ -8,7 +8,7 @@ from pathlib import Path
 import click
 
 from ..errors import LoadError
-from ..export.support import PROFILES
+from ..export.profiles import PROFILES
 from ..io import load
 from ..report import FileReport, exit_code, render
 from ..schema import SUPPORTED_VERSIONS

@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 from .actions import PLANNERS
+from .profiles import CARLA_VERSION, PROFILES
 from .versions import VERSIONS
 
-PROFILES = ("generic", "carla")
-CARLA_VERSION = "1.0"
+__all__ = ["CARLA_VERSION", "PROFILES", "default_version", "unsupported_reason"]
 
 #: Node kinds that never become events: the root starts the act, the end feeds the StopTrigger,
 #: module uses are flattened away before mapping.
