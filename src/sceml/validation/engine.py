@@ -14,7 +14,7 @@ from ..io import Document, model_path, uri_fragment
 from ..traversal import all_contents
 from .context import Context
 from .limits import Limits
-from .registry import REGISTRY, Registry, Rule, findings
+from .registry import REGISTRY, Registry, Rule
 
 INTERNAL_ERROR = "SCEML-X000"
 
@@ -37,7 +37,9 @@ def iter_diagnostics(
     seen: set[Key] = set()
     for obj in objects(model, context):
         for rule in registry.rules_for(obj.eClass):
-            yield from unique(run_rule(rule, obj, context, document), seen)
+            found = run_rule(rule, obj, context, document)
+            if found:
+                yield from unique(found, seen)
     yield from unique(through_modules(context, document, registry), seen)
 
 
@@ -108,16 +110,19 @@ def run_rule(
     context: Context,
     document: Document | None,
     at: EObject | None = None,
-) -> Iterator[Diagnostic]:
+) -> list[Diagnostic]:
     """One rule on one object, located at `at` if given; a crash becomes SCEML-X000."""
     try:
-        found = list(findings(rule.check, obj, context))
+        # Materialised, so that a failure midway is caught as a whole.
+        found = list(rule.check(obj, context))
     except Exception as error:  # a broken model must not stop the run; report and go on
         message = f"internal error in {rule.code} ({rule.name}): {type(error).__name__}: {error}"
-        yield locate(INTERNAL_ERROR, Severity.ERROR, message, at or obj, document)
-        return
-    for element, message in found:
-        yield locate(rule.code, rule.severity, message, at or element, document)
+        return [locate(INTERNAL_ERROR, Severity.ERROR, message, at or obj, document)]
+    # Most runs find nothing: no list of diagnostics to build then.
+    return [
+        locate(rule.code, rule.severity, message, at or element, document)
+        for element, message in found
+    ]
 
 
 def locate(
