@@ -19,6 +19,8 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
+from ..validation.incremental import Change
+
 _FLOW_ENDS = ("source", "target")
 
 
@@ -36,6 +38,9 @@ class _Set:
     def undo(self) -> None:
         _assign(self.owner, self.feature, self.old, self.was_set)
 
+    def described(self) -> Change:
+        return Change(self.owner, self.feature, self.old, self.new)
+
 
 @dataclass
 class _Insert:
@@ -50,6 +55,9 @@ class _Insert:
     def undo(self) -> None:
         self.owner.eGet(self.feature).remove(self.item)
 
+    def described(self) -> Change:
+        return Change(self.owner, self.feature, None, self.item)
+
 
 @dataclass
 class _Remove:
@@ -63,6 +71,9 @@ class _Remove:
 
     def undo(self) -> None:
         self.owner.eGet(self.feature).insert(self.index, self.item)
+
+    def described(self) -> Change:
+        return Change(self.owner, self.feature, self.item, None)
 
 
 def _assign(owner: EObject, feature: str, value: Any, is_set: bool) -> None:
@@ -157,6 +168,11 @@ class Recorder:
         """Apply every recorded change again, first first."""
         for step in self.steps:
             step.do()
+
+    def changes(self) -> list[Change]:
+        """What the recorded steps change, for incremental validation; undo and redo change the
+        same objects and features, so the list serves after either."""
+        return [step.change.described() for step in self.steps]
 
 
 def _is_containment(owner: EObject, feature: str) -> bool:

@@ -35,6 +35,11 @@ OPERATIONS: dict[str, Operation] = {
 }
 
 
+#: Operations that also change what the undo records do not show (extract_module writes the new
+#: module into its library): the editor validates the whole model after them.
+OUTSIDE = frozenset({"extract_module"})
+
+
 def apply(ctx: EditContext, op: object) -> None:
     """Apply one operation (a dict with an `op` name) to the context's graph."""
     if not isinstance(op, dict):

@@ -20,10 +20,11 @@ from ..graph import root_node
 from ..modules.library import definition_named
 from ..render.labels import loaded_definition
 from ..render.style import style_data
-from ..validation import validate
+from ..validation.incremental import IncrementalValidator
 from . import operations, palette, view
+from .changes import Recorder
 from .clipboard import copy_nodes
-from .commands import CommandStack
+from .commands import CommandStack, Step
 from .context import Clipboard, EditContext
 from .errors import ConflictError, ExportRefused, OperationError, ReadOnlyError
 from .ids import Ids
@@ -51,6 +52,7 @@ class EditorSession:
         self.ids = Ids()
         self.clipboard = Clipboard()
         self._listing = view.Listing()
+        self.validator: IncrementalValidator | None = None
 
     # Opening -------------------------------------------------------------------------------
 
@@ -74,6 +76,7 @@ class EditorSession:
             module = str(graph.name)
         self.document, self.graph, self.module = document, graph, module
         self.stack, self.ids, self._listing = CommandStack(), Ids(), view.Listing()
+        self.validator = IncrementalValidator(document.root, document=document)
         self.version += 1
         return self.view()
 
@@ -166,9 +169,13 @@ class EditorSession:
         return "logical" if self.module is not None else self.options.level
 
     def diagnostics(self) -> list[Diagnostic]:
-        """Every diagnostic of the model as the real validator gives it."""
-        assert self.document is not None
-        found = validate(self.document.root, document=self.document)
+        """Every diagnostic of the model as the real validator gives it.
+
+        Validation is incremental (sceml.validation.incremental): after an edit, undo or redo
+        only the rules whose inputs the edit changed run again; the list equals a full run's.
+        """
+        assert self.validator is not None, "no file is open"
+        found = self.validator.validate()
         if self.module is None:
             return found
         return [d for d in found if _inside(d.element, self.graph)]
@@ -223,15 +230,29 @@ class EditorSession:
         if not isinstance(ops, list):
             raise OperationError("'ops' must be a list of operations")
         ctx = self._context()
+        recorders: list[Recorder] = []
 
-        def edit(recorder: Any) -> None:
+        def edit(recorder: Recorder) -> None:
+            recorders.append(recorder)
             ctx.rec = recorder
             for op in ops:
                 operations.apply(ctx, op)
 
-        self.stack.run(label or operations.label_of(ops), edit)
+        try:
+            self.stack.run(label or operations.label_of(ops), edit)
+        finally:
+            # A refused request was rolled back: what it touched is noted all the same.
+            self._changed(recorders, ops)
         self.version += 1
         return self.view(created=ctx.created)
+
+    def _changed(self, recorders: list[Recorder], ops: list[Any]) -> None:
+        """Tell the validator what a request changed (all of it, if an op reached outside)."""
+        assert self.validator is not None
+        for recorder in recorders:
+            self.validator.note(recorder.changes())
+        if any(isinstance(op, dict) and op.get("op") in operations.OUTSIDE for op in ops):
+            self.validator.forget()
 
     def undo(self) -> dict[str, Any]:
         """Revert the last step."""
@@ -241,9 +262,12 @@ class EditorSession:
         """Apply the last undone step again."""
         return self._history(self.stack.redo)
 
-    def _history(self, move: Callable[[], object]) -> dict[str, Any]:
+    def _history(self, move: Callable[[], Step | None]) -> dict[str, Any]:
         self._writable()
-        if move() is not None:
+        step = move()
+        if step is not None:
+            assert self.validator is not None
+            self.validator.note(step.recorder.changes())
             self.version += 1
         return self.view()
 
@@ -263,6 +287,9 @@ class EditorSession:
         assert self.document is not None
         target = Path(path).resolve() if path else self.path
         io.save(self.document.root, target)
+        # Saving may rewrite references and the file's path: validate the whole model again.
+        assert self.validator is not None
+        self.validator.forget()
         if target != self.path:
             if target.parent != self.path.parent:
                 # Relative references (map, libraries) were rewritten for the new folder: read

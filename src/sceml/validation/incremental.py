@@ -1,0 +1,615 @@
+"""Incremental validation: after an edit, re-run only the rules whose inputs the edit changed.
+
+A full run (`engine.iter_diagnostics`) applies every rule to every object of `engine.objects`,
+then the through-modules rules, and drops repeated findings with `engine.unique`. An
+`IncrementalValidator` keeps what each rule found on each object last time. Told what an edit
+changed (a list of `Change`, as the editor's undo records them), it works out
+
+- which objects were *touched*: the owner of a changed feature, an object moved into or out of a
+  containment, and both ends of a flow whose source or target changed;
+- which *aspects* of the model changed (`Aspect`): a graph's structure, names, who performs what,
+  the cast, module uses, the scenario's level and map, positions, other parameter values, plain
+  attributes (`aspects_of`).
+
+It then re-runs a rule on an object only when `READS` says the rule reads something that changed:
+the object itself and what it contains (SELF), the objects above it (ABOVE), the actors it or its
+node refers to (ACTORS), or one of the aspects (then on every object it applies to). Every other
+finding is taken from the last run, re-located when an index or a name on its way up from the
+model's root changed (fragments, paths and lines depend on them). The findings are put together
+in the full run's order and passed through `unique`, so the result is the same list, in the same
+order, that `validate` gives. A rule missing from `READS` re-runs everywhere, every time.
+
+What the validator cannot see makes the next run a full one: the first run, `forget()` (a file
+was opened or saved, or an edit changed something the change list does not show), a map file
+that changed on disk, and a module use whose definition did not resolve (its library may appear).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass
+from enum import Flag, auto
+from typing import NamedTuple
+
+from pyecore.ecore import EObject, EReference
+
+import scemlmodel as scm
+
+from ..collector import collector_paused
+from ..diagnostics import Diagnostic
+from ..graph import root_node
+from ..io import Document
+from ..maps.reference import map_reference
+from ..traversal import all_contents, single_references
+from .context import Context
+from .engine import Key, locate, objects, run_rule, through_modules, unique
+from .limits import Limits
+from .registry import REGISTRY, Registry, Rule
+
+__all__ = [
+    "READS",
+    "Aspect",
+    "Change",
+    "IncrementalValidator",
+    "Reads",
+    "RunStats",
+    "Scope",
+    "aspects_of",
+]
+
+
+class Change(NamedTuple):
+    """One small change: `feature` of `owner` went from `old` to `new`.
+
+    For a many-valued feature, an insertion has `old` None and the item as `new`, a removal the
+    other way round. Undoing or redoing a change changes the same things, so the same record
+    serves all three.
+    """
+
+    owner: EObject
+    feature: str
+    old: object = None
+    new: object = None
+
+
+class Scope(Flag):
+    """What a rule reads around the object it runs on."""
+
+    NONE = 0
+    #: The object, everything it contains, its container, and for a node the flows at it, for a
+    #: flow the nodes at its ends (their names and graphs).
+    SELF = auto()
+    #: The objects it lies in, up to its node, actor, use or module parameter: parameter paths
+    #: (`ego.Accelerate_1.targetSpeed`) and "start of actor 'ego'" name them.
+    ABOVE = auto()
+    #: The actors or roles it, its node or its use refers to: their names, kinds, whether declared.
+    ACTORS = auto()
+
+
+class Aspect(Flag):
+    """What an edit can change across the model; a rule reading one re-runs wherever it applies."""
+
+    NONE = 0
+    #: Which nodes and flows a graph holds, in which order and of which kinds; where flows lead.
+    STRUCTURE = auto()
+    #: The names of nodes, module uses, actors, roles and modules.
+    NAMES = auto()
+    #: Which actor or role each node and each role binding refers to.
+    ROLES = auto()
+    #: The declared actors and roles: which, of which kind, allowed kinds, the ego flag.
+    CAST = auto()
+    #: Module uses (definition, bindings, overrides) and everything module definitions hold.
+    MODULES = auto()
+    #: Which node is the scenario's root node, and its level and map.
+    SETTINGS = auto()
+    #: Positions (start positions, destinations, waypoints) and the values in them.
+    POSITIONS = auto()
+    #: Parameter values other than positions: speeds, rates, durations, sizes, environment.
+    PARAMETERS = auto()
+    #: Plain attributes no graph-wide rule reads: direction, comparison rule, opaque XML, date.
+    ATTRIBUTES = auto()
+
+
+EVERYTHING = (
+    Aspect.STRUCTURE
+    | Aspect.NAMES
+    | Aspect.ROLES
+    | Aspect.CAST
+    | Aspect.MODULES
+    | Aspect.SETTINGS
+    | Aspect.POSITIONS
+    | Aspect.PARAMETERS
+    | Aspect.ATTRIBUTES
+)
+
+
+@dataclass(frozen=True)
+class Reads:
+    """What one rule reads: around its object (`scope`) and across the model (`aspects`)."""
+
+    scope: Scope = Scope.NONE
+    aspects: Aspect = Aspect.NONE
+
+
+_SELF, _ABOVE, _ACTORS = Scope.SELF, Scope.ABOVE, Scope.ACTORS
+#: A rule on a value or a position: its parameter path names its containers, node and actor.
+_VALUE = _SELF | _ABOVE | _ACTORS
+_SHAPE = Aspect.STRUCTURE | Aspect.NAMES
+#: What expanding a scenario's module uses reads (C001, E003 and M017 look at the expansion).
+_EXPANSION = _SHAPE | Aspect.ROLES | Aspect.CAST | Aspect.MODULES
+#: Where an actor is when a turn or crossing starts: the earlier maneuvers of the same actor
+#: along the flows, their destinations, its start position; and the map.
+_ROUTE = Aspect.STRUCTURE | Aspect.ROLES | Aspect.CAST | Aspect.POSITIONS | Aspect.SETTINGS
+_LEVEL, _MODULES = Aspect.SETTINGS, Aspect.MODULES
+
+#: Every registered rule by what it reads. A test fails when a registered rule is missing here.
+READS: dict[str, Reads] = {
+    # actors.py
+    "SCEML-A001": Reads(_SELF),
+    "SCEML-A002": Reads(_SELF | _ACTORS, Aspect.CAST),  # and the graph's declared participants
+    "SCEML-A003": Reads(_SELF),
+    "SCEML-A004": Reads(_SELF | _ACTORS),  # the target's name
+    "SCEML-A005": Reads(_SELF | _ACTORS),
+    "SCEML-A006": Reads(_SELF),  # the root's actors are its contents
+    "SCEML-A007": Reads(_SELF),
+    # structure.py
+    "SCEML-S001": Reads(aspects=_SHAPE),
+    "SCEML-S002": Reads(aspects=_SHAPE),
+    "SCEML-S003": Reads(_SELF),  # its incoming flows
+    "SCEML-S004": Reads(_SELF),
+    "SCEML-S005": Reads(_SELF),
+    "SCEML-S006": Reads(aspects=_SHAPE),
+    "SCEML-S007": Reads(aspects=_SHAPE),
+    "SCEML-S008": Reads(aspects=_SHAPE),
+    "SCEML-S009": Reads(_SELF),  # its incoming flows, and whether each has a source
+    "SCEML-S010": Reads(_SELF),  # the name of the end it has
+    "SCEML-S011": Reads(_SELF),  # the graphs of its ends
+    "SCEML-S012": Reads(aspects=_SHAPE),
+    "SCEML-S013": Reads(aspects=_SHAPE),
+    # simultaneity.py
+    "SCEML-C001": Reads(aspects=_EXPANSION),
+    # modules.py
+    "SCEML-M001": Reads(_SELF, _MODULES),  # and its definition's roles
+    "SCEML-M002": Reads(_SELF),
+    "SCEML-M003": Reads(_SELF, _MODULES),
+    "SCEML-M004": Reads(_SELF | _ACTORS, _MODULES | Aspect.CAST),
+    "SCEML-M005": Reads(_SELF, _MODULES),
+    "SCEML-M006": Reads(_SELF, _MODULES | _LEVEL),
+    "SCEML-M007": Reads(aspects=_SHAPE | _MODULES),
+    "SCEML-M008": Reads(_SELF),
+    "SCEML-M009": Reads(_SELF),
+    "SCEML-M010": Reads(_SELF),
+    "SCEML-M011": Reads(_SELF),
+    "SCEML-M012": Reads(aspects=_SHAPE | _MODULES),
+    "SCEML-M013": Reads(aspects=_SHAPE | _MODULES),
+    "SCEML-M014": Reads(_SELF),  # a library's modules are its contents
+    "SCEML-M015": Reads(_SELF | _ABOVE | _ACTORS, Aspect.CAST),
+    "SCEML-M016": Reads(aspects=_SHAPE | _MODULES),
+    "SCEML-M017": Reads(aspects=_EXPANSION),
+    # parameters.py
+    "SCEML-P001": Reads(_VALUE, _LEVEL),
+    "SCEML-P002": Reads(_VALUE, _LEVEL),
+    "SCEML-P003": Reads(_VALUE),
+    "SCEML-P004": Reads(_VALUE),
+    "SCEML-P005": Reads(_VALUE),
+    "SCEML-P006": Reads(_VALUE),
+    "SCEML-P007": Reads(_VALUE),
+    "SCEML-P008": Reads(_VALUE, _MODULES),  # its module's parameters
+    # plausibility.py: the performer's kind
+    "SCEML-L001": Reads(_VALUE),
+    "SCEML-L002": Reads(_VALUE),
+    "SCEML-L003": Reads(_VALUE),
+    # map_rules.py
+    "SCEML-R001": Reads(_SELF, _LEVEL),
+    "SCEML-R002": Reads(_SELF, _LEVEL),
+    "SCEML-R003": Reads(_VALUE, _LEVEL),
+    "SCEML-R004": Reads(_VALUE, _LEVEL | Aspect.CAST),
+    "SCEML-R005": Reads(_VALUE, _LEVEL | Aspect.CAST),
+    "SCEML-R006": Reads(_VALUE, _ROUTE),
+    "SCEML-R007": Reads(_VALUE, _ROUTE),
+    # readiness.py
+    "SCEML-E001": Reads(_SELF, _LEVEL),
+    "SCEML-E002": Reads(_SELF, _LEVEL),
+    "SCEML-E003": Reads(aspects=_EXPANSION | _LEVEL),
+    "SCEML-E004": Reads(_SELF),
+    "SCEML-E005": Reads(_SELF),
+    # opaque.py
+    "SCEML-E006": Reads(_SELF),
+    "SCEML-E007": Reads(_SELF),
+}
+
+
+def through_modules_reads(registry: Registry = REGISTRY, reads: dict[str, Reads] = READS) -> Aspect:
+    """What the through-modules pass reads: the expansion, and what its rules read there.
+
+    Around an expanded copy there is only what the expansion made: copies of module internals
+    (MODULES), bound to the scenario's actors (ROLES, CAST, NAMES). An unclassified rule among
+    them makes the pass read everything.
+    """
+    found = _EXPANSION
+    for rule in registry.rules():
+        if rule.through_modules:
+            found |= reads[rule.code].aspects if rule.code in reads else EVERYTHING
+    return found
+
+
+# --- what a change changed ----------------------------------------------------------------------
+
+#: Features by name whose changes matter beyond their owner. A feature not named here is judged
+#: by its type (`_by_type`): a parameter value, a position, a plain attribute, or else everything.
+_FEATURES: dict[str, Aspect] = {
+    "nodes": _SHAPE | Aspect.ROLES | Aspect.MODULES,  # a node comes or goes with all it holds
+    "flows": Aspect.STRUCTURE,
+    "source": Aspect.STRUCTURE,
+    "target": Aspect.STRUCTURE,
+    "incoming": Aspect.STRUCTURE,
+    "outgoing": Aspect.STRUCTURE,
+    "name": Aspect.NAMES,
+    "referenceActor": Aspect.ROLES,
+    "targetActor": Aspect.ROLES,
+    "actor": Aspect.ROLES | Aspect.MODULES,
+    "actors": Aspect.CAST,
+    "isEgo": Aspect.CAST,
+    "roles": Aspect.CAST | Aspect.MODULES,
+    "allowedKinds": Aspect.CAST | Aspect.MODULES,
+    "kind": Aspect.CAST | Aspect.MODULES,
+    "level": Aspect.SETTINGS,
+    "map": Aspect.SETTINGS,
+    "definition": Aspect.STRUCTURE | Aspect.MODULES,
+    "bindings": Aspect.MODULES,
+    "overrides": Aspect.MODULES,
+    "role": Aspect.MODULES,
+    "parameter": Aspect.MODULES,
+    "parameters": Aspect.MODULES,
+    "default": Aspect.MODULES,
+    "modules": EVERYTHING,
+}
+
+
+def _is_notation(change: Change) -> bool:
+    """Diagram positions: no rule reads them (validation ignores the layout, docs/editor.md)."""
+    return change.feature == "diagramPosition" or isinstance(change.owner, scm.DiagramPosition)
+
+
+def _by_type(owner: EObject, name: str) -> Aspect:
+    feature = owner.eClass.findEStructuralFeature(name)
+    if feature is None:
+        return EVERYTHING
+    if not isinstance(feature, EReference):
+        return Aspect.ATTRIBUTES
+    kind = feature.eType
+    if feature.containment and isinstance(kind, type) and issubclass(kind, scm.Position):
+        return Aspect.POSITIONS
+    if feature.containment and isinstance(kind, type) and issubclass(kind, scm.ParameterValue):
+        return Aspect.PARAMETERS
+    if feature.containment and kind is scm.Environment:
+        return Aspect.PARAMETERS | Aspect.ATTRIBUTES
+    return EVERYTHING
+
+
+def _where(owner: EObject) -> Aspect:
+    """What a change means by where its owner lies: in a position, a value, a module."""
+    found = Aspect.NONE
+    current: EObject | None = owner
+    while current is not None:
+        if isinstance(current, scm.Position):
+            found |= Aspect.POSITIONS
+        elif isinstance(current, scm.ParameterValue):
+            found |= Aspect.PARAMETERS
+        elif isinstance(current, scm.ModuleUse | scm.ModuleDefinition | scm.Library):
+            found |= Aspect.MODULES
+        current = current.eContainer()
+    return found
+
+
+def _refers_out(obj: EObject) -> bool:
+    """Whether anything in `obj` refers to another object (a parameter reference, an actor):
+    expanding module uses checks every such reference."""
+    return any(
+        next(single_references(held), None) is not None for held in (obj, *all_contents(obj))
+    )
+
+
+def aspects_of(change: Change) -> Aspect:
+    """Which aspects of the model one change changes (none for a diagram position)."""
+    if _is_notation(change):
+        return Aspect.NONE
+    owner, name = change.owner, change.feature
+    found = _FEATURES.get(name)
+    if found is None:
+        found = _by_type(owner, name)
+    found |= _where(owner)
+    feature = owner.eClass.findEStructuralFeature(name)
+    held = isinstance(feature, EReference) and feature.containment
+    for value in (change.old, change.new):
+        if not isinstance(value, EObject):
+            continue
+        if name == "nodes" and isinstance(value, scm.RootNode):
+            found |= Aspect.SETTINGS | Aspect.CAST  # which root node, so which level, map, cast
+        if held and _refers_out(value):
+            found |= Aspect.ROLES | Aspect.MODULES
+    return found
+
+
+def _moves(owner: EObject, name: str) -> bool:
+    """Whether the values of this feature are themselves changed by the change: contained
+    objects move, a flow's ends gain or lose it in `incoming` and `outgoing`."""
+    feature = owner.eClass.findEStructuralFeature(name)
+    if not isinstance(feature, EReference):
+        return feature is None
+    return bool(feature.containment or feature.many or feature.eOpposite is not None)
+
+
+class _Impact:
+    """What a list of changes touched, worked out once per run."""
+
+    def __init__(self, changes: Iterable[Change]) -> None:
+        self.aspects = Aspect.NONE
+        self.touched: set[EObject] = set()
+        for change in changes:
+            if _is_notation(change):
+                continue
+            self.aspects |= aspects_of(change)
+            self.touched.add(change.owner)
+            if _moves(change.owner, change.feature):
+                self.touched.update(v for v in (change.old, change.new) if isinstance(v, EObject))
+        self.around: set[EObject] = set()  # SELF: touched, or holding or next to a touched one
+        self.inside: set[EObject] = set()  # ABOVE: held by a touched object
+        self.participants: set[int] = (
+            set()
+        )  # ACTORS: ids of actors and roles touched or holding one
+        for obj in self.touched:
+            self._spread(obj)
+
+    def _spread(self, obj: EObject) -> None:
+        current: EObject | None = obj
+        while current is not None:
+            self.around.add(current)
+            if isinstance(current, scm.Participant):
+                self.participants.add(id(current))
+            current = current.eContainer()
+        if isinstance(obj, scm.Flow):
+            self.around.update(end for end in (obj.source, obj.target) if end is not None)
+        if isinstance(obj, scm.GraphElement):
+            self.around.update(obj.incoming)
+            self.around.update(obj.outgoing)
+        if not isinstance(obj, scm.Graph | scm.Library):
+            # A graph holds everything; what lies above a node (the graph) no ABOVE rule reads.
+            self.inside.update(all_contents(obj))
+
+    def moved(self, element: EObject) -> bool:
+        """Whether `element` or anything above it was touched: its fragment, path or line may
+        differ (an index in a list, a name)."""
+        current: EObject | None = element
+        while current is not None:
+            if current in self.touched:
+                return True
+            current = current.eContainer()
+        return False
+
+
+def _refers_to(obj: EObject, participants: set[int]) -> bool:
+    """Whether `obj`, its node, binding or use refers to one of these participants (by id)."""
+    current: EObject | None = obj
+    while current is not None and not isinstance(current, scm.Graph | scm.Library):
+        if isinstance(current, scm.ActionNode):
+            held = [current.referenceActor, current.targetActor]
+        elif isinstance(current, scm.RoleBinding):
+            held = [current.actor]
+        elif isinstance(current, scm.ModuleUse):
+            held = [binding.actor for binding in current.bindings]
+        elif isinstance(current, scm.Participant):
+            held = [current]
+        else:
+            current = current.eContainer()
+            continue
+        return any(id(p) in participants for p in held if p is not None)
+    return False
+
+
+# --- the validator ------------------------------------------------------------------------------
+
+
+@dataclass
+class RunStats:
+    """What the last run did: a full run or not, and how many rule checks ran or were reused."""
+
+    full: bool = True
+    checks_run: int = 0
+    checks_reused: int = 0
+    through_modules_run: bool = True
+
+
+Findings = tuple[Diagnostic, ...]
+#: Per object: the rules that applied (the registry's own tuple) and what each found, or None
+#: when none found anything (most objects; it saves looking at each).
+_Entry = tuple[tuple[Rule, ...], tuple[Findings, ...] | None]
+
+
+class IncrementalValidator:
+    """Validates one model again and again, re-running only what the changes noted since the
+    last run can have changed; `validate()` equals `engine.validate` with the same options."""
+
+    def __init__(
+        self,
+        model: EObject,
+        *,
+        document: Document | None = None,
+        limits: Limits | None = None,
+        osc_version: str | None = None,
+        osc_profile: str | None = None,
+        registry: Registry = REGISTRY,
+        reads: dict[str, Reads] = READS,
+    ) -> None:
+        self.model = model
+        self.document = document
+        self.limits = limits or Limits()
+        self.osc_version = osc_version
+        self.osc_profile = osc_profile
+        self.registry = registry
+        self.reads = reads
+        self.stats = RunStats()
+        self._through_reads = through_modules_reads(registry, reads)
+        self._through_always = any(
+            rule.through_modules and rule.code not in reads for rule in registry.rules()
+        )
+        self._results: dict[EObject, _Entry] = {}
+        self._through: Findings = ()
+        self._pending: list[Change] = []
+        self._full = True
+        self._outside: tuple[object, ...] | None = None
+        self._unresolved = False
+
+    def note(self, changes: Iterable[Change]) -> None:
+        """Remember changes made to the model since the last run (undone ones too)."""
+        self._pending.extend(changes)
+
+    def forget(self) -> None:
+        """Make the next run a full one: something changed that no `Change` describes."""
+        self._full = True
+
+    def validate(self) -> list[Diagnostic]:
+        """Every diagnostic of the model now, as `engine.validate` would give it."""
+        with collector_paused():
+            return self._run()
+
+    def _run(self) -> list[Diagnostic]:
+        outside = _outside_state(self.model, self.document)
+        full = self._full or self._unresolved or outside != self._outside
+        impact = _Impact(() if full else self._pending)
+        self._pending, self._full, self._outside = [], False, outside
+        self.stats = RunStats(full=full)
+        context = Context(
+            self.model, self.document, self.limits, self.osc_version, self.osc_profile
+        )
+        run = _Pass(self, context, impact)
+        previous = {} if full else self._results
+        results: dict[EObject, _Entry] = {}
+        seen: set[Key] = set()
+        found: list[Diagnostic] = []
+        self._unresolved = False
+        for obj in objects(self.model, context):
+            rules = self.registry.rules_for(obj.eClass)
+            if isinstance(obj, scm.ModuleUse):
+                self._note_unresolved(obj, context)
+            if not rules:
+                continue
+            entry = run.check(obj, rules, previous.get(obj))
+            results[obj] = entry
+            for findings in entry[1] or ():
+                found.extend(unique(findings, seen))
+        self._results = results
+        if full or self._through_always or impact.aspects & self._through_reads:
+            self._through = tuple(through_modules(context, self.document, self.registry))
+        else:
+            self._through = run.relocated(self._through)
+            self.stats.through_modules_run = False
+        found.extend(unique(self._through, seen))
+        return found
+
+    def _note_unresolved(self, use: scm.ModuleUse, context: Context) -> None:
+        # A definition that did not resolve may resolve later (its library file appears): the
+        # next run starts over rather than trust what was found without it.
+        if use.definition is not None and context.definition_of(use) is None:
+            self._unresolved = True
+
+
+class _Pass:
+    """One incremental run: which rules are stale where, and the checks that follow."""
+
+    def __init__(self, validator: IncrementalValidator, context: Context, impact: _Impact) -> None:
+        self.validator = validator
+        self.context = context
+        self.impact = impact
+        self.stats = validator.stats
+        # Per rule code: (re-run everywhere, on SELF hits, on ABOVE hits, on ACTORS hits).
+        self.plan: dict[str, tuple[bool, bool, bool, bool]] = {}
+        for rule in validator.registry.rules():
+            reads = validator.reads.get(rule.code)
+            if reads is None:
+                self.plan[rule.code] = (True, False, False, False)
+                continue
+            self.plan[rule.code] = (
+                bool(reads.aspects & impact.aspects),
+                bool(reads.scope & Scope.SELF),
+                bool(reads.scope & Scope.ABOVE),
+                bool(reads.scope & Scope.ACTORS) and bool(impact.participants),
+            )
+        # Per tuple of rules (by id; the registry hands out the same tuple per class): whether
+        # any of them re-runs everywhere or on ACTORS hits this time.
+        self._loud: dict[int, bool] = {}
+
+    def check(self, obj: EObject, rules: tuple[Rule, ...], before: _Entry | None) -> _Entry:
+        """One object's findings: re-run where stale, else the last run's, re-located."""
+        if before is None or before[0] is not rules:
+            return _entry(rules, [self.run(rule, obj) for rule in rules])
+        around, inside = obj in self.impact.around, obj in self.impact.inside
+        if not (around or inside or self.loud(rules)):
+            self.stats.checks_reused += len(rules)
+            if before[1] is None or not self.impact.touched:
+                return before
+            return _entry(rules, [self.relocated(findings) for findings in before[1]])
+        last = before[1] or ((),) * len(rules)
+        refers: bool | None = None  # worked out only if a rule needs it
+        out: list[Findings] = []
+        for index, rule in enumerate(rules):
+            everywhere, on_self, on_above, on_actors = self.plan[rule.code]
+            stale = everywhere or (on_self and around) or (on_above and inside)
+            if not stale and on_actors:
+                if refers is None:
+                    refers = _refers_to(obj, self.impact.participants)
+                stale = refers
+            if stale:
+                out.append(self.run(rule, obj))
+            else:
+                out.append(self.relocated(last[index]))
+                self.stats.checks_reused += 1
+        return _entry(rules, out)
+
+    def loud(self, rules: tuple[Rule, ...]) -> bool:
+        """Whether one of these rules re-runs everywhere or on ACTORS hits in this run."""
+        known = self._loud.get(id(rules))
+        if known is None:
+            known = any(self.plan[r.code][0] or self.plan[r.code][3] for r in rules)
+            self._loud[id(rules)] = known
+        return known
+
+    def run(self, rule: Rule, obj: EObject) -> Findings:
+        self.stats.checks_run += 1
+        return tuple(run_rule(rule, obj, self.context, self.validator.document))
+
+    def relocated(self, findings: Findings) -> Findings:
+        """Findings of the last run, located again where an index or name above them changed."""
+        if not findings or not self.impact.touched:
+            return findings
+        document = self.validator.document
+        return tuple(
+            locate(d.code, d.severity, d.message, d.element, document)
+            if d.element is not None and self.impact.moved(d.element)
+            else d
+            for d in findings
+        )
+
+
+def _entry(rules: tuple[Rule, ...], found: list[Findings]) -> _Entry:
+    return rules, (tuple(found) if any(found) else None)
+
+
+def _outside_state(model: EObject, document: Document | None) -> tuple[object, ...]:
+    """What a run depends on outside the model: the file's path, and the map file's state."""
+    path = document.path if document is not None else None
+    state: tuple[object, ...] = (path,)
+    root = root_node(model) if isinstance(model, scm.Scenario) else None
+    if root is None:
+        return state
+    try:
+        reference = map_reference(root.map, path)
+    except Exception:  # whatever the map text is, the map rules say what is wrong with it
+        return (*state, root.map)
+    if reference is None or reference.path is None:
+        return (*state, root.map)
+    try:
+        stat = reference.path.stat()
+    except OSError:
+        return (*state, str(reference.path))
+    return (*state, str(reference.path), stat.st_mtime_ns, stat.st_size)
