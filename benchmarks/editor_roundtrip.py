@@ -5,6 +5,12 @@
 Measured on UIS2 (examples/uis2-concrete.xmi) and on a synthetic 500-node scenario built like
 benchmarks/validate_scale.py's. Prints the median milliseconds per round trip; the targets are
 under 100 ms for UIS2 and under 300 ms for 500 nodes.
+
+Then validation alone after one edit, full (`validate`) and incremental (what the editor runs,
+sceml.validation.incremental) side by side on the same model after the same edit, in alternating
+order: a parameter of one node (the common edit), a move (layout only), and a node renamed
+(names feed the graph-wide rules and the module expansion, so those run again). Prints the
+medians, their ratio, and how many rule checks the incremental run ran and reused.
 """
 
 from __future__ import annotations
@@ -16,22 +22,48 @@ import statistics
 import sys
 import tempfile
 import time
+from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 from sceml import io
 from sceml.editor import EditorSession
+from sceml.validation import validate
+from sceml.validation.incremental import IncrementalValidator
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 from validate_scale import build_library, build_scenario  # noqa: E402
 
 TARGETS = {"UIS2": 100.0, "500 nodes": 300.0}
+#: An edit: the ops of run number `run` on a node (by id), alternating between two states.
+Edit = Callable[[str, int], list[dict[str, Any]]]
+EDITS: dict[str, Edit] = {
+    "parameter": lambda node, run: [
+        {
+            "op": "set_parameter",
+            "node": node,
+            "field": "targetSpeed",
+            "value": {"type": "value", "value": 10.0 + run % 2},
+        }
+    ],
+    "move": lambda node, run: [
+        {"op": "move", "positions": {node: {"x": float(run % 2), "y": 0.0}}}
+    ],
+    "rename": lambda node, run: [
+        {"op": "set", "node": node, "field": "name", "value": f"Renamed_{run % 2}"}
+    ],
+}
+
+
+def first_accelerate(session: EditorSession) -> str:
+    """The id of the first Accelerate node of the edited graph."""
+    return next(n["id"] for n in session.view()["nodes"] if n["kind"] == "Accelerate")
 
 
 def round_trip_ms(session: EditorSession, runs: int) -> float:
     """Median milliseconds of a move op's full round trip, alternating two positions."""
-    view = session.view()
-    node = next(n["id"] for n in view["nodes"] if n["kind"] not in ("RootNode", "EndNode"))
+    node = first_accelerate(session)
     times = []
     for run in range(runs):
         op = {"op": "move", "positions": {node: {"x": float(run % 2), "y": 0.0}}}
@@ -39,6 +71,44 @@ def round_trip_ms(session: EditorSession, runs: int) -> float:
         json.dumps(session.apply([op]))
         times.append((time.perf_counter() - started) * 1000)
     return statistics.median(times)
+
+
+def validation_ms(session: EditorSession, edit: Edit, runs: int) -> tuple[float, float, int, int]:
+    """Median ms of a full and of an incremental validation after the same edit; and the rule
+    checks the incremental run ran and reused (the last run's)."""
+    document = session.document
+    assert document is not None
+    validator = IncrementalValidator(document.root, document=document)
+    validator.validate()
+    node = first_accelerate(session)
+    full, incremental = [], []
+    for run in range(runs):
+        session.apply(edit(node, run))  # the session validates too; that is not timed here
+        validator.note(session.stack.done[-1].recorder.changes())
+        # Alternate which goes first, so neither always runs on a warmer cache.
+        if run % 2:
+            expected, full_ms = timed(lambda: validate(document.root, document=document))
+            found, incremental_ms = timed(validator.validate)
+        else:
+            found, incremental_ms = timed(validator.validate)
+            expected, full_ms = timed(lambda: validate(document.root, document=document))
+        if found != expected:
+            raise SystemExit("the incremental run differs from the full run")
+        full.append(full_ms)
+        incremental.append(incremental_ms)
+    stats = validator.stats
+    return (
+        statistics.median(full),
+        statistics.median(incremental),
+        stats.checks_run,
+        (stats.checks_reused),
+    )
+
+
+def timed(run: Callable[[], object]) -> tuple[object, float]:
+    started = time.perf_counter()
+    result = run()
+    return result, (time.perf_counter() - started) * 1000
 
 
 def synthetic(folder: Path, nodes: int) -> Path:
@@ -57,6 +127,7 @@ def main(argv: list[str] | None = None) -> None:
     with tempfile.TemporaryDirectory() as temporary:
         folder = Path(temporary)
         shutil.copytree(HERE.parent / "examples", folder / "examples")
+        shutil.copytree(HERE.parent / "maps", folder / "maps")
         cases = {
             "UIS2": folder / "examples" / "uis2-concrete.xmi",
             "500 nodes": synthetic(folder, 500),
@@ -67,6 +138,21 @@ def main(argv: list[str] | None = None) -> None:
             count = len(session.open(path)["nodes"])
             median = round_trip_ms(session, arguments.runs)
             print(f"{label:>10} {count:>6} {median:>10.1f} {TARGETS[label]:>10.0f}")
+        print()
+        print("validation after one edit (median ms), full and incremental side by side")
+        print(
+            f"{'model':>10} {'edit':>10} {'full ms':>8} {'incr. ms':>9} {'ratio':>6}"
+            f" {'checks run':>11} {'reused':>7}"
+        )
+        for label, path in cases.items():
+            for name, edit in EDITS.items():
+                session = EditorSession()
+                session.open(path, discard=True)
+                full, incremental, ran, reused = validation_ms(session, edit, arguments.runs)
+                print(
+                    f"{label:>10} {name:>10} {full:>8.2f} {incremental:>9.2f}"
+                    f" {full / incremental:>6.1f} {ran:>11} {reused:>7}"
+                )
 
 
 if __name__ == "__main__":
