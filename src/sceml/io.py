@@ -21,6 +21,7 @@ from pyecore.resources.xmi import XMIOptions, XMIResource
 
 import scemlmodel as scm
 
+from . import xmi_reader
 from .collector import collector_paused
 from .errors import LoadError, SaveError, SceMLError
 from .safexml import (  # noqa: F401 (the size limit is part of this module's API)
@@ -98,7 +99,12 @@ class SafeXMIResource(XMIResource):  # type: ignore[misc]  # pyecore is untyped
     Besides what pyecore checks, it refuses what EMF would refuse or what no SceML tool writes:
     values EMF cannot read back (non-finite or malformed numbers, ints beyond 32 bits, unknown
     enum literals), duplicate ids, more than one root, and cross-file containment.
+
+    Files are decoded by `sceml.xmi_reader`, which builds the objects directly; what it declines
+    goes through pyecore's decoder (`fast_decoding = False` makes every file take that path).
     """
+
+    fast_decoding = True
 
     def load(self, options: dict[XMIOptions, Any] | None = None) -> None:
         path = _local_path(self.uri)
@@ -153,6 +159,13 @@ class SafeXMIResource(XMIResource):  # type: ignore[misc]  # pyecore is untyped
         self.xmiid = f"{{{xmi}}}id"
         self.schema_tag = f"{{{xsi}}}schemaLocation"
         self.schema_locations: dict[str, object] = {}
+        if self.fast_decoding and xmi_reader.decode(self, xmlroot, _check_literal):
+            return
+        self._decode_with_pyecore(xmlroot, xmi)
+
+    def _decode_with_pyecore(self, xmlroot: etree._Element, xmi: str | None) -> None:
+        # pyecore's own decoder, through the overrides below: what the fast reader declines
+        # (anything unusual or wrong) is decoded or reported here, with pyecore's messages.
         roots = xmlroot if xmlroot.tag == f"{{{xmi}}}XMI" else [xmlroot]
         for root in roots:
             self._sceml_node = root

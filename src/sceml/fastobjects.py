@@ -1,0 +1,223 @@
+"""Build pyecore objects by writing the state pyecore's own setters would leave, without them.
+
+pyecore sets every feature through a descriptor (`EStructuralFeature.__set__` -> `EValue._set`):
+a type check, a `Notification` whose delivery walks the container chain up to the resource, the
+`_isset` mark, container bookkeeping, `_inverse_rels` and the opposite end. Reading a file or
+copying a model does that for every attribute of every object, which is most of the time spent.
+
+The functions here write the end state directly, for the shapes of feature SceML's metamodel
+has: single-valued attributes, containments (single or an ordered unique set) without an
+opposite, and single-valued cross references with no opposite or a many-valued one
+(Flow.source/target <-> GraphElement.outgoing/incoming). Callers ask `*_supported` first and use
+pyecore's setters for anything else.
+
+What they leave out, on purpose:
+
+- Notifications. They are only delivered to listeners, and nothing listens to objects that are
+  being made: a new object's `listeners` and `_eternal_listener` lists are empty, and a resource
+  that is still loading has none either (ResourceSet.get_resource creates it and loads it at once).
+- Type checks. The callers have checked already: the reader checks each value and each
+  object's class against the feature, the copier copies values that were checked when set.
+
+Preconditions the callers keep (pyecore's setters would otherwise also undo a previous state):
+a feature is set at most once per object, a child has no container yet, and objects given here are
+never `EProxy`s, except the target of a reference without an opposite (whose only bookkeeping,
+`_inverse_rels`, pyecore itself reads through the proxy without resolving it).
+"""
+
+from __future__ import annotations
+
+from functools import cache
+from typing import Any, TypeVar
+
+from pyecore.ecore import EAttribute, EObject, EReference, EStructuralFeature
+from pyecore.innerutils import InternalSet
+from pyecore.valuecontainer import EOrderedSet, EValue
+
+T = TypeVar("T", bound=EObject)
+
+_object_new = object.__new__
+
+
+def new(cls: type[T]) -> T:
+    """A new, empty object of a generated class: `cls()` without the constructor's call chain.
+
+    Leaves what `EObject.__new__` leaves (the generated constructors set nothing when given no
+    arguments; tests/core/test_fast_objects.py checks both for every SceML class).
+    """
+    obj: Any = _object_new(cls)
+    state = obj.__dict__
+    state["_internal_id"] = None
+    state["_isset"] = InternalSet()
+    state["_container"] = None
+    state["_containment_feature"] = None
+    state["_eresource"] = None
+    state["listeners"] = []
+    state["_eternal_listener"] = []
+    state["_inverse_rels"] = set()
+    state["_staticEClass"] = False
+    state["dyn_inst"] = obj
+    cls._instances.add(obj)  # pyecore's registry, for allInstances()
+    return obj  # type: ignore[no-any-return]
+
+
+class Slot:
+    """What the direct writes need to know of one feature, read once from the metamodel.
+
+    pyecore's `many`, `containment` and `eOpposite` are properties and descriptors, each a
+    Python call; a file or a copy asks them hundreds of thousands of times.
+    """
+
+    __slots__ = ("feature", "is_cont", "is_ref", "kind", "many", "name", "opposite", "reverse")
+
+    def __init__(self, feature: EStructuralFeature) -> None:
+        self.feature = feature
+        self.name: str = feature._name
+        self.many: bool = feature.many
+        self.is_ref = isinstance(feature, EReference)
+        self.is_cont: bool = self.is_ref and feature.containment
+        opposite = feature.eOpposite if self.is_ref else None
+        self.opposite: EReference | None = opposite
+        self.reverse: str | None = opposite._name if opposite is not None else None
+        # The Python class a value must be an instance of (generated classes' features name it).
+        kind = feature._eType
+        self.kind: Any = kind if isinstance(kind, type) else None
+
+
+@cache
+def slot(feature: EStructuralFeature) -> Slot:
+    """The facts of `feature`, computed once."""
+    return Slot(feature)
+
+
+def _value_holder(owner: EObject, slot: Slot, value: object) -> EValue:
+    # The fields EValue.__init__ sets, in its order; `_value` is what `_set` leaves.
+    holder = _object_new(EValue)
+    state = holder.__dict__
+    state["owner"] = owner
+    state["feature"] = slot.feature
+    state["is_ref"] = slot.is_ref
+    state["is_cont"] = slot.is_cont
+    state["generic_type"] = None
+    state["_value"] = value
+    return holder
+
+
+def _set_holder(owner: EObject, feature: EReference, is_cont: bool) -> EOrderedSet:
+    # The fields EOrderedSet.__init__ sets (through ECollection and OrderedSet), in its order.
+    holder = _object_new(EOrderedSet)
+    state = holder.__dict__
+    state["items"] = []
+    state["map"] = {}
+    state["owner"] = owner
+    state["feature"] = feature
+    state["is_ref"] = True
+    state["is_cont"] = is_cont
+    state["generic_type"] = None
+    state["_orderedset_update"] = False
+    return holder
+
+
+def set_value(obj: EObject, slot: Slot, value: object) -> None:
+    """`obj.<feature> = value` for a single-valued attribute not set before, or `None` for any
+    single-valued feature not set before (SceML writes that as nil: it counts as set)."""
+    state = obj.__dict__
+    state[slot.name] = _value_holder(obj, slot, value)
+    state["_isset"][slot.feature] = None
+
+
+def add_child(parent: EObject, slot: Slot, child: EObject) -> None:
+    """Put a new `child` into `parent`'s containment (appended if it is many-valued)."""
+    state = parent.__dict__
+    feature = slot.feature
+    if slot.many:
+        held = state.get(slot.name)
+        if held is None:
+            held = state[slot.name] = _set_holder(parent, feature, True)
+        items = held.items
+        held.map[child] = len(items)
+        items.append(child)
+    else:
+        state[slot.name] = _value_holder(parent, slot, child)
+    state["_isset"][feature] = None
+    child_state = child.__dict__
+    child_state["_container"] = parent
+    child_state["_containment_feature"] = feature
+    # pyecore records the link to the container like any reference without an opposite.
+    child_state["_inverse_rels"].add((parent, feature))
+
+
+def set_reference(obj: EObject, slot: Slot, target: EObject) -> None:
+    """`obj.<feature> = target` for a single-valued cross reference not set before, and the
+    opposite end: `target.<opposite>` gains `obj`."""
+    feature = slot.feature
+    state = obj.__dict__
+    state[slot.name] = _value_holder(obj, slot, target)
+    state["_isset"][feature] = None
+    opposite = slot.opposite
+    if opposite is None:
+        # Through the attribute, which an EProxy answers from itself without resolving.
+        target._inverse_rels.add((obj, feature))
+        return
+    target_state = target.__dict__
+    held = target_state.get(slot.reverse)
+    if held is None:
+        held = target_state[slot.reverse] = _set_holder(target, opposite, False)
+    index = held.map
+    if obj not in index:
+        items = held.items
+        index[obj] = len(items)
+        items.append(obj)
+    target_state["_isset"][opposite] = None
+
+
+@cache
+def attribute_supported(feature: EStructuralFeature) -> bool:
+    """Whether `set_value` can set this feature to a value."""
+    return isinstance(feature, EAttribute) and not feature.many and _stored(feature)
+
+
+@cache
+def none_supported(feature: EStructuralFeature) -> bool:
+    """Whether `set_value` can set this feature to None (pyecore's unset has nothing else to
+    undo when the feature held nothing before)."""
+    return not feature.many and _stored(feature)
+
+
+@cache
+def child_supported(feature: EStructuralFeature) -> bool:
+    """Whether `add_child` can fill this feature."""
+    return (
+        isinstance(feature, EReference)
+        and feature.containment
+        and feature.eOpposite is None
+        and _stored(feature)
+        and (not feature.many or _is_ordered_set(feature))
+    )
+
+
+@cache
+def reference_supported(feature: EStructuralFeature) -> bool:
+    """Whether `set_reference` can set this feature."""
+    if not isinstance(feature, EReference) or feature.containment or feature.many:
+        return False
+    opposite = feature.eOpposite
+    if not _stored(feature):
+        return False
+    if opposite is None:
+        return True
+    return bool(
+        opposite.many
+        and not opposite.containment
+        and not opposite.derived
+        and _is_ordered_set(opposite)
+    )
+
+
+def _stored(feature: EStructuralFeature) -> bool:
+    return not feature.derived and not feature.transient
+
+
+def _is_ordered_set(feature: EStructuralFeature) -> bool:
+    # ECollection.create picks the holder class from these flags; EOrderedSet is the one built here.
+    return bool(feature.ordered and feature.unique and not feature.derived)
