@@ -338,8 +338,7 @@ def _check_literal(attribute: EAttribute, text: str) -> None:
 
 
 def _line_in(resource: XMIResource, obj: EObject) -> int | None:
-    tree = getattr(resource, "sceml_tree", None)
-    element = _element_of(tree.getroot(), obj) if tree is not None else None
+    element = _element_of(resource, obj)
     return element.sourceline if element is not None else None
 
 
@@ -413,10 +412,8 @@ class Document:
 
     def line_of(self, obj: EObject) -> int | None:
         """The line of the element that holds `obj` in this file, if it comes from it."""
-        tree = getattr(obj.eResource, "sceml_tree", None) if obj.eResource else None
-        if tree is None:
-            return None
-        element = _element_of(tree.getroot(), obj)
+        resource = obj.eResource
+        element = _element_of(resource, obj) if resource is not None else None
         return element.sourceline if element is not None else None
 
     def file_of(self, obj: EObject) -> Path | None:
@@ -436,10 +433,26 @@ def _containment_steps(obj: EObject) -> list[tuple[str, int]]:
     return list(reversed(steps))
 
 
-def _element_of(root: etree._Element, obj: EObject) -> etree._Element | None:
-    element = root
+def _element_of(resource: XMIResource, obj: EObject) -> etree._Element | None:
+    """The XML element `obj` was read from, found by its containment steps in the parsed file.
+
+    Each element's children are grouped by tag once per file (kept on the resource), so that
+    locating thousands of diagnostics in a large file costs a dictionary lookup per step rather
+    than a scan of every sibling.
+    """
+    tree = getattr(resource, "sceml_tree", None)
+    if tree is None:
+        return None
+    groups: dict[etree._Element, dict[str, list[etree._Element]]]
+    groups = resource.__dict__.setdefault("sceml_children", {})
+    element = tree.getroot()
     for name, index in _containment_steps(obj):
-        children = [child for child in element if child.tag == name]
+        by_tag = groups.get(element)
+        if by_tag is None:
+            by_tag = groups[element] = {}
+            for child in element:
+                by_tag.setdefault(child.tag, []).append(child)
+        children = by_tag.get(name, ())
         if index >= len(children):
             return None
         element = children[index]
