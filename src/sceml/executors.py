@@ -6,7 +6,9 @@ Every executor runs the same two functions over a list of items:
   (everything a worker needs, picklable, e.g. the input files as bytes) into working state;
 - `task(state, item)` once per item; its return value is the item's result.
 
-`map_unordered` yields an `Outcome` per item as items finish, in no fixed order. An item whose
+`map_unordered` yields an `Outcome` per item as items finish, in no fixed order. The items may
+be `Deferred`: made by a function that the executor calls once its workers have started, so that
+making them (e.g. drawing a batch's sample values) overlaps the workers' setup. An item whose
 task raised, or whose worker was lost (after Dask's own retries), comes back with `error` set;
 the other items carry on. Closing the iterator (e.g. on Ctrl-C in the consumer) cancels the
 items not yet started. Both functions must be importable module-level functions, because the
@@ -54,6 +56,24 @@ class SchedulerError(SceMLError):
 
 
 @dataclass(frozen=True)
+class Deferred(Generic[T]):
+    """`count` items that `make` makes once the workers have started."""
+
+    count: int
+    make: Callable[[], Sequence[T]]
+
+    def __len__(self) -> int:
+        return self.count
+
+
+def _made(items: Sequence[T] | Deferred[T]) -> Sequence[T]:
+    made = items.make() if isinstance(items, Deferred) else items
+    if len(made) != len(items):
+        raise ValueError(f"{len(made)} items were made, not the {len(items)} announced")
+    return made
+
+
+@dataclass(frozen=True)
 class Outcome(Generic[R]):
     """What became of one item: its result, or why there is none."""
 
@@ -68,6 +88,10 @@ class Executor(ABC):
     name: str = ""
     #: The largest useful chunk of work per task (samples per chunk in a batch).
     max_chunk: int = 64
+    #: Whether tasks run in other processes of this machine, which see its file system: then
+    #: a task may write its output files itself, in parallel, instead of returning their bytes.
+    #: False in-process (the caller writes as fast) and on Dask (workers may be elsewhere).
+    shares_files: bool = False
 
     @property
     @abstractmethod
@@ -76,7 +100,7 @@ class Executor(ABC):
 
     @abstractmethod
     def map_unordered(
-        self, setup: Setup[P, S], task: Task[S, T, R], payload: P, items: Sequence[T]
+        self, setup: Setup[P, S], task: Task[S, T, R], payload: P, items: Sequence[T] | Deferred[T]
     ) -> Generator[Outcome[R], None, None]:
         """Each item's outcome, as items finish."""
 
@@ -145,10 +169,10 @@ class LocalExecutor(Executor):
         return 1
 
     def map_unordered(
-        self, setup: Setup[P, S], task: Task[S, T, R], payload: P, items: Sequence[T]
+        self, setup: Setup[P, S], task: Task[S, T, R], payload: P, items: Sequence[T] | Deferred[T]
     ) -> Generator[Outcome[R], None, None]:
         state = setup(payload)
-        for number, item in enumerate(items):
+        for number, item in enumerate(_made(items)):
             try:
                 result = task(state, item)
             except Exception as error:  # reported per item, as the other executors do
@@ -177,10 +201,15 @@ def _process_call(task: Task[Any, T, R], item: T) -> R:
     return task(_PROCESS["state"], item)
 
 
+def _ready(state: Any, item: None) -> None:
+    """A task that does nothing: calling it sets a worker up."""
+
+
 class ProcessExecutor(Executor):
     """A pool of worker processes on this machine (fork where the platform has it)."""
 
     name = "processes"
+    shares_files = True
 
     def __init__(self, workers: int) -> None:
         self.workers = workers
@@ -190,19 +219,26 @@ class ProcessExecutor(Executor):
         return self.workers
 
     def map_unordered(
-        self, setup: Setup[P, S], task: Task[S, T, R], payload: P, items: Sequence[T]
+        self, setup: Setup[P, S], task: Task[S, T, R], payload: P, items: Sequence[T] | Deferred[T]
     ) -> Generator[Outcome[R], None, None]:
         # fork shares the parent's imported modules, so a worker starts in milliseconds.
         method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
+        processes = min(self.workers, len(items) or 1)
         pool = ProcessPoolExecutor(
-            max_workers=min(self.workers, len(items) or 1),
+            max_workers=processes,
             mp_context=multiprocessing.get_context(method),
             initializer=_process_initialise,
             initargs=(setup, payload),
         )
         try:
+            if isinstance(items, Deferred):
+                # One call per process starts them all and their setup (an error there comes
+                # back with each item, as setup runs again for it); meanwhile the items are made.
+                for _ in range(processes):
+                    pool.submit(_process_call, _ready, None)
             futures: dict[Future[R], int] = {
-                pool.submit(_process_call, task, item): number for number, item in enumerate(items)
+                pool.submit(_process_call, task, item): number
+                for number, item in enumerate(_made(items))
             }
             pending = set(futures)
             while pending:
@@ -293,7 +329,7 @@ class DaskExecutor(Executor):
         return max(1, sum(threads.values()))
 
     def map_unordered(
-        self, setup: Setup[P, S], task: Task[S, T, R], payload: P, items: Sequence[T]
+        self, setup: Setup[P, S], task: Task[S, T, R], payload: P, items: Sequence[T] | Deferred[T]
     ) -> Generator[Outcome[R], None, None]:
         as_completed = _distributed().as_completed
         token = uuid.uuid4().hex
@@ -303,7 +339,7 @@ class DaskExecutor(Executor):
             self.client.submit(
                 _dask_call, setup, task, shared, token, item, key=f"sceml-{token}-{number}"
             ): number
-            for number, item in enumerate(items)
+            for number, item in enumerate(_made(items))
         }
         try:
             for future, result in as_completed(futures, with_results=True, raise_errors=False):

@@ -764,3 +764,36 @@ def write_atomically(path: str | Path, data: bytes) -> None:
         if isinstance(error, OSError):
             raise SaveError(f"cannot write: {_reason(error)}", file=path) from None
         raise
+
+
+def write_staged(path: str | Path, data: bytes, staging: str | Path) -> None:
+    """Write bytes to `path` through a file of the same name in `staging` and an atomic rename.
+
+    For writers of many files at once (the batch's worker processes): `staging` is a private
+    folder on the same file system as `path` (e.g. inside the output folder) that its owner
+    creates beforehand and removes as a whole afterwards, so no temporary name has to be made
+    up and no chmod is needed: one file creation and one rename. `path`'s folder must exist.
+    Any failure is a SaveError naming `path` (`cannot write: reason`); the previous file, if
+    any, stays as it was and the staged file is removed. A process killed midway can leave a
+    staged file, never a half-written `path`; removing `staging` removes that too.
+    """
+    path = Path(path)
+    staged = Path(staging) / path.name
+    try:
+        handle = os.open(staged, os.O_WRONLY | os.O_CREAT | os.O_TRUNC | os.O_CLOEXEC, 0o644)
+    except OSError as error:
+        raise SaveError(f"cannot write: {_reason(error)}", file=path) from None
+    try:
+        try:
+            os.fchmod(handle, 0o644)  # as write_atomically leaves it, whatever the umask
+            view = memoryview(data)
+            while view:  # No fsync, as in write_atomically: the rename is the guarantee.
+                view = view[os.write(handle, view) :]
+        finally:
+            os.close(handle)
+        os.replace(staged, path)
+    except BaseException as error:
+        staged.unlink(missing_ok=True)
+        if isinstance(error, OSError):
+            raise SaveError(f"cannot write: {_reason(error)}", file=path) from None
+        raise

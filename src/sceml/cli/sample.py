@@ -5,6 +5,7 @@ from __future__ import annotations
 import sys
 import time
 from collections import Counter
+from functools import partial
 from pathlib import Path
 
 import click
@@ -17,7 +18,7 @@ from ..diagnostics import Severity
 from ..errors import ArgumentError, SceMLError
 from ..executors import check, open_executor
 from ..graph import root_node
-from ..levels.batch import BatchConfig, BatchResult, run_batch
+from ..levels.batch import BatchConfig, BatchResult, Rows, run_batch
 from ..levels.manifest import SampleRecord, write_manifest
 from ..levels.paths import LevelError
 from ..levels.sampling import STRATEGIES, plan_for, values_at
@@ -118,7 +119,11 @@ def sample(
             raise click.UsageError("--index with --strategy lhs needs the --n of the run")
         plan = plan_for(space, strategy, n, seed)  # type: ignore[arg-type]
         indices = np.arange(plan.n) if index is None else np.array([index])
-        rows = values_at(space, plan, indices)
+        # A whole run's values are drawn while the workers start: drawing takes a while (scipy,
+        # for a normal distribution, takes half a second to import), and so does their setup.
+        rows: Rows = partial(values_at, space, plan, indices)
+        if index is not None:
+            rows = one = values_at(space, plan, indices)  # refuses an index out of range, here
     except SceMLError as error:
         if not isinstance(error, ArgumentError):  # e.g. a grid too large: the file is the cause
             error.file = error.file or str(logical)
@@ -150,7 +155,7 @@ def sample(
             run["interrupted"] = True
         write_manifest(out_dir, space.paths, records, run)
     else:
-        for path, value in zip(space.paths, rows[0], strict=True):
+        for path, value in zip(space.paths, one[0], strict=True):
             click.echo(f"{path} = {float(value)!r}")
     click.echo(_summary(records, elapsed))
     _exit_status(result, len(indices))
@@ -203,7 +208,7 @@ def _require_valid(document: io.Document, file: Path) -> None:
 def _run(
     config: BatchConfig,
     indices: np.ndarray,
-    rows: np.ndarray,
+    rows: Rows,
     executor: str,
     scheduler: str | None,
     workers: int | None,

@@ -4,7 +4,7 @@ The caller computes every sample's values (cheap arrays; seeds never leave it, s
 stay whole and no result depends on which worker finishes first), cuts them into chunks and
 hands them to an executor (`sceml.executors`: in-process, a process pool or a Dask cluster).
 
-Workers do not share the caller's file system. Each one receives a `BatchPayload`: the run's
+Workers need not share the caller's file system. Each one receives a `BatchPayload`: the run's
 configuration and the bytes of every file the logical scenario reads (itself and its module
 libraries; the map is not read, only named). It recreates those files under their absolute
 paths inside a private temporary folder, so that every path relative to the output (the map's
@@ -12,13 +12,21 @@ LogicFile, library references of .xmi files) comes out as it would on the caller
 worker: load the logical scenario, flatten it into a `FlatTemplate`, load the XSD and render
 the export once with a placeholder for every sampled number (`SampleXosc`). Per sample: write
 its numbers into the template in place (no model copy), run the value checks, fill the
-placeholders and check the document against the XSD. Samples whose values break a rule are
-skipped with a reason. The first sample of each worker is also exported in full and compared
-byte for byte; if they differ, that worker exports every sample in full.
+placeholders and check the document against the XSD (in the template's tree, without parsing
+the sample). Samples whose values break a rule are skipped with a reason. The first sample of
+each worker is also exported in full and compared byte for byte; if they differ, that worker
+exports every sample in full.
 
-Workers return file contents; only the caller writes, each file atomically, and a sample's
-record is kept only once all its files are written. So the manifest lists exactly the files on
-disk, also after Ctrl-C or a lost worker, and no half-written file is left.
+Who writes depends on the executor. Worker processes on the caller's machine
+(`Executor.shares_files`) write their samples' files themselves, so that writing, which costs
+about as much as producing a file, runs on every core: each file is written under its own name
+into a staging folder inside the output folder and renamed into place (`io.write_staged`), and
+the task returns only the records. Otherwise (in-process, Dask) workers return file contents
+and the caller writes each file atomically (`io.write_atomically`). Either way a sample's record
+is kept only once all its files are written, and a sample the run did not finish (its chunk
+lost, or Ctrl-C) has no files when the run returns: the caller removes the staging folder,
+and the files that workers wrote for samples whose records never arrived. So the manifest lists
+exactly the files the run leaves, and no half-written file is left.
 """
 
 from __future__ import annotations
@@ -39,8 +47,8 @@ from numpy.typing import NDArray
 import scemlmodel as scm
 
 from .. import io
-from ..errors import SceMLError
-from ..executors import Executor, open_executor
+from ..errors import SaveError, SceMLError
+from ..executors import Deferred, Executor, open_executor
 from .apply import FlatTemplate, copy_scenario, set_level
 from .checks import SampleChecker
 from .manifest import SampleRecord
@@ -154,12 +162,16 @@ class Worker:
             target.unlink()
 
 
-def write_sample(folder: Path, produced: Produced) -> SampleRecord:
-    """Write one sample's files atomically; if that is cut short, none of them stays."""
+def write_sample(folder: Path, produced: Produced, staging: Path | None = None) -> SampleRecord:
+    """Write one sample's files atomically (through `staging`, if given, else each through a
+    temporary file); if that is cut short, none of them stays."""
     written: list[Path] = []
     try:
         for name, data in produced.files:
-            io.write_atomically(folder / name, data)
+            if staging is None:
+                io.write_atomically(folder / name, data)
+            else:
+                io.write_staged(folder / name, data, staging)
             written.append(folder / name)
     except BaseException:
         for path in written:
@@ -205,11 +217,13 @@ class BatchPayload:
     """What a worker receives: the run's configuration, and the input files as bytes.
 
     Paths in `config` are absolute, as the caller resolved them; `inputs` maps each such path
-    of a file the logical scenario reads to its contents.
+    of a file the logical scenario reads to its contents. `staging` is set when the workers
+    write the files themselves: the folder inside `config.out_dir` they stage them in.
     """
 
     config: BatchConfig
     inputs: tuple[tuple[str, bytes], ...]
+    staging: Path | None = None
 
 
 def make_payload(config: BatchConfig) -> BatchPayload:
@@ -252,9 +266,11 @@ class WorkerState:
     The folder goes when the state does (when its run ends, or the worker process exits).
     """
 
-    def __init__(self, worker: Worker, folder: Path) -> None:
+    def __init__(self, worker: Worker, folder: Path, payload: BatchPayload | None = None) -> None:
         self.worker = worker
         self.folder = folder
+        #: The payload it was made from: where the caller's output folder and staging are.
+        self.payload = payload
         weakref.finalize(self, shutil.rmtree, folder, ignore_errors=True)
 
 
@@ -273,7 +289,7 @@ def setup_worker(payload: BatchPayload) -> WorkerState:
             allow=(root,),
         )
         config.out_dir.mkdir(parents=True, exist_ok=True)
-        return WorkerState(Worker(config), root)
+        return WorkerState(Worker(config), root, payload)
     except BaseException:
         shutil.rmtree(root, ignore_errors=True)
         raise
@@ -288,6 +304,28 @@ def produce_chunk(state: WorkerState, chunk: Chunk) -> list[Produced]:
     return [state.worker.produce(int(i), row) for i, row in zip(indices, rows, strict=True)]
 
 
+@dataclass(frozen=True)
+class Written:
+    """What a worker that writes returns for a chunk: the records of the samples it finished,
+    and, if a file could not be written, that SaveError's message and file (it stopped there)."""
+
+    records: tuple[SampleRecord, ...]
+    error: tuple[str, str | None] | None = None
+
+
+def write_chunk(state: WorkerState, chunk: Chunk) -> Written:
+    """Produce every sample of a chunk and write its files into the caller's output folder."""
+    assert state.payload is not None and state.payload.staging is not None
+    folder, staging = state.payload.config.out_dir, state.payload.staging
+    records = []
+    for produced in produce_chunk(state, chunk):
+        try:
+            records.append(write_sample(folder, produced, staging))
+        except SaveError as error:  # sent back as data: the caller reports it as its own
+            return Written(tuple(records), (error.message, error.file))
+    return Written(tuple(records))
+
+
 @dataclass
 class BatchResult:
     """The records of a run, in the order samples finished, and whether Ctrl-C cut it short."""
@@ -300,10 +338,15 @@ class BatchResult:
 Progress = Callable[[int], None]
 
 
+#: The sample values, one row per index, or a function that computes them: the workers then
+#: start (and set up) while the caller computes them.
+Rows = NDArray[np.float64] | Callable[[], NDArray[np.float64]]
+
+
 def run_batch(
     config: BatchConfig,
     indices: NDArray[np.int64],
-    rows: NDArray[np.float64],
+    rows: Rows,
     *,
     executor: Executor | None = None,
     workers: int | None = None,
@@ -311,11 +354,12 @@ def run_batch(
     progress: Progress | None = None,
 ) -> BatchResult:
     """Produce every sample's files on `executor` (default: a local pool of `workers`
-    processes) and write them into `config.out_dir` as they arrive.
+    processes) and write them into `config.out_dir`.
 
     A sample whose chunk was lost (its task failed, or its worker died beyond the executor's
     retries) is recorded as `failed` and has no files. Ctrl-C stops the run: the remaining
     tasks are cancelled and the result, marked interrupted, holds the samples written so far.
+    A file that cannot be written is a SaveError naming it, whichever process wrote it.
     When the run fails, the output folder, if it made it, is removed again unless files were
     written.
     """
@@ -323,41 +367,96 @@ def run_batch(
     try:
         payload = make_payload(config)
         if executor is not None:
-            return _collect(payload, indices, rows, executor, chunk_size, progress)
+            return _run(payload, indices, rows, executor, chunk_size, progress)
         with open_executor("processes", workers=workers) as own:
-            return _collect(payload, indices, rows, own, chunk_size, progress)
+            return _run(payload, indices, rows, own, chunk_size, progress)
     except BaseException:
         io.remove_folders(created)
         raise
 
 
-def _collect(
+def _run(
     payload: BatchPayload,
     indices: NDArray[np.int64],
-    rows: NDArray[np.float64],
+    rows: Rows,
     executor: Executor,
     chunk_size: int | None,
     progress: Progress | None,
 ) -> BatchResult:
-    folder = payload.config.out_dir
-    chunks = _chunks(indices, rows, chunk_size or _chunk_size(len(indices), executor))
+    if not executor.shares_files:
+        return _collect(payload, indices, rows, executor, chunk_size, progress)
+    staging = _staging_folder(payload.config.out_dir)
+    try:
+        return _collect(
+            replace(payload, staging=staging), indices, rows, executor, chunk_size, progress
+        )
+    finally:
+        shutil.rmtree(staging, ignore_errors=True)  # empty, unless a worker died mid-file
+
+
+def _staging_folder(out_dir: Path) -> Path:
+    """A new staging folder inside the output folder (on its file system, for the renames)."""
+    try:
+        return Path(tempfile.mkdtemp(prefix=".sceml-staging-", dir=out_dir))
+    except OSError as error:
+        raise SaveError(f"cannot write: {error.strerror or error}", file=out_dir) from None
+
+
+def _collect(
+    payload: BatchPayload,
+    indices: NDArray[np.int64],
+    rows: Rows,
+    executor: Executor,
+    chunk_size: int | None,
+    progress: Progress | None,
+) -> BatchResult:
+    """Run every chunk; write what comes back (unless the workers wrote it) and keep records."""
+    size = chunk_size or _chunk_size(len(indices), executor)
+    chunks: list[Chunk] = []
+
+    def make() -> list[Chunk]:
+        chunks.extend(_chunks(indices, rows() if callable(rows) else rows, size))
+        return chunks
+
     result = BatchResult([])
-    outcomes = executor.map_unordered(setup_worker, produce_chunk, payload, chunks)
+    unfinished = set(range(-(-len(indices) // size)))
+    task: Callable[[WorkerState, Chunk], list[Produced] | Written] = (
+        write_chunk if payload.staging is not None else produce_chunk
+    )
+    outcomes = executor.map_unordered(setup_worker, task, payload, Deferred(len(unfinished), make))
     try:
         for outcome in outcomes:
-            if outcome.error is not None or outcome.result is None:
+            done = outcome.result
+            if outcome.error is not None or done is None:
                 result.records.extend(_failed(chunks[outcome.item], outcome.error or "no result"))
+            elif isinstance(done, Written):
+                result.records.extend(done.records)
+                if done.error is not None:
+                    raise SaveError(done.error[0], file=done.error[1])
+                unfinished.discard(outcome.item)
             else:
                 with _interrupt_deferred():
-                    for produced in outcome.result:
-                        result.records.append(write_sample(folder, produced))
+                    for produced in done:
+                        result.records.append(write_sample(payload.config.out_dir, produced))
+                unfinished.discard(outcome.item)
             if progress is not None:
                 progress(len(chunks[outcome.item][0]))
     except KeyboardInterrupt:
         result.interrupted = True
     finally:
-        outcomes.close()  # cancels what has not run yet
+        outcomes.close()  # cancels what has not started, and waits for what has
+    if payload.staging is not None:
+        # Workers may have written files of samples whose records never came: those of a chunk
+        # still running at Ctrl-C, or the part of a lost chunk done before its worker died.
+        for number in sorted(unfinished & set(range(len(chunks)))):
+            _remove_files_of(payload.config, chunks[number][0])
     return result
+
+
+def _remove_files_of(config: BatchConfig, indices: NDArray[np.int64]) -> None:
+    for index in indices:
+        for suffix in config.formats:
+            (config.out_dir / config.file_name(int(index), suffix)).unlink(missing_ok=True)
 
 
 @contextmanager

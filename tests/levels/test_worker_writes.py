@@ -1,0 +1,124 @@
+"""Worker processes write the batch's files themselves (through a staging folder): a file that
+cannot be written is still `cannot write`, and a worker lost mid-chunk leaves no file that the
+run does not list and nothing staged."""
+
+from __future__ import annotations
+
+import errno
+import operator
+import os
+import signal
+import stat
+from pathlib import Path
+
+import numpy as np
+import pytest
+from click.testing import CliRunner
+
+from sceml import io
+from sceml.cli.sample import sample
+from sceml.errors import SaveError
+from sceml.executors import Deferred, open_executor
+from sceml.levels.batch import BatchConfig, run_batch
+from sceml.levels.sampling import Plan, values_at
+from sceml.levels.space import parameter_space
+
+UIS2 = Path(__file__).resolve().parents[2] / "examples" / "uis2-logical.xmi"
+
+
+def _everything(folder: Path) -> set[str]:
+    """Every entry below `folder`, hidden ones and folders too, relative to it."""
+    return {str(p.relative_to(folder)) for p in folder.rglob("*")}
+
+
+def test_write_staged_replaces_the_file_and_leaves_nothing_staged(tmp_path: Path) -> None:
+    staging = tmp_path / ".staging"
+    staging.mkdir()
+    target = tmp_path / "a.xosc"
+    target.write_bytes(b"old")
+    previous = os.umask(0o077)
+    try:
+        io.write_staged(target, b"new", staging)
+    finally:
+        os.umask(previous)
+    assert target.read_bytes() == b"new"
+    assert stat.S_IMODE(target.stat().st_mode) == 0o644  # as write_atomically leaves a file
+    assert list(staging.iterdir()) == []
+
+
+def test_write_staged_that_fails_keeps_the_old_file(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    staging = tmp_path / ".staging"
+    staging.mkdir()
+    target = tmp_path / "a.xosc"
+    target.write_bytes(b"old")
+
+    def refuse(*args: object) -> None:
+        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+
+    monkeypatch.setattr(os, "replace", refuse)
+    with pytest.raises(SaveError) as raised:
+        io.write_staged(target, b"new", staging)
+    assert raised.value.file == str(target)
+    assert raised.value.message == "cannot write: No space left on device"
+    assert target.read_bytes() == b"old" and list(staging.iterdir()) == []
+
+
+@pytest.mark.parametrize("kind", ["local", "processes"])
+def test_deferred_items_are_made_once_and_all_run(kind: str) -> None:
+    made = []
+
+    def make() -> list[int]:
+        made.append(1)
+        return [1, 2, 0, 4, 6]
+
+    with open_executor(kind, workers=2) as executor:
+        outcomes = list(executor.map_unordered(int, operator.floordiv, "12", Deferred(5, make)))
+    assert made == [1]  # in this process, once
+    by_item = {o.item: o for o in outcomes}
+    assert [by_item[i].result for i in (0, 1, 3, 4)] == [12, 6, 3, 2]
+    assert by_item[2].error == "ZeroDivisionError: integer division or modulo by zero"
+
+
+def test_a_worker_that_cannot_write_makes_the_command_fail_cleanly(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    def read_only(*args: object) -> None:
+        raise OSError(errno.EROFS, os.strerror(errno.EROFS))
+
+    # The worker processes are forked from this one, so they inherit the refusal.
+    monkeypatch.setattr(os, "replace", read_only)
+    out = tmp_path / "out"
+    arguments = [str(UIS2), "--strategy", "random", "--n", "20", "--workers", "2", "-o", str(out)]
+    result = CliRunner().invoke(sample, [*arguments, "--executor", "processes"])
+    assert result.exit_code == 1, result.output
+    assert "cannot write: Read-only file system" in result.output
+    assert f"{out}{os.sep}uis2_" in result.output  # names the file
+    assert "Traceback" not in result.output
+    assert not out.exists()  # made by the run, empty again: removed
+
+
+def test_a_worker_lost_mid_chunk_leaves_only_the_files_of_written_samples(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    real = io.write_staged
+
+    def die_on_the_third_file_of_sample_seven(path: Path, data: bytes, staging: Path) -> None:
+        if path.name == "uis2_00007.xosc":
+            os.kill(os.getpid(), signal.SIGKILL)  # files of samples 5 and 6 are in place
+        real(path, data, staging)
+
+    monkeypatch.setattr(io, "write_staged", die_on_the_third_file_of_sample_seven)
+    space = parameter_space(io.load_scenario(UIS2).root)
+    indices = np.arange(40)
+    rows = values_at(space, Plan("random", 40, seed=3), indices)
+    config = BatchConfig(UIS2, tmp_path, space.paths, ("xosc",), stem="uis2")
+    with open_executor("processes", workers=2) as executor:
+        result = run_batch(config, indices, rows, executor=executor, chunk_size=5)
+    by_index = {r.index: r for r in result.records}
+    assert sorted(by_index) == list(range(40))
+    assert by_index[7].status == "failed" and by_index[5].status == "failed"
+    assert by_index[7].reason.startswith("lost: ")
+    written = {name for r in result.records for name in r.files}
+    assert _everything(tmp_path) == written  # no staging folder, no stray file
