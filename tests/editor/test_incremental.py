@@ -23,12 +23,8 @@ from sceml.build import ScenarioBuilder, lane, world
 from sceml.diagnostics import Diagnostic
 from sceml.editor import EditorSession, OperationError
 from sceml.validation import REGISTRY, Registry, validate
-from sceml.validation.incremental import (
-    READS,
-    Aspect,
-    IncrementalValidator,
-    through_modules_reads,
-)
+from sceml.validation.edits import Aspect, Change, aspects_of
+from sceml.validation.incremental import READS, IncrementalValidator, through_modules_reads
 
 REPO = Path(__file__).resolve().parents[2]
 LIBRARY = "library/sceml-library.xmi"
@@ -506,3 +502,28 @@ def test_a_refused_request_is_still_noted(uis1: EditorSession) -> None:
     with pytest.raises(OperationError):
         uis1.apply(ops)
     assert keyed(uis1.diagnostics()) == full_run(uis1)
+
+
+# --- what a change changes ----------------------------------------------------------------------
+
+
+def test_changes_are_classified_by_feature_and_place() -> None:
+    node = scm.Accelerate(name="Accelerate_1")
+    old, new = scm.Value(value=1.0), scm.Value(value=2.0)
+    assert aspects_of(Change(node, "diagramPosition", None, scm.DiagramPosition())) == Aspect.NONE
+    assert aspects_of(Change(node, "targetSpeed", old, new)) == Aspect.PARAMETERS
+    assert aspects_of(Change(new, "value", 1.0, 2.0)) == Aspect.PARAMETERS | Aspect.ATTRIBUTES
+    assert aspects_of(Change(node, "referenceActor", None, scm.Car())) == Aspect.ROLES
+    assert aspects_of(Change(node, "name", "a", "b")) == Aspect.NAMES
+    position = scm.WorldPosition(x=scm.Value(value=0.0))
+    assert Aspect.POSITIONS in aspects_of(Change(position, "x", None, scm.Value(value=1.0)))
+    use = scm.ModuleUse(name="Use_1")
+    override = scm.ParameterOverride(parameter="p", value=scm.Value(value=1.0))
+    use.overrides.append(override)
+    assert Aspect.MODULES in aspects_of(Change(override, "value", None, scm.Value(value=3.0)))
+    scenario = scm.Scenario()
+    assert Aspect.SETTINGS in aspects_of(Change(scenario, "nodes", None, scm.RootNode()))
+    assert Aspect.SETTINGS not in aspects_of(Change(scenario, "nodes", None, scm.Stop()))
+    # A value holding a parameter reference: expanding module uses checks every reference.
+    reference = scm.ParameterRef(parameter=scm.ModuleParameter(name="p"))
+    assert Aspect.ROLES in aspects_of(Change(node, "targetSpeed", None, reference))

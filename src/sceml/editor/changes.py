@@ -19,7 +19,7 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
-from ..validation.incremental import Change
+from ..validation.edits import Change
 
 _FLOW_ENDS = ("source", "target")
 

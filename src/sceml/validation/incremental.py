@@ -29,9 +29,8 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass
 from enum import Flag, auto
-from typing import NamedTuple
 
-from pyecore.ecore import EObject, EReference
+from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
@@ -40,8 +39,8 @@ from ..diagnostics import Diagnostic
 from ..graph import root_node
 from ..io import Document
 from ..maps.reference import map_reference
-from ..traversal import all_contents, single_references
 from .context import Context
+from .edits import EVERYTHING, Aspect, Change, Impact, refers_to
 from .engine import Key, locate, objects, run_rule, through_modules, unique
 from .limits import Limits
 from .registry import REGISTRY, Registry, Rule
@@ -54,22 +53,8 @@ __all__ = [
     "Reads",
     "RunStats",
     "Scope",
-    "aspects_of",
+    "through_modules_reads",
 ]
-
-
-class Change(NamedTuple):
-    """One small change: `feature` of `owner` went from `old` to `new`.
-
-    For a many-valued feature, an insertion has `old` None and the item as `new`, a removal the
-    other way round. Undoing or redoing a change changes the same things, so the same record
-    serves all three.
-    """
-
-    owner: EObject
-    feature: str
-    old: object = None
-    new: object = None
 
 
 class Scope(Flag):
@@ -84,43 +69,6 @@ class Scope(Flag):
     ABOVE = auto()
     #: The actors or roles it, its node or its use refers to: their names, kinds, whether declared.
     ACTORS = auto()
-
-
-class Aspect(Flag):
-    """What an edit can change across the model; a rule reading one re-runs wherever it applies."""
-
-    NONE = 0
-    #: Which nodes and flows a graph holds, in which order and of which kinds; where flows lead.
-    STRUCTURE = auto()
-    #: The names of nodes, module uses, actors, roles and modules.
-    NAMES = auto()
-    #: Which actor or role each node and each role binding refers to.
-    ROLES = auto()
-    #: The declared actors and roles: which, of which kind, allowed kinds, the ego flag.
-    CAST = auto()
-    #: Module uses (definition, bindings, overrides) and everything module definitions hold.
-    MODULES = auto()
-    #: Which node is the scenario's root node, and its level and map.
-    SETTINGS = auto()
-    #: Positions (start positions, destinations, waypoints) and the values in them.
-    POSITIONS = auto()
-    #: Parameter values other than positions: speeds, rates, durations, sizes, environment.
-    PARAMETERS = auto()
-    #: Plain attributes no graph-wide rule reads: direction, comparison rule, opaque XML, date.
-    ATTRIBUTES = auto()
-
-
-EVERYTHING = (
-    Aspect.STRUCTURE
-    | Aspect.NAMES
-    | Aspect.ROLES
-    | Aspect.CAST
-    | Aspect.MODULES
-    | Aspect.SETTINGS
-    | Aspect.POSITIONS
-    | Aspect.PARAMETERS
-    | Aspect.ATTRIBUTES
-)
 
 
 @dataclass(frozen=True)
@@ -233,180 +181,6 @@ def through_modules_reads(registry: Registry = REGISTRY, reads: dict[str, Reads]
     return found
 
 
-# --- what a change changed ----------------------------------------------------------------------
-
-#: Features by name whose changes matter beyond their owner. A feature not named here is judged
-#: by its type (`_by_type`): a parameter value, a position, a plain attribute, or else everything.
-_FEATURES: dict[str, Aspect] = {
-    "nodes": _SHAPE | Aspect.ROLES | Aspect.MODULES,  # a node comes or goes with all it holds
-    "flows": Aspect.STRUCTURE,
-    "source": Aspect.STRUCTURE,
-    "target": Aspect.STRUCTURE,
-    "incoming": Aspect.STRUCTURE,
-    "outgoing": Aspect.STRUCTURE,
-    "name": Aspect.NAMES,
-    "referenceActor": Aspect.ROLES,
-    "targetActor": Aspect.ROLES,
-    "actor": Aspect.ROLES | Aspect.MODULES,
-    "actors": Aspect.CAST,
-    "isEgo": Aspect.CAST,
-    "roles": Aspect.CAST | Aspect.MODULES,
-    "allowedKinds": Aspect.CAST | Aspect.MODULES,
-    "kind": Aspect.CAST | Aspect.MODULES,
-    "level": Aspect.SETTINGS,
-    "map": Aspect.SETTINGS,
-    "definition": Aspect.STRUCTURE | Aspect.MODULES,
-    "bindings": Aspect.MODULES,
-    "overrides": Aspect.MODULES,
-    "role": Aspect.MODULES,
-    "parameter": Aspect.MODULES,
-    "parameters": Aspect.MODULES,
-    "default": Aspect.MODULES,
-    "modules": EVERYTHING,
-}
-
-
-def _is_notation(change: Change) -> bool:
-    """Diagram positions: no rule reads them (validation ignores the layout, docs/editor.md)."""
-    return change.feature == "diagramPosition" or isinstance(change.owner, scm.DiagramPosition)
-
-
-def _by_type(owner: EObject, name: str) -> Aspect:
-    feature = owner.eClass.findEStructuralFeature(name)
-    if feature is None:
-        return EVERYTHING
-    if not isinstance(feature, EReference):
-        return Aspect.ATTRIBUTES
-    kind = feature.eType
-    if feature.containment and isinstance(kind, type) and issubclass(kind, scm.Position):
-        return Aspect.POSITIONS
-    if feature.containment and isinstance(kind, type) and issubclass(kind, scm.ParameterValue):
-        return Aspect.PARAMETERS
-    if feature.containment and kind is scm.Environment:
-        return Aspect.PARAMETERS | Aspect.ATTRIBUTES
-    return EVERYTHING
-
-
-def _where(owner: EObject) -> Aspect:
-    """What a change means by where its owner lies: in a position, a value, a module."""
-    found = Aspect.NONE
-    current: EObject | None = owner
-    while current is not None:
-        if isinstance(current, scm.Position):
-            found |= Aspect.POSITIONS
-        elif isinstance(current, scm.ParameterValue):
-            found |= Aspect.PARAMETERS
-        elif isinstance(current, scm.ModuleUse | scm.ModuleDefinition | scm.Library):
-            found |= Aspect.MODULES
-        current = current.eContainer()
-    return found
-
-
-def _refers_out(obj: EObject) -> bool:
-    """Whether anything in `obj` refers to another object (a parameter reference, an actor):
-    expanding module uses checks every such reference."""
-    return any(
-        next(single_references(held), None) is not None for held in (obj, *all_contents(obj))
-    )
-
-
-def aspects_of(change: Change) -> Aspect:
-    """Which aspects of the model one change changes (none for a diagram position)."""
-    if _is_notation(change):
-        return Aspect.NONE
-    owner, name = change.owner, change.feature
-    found = _FEATURES.get(name)
-    if found is None:
-        found = _by_type(owner, name)
-    found |= _where(owner)
-    feature = owner.eClass.findEStructuralFeature(name)
-    held = isinstance(feature, EReference) and feature.containment
-    for value in (change.old, change.new):
-        if not isinstance(value, EObject):
-            continue
-        if name == "nodes" and isinstance(value, scm.RootNode):
-            found |= Aspect.SETTINGS | Aspect.CAST  # which root node, so which level, map, cast
-        if held and _refers_out(value):
-            found |= Aspect.ROLES | Aspect.MODULES
-    return found
-
-
-def _moves(owner: EObject, name: str) -> bool:
-    """Whether the values of this feature are themselves changed by the change: contained
-    objects move, a flow's ends gain or lose it in `incoming` and `outgoing`."""
-    feature = owner.eClass.findEStructuralFeature(name)
-    if not isinstance(feature, EReference):
-        return feature is None
-    return bool(feature.containment or feature.many or feature.eOpposite is not None)
-
-
-class _Impact:
-    """What a list of changes touched, worked out once per run."""
-
-    def __init__(self, changes: Iterable[Change]) -> None:
-        self.aspects = Aspect.NONE
-        self.touched: set[EObject] = set()
-        for change in changes:
-            if _is_notation(change):
-                continue
-            self.aspects |= aspects_of(change)
-            self.touched.add(change.owner)
-            if _moves(change.owner, change.feature):
-                self.touched.update(v for v in (change.old, change.new) if isinstance(v, EObject))
-        self.around: set[EObject] = set()  # SELF: touched, or holding or next to a touched one
-        self.inside: set[EObject] = set()  # ABOVE: held by a touched object
-        self.participants: set[int] = (
-            set()
-        )  # ACTORS: ids of actors and roles touched or holding one
-        for obj in self.touched:
-            self._spread(obj)
-
-    def _spread(self, obj: EObject) -> None:
-        current: EObject | None = obj
-        while current is not None:
-            self.around.add(current)
-            if isinstance(current, scm.Participant):
-                self.participants.add(id(current))
-            current = current.eContainer()
-        if isinstance(obj, scm.Flow):
-            self.around.update(end for end in (obj.source, obj.target) if end is not None)
-        if isinstance(obj, scm.GraphElement):
-            self.around.update(obj.incoming)
-            self.around.update(obj.outgoing)
-        if not isinstance(obj, scm.Graph | scm.Library):
-            # A graph holds everything; what lies above a node (the graph) no ABOVE rule reads.
-            self.inside.update(all_contents(obj))
-
-    def moved(self, element: EObject) -> bool:
-        """Whether `element` or anything above it was touched: its fragment, path or line may
-        differ (an index in a list, a name)."""
-        current: EObject | None = element
-        while current is not None:
-            if current in self.touched:
-                return True
-            current = current.eContainer()
-        return False
-
-
-def _refers_to(obj: EObject, participants: set[int]) -> bool:
-    """Whether `obj`, its node, binding or use refers to one of these participants (by id)."""
-    current: EObject | None = obj
-    while current is not None and not isinstance(current, scm.Graph | scm.Library):
-        if isinstance(current, scm.ActionNode):
-            held = [current.referenceActor, current.targetActor]
-        elif isinstance(current, scm.RoleBinding):
-            held = [current.actor]
-        elif isinstance(current, scm.ModuleUse):
-            held = [binding.actor for binding in current.bindings]
-        elif isinstance(current, scm.Participant):
-            held = [current]
-        else:
-            current = current.eContainer()
-            continue
-        return any(id(p) in participants for p in held if p is not None)
-    return False
-
-
 # --- the validator ------------------------------------------------------------------------------
 
 
@@ -478,7 +252,7 @@ class IncrementalValidator:
     def _run(self) -> list[Diagnostic]:
         outside = _outside_state(self.model, self.document)
         full = self._full or self._unresolved or outside != self._outside
-        impact = _Impact(() if full else self._pending)
+        impact = Impact(() if full else self._pending)
         self._pending, self._full, self._outside = [], False, outside
         self.stats = RunStats(full=full)
         if not (full or impact.touched or impact.aspects) and self._all_classified:
@@ -525,7 +299,7 @@ class IncrementalValidator:
 class _Pass:
     """One incremental run: which rules are stale where, and the checks that follow."""
 
-    def __init__(self, validator: IncrementalValidator, context: Context, impact: _Impact) -> None:
+    def __init__(self, validator: IncrementalValidator, context: Context, impact: Impact) -> None:
         self.validator = validator
         self.context = context
         self.impact = impact
@@ -565,7 +339,7 @@ class _Pass:
             stale = everywhere or (on_self and around) or (on_above and inside)
             if not stale and on_actors:
                 if refers is None:
-                    refers = _refers_to(obj, self.impact.participants)
+                    refers = refers_to(obj, self.impact.participants)
                 stale = refers
             if stale:
                 out.append(self.run(rule, obj))
