@@ -26,7 +26,7 @@ T = TypeVar("T", bound=EObject)
 class _Shape:
     """The features a copy of one class goes through, and whether the direct writes cover them."""
 
-    __slots__ = ("attributes", "containments", "direct", "references")
+    __slots__ = ("attributes", "containments", "direct", "direct_references", "references")
 
     def __init__(self, cls: type[EObject]) -> None:
         eclass = cls.eClass
@@ -38,6 +38,9 @@ class _Shape:
             eclass.python_class is cls
             and all(attribute_supported(s.feature) for s in self.attributes)
             and all(child_supported(s.feature) for s in self.containments)
+        )
+        self.direct_references = eclass.python_class is cls and all(
+            s.many or reference_supported(s.feature) for s in self.references
         )
 
 
@@ -125,11 +128,13 @@ class Copier:
         copies = self.copies
         for original, duplicate in list(copies.items()):
             cls = type(original)
-            if not self.direct or cls is EProxy or type(duplicate) is not cls:
+            shape = _shape(cls) if self.direct and cls is not EProxy else None
+            if shape is None or not shape.direct_references or type(duplicate) is not cls:
                 self._references_with_setters(original, duplicate)
                 continue
             state = original.__dict__
-            for feature in _shape(cls).references:
+            set_before = duplicate.__dict__
+            for feature in shape.references:
                 held = state.get(feature.name)
                 if held is None:
                     continue
@@ -141,19 +146,13 @@ class Copier:
                 if held is None:
                     continue
                 target = copies.get(held, held)
-                if self._direct_reference(feature, duplicate, target, held):
-                    set_reference(duplicate, feature, target)
-                else:
+                # Through pyecore when the reference was set before (its setter also undoes
+                # what was there), or when the opposite end would change an original, which
+                # may be watched or be a proxy; a copy made here has no listeners yet.
+                if feature.name in set_before or (feature.opposite is not None and target is held):
                     duplicate.eSet(feature.feature, target)
-
-    def _direct_reference(self, feature: Slot, duplicate: EObject, target: Any, held: Any) -> bool:
-        if not reference_supported(feature.feature) or feature.name in duplicate.__dict__:
-            return False  # set before: pyecore's setter also undoes what was there
-        if feature.opposite is None:
-            return True  # the target's only bookkeeping is `_inverse_rels`, even for a proxy
-        # The opposite end changes the target: direct only for a copy made here, which nothing
-        # listens to yet (an original may be watched, and may be a proxy).
-        return target is not held and type(target) is not EProxy
+                else:
+                    set_reference(duplicate, feature, target)
 
     def _references_with_setters(self, original: EObject, duplicate: EObject) -> None:
         for feature in cross_references(original.eClass):

@@ -31,34 +31,23 @@ from functools import cache
 from typing import Any, TypeVar
 
 from pyecore.ecore import EAttribute, EObject, EReference, EStructuralFeature
-from pyecore.innerutils import InternalSet
 from pyecore.valuecontainer import EOrderedSet, EValue
 
 T = TypeVar("T", bound=EObject)
 
 _object_new = object.__new__
+_eobject_new = EObject.__new__
 
 
 def new(cls: type[T]) -> T:
     """A new, empty object of a generated class: `cls()` without the constructor's call chain.
 
-    Leaves what `EObject.__new__` leaves (the generated constructors set nothing when given no
-    arguments; tests/core/test_fast_objects.py checks both for every SceML class).
+    `EObject.__new__` sets up pyecore's bookkeeping (and registers the object for
+    `allInstances()`); the generated constructors, given no arguments, add nothing to it
+    (tests/core/test_fast_objects.py checks that for every SceML class), but their chain of
+    keyword-only `__init__`s costs four times as much as the rest.
     """
-    obj: Any = _object_new(cls)
-    state = obj.__dict__
-    state["_internal_id"] = None
-    state["_isset"] = InternalSet()
-    state["_container"] = None
-    state["_containment_feature"] = None
-    state["_eresource"] = None
-    state["listeners"] = []
-    state["_eternal_listener"] = []
-    state["_inverse_rels"] = set()
-    state["_staticEClass"] = False
-    state["dyn_inst"] = obj
-    cls._instances.add(obj)  # pyecore's registry, for allInstances()
-    return obj  # type: ignore[no-any-return]
+    return _eobject_new(cls)  # type: ignore[no-any-return]
 
 
 class Slot:
@@ -91,39 +80,46 @@ def slot(feature: EStructuralFeature) -> Slot:
 
 
 def _value_holder(owner: EObject, slot: Slot, value: object) -> EValue:
-    # The fields EValue.__init__ sets, in its order; `_value` is what `_set` leaves.
+    # The fields EValue.__init__ sets, in its order, set as it sets them (as attributes: no
+    # separate dict object is made); `_value` is what `_set` leaves.
     holder = _object_new(EValue)
-    state = holder.__dict__
-    state["owner"] = owner
-    state["feature"] = slot.feature
-    state["is_ref"] = slot.is_ref
-    state["is_cont"] = slot.is_cont
-    state["generic_type"] = None
-    state["_value"] = value
+    holder.owner = owner
+    holder.feature = slot.feature
+    holder.is_ref = slot.is_ref
+    holder.is_cont = slot.is_cont
+    holder.generic_type = None
+    holder._value = value
     return holder
 
 
 def _set_holder(owner: EObject, feature: EReference, is_cont: bool) -> EOrderedSet:
     # The fields EOrderedSet.__init__ sets (through ECollection and OrderedSet), in its order.
     holder = _object_new(EOrderedSet)
-    state = holder.__dict__
-    state["items"] = []
-    state["map"] = {}
-    state["owner"] = owner
-    state["feature"] = feature
-    state["is_ref"] = True
-    state["is_cont"] = is_cont
-    state["generic_type"] = None
-    state["_orderedset_update"] = False
+    holder.items = []
+    holder.map = {}
+    holder.owner = owner
+    holder.feature = feature
+    holder.is_ref = True
+    holder.is_cont = is_cont
+    holder.generic_type = None
+    holder._orderedset_update = False
     return holder
 
 
 def set_value(obj: EObject, slot: Slot, value: object) -> None:
     """`obj.<feature> = value` for a single-valued attribute not set before, or `None` for any
     single-valued feature not set before (SceML writes that as nil: it counts as set)."""
+    # _value_holder written out: this runs for most attributes of every object read or copied.
+    holder = _object_new(EValue)
+    holder.owner = obj
+    holder.feature = feature = slot.feature
+    holder.is_ref = slot.is_ref
+    holder.is_cont = slot.is_cont
+    holder.generic_type = None
+    holder._value = value
     state = obj.__dict__
-    state[slot.name] = _value_holder(obj, slot, value)
-    state["_isset"][slot.feature] = None
+    state[slot.name] = holder
+    state["_isset"][feature] = None
 
 
 def add_child(parent: EObject, slot: Slot, child: EObject) -> None:
@@ -150,9 +146,15 @@ def add_child(parent: EObject, slot: Slot, child: EObject) -> None:
 def set_reference(obj: EObject, slot: Slot, target: EObject) -> None:
     """`obj.<feature> = target` for a single-valued cross reference not set before, and the
     opposite end: `target.<opposite>` gains `obj`."""
-    feature = slot.feature
+    holder = _object_new(EValue)  # _value_holder written out, as in set_value
+    holder.owner = obj
+    holder.feature = feature = slot.feature
+    holder.is_ref = True
+    holder.is_cont = False
+    holder.generic_type = None
+    holder._value = target
     state = obj.__dict__
-    state[slot.name] = _value_holder(obj, slot, target)
+    state[slot.name] = holder
     state["_isset"][feature] = None
     opposite = slot.opposite
     if opposite is None:

@@ -43,10 +43,6 @@ from .fastobjects import (
 XSI_TYPE = "{http://www.w3.org/2001/XMLSchema-instance}type"
 XSI_NIL = "{http://www.w3.org/2001/XMLSchema-instance}nil"  # pyecore's test, whatever the prefixes
 
-# The same-file reference paths EMF and pyecore write: `//@feature.index/@feature`. pyecore also
-# accepts a leading root number, `#`, names instead of indices, negative indices and
-# `type path` pairs; those go to its own decoder.
-_PATH = re.compile(r"//@[A-Za-z_][A-Za-z0-9_]*(\.[0-9]+)?(/@[A-Za-z_][A-Za-z0-9_]*(\.[0-9]+)?)*")
 # An iD value (ModuleDefinition.name) used as a reference: no path, URI or separator in it.
 _ID = re.compile(r"[^\s/#]+")
 
@@ -84,7 +80,7 @@ class _Plan:
                 self.attributes[name] = (slot(feature), None if plain else {}, bool(feature.iD))
             elif child_supported(feature):
                 self.children[name] = slot(feature)
-            elif reference_supported(feature):
+            elif reference_supported(feature) and slot(feature).kind is not None:
                 self.references[name] = slot(feature)
 
     def fit(self, held_by: Slot) -> bool:
@@ -189,7 +185,9 @@ class _Reader:
             if held_by is None:
                 self._other(child, parent, parent_plan)
                 continue
-            kind = child.get(XSI_TYPE)
+            items = child.items()
+            # pyecore and EMF write xsi:type first; looking at it there saves a lookup.
+            kind = items[0][1] if items and items[0][0] == XSI_TYPE else child.get(XSI_TYPE)
             if kind is None and child.get(XSI_NIL) is not None:
                 self._nil(child, parent, parent_plan)
                 continue
@@ -201,7 +199,7 @@ class _Reader:
             obj = new(plan.cls)
             created.append(obj)
             attributes = plan.attributes
-            for key, text in child.items():
+            for key, text in items:
                 attribute = attributes.get(key)
                 if attribute is not None:
                     feature, values, is_id = attribute
@@ -322,34 +320,38 @@ class _Reader:
     def _resolve_all(self, root: EObject) -> None:
         # In pyecore's order: holders in document order, each holder's attributes in order.
         found: dict[str, EObject] = {}
+        resolve = self._resolve
         for holder, feature, text in self.later:
             target = found.get(text)
             if target is None:
-                target = found[text] = self._resolve(root, text)
-            kind = feature.kind
-            if kind is None or not isinstance(target, kind) or feature.feature in holder._isset:
-                raise _Declined
+                target = found[text] = resolve(root, text)
+            if not isinstance(target, feature.kind) or feature.name in holder.__dict__:
+                raise _Declined  # of another class, or set before (by an href or nil element)
             set_reference(holder, feature, target)
 
     def _resolve(self, root: EObject, text: str) -> EObject:
         uuids = self.uuids
-        if _PATH.fullmatch(text):
+        if text.startswith("//@"):
             if self.use_uuid and text[2:] in uuids:
-                return uuids[text[2:]]
-            return self._navigate(root, text)
+                return uuids[text[2:]]  # pyecore tries a path as an xmi:id first
+            return self._navigate(root, text[3:].split("/@"))
         if _ID.fullmatch(text) and text in uuids:
             return uuids[text]
         raise _Declined
 
-    def _navigate(self, root: EObject, path: str) -> EObject:
+    def _navigate(self, root: EObject, steps: list[str]) -> EObject:
+        # `//@nodes.3/@actors.0`: containments by name, with an index for many-valued ones.
+        # pyecore also walks other attributes, names as indices and negative indices.
         current = root
-        for step in path[2:].split("/"):
-            name, dot, index = step[1:].partition(".")
+        for step in steps:
+            name, dot, index = step.partition(".")
             feature = self._plan_of(type(current)).children.get(name)
             held = current.__dict__.get(name) if feature is not None else None
             if held is None or bool(dot) != feature.many:  # type: ignore[union-attr]
                 raise _Declined
             if dot:
+                if not (index.isascii() and index.isdigit()):
+                    raise _Declined
                 position = int(index)
                 if position >= len(held.items):
                     raise _Declined
