@@ -779,18 +779,19 @@ def write_staged(path: str | Path, data: bytes, staging: str | Path) -> None:
     """
     path = Path(path)
     staged = Path(staging) / path.name
+    flags = os.O_WRONLY | os.O_CREAT | os.O_TRUNC | getattr(os, "O_BINARY", 0)  # (Windows)
     try:
-        handle = os.open(staged, os.O_WRONLY | os.O_CREAT | os.O_TRUNC | os.O_CLOEXEC, 0o644)
+        handle = os.open(staged, flags, 0o644)
     except OSError as error:
         raise SaveError(f"cannot write: {_reason(error)}", file=path) from None
     try:
         try:
-            os.fchmod(handle, 0o644)  # as write_atomically leaves it, whatever the umask
             view = memoryview(data)
             while view:  # No fsync, as in write_atomically: the rename is the guarantee.
                 view = view[os.write(handle, view) :]
         finally:
             os.close(handle)
+        os.chmod(staged, 0o644)  # as write_atomically leaves a file, whatever the umask
         os.replace(staged, path)
     except BaseException as error:
         staged.unlink(missing_ok=True)

@@ -391,7 +391,8 @@ def _run(
             replace(payload, staging=staging), indices, rows, executor, chunk_size, progress
         )
     finally:
-        shutil.rmtree(staging, ignore_errors=True)  # empty, unless a worker died mid-file
+        with _interrupt_deferred():
+            shutil.rmtree(staging, ignore_errors=True)  # empty, unless a worker died mid-file
 
 
 def _staging_folder(out_dir: Path) -> Path:
@@ -448,8 +449,9 @@ def _collect(
     if payload.staging is not None:
         # Workers may have written files of samples whose records never came: those of a chunk
         # still running at Ctrl-C, or the part of a lost chunk done before its worker died.
-        for number in sorted(unfinished & set(range(len(chunks)))):
-            _remove_files_of(payload.config, chunks[number][0])
+        with _interrupt_deferred():
+            for number in sorted(unfinished & set(range(len(chunks)))):
+                _remove_files_of(payload.config, chunks[number][0])
     return result
 
 
@@ -464,7 +466,8 @@ def _interrupt_deferred() -> Iterator[None]:
     """Hold Ctrl-C until the block is done, then raise it.
 
     A KeyboardInterrupt between creating a temporary file and renaming it would leave the
-    temporary file behind; a chunk's files take milliseconds, so Ctrl-C waits for them.
+    temporary file behind; a chunk's files take milliseconds, so Ctrl-C waits for them. So does
+    a second Ctrl-C for the clean-up after the first.
     Only the main thread receives signals; elsewhere this does nothing.
     """
     if threading.current_thread() is not threading.main_thread():
