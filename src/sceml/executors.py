@@ -234,7 +234,7 @@ class ProcessExecutor(Executor):
             if isinstance(items, Deferred):
                 # One call per process starts them all and their setup (an error there comes
                 # back with each item, as setup runs again for it); meanwhile the items are made.
-                for _ in range(processes):
+                for _ in range(min(processes, len(items))):
                     pool.submit(_process_call, _ready, None)
             futures: dict[Future[R], int] = {
                 pool.submit(_process_call, task, item): number

@@ -81,6 +81,12 @@ def test_deferred_items_are_made_once_and_all_run(kind: str) -> None:
     assert by_item[2].error == "ZeroDivisionError: integer division or modulo by zero"
 
 
+@pytest.mark.parametrize("kind", ["local", "processes"])
+def test_no_deferred_items_is_no_outcome(kind: str) -> None:
+    with open_executor(kind, workers=2) as executor:
+        assert list(executor.map_unordered(int, operator.add, "1", Deferred(0, list))) == []
+
+
 def test_a_worker_that_cannot_write_makes_the_command_fail_cleanly(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
