@@ -343,3 +343,15 @@ def _history_states(session: EditorSession) -> list[Any]:
         session.redo()
     states.append(whole_state(session.document))
     return states
+
+
+def test_a_reader_failure_falls_back_to_pyecore(monkeypatch: pytest.MonkeyPatch) -> None:
+    def broken(*args: object) -> None:
+        raise RuntimeError("a bug in the reader")
+
+    monkeypatch.setattr(xmi_reader, "set_reference", broken)
+    slow, _, _ = outcome(EXAMPLES / "uis1-concrete.xmi", fast=False)
+    fast, error, answers = outcome(EXAMPLES / "uis1-concrete.xmi", fast=True)
+    assert error is None and answers == [False]
+    assert slow is not None and fast is not None
+    assert difference(whole_state(slow), whole_state(fast)) is None
