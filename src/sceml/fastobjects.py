@@ -14,8 +14,11 @@ pyecore's setters for anything else.
 What they leave out, on purpose:
 
 - Notifications. They are only delivered to listeners, and nothing listens to objects that are
-  being made: a new object's `listeners` and `_eternal_listener` lists are empty, and a resource
-  that is still loading has none either (ResourceSet.get_resource creates it and loads it at once).
+  being made (a file being read, a copy being made): a new object's `listeners` and
+  `_eternal_listener` lists are empty, and a resource that is still loading has none either
+  (ResourceSet.get_resource creates it and loads it at once). A reference without an opposite
+  notifies only its holder; the copier sets the opposite end of an original through pyecore.
+  (SceML attaches no pyecore listeners anywhere.)
 - Type checks. The callers have checked already: the reader checks each value and each
   object's class against the feature, the copier copies values that were checked when set.
 
