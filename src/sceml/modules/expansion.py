@@ -10,7 +10,7 @@ expanded nodes in exactly the same way.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Collection, Iterable
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -21,7 +21,7 @@ import scemlmodel as scm
 from ..collector import collector_paused
 from ..copying import Copier
 from ..io import model_path
-from ..traversal import all_contents, containments, single_references
+from ..traversal import all_contents, containments, cross_references, single_references
 from . import naming
 from .errors import FlattenError
 from .resolve import definition_key, location, resolved_definition, unwrap
@@ -122,6 +122,11 @@ class Expansion:
         """Whether `obj` is a copy made by the expansion (or inside one)."""
         return obj in self.origins
 
+    def release(self, keep: Collection[EObject] = ()) -> None:
+        """Forget, in the objects they refer to, the references of the copies not in `keep`
+        (see `forget_references`)."""
+        forget_references(copy for copy in self.origins if copy not in keep)
+
     def from_module(self, node: EObject) -> bool:
         """Whether a node of the expanded graph was expanded from a module use."""
         origin = self.origins.get(node)
@@ -147,6 +152,26 @@ class Expansion:
             for edge in self.wiring.live()
             if edge.source is not None and edge.target is not None
         ]
+
+
+def forget_references(copies: Iterable[EObject]) -> None:
+    """Remove what the objects `copies` refer to records of them; the copies keep their values.
+
+    pyecore records every reference without an opposite in its target (`_inverse_rels`), so a
+    throwaway copy that names a scenario's actor or a library's parameter would stay reachable
+    from that object: an editor validating after every edit would grow without bound.
+    """
+    for copy in copies:
+        for feature in cross_references(copy.eClass):
+            held = copy.__dict__.get(feature.name)  # the value holder, as traversal reads it
+            value = held._get() if hasattr(held, "_get") else held
+            for target in (list(value) if feature.many else [value]) if value else ():
+                try:
+                    links = getattr(unwrap(target), "_inverse_rels", None)
+                except Exception:  # an unresolvable proxy: nothing was recorded in it
+                    continue
+                if links is not None:
+                    links.discard((copy, feature))
 
 
 def expansion(scenario: scm.Scenario) -> Expansion:

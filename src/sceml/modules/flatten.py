@@ -16,7 +16,7 @@ from ..collector import collector_paused
 from ..copying import Copier
 from ..traversal import all_contents, cross_references
 from .errors import FlattenError
-from .expansion import Edge, Expansion, Origin, expansion
+from .expansion import Edge, Expansion, Origin, expansion, forget_references
 
 __all__ = ["FlattenError", "Flattened", "Origin", "expand", "flatten"]
 
@@ -87,6 +87,9 @@ def _expand(scenario: scm.Scenario) -> Flattened:
     flat.flows.clear()
     flat.flows.extend(flows)
     held = {flat, *all_contents(flat)}
+    # Copies left out (uses, ports, parameter references that were replaced) are garbage.
+    expanded.release(keep=held)
+    forget_references(copy for copy in copies.values() if copy not in held)
     provenance = {obj: origin for obj, origin in origins.items() if obj in held}
     return Flattened(flat, expanded.expanded, provenance)
 

@@ -109,6 +109,11 @@ class Context:
             self.flat_failure = str(error) or type(error).__name__
         return self._flat
 
+    def release(self) -> None:
+        """End of the run: the expansion's copies stop being recorded in the model they name."""
+        if self._flat is not None:
+            self._flat.release()
+
 
 def _resolve(use: scm.ModuleUse) -> scm.ModuleDefinition | None:
     try:

@@ -35,12 +35,15 @@ def iter_diagnostics(
     """
     context = Context(model, document, limits or Limits(), osc_version, osc_profile)
     seen: set[Key] = set()
-    for obj in objects(model, context):
-        for rule in registry.rules_for(obj.eClass):
-            found = run_rule(rule, obj, context, document)
-            if found:
-                yield from unique(found, seen)
-    yield from unique(through_modules(context, document, registry), seen)
+    try:
+        for obj in objects(model, context):
+            for rule in registry.rules_for(obj.eClass):
+                found = run_rule(rule, obj, context, document)
+                if found:
+                    yield from unique(found, seen)
+        yield from unique(through_modules(context, document, registry), seen)
+    finally:
+        context.release()
 
 
 def through_modules(

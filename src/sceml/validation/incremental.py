@@ -264,6 +264,14 @@ class IncrementalValidator:
             self.model, self.document, self.limits, self.osc_version, self.osc_profile
         )
         run = _Pass(self, context, impact)
+        try:
+            return self._checked(run, context, impact, full)
+        finally:
+            context.release()
+
+    def _checked(
+        self, run: _Pass, context: Context, impact: Impact, full: bool
+    ) -> list[Diagnostic]:
         previous = {} if full else self._results
         results: dict[EObject, _Entry] = {}
         seen: set[Key] = set()
