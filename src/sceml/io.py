@@ -33,6 +33,7 @@ from .safexml import (  # noqa: F401 (the size limit is part of this module's AP
     max_bytes_limit,
     size_problem,
 )
+from .traversal import all_contents
 
 # Deeper documents are refused by libxml2 itself (its limit without huge_tree is 256 levels), so
 # pyecore's recursive decoder never sees more than that and cannot overflow Python's stack.
@@ -146,6 +147,22 @@ class SafeXMIResource(XMIResource):  # type: ignore[misc]  # pyecore is untyped
             ) from None
         finally:
             self._clean_registers()
+        self._keep_lines(tree)
+
+    def _keep_lines(self, tree: etree._ElementTree) -> None:
+        # Where each object was written is all that is needed of the parse tree later; the tree
+        # itself is dropped (about a quarter of a large model's memory). The fast reader notes
+        # the lines as it goes; pyecore's decoder leaves them to be read off the tree.
+        if getattr(self, "sceml_lines", None) is None:
+            self.sceml_lines = {
+                obj: _line_in(self, obj)
+                for root in self.contents
+                for obj in (root, *all_contents(root))
+            }
+        for root in self.contents:
+            self.sceml_lines[root] = tree.getroot().sourceline
+        self.sceml_tree = None
+        self.__dict__.pop("sceml_children", None)
 
     def _decode_tree(self, tree: etree._ElementTree, options: dict[XMIOptions, Any] | None) -> None:
         # Mirrors XMIResource.load, but decodes the tree parsed above instead of re-reading the file.
@@ -420,10 +437,11 @@ class Document:
     resource_set: ResourceSet = field(repr=False)
 
     def line_of(self, obj: EObject) -> int | None:
-        """The line of the element that holds `obj` in this file, if it comes from it."""
-        resource = obj.eResource
-        element = _element_of(resource, obj) if resource is not None else None
-        return element.sourceline if element is not None else None
+        """The line of the element `obj` was read from in this file, if it was read from it."""
+        # Lines are those of the file as it was read: an object made since has none, and one
+        # moved since keeps the line it was read from.
+        lines = getattr(obj.eResource, "sceml_lines", None) if obj.eResource else None
+        return lines.get(obj) if lines is not None else None
 
     def file_of(self, obj: EObject) -> Path | None:
         """The file an object was read from (a library, for module internals)."""
@@ -533,8 +551,8 @@ def load(
 
 
 def _root_line(resource: XMIResource) -> int | None:
-    tree = getattr(resource, "sceml_tree", None)
-    return tree.getroot().sourceline if tree is not None else None
+    lines = getattr(resource, "sceml_lines", None)
+    return lines.get(resource.contents[0]) if lines and resource.contents else None
 
 
 def load_scenario(path: str | Path, **kwargs: object) -> Document:

@@ -130,6 +130,7 @@ class _Reader:
         self.xmiid: str = resource.xmiid
         self.plans: dict[object, _Plan] = {}  # by xsi:type text, class or (untyped) feature
         self.created: list[EObject] = []
+        self.lines: list[int | None] = []  # the line of each object in `created`
         # Same-file references, set once every object exists: (holder, feature, text).
         self.later: list[tuple[EObject, Slot, str]] = []
         self.uuids: dict[str, EObject] = {}
@@ -147,6 +148,7 @@ class _Reader:
         plan = self._plan_of(self._metaclass(qname.namespace, qname.localname))
         root = new(plan.cls)
         self.created.append(root)
+        self.lines.append(xmlroot.sourceline)
         self.use_uuid = xmlroot.get(self.xmiid) is not None
         for key, text in xmlroot.items():
             if key == self.xmiid:
@@ -181,6 +183,7 @@ class _Reader:
         later = self.later
         uuids = self.uuids
         created = self.created
+        lines = self.lines
         value_of = self._value
         xmiid = self.xmiid
         for child in element:
@@ -201,6 +204,7 @@ class _Reader:
                 raise _Declined
             obj = new(plan.cls)
             created.append(obj)
+            lines.append(child.sourceline)
             attributes = plan.attributes
             for key, text in items:
                 attribute = attributes.get(key)
@@ -375,6 +379,7 @@ class _Reader:
         resource.contents.append(root)
         resource.uuid_dict.update(self.uuids)
         resource._sceml_ids.update(self.ids)
+        resource.sceml_lines = dict(zip(self.created, self.lines, strict=True))
         last = xmlroot
         while len(last):
             last = last[-1]
@@ -385,3 +390,4 @@ class _Reader:
         for obj in self.created:
             EObject._instances.discard(obj)
         self.created.clear()
+        self.lines.clear()

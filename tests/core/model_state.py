@@ -193,6 +193,9 @@ def resource_state(resource: Any, names: Names) -> dict[str, Any]:
         "cache_enabled": resource.cache_enabled,
         "last node": resource._sceml_node.sourceline,
         "tree": resource.sceml_tree is not None,
+        "lines": sorted(
+            (value(obj, names), line) for obj, line in getattr(resource, "sceml_lines", {}).items()
+        ),
     }
 
 

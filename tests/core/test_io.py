@@ -197,3 +197,21 @@ def test_save_elsewhere_keeps_the_map_reachable(examples_copy: Path, tmp_path: P
     assert document.root.nodes[0].map == "../maps/intersection.xodr"
     io.save(document.root, examples_copy / "uis1-concrete.xmi")
     assert 'map="../maps/intersection.xodr"' in (examples_copy / "uis1-concrete.xmi").read_text()
+
+
+def test_lines_are_those_of_the_file_as_read_after_the_model_changes() -> None:
+    # The parse tree is not kept; each object keeps the line it was read from, so an edit (the
+    # editor's) does not shift the lines reported for the objects after it.
+    path = EXAMPLES / "uis1-concrete.xmi"
+    document = io.load(path)
+    text = path.read_text(encoding="utf-8").splitlines()
+    nodes = list(document.root.nodes)
+    before = {node: document.line_of(node) for node in nodes}
+    for node, line in before.items():
+        assert line is not None and f'name="{node.name}"' in text[line - 1]
+    document.root.nodes.remove(nodes[1])
+    added = scm.KeepVelocity(name="Added")
+    document.root.nodes.append(added)
+    assert [document.line_of(node) for node in nodes[2:]] == [before[n] for n in nodes[2:]]
+    assert document.line_of(added) is None
+    assert document.resource.sceml_tree is None  # only the lines were kept
