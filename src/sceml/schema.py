@@ -9,8 +9,8 @@ Two validators are used on purpose:
 * lxml/libxml2 decides validity. It validates an in-memory tree directly (no serialise and
   reparse) and is fast: validating a ~20 KB OpenSCENARIO 1.3 tree takes about 0.1 ms
   (``timeit``, 2000 runs, lxml 5.4 / libxml2 2.13, dev container); serialising and reparsing
-  it would cost another ~0.17 ms. The first call per process also pays ~0.13 s to import
-  ``qc_openscenario`` (pydantic) for resource lookup and ~2 ms to compile the XSD.
+  it would cost another ~0.17 ms. The first call per process pays ~2 ms to compile the XSD; the
+  file is found without importing ``qc_openscenario`` (which imports pydantic).
 * xmlschema is only consulted once lxml has said "invalid", because its messages name the
   expected element or the missing attribute. Building its schema costs 0.2-0.3 s per version
   (plus ~0.1 s to import xmlschema), so it is built lazily, once per process; after that an
@@ -25,8 +25,10 @@ from __future__ import annotations
 
 import functools
 import importlib.resources
+import importlib.util
 import os
 from dataclasses import dataclass
+from pathlib import Path
 from typing import TYPE_CHECKING, Any, Final, TypeAlias
 
 from lxml import etree
@@ -140,6 +142,15 @@ def _xsd_bytes(version: str) -> bytes:
             f"OpenSCENARIO version {version!r} is not supported; "
             f"expected one of {', '.join(SUPPORTED_VERSIONS)}"
         )
+    # Found without importing the package: its __init__ imports pydantic (about 0.2 s), which
+    # every worker of a batch export would pay just to read a file.
+    spec = importlib.util.find_spec(_XSD_PACKAGE.partition(".")[0])
+    folders = list(spec.submodule_search_locations or ()) if spec is not None else []
+    for folder in folders:
+        path = Path(folder) / "schema" / _XSD_FOLDERS[version] / _XSD_NAME
+        if path.is_file():
+            return path.read_bytes()
+    # An install layout without plain folders (a zip): ask the package itself.
     resource = importlib.resources.files(_XSD_PACKAGE) / _XSD_FOLDERS[version] / _XSD_NAME
     return resource.read_bytes()
 
