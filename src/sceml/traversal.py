@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 from functools import cache
+from typing import Any
 
 from pyecore.ecore import EAttribute, EClass, EObject, EReference, EStructuralFeature
 
@@ -44,6 +45,18 @@ def cross_references(eclass: EClass) -> tuple[EReference, ...]:
     )
 
 
+def stored(obj: EObject, name: str) -> Any:
+    """The value of feature `name` as `obj` holds it (a collection for a many-valued one), or
+    None if it was never set.
+
+    pyecore keeps each feature's value in a holder in the instance's __dict__, made on first
+    access; reading the holder directly skips the descriptor and eGet's checks (most of a walk's
+    time) and does not create holders for features that were never set.
+    """
+    holder = obj.__dict__.get(name)
+    return holder._get() if hasattr(holder, "_get") else holder
+
+
 @cache
 def _containment_names(eclass: EClass) -> tuple[tuple[str, bool], ...]:
     return tuple((f.name, bool(f.many)) for f in containments(eclass))
@@ -51,18 +64,13 @@ def _containment_names(eclass: EClass) -> tuple[tuple[str, bool], ...]:
 
 def contents(obj: EObject) -> Iterator[EObject]:
     """The objects `obj` directly contains, in feature order."""
-    # pyecore keeps each feature's value in a holder in the instance's __dict__, made on first
-    # access; reading the holder directly skips the descriptor and eGet's checks (most of a
-    # walk's time) and does not create holders for features that were never set.
-    stored = obj.__dict__
     for name, many in _containment_names(obj.eClass):
-        holder = stored.get(name)
-        if holder is None:
+        held = stored(obj, name)
+        if held is None:
             continue
-        held = holder._get() if hasattr(holder, "_get") else holder
         if many:
             yield from held
-        elif held is not None:
+        else:
             yield held
 
 
@@ -73,12 +81,8 @@ def _single_reference_names(eclass: EClass) -> tuple[tuple[EReference, str], ...
 
 def single_references(obj: EObject) -> Iterator[tuple[EReference, EObject]]:
     """(feature, target) of each single-valued cross-reference `obj` has set, in feature order."""
-    stored = obj.__dict__  # read like `contents` does, without the descriptor
     for feature, name in _single_reference_names(obj.eClass):
-        holder = stored.get(name)
-        if holder is None:
-            continue
-        target = holder._get() if hasattr(holder, "_get") else holder
+        target = stored(obj, name)
         if target is not None:
             yield feature, target
 

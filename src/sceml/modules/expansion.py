@@ -21,7 +21,13 @@ import scemlmodel as scm
 from ..collector import collector_paused
 from ..copying import Copier
 from ..io import model_path
-from ..traversal import all_contents, containments, cross_references, single_references
+from ..traversal import (
+    all_contents,
+    containments,
+    cross_references,
+    single_references,
+    stored,
+)
 from . import naming
 from .errors import FlattenError
 from .resolve import definition_key, location, resolved_definition, unwrap
@@ -163,8 +169,7 @@ def forget_references(copies: Iterable[EObject]) -> None:
     """
     for copy in copies:
         for feature in cross_references(copy.eClass):
-            held = copy.__dict__.get(feature.name)  # the value holder, as traversal reads it
-            value = held._get() if hasattr(held, "_get") else held
+            value = stored(copy, feature.name)
             for target in (list(value) if feature.many else [value]) if value else ():
                 try:
                     links = getattr(unwrap(target), "_inverse_rels", None)

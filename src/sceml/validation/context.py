@@ -65,18 +65,24 @@ class Context:
         top = obj
         while (container := top.eContainer()) is not None:
             top = container
+        return self._expanded_in(top)
+
+    def _expanded_in(self, top: EObject) -> EObject:
         if self._flat is not None and self._flat.holds(top):
             return self._flat.scenario
         return top
 
     def level_of(self, obj: EObject) -> str | None:
         """The abstraction level governing `obj`; None inside module definitions, which have none."""
-        current: EObject | None = obj
-        while current is not None:
-            if isinstance(current, scm.ModuleDefinition):
+        top = obj
+        while True:  # one climb: both a definition on the way and the top are needed
+            if isinstance(top, scm.ModuleDefinition):
                 return None
-            current = current.eContainer()
-        top = self.home(obj)
+            container = top.eContainer()
+            if container is None:
+                break
+            top = container
+        top = self._expanded_in(top)
         if top not in self._levels:
             root = root_node(top) if isinstance(top, scm.Scenario) else None
             level = root.level if root is not None else None
