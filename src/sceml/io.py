@@ -799,7 +799,7 @@ def write_staged(path: str | Path, data: bytes, staging: str | Path) -> None:
     For writers of many files at once (the batch's worker processes): `staging` is a private
     folder on the same file system as `path` (e.g. inside the output folder) that its owner
     creates beforehand and removes as a whole afterwards, so no temporary name has to be made
-    up and no chmod is needed: one file creation and one rename. `path`'s folder must exist.
+    up: one file creation and one rename. `path`'s folder must exist.
     Any failure is a SaveError naming `path` (`cannot write: reason`); the previous file, if
     any, stays as it was and the staged file is removed. A process killed midway can leave a
     staged file, never a half-written `path`; removing `staging` removes that too.
