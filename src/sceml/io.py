@@ -120,6 +120,7 @@ class SafeXMIResource(XMIResource):  # type: ignore[misc]  # pyecore is untyped
                 file=path,
             )
         tree = parse_xml_safely(path, getattr(resource_set, "sceml_max_bytes", None))
+        self.sceml_migration = _migrate_if_older(tree, path)
         _check_tree(tree, path)
         self.sceml_tree = tree
         # iD attribute values seen so far: EMF fragments name elements by them, so they must be
@@ -237,6 +238,41 @@ class SafeXMIResource(XMIResource):  # type: ignore[misc]  # pyecore is untyped
                     _line_in(self, holder),
                 ) from None
         self._later = []
+
+
+def _migrate_if_older(tree: etree._ElementTree, path: Path) -> Any:
+    """Rewrite a file saved with an older metamodel release to the current one, in memory.
+
+    Returns the migration's report (`sceml.migrations.Report`), or None for a file of the
+    current release; the migration code is imported only for the others.
+    """
+    root = tree.getroot()
+    model = next(iter(root), None) if etree.QName(root).localname == "XMI" else root
+    if model is None or etree.QName(model).namespace == scm.nsURI:
+        return None
+    from . import migrations
+
+    report = migrations.upgrade(tree, path)
+    if report is not None:
+        for listener in list(_MIGRATION_LISTENERS):
+            listener(report)
+    return report
+
+
+_MIGRATION_LISTENERS: list[Any] = []
+
+
+@contextlib.contextmanager
+def migration_notices(listener: Any) -> Iterator[None]:
+    """Call `listener(report)` for every file migrated while loading, within the block.
+
+    For front ends (the CLI prints a notice); library code never says anything itself.
+    """
+    _MIGRATION_LISTENERS.append(listener)
+    try:
+        yield
+    finally:
+        _MIGRATION_LISTENERS.remove(listener)
 
 
 def _check_tree(tree: etree._ElementTree, path: Path) -> None:
@@ -442,6 +478,22 @@ class Document:
         # moved since keeps the line it was read from.
         lines = getattr(obj.eResource, "sceml_lines", None) if obj.eResource else None
         return lines.get(obj) if lines is not None else None
+
+    @property
+    def migration(self) -> Any:
+        """How this file was migrated from an older metamodel release (a
+        `sceml.migrations.Report`), or None when it was saved with the current one."""
+        return getattr(self.resource, "sceml_migration", None)
+
+    def migrations(self) -> list[Any]:
+        """The migration reports of this file and of every file it has loaded since (libraries)."""
+        # A resource set may hold one file under two URIs; each file is reported once.
+        found: dict[Path, Any] = {}
+        for resource in self.resource_set.resources.values():
+            report = getattr(resource, "sceml_migration", None)
+            if report is not None:
+                found.setdefault(Path(report.file).resolve(), report)
+        return list(found.values())
 
     def file_of(self, obj: EObject) -> Path | None:
         """The file an object was read from (a library, for module internals)."""
