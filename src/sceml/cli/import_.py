@@ -9,7 +9,7 @@ import click
 
 from ..diagnostics import Severity
 from ..importer import import_to_file
-from ..io import load_scenario
+from ..io import load_scenario, reading_roots
 from ..validation import validate
 from .common import SceMLCommand, echo_diagnostics
 
@@ -70,7 +70,8 @@ def import_command(
         f"{imported.report.version}); {counts['opaque']} kept opaque, {counts['guessed']} "
         f"guessed{logical}"
     )
-    document = load_scenario(output)
+    # The written model names the map the import read, which lies in the input's reading roots.
+    document = load_scenario(output, allow=reading_roots(file))
     diagnostics = validate(document.root, document=document)
     echo_diagnostics([d for d in diagnostics if d.severity is not Severity.INFO], document, output)
     if any(d.severity is Severity.ERROR for d in diagnostics):

@@ -16,6 +16,7 @@ import scemlmodel as scm
 
 from .. import io
 from ..errors import SaveError
+from ..safefiles import output_target
 from .errors import ExtractError
 from .extract import RoleSpec, extract
 from .flatten import expand
@@ -114,20 +115,21 @@ def save_together(models: Sequence[tuple[EObject, Path]]) -> None:
     created: list[Path] = []
     done = False
     try:
-        for root, target in models:
-            created += io.make_folder(target.parent, target=target)
+        replaced = [output_target(target) for _, target in models]
+        for (root, target), real in zip(models, replaced, strict=True):
+            created += io.make_folder(real.parent, target=target)
             try:
                 handle, name = tempfile.mkstemp(
-                    prefix=f".{target.name}.", suffix=".tmp", dir=target.parent
+                    prefix=f".{real.name}.", suffix=".tmp", dir=real.parent
                 )
             except OSError as error:
                 raise SaveError(f"cannot write: {error.strerror}", file=target) from None
             os.close(handle)
             temporaries.append(Path(name))
             io.save(root, name)
-        for temporary, (_, target) in zip(temporaries, models, strict=True):
+        for temporary, (_, target), real in zip(temporaries, models, replaced, strict=True):
             try:
-                os.replace(temporary, target)
+                os.replace(temporary, real)
             except OSError as error:
                 raise SaveError(f"cannot write: {error.strerror}", file=target) from None
         done = True

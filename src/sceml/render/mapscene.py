@@ -175,7 +175,7 @@ def build_scene(scenario: scm.Scenario, scenario_file: str | Path | None) -> Map
             file=where,
         )
     scene = MapScene(
-        load_map(reference.path),
+        load_map(reference.path, reference.roots),
         scenario_title(scenario),
         str(root.level.name) if root is not None and root.level is not None else "?",
     )

@@ -94,4 +94,4 @@ def _road_map(root: scm.RootNode, scenario_file: str | Path | None) -> RoadMap |
     reference = map_reference(root.map, scenario_file)
     if reference is None or reference.path is None:
         return None  # no map, or a simulator town: world positions only
-    return load_map(reference.path)
+    return load_map(reference.path, reference.roots)
