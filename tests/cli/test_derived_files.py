@@ -93,7 +93,10 @@ def test_outside_a_project_allow_names_the_library_folder(
     said = denied.output + (page.read_text() if page.exists() else "")
     assert "leaves the allowed folders" in said and "--allow" in said, said
     arguments = READERS[command](derived, project / "out")
-    allowed = sceml(*arguments, "--allow", examples_copy / "library")
+    # The library, and the map the examples name from a sibling folder (../maps).
+    allowed = sceml(
+        *arguments, "--allow", examples_copy / "library", "--allow", project / "maps"
+    )
     assert allowed.exit_code == 0, allowed.output
 
 
@@ -136,7 +139,8 @@ def test_commands_on_logical_files_take_allow(examples_copy: Path, arguments: li
     out = examples_copy.parent / "out" / ("c.xmi" if command == "concretize" else "")
     denied = sceml(command, logical, *options, "-o", out)
     assert denied.exit_code != 0 and "--allow" in denied.output, denied.output
-    allowed = sceml(command, logical, *options, "-o", out, "--allow", examples_copy / "library")
+    library, maps = examples_copy / "library", examples_copy.parent / "maps"
+    allowed = sceml(command, logical, *options, "-o", out, "--allow", library, "--allow", maps)
     assert allowed.exit_code == 0, allowed.output
 
 

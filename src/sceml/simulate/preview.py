@@ -13,9 +13,10 @@ from ..graph import actors as scenario_actors
 from ..graph import root_node
 from ..maps import RoadMap, load_map
 from ..maps.reference import map_reference
-from ..modules import flatten
+from ..modules.flatten import Flattened, expand
 from ..params import concrete
 from .engine import Scheduler, run_schedule
+from .limits import refuse_unusable
 from .metrics import pair_metrics
 from .run import ActorInfo, Run
 from .setup import make_actor
@@ -50,9 +51,13 @@ def simulate(
             f"the preview runs concrete scenarios; this one is {level} "
             "(concretize or sample it first)"
         )
-    flat = (
-        flatten(scenario) if any(isinstance(n, scm.ModuleUse) for n in scenario.nodes) else scenario
+    flattened = (
+        expand(scenario)
+        if any(isinstance(n, scm.ModuleUse) for n in scenario.nodes)
+        else Flattened(scenario)
     )
+    refuse_unusable(flattened, step)  # before anything is allocated by what the values say
+    flat = flattened.scenario
     flat_root = root_node(flat)
     assert flat_root is not None
     if road_map is None:

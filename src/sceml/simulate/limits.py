@@ -1,0 +1,113 @@
+"""What the preview refuses before it runs: values it cannot use, or runs too large to hold.
+
+The engine allocates by what it is given: a speed of 2^31 m/s asks numpy for a path hundreds
+of GiB long, a long run at a fine step records millions of samples. So every parameter of the
+flattened scenario is read once here, before any actor is set up, and refused with the file,
+line and element it came from (a module's default is located in its library): not a single
+value (a range, a distribution, unset without a default), not finite, or beyond what any road
+user does. These are hard ceilings of the preview, far above the plausibility limits that
+validation applies per actor kind (`sceml.validation.limits`), which a project may raise.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+from pyecore.ecore import EObject
+
+from .. import catalog
+from ..graph import actors as scenario_actors
+from ..graph import root_node
+from ..io import model_path
+from ..modules.flatten import Flattened
+from ..params import concrete
+from ..traversal import all_contents
+from .world import SimulationError
+
+#: The largest magnitude the preview accepts per SI unit: beyond any road user (540 km/h, 10 g),
+#: and for lengths beyond any map's coordinates (UTM northings reach 10,000 km).
+CEILINGS: dict[str, float] = {
+    "m/s": 150.0,
+    "m/s2": 100.0,
+    "m": 1e7,
+    "s": 86_400.0,
+    "rad": 1e3,
+    "mm/h": 1e3,
+}
+
+#: The most samples (steps times actors) a run may record: each costs about 150 bytes while the
+#: run lasts and more in the metrics, so this keeps a run well under 1 GB.
+MAX_SAMPLES = 2_000_000
+
+_BYTES_PER_SAMPLE = 150
+
+
+def refuse_unusable(flattened: Flattened, step: float) -> None:
+    """Raise SimulationError for the first parameter the preview cannot use, or a run too long.
+
+    `flattened` is the scenario to run with the origin of each element; `step` the time step.
+    """
+    flat = flattened.scenario
+    for owner in [flat, *all_contents(flat)]:
+        for spec in catalog.parameters(owner):
+            _check(flattened, owner, spec, step)
+    root = root_node(flat)
+    if root is None:
+        return
+    steps = math.ceil(concrete(root, "maxDuration") / step) + 1
+    samples = steps * max(1, len(list(scenario_actors(flat))))
+    if samples > MAX_SAMPLES:
+        raise _located(
+            flattened,
+            root,
+            "maxDuration",
+            f"a run of maxDuration {concrete(root, 'maxDuration'):g} s at a step of {step:g} s "
+            f"would record {samples:,} samples (about {_megabytes(samples)} MB); the preview "
+            f"records at most {MAX_SAMPLES:,}: shorten maxDuration or make --step larger",
+        )
+
+
+def _check(flattened: Flattened, owner: EObject, spec: catalog.ParameterSpec, step: float) -> None:
+    try:
+        value = concrete(owner, spec.name)
+    except ValueError as error:
+        raise _located(flattened, owner, spec.name, f"cannot be simulated: {error}") from None
+    ceiling = CEILINGS.get(spec.unit)
+    if not math.isfinite(value):
+        problem = f"{spec.name} is {value}, not a finite number"
+    elif ceiling is not None and abs(value) > ceiling:
+        problem = (
+            f"{spec.name}={value:g} {spec.unit} is beyond what the preview simulates "
+            f"(at most {ceiling:g} {spec.unit} in magnitude)"
+        )
+    else:
+        return
+    raise _located(flattened, owner, spec.name, problem)
+
+
+def _located(flattened: Flattened, owner: EObject, name: str, message: str) -> SimulationError:
+    # The value itself when it was copied from a file (a module's default lives in its
+    # library), else its owner, else what the input scenario shows for it (the module use).
+    candidates: list[EObject | None] = [owner.eGet(name), owner]
+    for candidate in list(candidates):
+        origin = flattened.origin(candidate) if candidate is not None else None
+        if origin is not None:
+            candidates += [origin.element, origin.in_scenario]
+    for candidate in candidates:
+        file, line = _where(candidate)
+        if file is not None and line is not None:
+            return SimulationError(message, file=file, line=line, element=model_path(candidate))
+    return SimulationError(message, element=model_path(owner))
+
+
+def _where(obj: EObject | None) -> tuple[Path | None, int | None]:
+    resource = obj.eResource if obj is not None else None
+    if resource is None:
+        return None, None
+    lines = getattr(resource, "sceml_lines", None) or {}
+    return Path(resource.uri.normalize()), lines.get(obj)
+
+
+def _megabytes(samples: int) -> str:
+    return f"{samples * _BYTES_PER_SAMPLE / 1e6:,.0f}"
