@@ -419,13 +419,21 @@ class Document:
     @property
     def allowed_roots(self) -> list[Path] | None:
         """The folders files this model names (libraries, maps) may be read from; None: any."""
-        roots: list[Path] | None = getattr(self.resource_set, "sceml_allowed_roots", None)
-        return roots
+        return allowed_roots_of(self.root)
 
     def file_of(self, obj: EObject) -> Path | None:
         """The file an object was read from (a library, for module internals)."""
         resource = obj.eResource
         return Path(resource.uri.normalize()) if resource is not None else None
+
+
+def allowed_roots_of(obj: EObject) -> list[Path] | None:
+    """The folders the files `obj`'s model names may be read from, as it was loaded (`load`'s
+    allowed roots); None for a model that was not loaded with them (built in Python)."""
+    resource = obj.eResource
+    resource_set = resource.resource_set if resource is not None else None
+    roots: list[Path] | None = getattr(resource_set, "sceml_allowed_roots", None)
+    return roots
 
 
 def _containment_steps(obj: EObject) -> list[tuple[str, int]]:

@@ -11,6 +11,7 @@ import scemlmodel as scm
 
 from ..graph import actors as scenario_actors
 from ..graph import root_node
+from ..io import allowed_roots_of
 from ..maps import RoadMap, load_map
 from ..maps.reference import map_reference
 from ..modules.flatten import Flattened, expand
@@ -61,7 +62,7 @@ def simulate(
     flat_root = root_node(flat)
     assert flat_root is not None
     if road_map is None:
-        road_map = _road_map(flat_root, scenario_file)
+        road_map = _road_map(flat_root, scenario_file, allowed_roots_of(scenario))
     world = World(road_map, {}, step)
     for actor in scenario_actors(flat):
         world.actors[str(actor.name)] = make_actor(actor, road_map)
@@ -95,8 +96,10 @@ def simulate(
     )
 
 
-def _road_map(root: scm.RootNode, scenario_file: str | Path | None) -> RoadMap | None:
-    reference = map_reference(root.map, scenario_file)
+def _road_map(
+    root: scm.RootNode, scenario_file: str | Path | None, roots: list[Path] | None
+) -> RoadMap | None:
+    reference = map_reference(root.map, scenario_file, roots)
     if reference is None or reference.path is None:
         return None  # no map, or a simulator town: world positions only
     return load_map(reference.path, reference.roots)
