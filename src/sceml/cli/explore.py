@@ -11,8 +11,9 @@ import click
 
 from ..executors import Executor, check, open_executor
 from ..io import Document, load_scenario, make_folder, remove_folders, write_atomically
+from ..levels.counts import parse_count
 from ..schema import SUPPORTED_VERSIONS
-from .common import SceMLCommand, allow_option, executor_options
+from .common import Parsed, SceMLCommand, allow_option, executor_options
 
 if TYPE_CHECKING:
     from ..explore import Exploration
@@ -35,7 +36,12 @@ _METRICS = ("min-ttc", "min-distance", "collision", "pet")
     "post-encroachment time.",
 )
 @click.option(
-    "--budget", type=click.IntRange(min=2), default=200, show_default=True, help="Runs in all."
+    "--budget",
+    type=Parsed("N", parse_count),
+    default=200,
+    show_default=True,
+    help="Runs in all (at least 2): 200, 1e4 or 2^12. A budget whose runs this machine's free "
+    "memory cannot hold is refused.",
 )
 @click.option("--seed", type=click.IntRange(min=0), default=0, show_default=True, help="Seed.")
 @click.option(
@@ -100,6 +106,7 @@ def explore_command(
 
     check(executor, scheduler)
     document = load_scenario(logical, allow=allow)
+    _check_budget(document, budget, step)
     # Made before the search, so that an output that cannot be written fails now, not after it.
     created = make_folder(out_dir)
     try:
@@ -127,6 +134,18 @@ def explore_command(
         if problem:
             click.echo(f"    no .xosc: {problem}", err=True)
     click.echo(f"wrote {out_dir / 'runs.csv'}, {out_dir / 'parameter-space.png'}")
+
+
+def _check_budget(document: Document, budget: int, step: float) -> None:
+    """Refuse, before anything runs, a budget whose runs would not fit in memory."""
+    from ..levels.counts import check_count
+    from ..simulate.limits import run_samples
+
+    if budget < 2:
+        raise click.BadParameter("the budget must allow at least 2 runs", param_hint="'--budget'")
+    # Each run keeps its trajectories (about 40 bytes a sample) for the ranking and the plot.
+    each = 40 * run_samples(document.root, step) + 8192
+    check_count(budget, "runs", memory_each=each, hint="ask for fewer with --budget")
 
 
 def _search(

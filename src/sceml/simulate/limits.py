@@ -55,8 +55,7 @@ def refuse_unusable(flattened: Flattened, step: float) -> None:
     root = root_node(flat)
     if root is None:
         return
-    steps = math.ceil(concrete(root, "maxDuration") / step) + 1
-    samples = steps * max(1, len(list(scenario_actors(flat))))
+    samples = run_samples(flat, step)
     if samples > MAX_SAMPLES:
         raise _located(
             flattened,
@@ -66,6 +65,27 @@ def refuse_unusable(flattened: Flattened, step: float) -> None:
             f"would record {samples:,} samples (about {_megabytes(samples)} MB); the preview "
             f"records at most {MAX_SAMPLES:,}: shorten maxDuration or make --step larger",
         )
+
+
+def run_samples(scenario: EObject, step: float) -> int:
+    """How many samples (steps times actors) a run of `scenario` records at most, at `step`.
+
+    For a logical scenario, whose maxDuration may be a range or distribution, its highest
+    value; the language default when it has none.
+    """
+    root = root_node(scenario)
+    if root is None:
+        return 0
+    try:
+        duration = concrete(root, "maxDuration")
+    except ValueError:
+        held = root.maxDuration
+        highest = [getattr(held, name, None) for name in ("max", "upperBound")]
+        duration = max([float(h) for h in highest if h is not None] or [60.0])
+    if not math.isfinite(duration) or duration > CEILINGS["s"]:
+        duration = CEILINGS["s"]
+    actors = max(1, len(list(scenario_actors(scenario))))
+    return (math.ceil(max(duration, 0.0) / step) + 1) * actors
 
 
 def _check(flattened: Flattened, owner: EObject, spec: catalog.ParameterSpec, step: float) -> None:
