@@ -12,6 +12,7 @@ import click
 from ..executors import Executor, check, open_executor
 from ..io import Document, load_scenario, make_folder, remove_folders, write_atomically
 from ..levels.counts import parse_count
+from ..outputset import output_set
 from ..schema import SUPPORTED_VERSIONS
 from .common import Parsed, SceMLCommand, allow_option, executor_options
 
@@ -114,11 +115,19 @@ def explore_command(
             found = _search(
                 document, logical, runner, allow, metric=metric, budget=budget, seed=seed, step=step
             )
-        write_atomically(out_dir / "runs.csv", runs_csv(found).encode("utf-8"))
-        plot_space(found, out_dir / "parameter-space.png")
-        critical = write_critical(found, document.root, logical, out_dir, top, osc_version)
-    except BaseException:
+        # All outputs or none: a plot that fails must not leave runs.csv alone.
+        with output_set() as outputs:
+            runs = outputs.stage(out_dir / "runs.csv")
+            write_atomically(runs, runs_csv(found).encode("utf-8"))
+            plot_space(found, outputs.stage(out_dir / "parameter-space.png"))
+            critical = write_critical(
+                found, document.root, logical, out_dir, top, osc_version, stage=outputs.stage
+            )
+    except BaseException as error:
         remove_folders(created)  # where nothing was written
+        if isinstance(error, KeyboardInterrupt):  # as sample: 130, and what became of the outputs
+            click.echo("Interrupted: no output was written.", err=True)
+            raise click.exceptions.Exit(130) from None
         raise
     ran = [e for e in found.evaluations if e.run is not None]
     collisions = sum(1 for e in ran if e.run is not None and e.run.collided)
