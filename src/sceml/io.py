@@ -39,7 +39,7 @@ from .safexml import (  # noqa: F401 (the size limit is part of this module's AP
     max_bytes_limit,
     size_problem,
 )
-from .traversal import all_contents
+from .traversal import all_contents, cross_references, stored
 
 # Deeper documents are refused by libxml2 itself (its limit without huge_tree is 256 levels), so
 # pyecore's recursive decoder never sees more than that and cannot overflow Python's stack.
@@ -566,19 +566,54 @@ def load_library(path: str | Path, **kwargs: object) -> Document:
     return document
 
 
-def unresolved_references(root: EObject) -> Iterator[tuple[EObject, str, str]]:
-    """Every cross-file reference below `root` that cannot be loaded: (holder, href, reason)."""
-    for obj in [root, *root.eAllContents()]:
-        if not isinstance(obj, scm.ModuleUse):
-            continue
-        target = obj.definition
-        if not isinstance(target, EProxy):
-            continue
-        href = target._proxy_path
-        try:
-            target.force_resolve()
-        except Exception as error:  # pyecore wraps our LoadError, or raises its own for fragments
-            yield obj, href, _resolution_failure(href, error)
+def unresolved_references(
+    root: EObject, *, through_files: bool = False
+) -> Iterator[tuple[EObject, str, str]]:
+    """Every cross-file reference below `root` that cannot be loaded: (holder, href, reason).
+
+    Any reference may name another file (a ModuleUse's definition by design, a node's
+    referenceActor by a hand-edited file); each is tried here, so that no tool meets a proxy
+    that fails later with pyecore's TypeError. With `through_files`, the files reached are
+    searched too, each once: a library's own broken reference is found before a tool expands
+    its modules.
+    """
+    pending, seen = [root], {id(root)}
+    while pending:
+        top = pending.pop()
+        for obj in [top, *all_contents(top)]:
+            for holder, target, failure in _proxies_of(obj):
+                if failure is not None:
+                    yield holder, target._proxy_path, failure
+                    continue
+                reached = target.eRoot() if through_files else None
+                if reached is not None and id(reached) not in seen:
+                    seen.add(id(reached))
+                    pending.append(reached)
+
+
+def _proxies_of(obj: EObject) -> Iterator[tuple[EObject, EProxy, str | None]]:
+    """`obj`'s references to other files, each tried: (obj, proxy, why it fails or None).
+
+    Only a module use's definition may name another file (SceML writes no other); any other
+    reference that does is a failure without reading what it names.
+    """
+    for reference in cross_references(obj.eClass):
+        held = stored(obj, reference.name)
+        for target in list(held) if reference.many and held is not None else [held]:
+            if not isinstance(target, EProxy):
+                continue
+            if not (isinstance(obj, scm.ModuleUse) and reference.name == "definition"):
+                yield obj, target, (
+                    f"{reference.name} refers to another file ({target._proxy_path!r}); only a "
+                    "module use's definition may"
+                )
+                continue
+            try:
+                target.force_resolve()
+            except Exception as error:  # pyecore wraps our LoadError, or raises its own
+                yield obj, target, _resolution_failure(target._proxy_path, error)
+            else:
+                yield obj, target, None
 
 
 def broken_references(document: Document) -> list[SceMLError]:
@@ -589,11 +624,11 @@ def broken_references(document: Document) -> list[SceMLError]:
     return [
         SceMLError(
             reason,
-            file=document.path,
+            file=document.file_of(holder) or document.path,
             line=document.line_of(holder),
             element=model_path(holder),
         )
-        for holder, _href, reason in unresolved_references(document.root)
+        for holder, _href, reason in unresolved_references(document.root, through_files=True)
     ]
 
 

@@ -9,7 +9,15 @@ import click
 
 import scemlmodel as scm
 
-from ..io import Document, broken_references, load, write_atomically
+from ..errors import SceMLError
+from ..io import (
+    Document,
+    broken_references,
+    load,
+    model_path,
+    unresolved_references,
+    write_atomically,
+)
 from ..render import FORMATS, MAX_DIAGRAM_NODES, ModuleChoiceError, View, diagram, to_bytes
 from ..render.flow import Modules
 from .common import SceMLCommand, allow_option, exit_if_broken
@@ -97,6 +105,7 @@ def render(
     """
     fmt = output_format(output)
     document = load(file, allow=allow)
+    _refuse_broken_actors(document)
     if view == "map":
         _render_map(document, output, fmt, extent)
     else:
@@ -104,6 +113,20 @@ def render(
     click.echo(f"wrote {output}")
     # The diagram draws a broken module use as such; the exit status still says it is broken.
     exit_if_broken(list(broken_references(document)))
+
+
+def _refuse_broken_actors(document: Document) -> None:
+    # A module use whose definition cannot be loaded is drawn as broken (and exits 1 after);
+    # any other reference to another file that cannot be loaded (a hand-edited referenceActor)
+    # leaves nothing to draw it by, and is refused before anything is written.
+    for holder, _href, reason in unresolved_references(document.root, through_files=True):
+        if not isinstance(holder, scm.ModuleUse):
+            raise SceMLError(
+                reason,
+                file=document.file_of(holder) or document.path,
+                line=document.line_of(holder),
+                element=model_path(holder),
+            )
 
 
 def _render_diagram(

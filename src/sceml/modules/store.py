@@ -53,6 +53,10 @@ def flatten_file(
     """
     path, output = Path(path), Path(output)
     document = io.load_scenario(path, allow=allowed_roots)
+    # Every reference to another file is tried first, a node's referenceActor as much as a
+    # module's definition: each failure is told at its line, none in pyecore's words mid-way.
+    for error in io.broken_references(document):
+        raise error
     flattened = expand(document.root)
     io.save(flattened.scenario, output, origin=path)
     return FlattenReport(output, flattened.expanded, len(flattened.scenario.nodes))

@@ -19,7 +19,7 @@ from pyecore.ecore import EObject
 from .. import catalog
 from ..graph import actors as scenario_actors
 from ..graph import root_node
-from ..io import model_path
+from ..io import model_path, unresolved_references
 from ..modules.flatten import Flattened
 from ..params import concrete
 from ..traversal import all_contents
@@ -65,6 +65,15 @@ def refuse_unusable(flattened: Flattened, step: float) -> None:
             f"would record {samples:,} samples (about {_megabytes(samples)} MB); the preview "
             f"records at most {MAX_SAMPLES:,}: shorten maxDuration or make --step larger",
         )
+
+
+def refuse_unresolved(scenario: EObject) -> None:
+    """Raise SimulationError, at its line, for a reference to another file that cannot be
+    loaded (a module's definition, a hand-edited referenceActor): the run would meet it later
+    as pyecore's TypeError."""
+    for holder, _href, reason in unresolved_references(scenario, through_files=True):
+        file, line = _where(holder)
+        raise SimulationError(reason, file=file, line=line, element=model_path(holder))
 
 
 def run_samples(scenario: EObject, step: float) -> int:

@@ -17,7 +17,7 @@ from ..maps.reference import map_reference
 from ..modules.flatten import Flattened, expand
 from ..params import concrete
 from .engine import Scheduler, run_schedule
-from .limits import refuse_unusable
+from .limits import refuse_unresolved, refuse_unusable
 from .metrics import pair_metrics
 from .run import ActorInfo, Run
 from .setup import make_actor
@@ -52,6 +52,7 @@ def simulate(
             f"the preview runs concrete scenarios; this one is {level} "
             "(concretize or sample it first)"
         )
+    refuse_unresolved(scenario)
     flattened = (
         expand(scenario)
         if any(isinstance(n, scm.ModuleUse) for n in scenario.nodes)
