@@ -603,17 +603,37 @@ def _proxies_of(obj: EObject) -> Iterator[tuple[EObject, EProxy, str | None]]:
             if not isinstance(target, EProxy):
                 continue
             if not (isinstance(obj, scm.ModuleUse) and reference.name == "definition"):
-                yield obj, target, (
-                    f"{reference.name} refers to another file ({target._proxy_path!r}); only a "
-                    "module use's definition may"
+                yield (
+                    obj,
+                    target,
+                    (
+                        f"{reference.name} refers to another file ({target._proxy_path!r}); only a "
+                        "module use's definition may"
+                    ),
                 )
                 continue
             try:
                 target.force_resolve()
             except Exception as error:  # pyecore wraps our LoadError, or raises its own
                 yield obj, target, _resolution_failure(target._proxy_path, error)
-            else:
-                yield obj, target, None
+                continue
+            # `#//` names the file's own root: it loads, and is no module definition.
+            kind = target.eClass
+            # The generated package types a reference by its Python class, which holds the EClass.
+            wanted = (
+                reference.eType if isinstance(reference.eType, EClass) else reference.eType.eClass
+            )
+            fits = kind is wanted or wanted in kind.eAllSuperTypes()
+            yield (
+                obj,
+                target,
+                None
+                if fits
+                else (
+                    f"cannot resolve {target._proxy_path!r}: it names a {kind.name}, not a "
+                    f"{wanted.name}"
+                ),
+            )
 
 
 def broken_references(document: Document) -> list[SceMLError]:
