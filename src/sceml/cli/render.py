@@ -150,14 +150,19 @@ def _render_diagram(
             max_nodes=max_nodes,
         )
         write_atomically(output, to_bytes(graph, fmt))
-    except ModuleChoiceError as error:
-        raise click.UsageError(error.message) from None
+    except ModuleChoiceError as error:  # exit 2, at the file's model (the library or scenario)
+        error.file, error.line = str(document.path), document.line_of(document.root)
+        raise
 
 
 def _render_map(document: Document, output: Path, fmt: str, extent: str) -> None:
     """The map view; what it could not place is said on standard error."""
     if not isinstance(document.root, scm.Scenario):
-        raise click.UsageError("the map view draws scenarios, not module libraries")
+        raise ModuleChoiceError(
+            "the map view draws scenarios, not module libraries",
+            file=document.path,
+            line=document.line_of(document.root),
+        )
     # matplotlib is loaded only when a map is drawn: the other commands start faster without it.
     from ..render.mapview import Extent, map_view
 

@@ -130,6 +130,27 @@ def _located(flattened: Flattened, owner: EObject, name: str, message: str) -> S
     return SimulationError(message, element=model_path(owner))
 
 
+def located_in(
+    error: SimulationError, scenario: EObject, scenario_file: str | Path | None
+) -> SimulationError:
+    """`error` with the file and line it is about, where it has none: the element it names (a
+    node or actor of `scenario`, or for an expanded node `use.node` the use), else the file."""
+    if error.file is not None and error.line is not None:
+        return error
+    named = {
+        str(obj.name): obj
+        for obj in [scenario, *all_contents(scenario)]
+        if getattr(obj, "name", None)
+    }
+    element = error.element or ""
+    target = named.get(element) or named.get(element.split(".")[0])
+    file, line = _where(target) if target is not None else (None, None)
+    fallback = str(scenario_file) if scenario_file is not None else None
+    error.file = error.file or (str(file) if file is not None else fallback)
+    error.line = error.line or line
+    return error
+
+
 def _where(obj: EObject | None) -> tuple[Path | None, int | None]:
     resource = obj.eResource if obj is not None else None
     if resource is None:

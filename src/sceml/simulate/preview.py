@@ -17,7 +17,7 @@ from ..maps.reference import map_reference
 from ..modules.flatten import Flattened, expand
 from ..params import concrete
 from .engine import Scheduler, run_schedule
-from .limits import refuse_unresolved, refuse_unusable
+from .limits import located_in, refuse_unresolved, refuse_unusable
 from .metrics import pair_metrics
 from .run import ActorInfo, Run
 from .setup import make_actor
@@ -39,8 +39,22 @@ def simulate(
 
     The map is the OpenDRIVE file the root names, relative to `scenario_file`, unless
     `road_map` is given. SimulationError when the scenario is not concrete or cannot be set up.
-    `progress` is called with (steps done, most steps) now and then on long runs.
+    `progress` is called with (steps done, most steps) now and then on long runs. Every
+    SimulationError names the file and, where it can be found, the line of what it is about.
     """
+    try:
+        return _simulate(scenario, scenario_file, step, road_map, progress)
+    except SimulationError as error:
+        raise located_in(error, scenario, scenario_file) from None
+
+
+def _simulate(
+    scenario: scm.Scenario,
+    scenario_file: str | Path | None,
+    step: float,
+    road_map: RoadMap | None,
+    progress: Callable[[int, int], None] | None,
+) -> Run:
     if not step > 0:
         raise SimulationError(f"the time step must be positive, got {step:g} s")
     root = root_node(scenario)
@@ -50,7 +64,8 @@ def simulate(
     if level != "concrete":
         raise SimulationError(
             f"the preview runs concrete scenarios; this one is {level} "
-            "(concretize or sample it first)"
+            "(concretize or sample it first)",
+            element=str(root.name),
         )
     refuse_unresolved(scenario)
     flattened = (
