@@ -79,7 +79,7 @@ def check_inside(
     path = Path(path)
     real = Path(os.path.realpath(path))
     folders = [Path(os.path.realpath(root)) for root in roots]
-    if any(real == folder or folder in real.parents for folder in folders):
+    if is_inside(path, folders):
         return
     listed = ", ".join(str(folder) for folder in folders)
     raise error(
@@ -87,6 +87,13 @@ def check_inside(
         f"(--allow {real.parent})",
         file=path,
     )
+
+
+def is_inside(path: str | os.PathLike[str], roots: Iterable[str | os.PathLike[str]]) -> bool:
+    """Whether `path`, links resolved, lies below (or is) one of `roots`."""
+    real = Path(os.path.realpath(path))
+    folders = [Path(os.path.realpath(root)) for root in roots]
+    return any(real == folder or folder in real.parents for folder in folders)
 
 
 def _require_regular(path: Path, mode: int, what: str, error: type[LoadError]) -> None:
