@@ -13,7 +13,8 @@ import re
 import shutil
 from pathlib import Path
 
-from ..errors import ArgumentError
+from ..errors import ArgumentError, LoadError
+from ..safefiles import read_input
 from .paths import LevelArgumentError
 
 #: What one sample holds in memory while a run lasts: its values, its row in the manifest and the
@@ -82,18 +83,32 @@ def check_count(
 
 
 def available_memory() -> int:
-    """Bytes of memory this process may still use: free memory, or its address space limit."""
-    try:
-        free = os.sysconf("SC_AVPHYS_PAGES") * os.sysconf("SC_PAGE_SIZE")
-    except (ValueError, OSError, AttributeError):  # not every system names these
-        free = 8 * 2**30
+    """Bytes of memory this process may still use: what the system has available (free, and
+    caches it would give back), or the process's address space limit if that is lower."""
+    free = _system_available()
     try:
         import resource
 
         limit, _ = resource.getrlimit(resource.RLIMIT_AS)
     except (ImportError, OSError, ValueError):
-        return int(free)
-    return int(free if limit == resource.RLIM_INFINITY else min(free, limit))
+        return free
+    return free if limit == resource.RLIM_INFINITY else min(free, limit)
+
+
+def _system_available() -> int:
+    # Linux says what it could give (MemAvailable, page cache included); elsewhere the free
+    # pages are the estimate, or a generous guess where even those are not told.
+    try:
+        for line in read_input("/proc/meminfo", max_bytes=1 << 16).decode().splitlines():
+            name, _, value = line.partition(":")
+            if name == "MemAvailable":
+                return int(value.split()[0]) * 1024
+    except (OSError, LoadError, ValueError, IndexError):
+        pass
+    try:
+        return int(os.sysconf("SC_AVPHYS_PAGES") * os.sysconf("SC_PAGE_SIZE"))
+    except (ValueError, OSError, AttributeError):
+        return 8 * 2**30
 
 
 def free_space(folder: Path) -> int:
