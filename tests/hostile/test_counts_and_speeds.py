@@ -52,6 +52,17 @@ def test_sample_refuses_counts_no_machine_holds(examples_copy: Path, n: str) -> 
     assert not out.exists()
 
 
+def test_one_sample_of_a_huge_latin_hypercube_is_refused(examples_copy: Path) -> None:
+    out = examples_copy / "samples"
+    logical = examples_copy / "uis1-logical.xmi"
+    arguments = ["--strategy", "lhs", "--n", "1e9", "--index", "0", "-o", out]
+    run = sceml("sample", logical, *arguments, cwd=examples_copy)
+    assert "Traceback" not in run.output
+    assert run.code == 2, run.output
+    assert "1,000,000,000 rows of the Latin hypercube would take about" in run.output
+    assert not out.exists()
+
+
 def test_a_grid_of_two_800001_level_ranges_is_refused_by_its_size(examples_copy: Path) -> None:
     logical = examples_copy / "uis1-logical.xmi"
     text = logical.read_text(encoding="utf-8")

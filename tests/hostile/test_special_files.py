@@ -124,6 +124,23 @@ def test_a_map_outside_the_allowed_folders_is_not_opened(
     assert allowed.opened_under(outside) == [str(secret)]  # the audit does see such a read
 
 
+def test_a_library_outside_the_allowed_folders_is_not_opened(
+    examples_copy: Path, outside: Path
+) -> None:
+    library = examples_copy / "library" / "sceml-library.xmi"
+    shutil.copy(library, outside / "library.xmi")
+    scenario = examples_copy / "uis2-concrete.xmi"
+    text = scenario.read_text(encoding="utf-8")
+    old = 'href="library/sceml-library.xmi#CrossingManeuver"'
+    assert old in text
+    scenario.write_text(text.replace(old, f'href="{outside / "library.xmi"}#CrossingManeuver"'))
+    run = sceml("flatten", scenario, "-o", examples_copy / "flat.xmi", cwd=examples_copy)
+    assert "Traceback" not in run.output
+    assert run.code == 1 and "leaves the allowed folders" in run.output, run.output
+    assert run.opened_under(outside) == []
+    assert not (examples_copy / "flat.xmi").exists()
+
+
 def test_a_logic_file_outside_the_allowed_folders_is_not_opened(
     tmp_path: Path, outside: Path
 ) -> None:

@@ -32,6 +32,9 @@ from .common import Parsed, SceMLCommand, allow_option, echo_diagnostics, execut
 
 _FORMATS = {"xmi": ("xmi",), "xosc": ("xosc",), "both": ("xosc", "xmi")}
 
+# scipy's Latin hypercube holds about four float64 arrays of the design's shape at once.
+_LHS_ROW_BYTES = 32
+
 # A run leaves a large heap (scipy, imported to draw from normal distributions, and the model),
 # which the interpreter's last garbage collections walked for 0.1-0.2 s after the manifest was
 # written. Frozen at exit, it is not walked; the memory goes back with the process.
@@ -129,6 +132,13 @@ def sample(
         plan = plan_for(space, strategy, n, seed)  # type: ignore[arg-type]
         if index is None:
             _check_size(plan.n, len(space.dimensions), _FORMATS[file_format], logical, out_dir, n)
+        elif strategy == "lhs":  # one sample of a Latin hypercube needs the whole design drawn
+            check_count(
+                plan.n,
+                "rows of the Latin hypercube",
+                memory_each=_LHS_ROW_BYTES * max(1, len(space.dimensions)),
+                hint="one sample of it is reproduced by drawing them all; ask for fewer with --n",
+            )
         indices = np.arange(plan.n) if index is None else np.array([index])
         # A whole run's values are drawn while the workers start: drawing takes a while (scipy,
         # for a normal distribution, takes half a second to import), and so does their setup.
