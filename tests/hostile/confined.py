@@ -55,6 +55,17 @@ class Run:
         return [p for p in self.opened if p == prefix or p.startswith(prefix + os.sep)]
 
 
+# BLAS libraries reserve address space per thread at import (tens of MB each on a many-core
+# machine), which would count against the limit without being used.
+_ENVIRONMENT = {
+    "MPLBACKEND": "Agg",
+    "PYTHONDONTWRITEBYTECODE": "1",
+    "OPENBLAS_NUM_THREADS": "1",
+    "OMP_NUM_THREADS": "1",
+    "MKL_NUM_THREADS": "1",
+}
+
+
 def _limit() -> None:
     resource.setrlimit(resource.RLIMIT_AS, (MEMORY_BYTES, MEMORY_BYTES))
     resource.setrlimit(resource.RLIMIT_CPU, (CPU_SECONDS, CPU_SECONDS))
@@ -70,7 +81,7 @@ def sceml(*arguments: object, cwd: Path, log: Path | None = None) -> Run:
         text=True,
         timeout=HANG_SECONDS,
         preexec_fn=_limit,
-        env={**os.environ, "MPLBACKEND": "Agg", "PYTHONDONTWRITEBYTECODE": "1"},
+        env={**os.environ, **_ENVIRONMENT},
         check=False,
     )
     opened = log.read_text(encoding="utf-8").splitlines() if log.exists() else []
