@@ -178,7 +178,7 @@ def test_the_import_validates_and_samples(tmp_path: Path) -> None:
         "CrossingManeuver_1_Accelerate_1.targetSpeed = $CrossingManeuver_1_crossingSpeed: U(1, 2)"
         in (result.output)
     )
-    document = io.load_scenario(output)
+    document = io.load_scenario(output, allow=[EXAMPLES.parent / "maps"])
     errors = [d for d in validate(document.root, document=document) if d.severity is Severity.ERROR]
     assert errors == []
     samples = tmp_path / "samples"
@@ -195,6 +195,8 @@ def test_the_import_validates_and_samples(tmp_path: Path) -> None:
             "1",
             "--executor",
             "local",
+            "--allow",
+            str(EXAMPLES.parent / "maps"),
             "-o",
             str(samples),
         ],

@@ -176,7 +176,7 @@ def allow_option(command: F) -> F:
         "allow",
         multiple=True,
         type=click.Path(file_okay=False, path_type=Path),
-        help="Another folder that files the input refers to (module libraries) may be read "
+        help="Another folder that files the input refers to (module libraries, maps) may be read "
         "from; repeatable. Always allowed: the input's folder and its project root (the "
         "nearest folder above with .git, .hg, .svn or .sceml-root), with their subfolders.",
     )(command)

@@ -8,8 +8,10 @@ from pathlib import Path
 import click
 
 from ..diagnostics import Severity
-from ..importer import import_to_file
-from ..io import load_scenario
+from ..graph import root_node
+from ..importer import Imported, import_to_file
+from ..io import load_scenario, reading_roots
+from ..maps.reference import map_reference
 from ..validation import validate
 from .common import SceMLCommand, echo_diagnostics
 
@@ -70,8 +72,18 @@ def import_command(
         f"{imported.report.version}); {counts['opaque']} kept opaque, {counts['guessed']} "
         f"guessed{logical}"
     )
-    document = load_scenario(output)
+    # The written model names the map the import read (from the input's folders, or --map):
+    # validating it reads that map again.
+    document = load_scenario(output, allow=[*reading_roots(file), *_map_folder(imported)])
     diagnostics = validate(document.root, document=document)
     echo_diagnostics([d for d in diagnostics if d.severity is not Severity.INFO], document, output)
     if any(d.severity is Severity.ERROR for d in diagnostics):
         raise click.exceptions.Exit(1)
+
+
+def _map_folder(imported: Imported) -> list[Path]:
+    # In memory the map is named relative to the file the import read (saving rebases it).
+    root = root_node(imported.scenario)
+    text = root.map if root is not None else None
+    reference = map_reference(text, imported.report.file)
+    return [reference.path.parent] if reference is not None and reference.path else []
