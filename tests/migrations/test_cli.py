@@ -17,6 +17,7 @@ from sceml.cli import cli
 def old_examples(tmp_path: Path) -> Path:
     shutil.copytree(HISTORY_10 / "examples", tmp_path / "examples")
     shutil.copytree(HISTORY_10 / "maps", tmp_path / "maps")
+    (tmp_path / ".sceml-root").touch()  # one project, so the examples may read ../maps
     return tmp_path / "examples"
 
 

@@ -71,6 +71,7 @@ def test_migrated_examples_export_as_they_did(
     # even the relative map path must come out the same: byte for byte.
     release = tmp_path / "release"
     shutil.copytree(before.parent.parent, release, ignore=shutil.ignore_patterns("exports"))
+    (release / ".sceml-root").touch()
     version, profile = ("1.0", "carla") if suffix == "carla" else (suffix, "generic")
     copy = release / source.relative_to(before.parent.parent)
     document = io.load_scenario(copy)
@@ -88,6 +89,7 @@ def test_migrate_writes_current_files_that_load_without_migration(tmp_path: Path
     examples = tmp_path / "examples"
     shutil.copytree(METAMODEL / "history" / "1.0" / "examples", examples)
     shutil.copytree(METAMODEL / "history" / "1.0" / "maps", tmp_path / "maps")
+    (tmp_path / ".sceml-root").touch()
     for path in sorted(examples.rglob("*.xmi")):
         outcome = migrate_file(path, backup=True)
         assert outcome.report is not None and outcome.written == path
