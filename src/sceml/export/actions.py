@@ -12,8 +12,10 @@ from typing import Any
 
 import scemlmodel as scm
 
+from ..errors import SceMLError
+from ..players import meaning
 from .context import Action, Context, Event
-from .entities import performance
+from .entities import performance_of
 from .speeds import speed_dynamics
 from .triggers import Condition, Group, delayed, finished, with_extra
 from .values import number
@@ -74,7 +76,10 @@ def plan_speed(ctx: Context, node: scm.ActionNode, groups: list[Group]) -> Plan:
 
 @planner("DriveDistance")
 def plan_drive_distance(ctx: Context, node: scm.DriveDistance, groups: list[Group]) -> Plan:
-    """A step SpeedAction to the speed; finished once TraveledDistance reaches the distance."""
+    """A step SpeedAction to the speed; finished distance / speed seconds after the activation
+    (`players.meaning.drive_distance_duration`): the speed holds, so the distance is driven
+    from where the node starts. TraveledDistanceCondition would count from the simulation's
+    start, which is wrong once the actor has moved."""
     name = ctx.event_names[node]
     speed = Action(
         ctx.action_name(name),
@@ -86,28 +91,46 @@ def plan_drive_distance(ctx: Context, node: scm.DriveDistance, groups: list[Grou
             "value": "0.0",
         },
     )
-    driven = Condition(
-        f"{name}_driven",
-        "traveled",
-        {"entity": ctx.entity(node.referenceActor), "value": ctx.values.text(node, "distance")},
+    entity = ctx.entity(node.referenceActor)
+    event = Event(name, entity, [speed], groups)
+    if ctx.profile == "carla":
+        # scenario_runner turns a delay into a time-out from the act's start; its DriveDistance
+        # counts from the act's start too (docs/openscenario-mapping.md, profile carla).
+        traveled = {"entity": entity, "value": ctx.values.text(node, "distance")}
+        marker = _finish_marker(
+            ctx, node, "driven", groups, Condition(f"{name}_driven", "traveled", traveled)
+        )
+        return [event, marker], marker.name
+    duration = meaning.drive_distance_duration(
+        ctx.values.raw(node, "distance"), ctx.values.raw(node, "speed")
     )
-    event = Event(name, ctx.entity(node.referenceActor), [speed], groups)
-    done = _finish_marker(ctx, node, "driven", groups, driven)
-    return [event, done], done.name
+    if duration == float("inf"):
+        raise SceMLError("a DriveDistance at speed 0 never finishes", element=str(node.name))
+    driven = ctx.extra_event(node, "driven")
+    done = Event(
+        driven, entity, [ctx.marker_action(driven, driven)], delayed(groups, number(duration))
+    )
+    return [event, done], driven
 
 
 @planner("Follow", "Approach")
 def plan_distance_keeping(ctx: Context, node: scm.ActionNode, groups: list[Group]) -> Plan:
-    """LongitudinalDistanceAction to the target, within the actor's limits; Follow keeps it
-    (continuous) and finishes when the gap is first reached, Approach ends when the gap is reached."""
+    """LongitudinalDistanceAction to the target, within the gap-keeping limits of
+    `players.meaning`; Follow keeps it (continuous) and finishes when the gap is first reached,
+    Approach ends when the gap is held (the player's own end of a non-continuous action)."""
     name = ctx.event_names[node]
     follow = isinstance(node, scm.Follow)
+    limits = meaning.gap_limits(*performance_of(node.referenceActor.eClass.name))
     data = {
         "target": ctx.entity(node.targetActor),
         "distance": ctx.values.text(node, "distance"),
         "continuous": "true" if follow else "false",
         # Without limits esmini does not drive to the gap: it moves the actor there in one step.
-        "limits": performance(node.referenceActor),
+        "limits": {
+            "maxAcceleration": number(limits.acceleration),
+            "maxDeceleration": number(limits.deceleration),
+            "maxSpeed": number(limits.max_speed),
+        },
     }
     event = Event(
         name,
@@ -118,7 +141,7 @@ def plan_distance_keeping(ctx: Context, node: scm.ActionNode, groups: list[Group
     if not follow:
         return [event], name
     # A controller closes in on the gap from above and holds it: "less than the gap" may never
-    # hold, so the gap counts as reached within a slack of max(1 m, 10 %).
+    # hold, so the gap counts as reached within a slack.
     gap = ctx.values.raw(node, "distance")
     close = Condition(
         f"{name}_gap_reached",
@@ -126,7 +149,7 @@ def plan_distance_keeping(ctx: Context, node: scm.ActionNode, groups: list[Group
         {
             "entity": ctx.entity(node.referenceActor),
             "target": ctx.entity(node.targetActor),
-            "value": number(gap + max(1.0, gap / 10)),
+            "value": number(gap + meaning.follow_slack(gap)),
             "rule": "lessThan",
             "type": "longitudinal",
         },
@@ -169,11 +192,21 @@ def arrived(
 
 @planner("TurnLeft", "TurnRight")
 def plan_turn(ctx: Context, node: scm.RoutedManeuver, groups: list[Group]) -> Plan:
-    """AcquirePositionAction to the destination; finished by an arrival marker, because players
-    complete routing actions as soon as the route is set (SPEC §7)."""
+    """AssignRouteAction from the actor's start to the destination; finished by an arrival
+    marker, because players complete routing actions as soon as the route is set (SPEC §7).
+    Not AcquirePositionAction: esmini runs that in the longitudinal domain and so stops a
+    running speed maneuver of the actor; a route controls no domain (`players.meaning`)."""
     name = ctx.event_names[node]
     destination = ctx.position(node.destination)
-    route = Action(ctx.action_name(name), "acquire", {"position": destination})
+    entity = ctx.entity(node.referenceActor)
+    if ctx.profile == "carla":  # scenario_runner reads no AssignRouteAction
+        route = Action(ctx.action_name(name), "acquire", {"position": destination})
+    else:
+        # Players resolve a route's waypoints when they load the file, so a position relative
+        # to the actor would be where it stands at t = 0: the route starts at its start.
+        start = ctx.position(node.referenceActor.startPosition)
+        data = {"route": ctx.names.claim(f"{name}_route"), "waypoints": [start, destination]}
+        route = Action(ctx.action_name(name), "route", data)
     event = Event(name, ctx.entity(node.referenceActor), [route], groups)
     here = arrived(ctx, node, f"{name}_arrived", destination, ctx.values.text(node, "tolerance"))
     done = _finish_marker(ctx, node, "arrived", groups, here)
@@ -229,7 +262,8 @@ def plan_overtake(ctx: Context, node: scm.Overtake, groups: list[Group]) -> Plan
         "dy": "0.0",
     }
     gap = ctx.values.raw(node, "gap")
-    ahead = arrived(ctx, node, f"{back_name}_ahead", ahead_point, repr(max(1.0, gap / 2)))
+    tolerance = repr(meaning.overtake_back_tolerance(gap))
+    ahead = arrived(ctx, node, f"{back_name}_ahead", ahead_point, tolerance)
     back_groups = [[finished(name, back_name), ahead]]
     other = "right" if side == "left" else "left"
     back = Event(
@@ -313,6 +347,7 @@ def plan_ttc(ctx: Context, node: scm.TimeToCollision, groups: list[Group]) -> Pl
         "value": ctx.values.text(node, "time"),
         "rule": node.rule.name,
     }
+    data["freespace"] = "true" if meaning.TTC_FREESPACE else "false"
     check = Condition(f"{name}_ttc", "ttc", data)
     return _marker(ctx, node, with_extra(groups, check), ctx.entity(node.referenceActor))
 

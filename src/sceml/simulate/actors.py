@@ -11,12 +11,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Protocol
 
+from ..players.meaning import GapLimits, gap_acceleration
 from .paths import Path
-
-#: Gap keeping (Follow, Approach): how fast the speed answers a gap error, and its limits.
-GAP_GAIN = 0.6  # 1/s
-GAP_ACCELERATION = 3.0  # m/s2
-GAP_DECELERATION = 6.0  # m/s2
 
 
 @dataclass(frozen=True)
@@ -70,18 +66,18 @@ class Ramp:
 @dataclass(frozen=True)
 class GapKeeping:
     """Drive towards a gap of `distance` m (centre to centre, along the actor's heading) to
-    the `target` actor: its speed, corrected in proportion to the gap error."""
+    the `target` actor, by the players' law (`players.meaning.gap_acceleration`)."""
 
     target: str
     distance: float
+    limits: GapLimits
 
     def next_speed(self, actor: Actor, others: Mapping[str, Actor], dt: float) -> float:
         lead = others[self.target]
-        gap = actor.gap_to(lead)
-        along = lead.speed * math.cos(lead.heading - actor.heading)
-        wanted = max(along + GAP_GAIN * (gap - self.distance), 0.0)
-        change = min(max(wanted - actor.speed, -GAP_DECELERATION * dt), GAP_ACCELERATION * dt)
-        return actor.speed + change
+        acceleration = gap_acceleration(
+            actor.gap_to(lead), self.distance, actor.speed - lead.speed, self.limits
+        )
+        return min(actor.speed + acceleration * dt, self.limits.max_speed)
 
 
 class Actor:
@@ -140,6 +136,10 @@ class Actor:
         if self.shift is not None:
             self.lateral += self.shift.offset(self.d)
             self.shift = None
+
+    def velocity(self) -> tuple[float, float]:
+        """The velocity (m/s) along the heading."""
+        return self.speed * math.cos(self.heading), self.speed * math.sin(self.heading)
 
     def distance_to(self, x: float, y: float) -> float:
         return math.hypot(self.x - x, self.y - y)

@@ -3,10 +3,11 @@
 One class per kind, registered by metaclass name. `start` is called when the node is activated;
 `done` after every step (and at once) until it returns True. A maneuver *claims* the parts of
 its actor it controls (`speed`, `path`); a later maneuver claiming the same part supersedes it.
-Finishing follows the OpenSCENARIO export (docs/openscenario-mapping.md): speed changes when the
-target speed is reached, routed and trajectory maneuvers on arrival within their tolerance,
-DriveDistance when the distance is driven (counted from the node's start), Follow when the gap
-is reached (it keeps following afterwards), Overtake when the lane change back is done.
+What each kind does and when it finishes is `players.meaning`, which the export also follows:
+speed changes when the target speed is reached, routed and trajectory maneuvers on arrival within
+their tolerance, DriveDistance when the distance is driven from the node's start (after
+distance / speed seconds), Follow when the gap is first reached (it keeps following afterwards),
+Approach when it is held, Overtake when the lane change back is done.
 """
 
 from __future__ import annotations
@@ -19,7 +20,9 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
+from ..export.entities import performance_of
 from ..params import concrete
+from ..players import meaning
 from . import lanes
 from .actors import Actor, GapKeeping, Hold, Ramp, Shift
 from .paths import LaneSpot, Path, straight
@@ -27,21 +30,19 @@ from .world import World
 
 #: A lane change where the map names no lane beside the actor moves it this far.
 DEFAULT_LANE_WIDTH = 3.5  # m
-#: How close the gap of Follow/Approach must come to its distance to count as reached.
-GAP_TOLERANCE = 0.5  # m
 #: A path to a destination off the lanes goes on this far past it, straight.
 _BEYOND = 1.0
 
 
 class Behaviour:
-    """A running maneuver; subclasses set `claims` and implement `start` and `done`."""
-
-    claims: ClassVar[tuple[str, ...]] = ()
+    """A running maneuver; subclasses implement `start` and `done`. `claims` are the parts of
+    the actor it controls (`players.meaning.controls`)."""
 
     def __init__(self, node: EObject, world: World) -> None:
         self.node = node
         self.name = str(node.name)
         self.actor: Actor = world.actor(node.referenceActor, self.name)
+        self.claims = meaning.controls(node.eClass.name)
 
     def start(self, world: World) -> None:
         """Take control of the actor."""
@@ -89,22 +90,21 @@ def step_speed(actor: Actor, speed: float) -> None:
 class SpeedChange(Behaviour):
     """Change the speed linearly at `rate` to `targetSpeed` (Stop: to 0)."""
 
-    claims = ("speed",)
-
     def start(self, world: World) -> None:
         stop = isinstance(self.node, scm.Stop)
         self.target = 0.0 if stop else concrete(self.node, "targetSpeed")
         self.actor.control = Ramp(self.target, concrete(self.node, "rate"))
 
     def done(self, world: World) -> bool:
-        return abs(self.actor.speed - self.target) < 1e-9
+        return abs(self.actor.speed - self.target) < meaning.SPEED_TOLERANCE
 
 
 @kind("KeepVelocity")
 class KeepVelocity(Behaviour):
-    """Nothing changes the speed for `duration` seconds."""
+    """Hold the speed the actor has for `duration` seconds (it ends a running Follow)."""
 
     def start(self, world: World) -> None:
+        self.actor.control = Hold()
         self.until = world.t + concrete(self.node, "duration")
 
     def done(self, world: World) -> bool:
@@ -113,32 +113,36 @@ class KeepVelocity(Behaviour):
 
 @kind("DriveDistance")
 class DriveDistance(Behaviour):
-    """Step to `speed` and drive `distance` metres from the node's start."""
-
-    claims = ("speed",)
+    """Step to `speed` and drive `distance` metres from the node's start: distance / speed s."""
 
     def start(self, world: World) -> None:
-        step_speed(self.actor, concrete(self.node, "speed"))
-        self.until = self.actor.travelled + concrete(self.node, "distance")
+        speed = concrete(self.node, "speed")
+        step_speed(self.actor, speed)
+        duration = meaning.drive_distance_duration(concrete(self.node, "distance"), speed)
+        self.until = world.t + duration
 
     def done(self, world: World) -> bool:
-        return self.actor.travelled >= self.until - 1e-9
+        return world.t >= self.until - 1e-9
 
 
 @kind("Follow", "Approach")
 class GapManeuver(Behaviour):
-    """Close up to `distance` m behind the target; Follow keeps the gap afterwards."""
-
-    claims = ("speed",)
+    """Close up to `distance` m behind the target; Follow keeps the gap afterwards, Approach
+    holds its speed once the gap is held (`players.meaning`)."""
 
     def start(self, world: World) -> None:
         self.lead = world.actor(self.node.targetActor, self.name)
         self.distance = concrete(self.node, "distance")
-        self.actor.control = GapKeeping(self.lead.name, self.distance)
+        limits = meaning.gap_limits(*performance_of(self.actor.kind))
+        self.actor.control = GapKeeping(self.lead.name, self.distance, limits)
+        self.follow = isinstance(self.node, scm.Follow)
 
     def done(self, world: World) -> bool:
-        reached = self.actor.gap_to(self.lead) <= self.distance + GAP_TOLERANCE
-        if reached and isinstance(self.node, scm.Approach):
+        gap = self.actor.gap_to(self.lead)
+        if self.follow:
+            return meaning.follow_reached(gap, self.distance)
+        reached = meaning.approach_reached(gap, self.distance)
+        if reached:
             self.actor.control = Hold()
         return reached
 
@@ -180,8 +184,6 @@ class LaneShift:
 class LaneChange(Behaviour):
     """Move into the lane beside, along half a cosine over `distance` m."""
 
-    claims = ("path",)
-
     def start(self, world: World) -> None:
         side = str(self.node.direction.name if self.node.direction is not None else "left")
         self.shift = LaneShift(world, self.actor, side, concrete(self.node, "distance"), self.name)
@@ -196,7 +198,6 @@ class LaneChange(Behaviour):
 class Arrival(Behaviour):
     """A maneuver that finishes when its actor comes within `tolerance` of a point."""
 
-    claims = ("path",)
     goal: tuple[float, float]
     tolerance: float
 
@@ -262,8 +263,6 @@ class FollowTrajectory(Arrival):
 @kind("Overtake")
 class Overtake(Behaviour):
     """Out to the `side` lane at `speed`, past the target until `gap` m ahead, then back."""
-
-    claims = ("speed", "path")
 
     def start(self, world: World) -> None:
         self.lead = world.actor(self.node.targetActor, self.name)
