@@ -104,7 +104,7 @@ def check_run(
         _check_order(check, finish)
         _check_cut_short(check, events[first], run)
         if run.traces and check.start is not None and check.finish is not None:
-            ready = _required([finish[p] for p in check.after], check.one)
+            ready = required([finish[p] for p in check.after], check.one)
             activated = check.start if ready is None else ready
             check.problems.extend(
                 goal_problems(node, (activated, check.start), check.finish, run, road_map)
@@ -135,7 +135,7 @@ def _events_by_node(tree: etree._ElementTree, first_events: object) -> dict[str,
     return events
 
 
-def _required(times: list[float | None], one: bool) -> float | None:
+def required(times: list[float | None], one: bool) -> float | None:
     """When the predecessors with these finish times have finished (None: not yet)."""
     known = [t for t in times if t is not None]
     if one:
@@ -144,7 +144,7 @@ def _required(times: list[float | None], one: bool) -> float | None:
 
 
 def _check_order(check: NodeCheck, finish: dict[str, float | None]) -> None:
-    ready = _required([finish[p] for p in check.after], check.one)
+    ready = required([finish[p] for p in check.after], check.one)
     if check.start is None:
         return
     if ready is None:
@@ -209,7 +209,7 @@ def _check_end(
             "the storyboard completed by itself, not by its StopTrigger"
         ]
     one = end.policy is scm.JoinPolicy.joinOne
-    ready = _required([finish[str(p.name)] for p in graph.predecessors(end)], one)
+    ready = required([finish[str(p.name)] for p in graph.predecessors(end)], one)
     groups, timeouts = _stop_trigger(tree)
     held = [bool(group) and all(value for _, value in group) for group in run.stop_groups]
     fired = [names for names, fire in zip(groups, held, strict=False) if fire]

@@ -17,6 +17,14 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+# --- when a node starts --------------------------------------------------------------------------
+
+#: A node starts this many time steps after its predecessors finished. Players evaluate a
+#: trigger in the step after the event it waits for completed (esmini 3.6: an event's
+#: StartTrigger sees the completeState of the previous step), so every flow costs one step and
+#: a chain of n flows n steps; the preview does the same so that it keeps step with a player.
+FLOW_DELAY_STEPS = 1
+
 # --- who controls what --------------------------------------------------------------------------
 
 #: The parts of its actor a maneuver kind controls: `speed` (the longitudinal domain of

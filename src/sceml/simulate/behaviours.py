@@ -25,7 +25,7 @@ from ..params import concrete
 from ..players import meaning
 from . import lanes
 from .actors import Actor, GapKeeping, Hold, Ramp, Shift
-from .paths import LaneSpot, Path, straight
+from .paths import LaneSpot, Path, joined, straight
 from .world import World
 
 #: A lane change where the map names no lane beside the actor moves it this far.
@@ -204,13 +204,19 @@ class Arrival(Behaviour):
     def done(self, world: World) -> bool:
         return self.actor.distance_to(*self.goal) <= self.tolerance + 1e-9
 
-    def go_straight(self, points: list[tuple[float, float]]) -> None:
-        """Head straight through `points` from where the actor is, and on past the last."""
+    def go_straight(self, world: World, points: list[tuple[float, float]]) -> None:
+        """Head straight through `points` from where the actor is; past the last, on along the
+        lane there (as players go on after a trajectory), or straight on off the lanes."""
         route = [(self.actor.x, self.actor.y), *points]
         (ax, ay), (bx, by) = route[-2], route[-1]
-        length = math.hypot(bx - ax, by - ay) or 1.0
-        route.append((bx + (bx - ax) / length * _BEYOND, by + (by - ay) / length * _BEYOND))
-        self.actor.follow(straight(route))
+        heading = math.atan2(by - ay, bx - ax)
+        onward = lanes.onward(world.road_map, bx, by, heading) if world.road_map else None
+        if onward is None:
+            length = math.hypot(bx - ax, by - ay) or 1.0
+            route.append((bx + (bx - ax) / length * _BEYOND, by + (by - ay) / length * _BEYOND))
+            self.actor.follow(straight(route))
+        else:
+            self.actor.follow(joined(straight(route), onward))
 
 
 @kind("TurnLeft", "TurnRight")
@@ -229,7 +235,7 @@ class Turn(Arrival):
             world.note(
                 f"{self.name}: no {turn} turn from the actor's lane; it drives straight there"
             )
-            self.go_straight([self.goal])
+            self.go_straight(world, [self.goal])
         else:
             self.actor.follow(path, self.actor.lateral)
 
@@ -241,7 +247,7 @@ class Cross(Arrival):
     def start(self, world: World) -> None:
         self.goal = world.point(self.node.destination, f"{self.name}'s destination")
         self.tolerance = concrete(self.node, "tolerance")
-        self.go_straight([self.goal])
+        self.go_straight(world, [self.goal])
 
 
 @kind("FollowTrajectory")
@@ -257,7 +263,7 @@ class FollowTrajectory(Arrival):
             points = [(self.actor.x, self.actor.y)]
         self.goal = points[-1]
         self.tolerance = concrete(self.node, "tolerance")
-        self.go_straight(points)
+        self.go_straight(world, points)
 
 
 @kind("Overtake")

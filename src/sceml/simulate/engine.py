@@ -1,12 +1,13 @@
 """The scheduler: SPEC §3 on a concrete scenario, one fixed time step after another.
 
-At t = 0 the root finishes and actors stand at their starts. At each instant every active
-node is checked; a node that finishes activates each successor whose incoming flows are
-satisfied (one predecessor finished for an ordinary node, all for JoinAllFinished and a
-join-all end, one for JoinOneFinished and a join-one end), and a newly activated node is
-checked at once, so zero-time chains (joins, conditions that already hold) settle in the same
-instant. Then all actors take one step, each speed decided from the same state. The run ends
-when the end node finishes or at the maximum duration.
+At t = 0 the root finishes and actors stand at their starts. A node that finishes makes each
+successor whose incoming flows are satisfied (one predecessor finished for an ordinary node,
+all for JoinAllFinished and a join-all end, one for JoinOneFinished and a join-one end) ready;
+a ready node is activated one time step later (`players.meaning.FLOW_DELAY_STEPS`), as players
+evaluate a trigger in the step after the event it waits for completed, and is checked at once.
+At each instant the ready nodes are activated, then every active node is checked; then all
+actors take one step, each speed decided from the same state. The run ends when the end node
+finishes or at the maximum duration.
 """
 
 from __future__ import annotations
@@ -20,6 +21,7 @@ from pyecore.ecore import EObject
 import scemlmodel as scm
 
 from ..graph import predecessors, successors
+from ..players.meaning import FLOW_DELAY_STEPS
 from .behaviours import Behaviour, behaviour_for
 from .conditions import Test, condition_for
 from .run import END_NODE, MAX_DURATION, NodeRecord
@@ -64,6 +66,8 @@ class Scheduler:
             state.predecessors = [self.states[p] for p in predecessors(node) if p in self.states]
             state.successors = [self.states[s] for s in successors(node) if s in self.states]
         self.active: list[NodeState] = []
+        #: Nodes whose predecessors have finished, with the instant they are activated at.
+        self.ready: list[tuple[float, NodeState]] = []
         self.owners: dict[tuple[str, str], NodeState] = {}
         self.ended = False
 
@@ -72,8 +76,13 @@ class Scheduler:
         self._settle([s for s in self.states.values() if isinstance(s.node, scm.RootNode)])
 
     def check(self) -> None:
-        """Check every active node at the current instant and settle what follows."""
-        finished = [state for state in list(self.active) if self._done(state)]
+        """Activate the nodes due now, check every active node and settle what follows."""
+        due = [state for when, state in self.ready if when <= self.world.t + 1e-9]
+        self.ready = [(when, state) for when, state in self.ready if when > self.world.t + 1e-9]
+        finished: list[NodeState] = []
+        for state in due:
+            finished.extend(self._activate(state))
+        finished.extend(state for state in list(self.active) if self._done(state))
         self._settle(finished)
 
     def timeline(self) -> tuple[NodeRecord, ...]:
@@ -92,8 +101,13 @@ class Scheduler:
                 self.ended = True
                 return
             for successor in state.successors:
-                if successor.started is None and successor.ready():
-                    queue.extend(self._activate(successor))
+                waiting = any(successor is other for _, other in self.ready)
+                if successor.started is None and not waiting and successor.ready():
+                    when = round(self.world.t + FLOW_DELAY_STEPS * self.world.dt, 9)
+                    if FLOW_DELAY_STEPS == 0:
+                        queue.extend(self._activate(successor))
+                    else:
+                        self.ready.append((when, successor))
 
     def _finish(self, state: NodeState) -> None:
         state.finished = self.world.t

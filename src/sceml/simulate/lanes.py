@@ -12,9 +12,9 @@ from weakref import WeakKeyDictionary
 
 import numpy as np
 
-from ..maps import PositionError, RoadMap
+from ..maps import LaneCoordinate, PositionError, RoadMap
 from ..maps.routes import Route, routes_from
-from .paths import LaneSpot, Path
+from .paths import LaneSpot, Path, offset_path
 
 SAMPLE_STEP = 0.5  # m of s between samples of a lane's centre line
 #: How far ahead a lane path is built; the path goes on straight after that.
@@ -162,3 +162,35 @@ def neighbour(road_map: RoadMap, spot: LaneSpot, side: str) -> tuple[LaneSpot, f
     target = min(beside, key=lambda b: abs(b.centre - current.centre))
     shift = (target.centre - current.centre) * (1.0 if spot.forward else -1.0)
     return LaneSpot(spot.road, target.lane.id, spot.s, spot.forward), shift
+
+
+def lane_under(
+    road_map: RoadMap, x: float, y: float, heading: float
+) -> tuple[LaneCoordinate, bool] | None:
+    """The lane under a world point whose direction (either way along s) is nearest the
+    heading, and whether travel runs along s; None off the lanes.
+
+    As players do (esmini 3.6): an actor on a lane moves along it, forward unless its heading
+    is more than 90 degrees off the lane's; one facing straight across (a pedestrian waiting at
+    a kerb) walks along s.
+    """
+    best: tuple[LaneCoordinate, bool, float] | None = None
+    for coordinate in road_map.world_to_lane(x, y):
+        _, _, along = road_map.reference_line(coordinate.road_id).pose(coordinate.s)
+        relative = math.atan2(math.sin(heading - along), math.cos(heading - along))
+        closeness = abs(math.cos(relative))
+        if best is None or closeness > best[2] + 1e-9:
+            best = (coordinate, abs(relative) <= math.pi / 2 + 1e-9, closeness)
+    return None if best is None else (best[0], best[1])
+
+
+def onward(road_map: RoadMap, x: float, y: float, heading: float) -> Path | None:
+    """The way on from a point along the lane under it, at the point's offset from the lane's
+    centre; None off the lanes."""
+    found = lane_under(road_map, x, y, heading)
+    if found is None:
+        return None
+    coordinate, forward = found
+    spot = LaneSpot(coordinate.road_id, coordinate.lane_id, coordinate.s, forward)
+    lateral = coordinate.offset if forward else -coordinate.offset
+    return offset_path(lane_path(road_map, spot), lateral)

@@ -88,3 +88,18 @@ def straight(points: Sequence[tuple[float, float]]) -> Path:
 def heading_path(x: float, y: float, heading: float) -> Path:
     """A straight line from a point along a heading: an actor that is on no lane."""
     return Path(np.array([(x, y), (x + math.cos(heading), y + math.sin(heading))]))
+
+
+def offset_path(path: Path, lateral: float) -> Path:
+    """The same path moved `lateral` m to the left of its direction of travel."""
+    if lateral == 0.0:
+        return path
+    headings = np.array(path._headings + path._headings[-1:])
+    shifted = path.points + lateral * np.column_stack([-np.sin(headings), np.cos(headings)])
+    return Path(shifted, path.spots)
+
+
+def joined(first: Path, then: Path) -> Path:
+    """`first`, then on along `then` (which starts near where `first` ends)."""
+    points = np.vstack([first.points, then.points])
+    return Path(points, [*first.spots, *then.spots])
