@@ -8,6 +8,7 @@ metaclass name in PLANNERS; `support.py` derives the list of mapped kinds from i
 from __future__ import annotations
 
 from collections.abc import Callable
+from dataclasses import replace
 from typing import Any
 
 import scemlmodel as scm
@@ -138,23 +139,30 @@ def plan_distance_keeping(ctx: Context, node: scm.ActionNode, groups: list[Group
         [Action(ctx.action_name(name), "long_distance", data)],
         groups,
     )
-    if not follow:
-        return [event], name
-    # A controller closes in on the gap from above and holds it: "less than the gap" may never
-    # hold, so the gap counts as reached within a slack.
+    # A controller closes in on the gap and holds it: "less than the gap" may never hold, so
+    # the gap counts as reached within a slack (Follow: from above; Approach: either side).
     gap = ctx.values.raw(node, "distance")
-    close = Condition(
-        f"{name}_gap_reached",
-        "relative_distance",
-        {
-            "entity": ctx.entity(node.referenceActor),
-            "target": ctx.entity(node.targetActor),
-            "value": number(gap + meaning.follow_slack(gap)),
-            "rule": "lessThan",
-            "type": "longitudinal",
-        },
-    )
-    done = _finish_marker(ctx, node, "gap_reached", groups, close)
+    if follow:
+        bounds = [("lessThan", gap + meaning.follow_slack(gap))]
+    else:
+        slack = meaning.APPROACH_REACHED
+        bounds = [("lessThan", gap + slack), ("greaterThan", max(gap - slack, 0.0))]
+    checks = [
+        Condition(
+            f"{name}_gap_reached",
+            "relative_distance",
+            {
+                "entity": ctx.entity(node.referenceActor),
+                "target": ctx.entity(node.targetActor),
+                "value": number(value),
+                "rule": rule,
+                "type": "longitudinal",
+            },
+        )
+        for rule, value in bounds
+    ]
+    done = _finish_marker(ctx, node, "gap_reached", groups, checks[0])
+    done = replace(done, groups=[[*group, *checks[1:]] for group in done.groups])
     return [event, done], done.name
 
 

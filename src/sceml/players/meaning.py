@@ -77,9 +77,13 @@ GAP_DECELERATION = 6.0
 #: limit in force (the acceleration limit when too close, the deceleration limit when too far),
 #: critically damped (damping 2 * sqrt(constant)).
 GAP_SPRING = 0.4
-#: A non-continuous distance action (Approach) ends when the gap is within this much of its
-#: distance (esmini's LONGITUDINAL_DISTANCE_THRESHOLD).
-APPROACH_REACHED = 0.1
+#: A non-continuous distance action (Approach) stops driving when the gap is within this much
+#: of its distance (esmini's LONGITUDINAL_DISTANCE_THRESHOLD); the actor then holds its speed.
+APPROACH_HOLD = 0.1
+#: Approach has finished once the gap is within this much of its distance. Wider than the
+#: player's own stop: a spring closes the last decimetres slowly, so a finish at 0.1 m would
+#: hang on the last centimetres of rounding between two players.
+APPROACH_REACHED = 0.5
 
 
 @dataclass(frozen=True)
@@ -123,7 +127,8 @@ def follow_reached(gap: float, distance: float) -> bool:
 
 
 def approach_reached(gap: float, distance: float) -> bool:
-    """Whether Approach has finished (it then holds its speed): the player's own end."""
+    """Whether Approach has finished (it drives on until within APPROACH_HOLD, then holds its
+    speed, unless a later maneuver takes the speed first)."""
     return abs(gap - distance) < APPROACH_REACHED
 
 

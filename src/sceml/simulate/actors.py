@@ -71,9 +71,16 @@ class GapKeeping:
     target: str
     distance: float
     limits: GapLimits
+    #: Stop driving (hold the speed) once the gap is within this much; None: keep it (Follow).
+    hold_within: float | None = None
 
     def next_speed(self, actor: Actor, others: Mapping[str, Actor], dt: float) -> float:
         lead = others[self.target]
+        if self.hold_within is not None and abs(actor.gap_to(lead) - self.distance) < (
+            self.hold_within
+        ):
+            actor.control = Hold()
+            return actor.speed
         acceleration = gap_acceleration(
             actor.gap_to(lead), self.distance, actor.speed - lead.speed, self.limits
         )
@@ -116,13 +123,27 @@ class Actor:
         self.y = py + offset * math.cos(heading)
         self.heading = heading + math.atan(slope)
 
-    def advance_to(self, speed: float, dt: float) -> None:
-        """Move one step ending at `speed`: the mean speed of the step gives the distance."""
+    def advance_to(self, speed: float, dt: float) -> bool:
+        """Move one step ending at `speed`: the mean speed of the step gives the distance.
+
+        At the end of a road without a link the actor stops, as players stop it; True when
+        it stops there in this step."""
         speed = max(speed, 0.0)
         step = (self.speed + speed) / 2.0 * dt
         self.speed = speed
+        end = self.path.end_of_road
+        if end is not None and self.d >= end - 1e-9:
+            self.speed = 0.0
+            return False
         if step > 0.0:  # standing actors (waiting for their trigger) cost nothing
-            self.d += step
+            # The speed is along the heading: during a lane change part of it goes sideways.
+            slope = self.shift.slope(self.d) if self.shift is not None else 0.0
+            self.d += step / math.sqrt(1.0 + slope * slope)
+            if end is not None and self.d >= end:
+                self.travelled += step - (self.d - end)
+                self.d, self.speed = end, 0.0
+                self.place()
+                return True
             self.travelled += step
             self.place()
 

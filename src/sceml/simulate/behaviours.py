@@ -134,17 +134,15 @@ class GapManeuver(Behaviour):
         self.lead = world.actor(self.node.targetActor, self.name)
         self.distance = concrete(self.node, "distance")
         limits = meaning.gap_limits(*performance_of(self.actor.kind))
-        self.actor.control = GapKeeping(self.lead.name, self.distance, limits)
         self.follow = isinstance(self.node, scm.Follow)
+        hold = None if self.follow else meaning.APPROACH_HOLD
+        self.actor.control = GapKeeping(self.lead.name, self.distance, limits, hold)
 
     def done(self, world: World) -> bool:
         gap = self.actor.gap_to(self.lead)
         if self.follow:
             return meaning.follow_reached(gap, self.distance)
-        reached = meaning.approach_reached(gap, self.distance)
-        if reached:
-            self.actor.control = Hold()
-        return reached
+        return meaning.approach_reached(gap, self.distance)
 
 
 # --- lateral --------------------------------------------------------------------------------
@@ -282,7 +280,7 @@ class Overtake(Behaviour):
     def done(self, world: World) -> bool:
         if self.phase == "out" and self.shift.finished(world):
             self.phase = "pass"
-        if self.phase == "pass" and -self.actor.gap_to(self.lead) >= self.gap:
+        if self.phase == "pass" and self._ahead():
             back = "right" if self.side == "left" else "left"
             self.shift = LaneShift(world, self.actor, back, self.distance, self.name)
             self.phase = "back"
@@ -290,3 +288,10 @@ class Overtake(Behaviour):
 
     def release(self, world: World) -> None:
         self.actor.settle_shift()
+
+    def _ahead(self) -> bool:
+        """Near the point `gap` m ahead of the target (`players.meaning`), as the export says."""
+        lead = self.lead
+        x = lead.x + self.gap * math.cos(lead.heading)
+        y = lead.y + self.gap * math.sin(lead.heading)
+        return self.actor.distance_to(x, y) <= meaning.overtake_back_tolerance(self.gap) + 1e-9

@@ -5,8 +5,9 @@ successor whose incoming flows are satisfied (one predecessor finished for an or
 all for JoinAllFinished and a join-all end, one for JoinOneFinished and a join-one end) ready;
 a ready node is activated one time step later (`players.meaning.FLOW_DELAY_STEPS`), as players
 evaluate a trigger in the step after the event it waits for completed, and is checked at once.
-At each instant the ready nodes are activated, then every active node is checked; then all
-actors take one step, each speed decided from the same state. The run ends when the end node
+Each step begins by activating the nodes due at its end instant (so a maneuver acts in the
+step its node starts, as a player's action does), then all actors move, each speed decided
+from the same state, then every active node is checked. The run ends when the end node
 finishes or at the maximum duration.
 """
 
@@ -75,15 +76,28 @@ class Scheduler:
         """The root nodes finish at t = 0 and what follows them is activated."""
         self._settle([s for s in self.states.values() if isinstance(s.node, scm.RootNode)])
 
-    def check(self) -> None:
-        """Activate the nodes due now, check every active node and settle what follows."""
+    def activate_due(self) -> None:
+        """Activate the nodes due at the current instant, before the actors move in the step
+        it begins (as players start an event's actions in the step its trigger fires)."""
         due = [state for when, state in self.ready if when <= self.world.t + 1e-9]
         self.ready = [(when, state) for when, state in self.ready if when > self.world.t + 1e-9]
         finished: list[NodeState] = []
         for state in due:
             finished.extend(self._activate(state))
-        finished.extend(state for state in list(self.active) if self._done(state))
         self._settle(finished)
+
+    def check(self) -> None:
+        """Check every active node at the current instant and settle what follows."""
+        self._settle([state for state in list(self.active) if self._done(state)])
+
+    def stopped_at_road_end(self, actor: str) -> None:
+        """Note that an actor stopped at the end of its road, on the run and on every maneuver
+        of the actor then running."""
+        text = f"{actor} stopped at the end of its road at {self.world.t:.2f} s (no road on)"
+        self.world.note(text)
+        for state in self.active:
+            if state.actor == actor and isinstance(state.node, scm.Maneuver):
+                state.note = "; ".join(filter(None, [state.note, text]))
 
     def timeline(self) -> tuple[NodeRecord, ...]:
         return tuple(state.record() for state in self.states.values())
@@ -197,10 +211,12 @@ def run_schedule(
     for k in range(1, steps + 1):
         if scheduler.ended:
             return END_NODE
+        world.t = round(k * world.dt, 9)
+        scheduler.activate_due()
         speeds = [actor.control.next_speed(actor, world.actors, world.dt) for actor in actors]
         for actor, speed in zip(actors, speeds, strict=True):
-            actor.advance_to(speed, world.dt)
-        world.t = round(k * world.dt, 9)
+            if actor.advance_to(speed, world.dt):
+                scheduler.stopped_at_road_end(actor.name)
         scheduler.check()
         record()
         if progress is not None and k % PROGRESS_EVERY == 0:

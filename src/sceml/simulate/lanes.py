@@ -76,6 +76,7 @@ def _build_lane_path(road_map: RoadMap, spot: LaneSpot, via: Route | None) -> Pa
     spots: list[LaneSpot | None] = []
     road, lane, s_from, forward = spot.road, spot.lane, spot.s, spot.forward
     travelled = 0.0
+    dead_end = False
     for _ in range(_MAX_ROADS):
         ss, xy = centre_samples(road_map, road, lane)
         s_from = min(max(s_from, float(ss[0])), float(ss[-1]))
@@ -98,9 +99,17 @@ def _build_lane_path(road_map: RoadMap, spot: LaneSpot, via: Route | None) -> Pa
             break
         following = next_lane(road_map, road, lane, forward, via)
         if following is None:
+            dead_end = _ends_here(road_map, road, forward)
             break
         road, lane, forward, s_from = following
-    return Path(np.array(points), spots)
+    return Path(np.array(points), spots, dead_end)
+
+
+def _ends_here(road_map: RoadMap, road_id: str, forward: bool) -> bool:
+    """Whether the road has no link at all at this end: the end of the road, where players
+    stop an actor. (A junction with no way on for this lane is not a dead end.)"""
+    road = road_map.road(road_id)
+    return (road.successor if forward else road.predecessor) is None
 
 
 def next_lane(
