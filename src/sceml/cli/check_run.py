@@ -18,12 +18,14 @@ from .common import SceMLCommand, allow_option
     "--log",
     "log_path",
     required=True,
+    metavar="LOG",
     type=click.Path(exists=True, dir_okay=False, path_type=Path),
     help="The player's log of the run (esmini: --logfile_path).",
 )
 @click.option(
     "--csv",
     "csv_path",
+    metavar="CSV",
     type=click.Path(exists=True, dir_okay=False, path_type=Path),
     default=None,
     help="The player's trace of the actors (esmini: --csv_logger); without it goals at each "
