@@ -283,7 +283,8 @@ def build_nested(map_text: str, library: scm.Library) -> scm.Scenario:
 
 def build_all(out: Path) -> list[Path]:
     """Write every scenario (and the library they use) under `out`."""
-    map_text = Path(os.path.relpath(MAP, out.resolve())).as_posix()
+    # Relative to the committed folder, so that a build elsewhere (the test's) is the same bytes.
+    map_text = Path(os.path.relpath(MAP, OUT)).as_posix()
     library = build_library()
     written = [io.save(library, out / "library" / "players-library.xmi")]
     scenarios = {
