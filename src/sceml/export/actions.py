@@ -13,7 +13,6 @@ from typing import Any
 
 import scemlmodel as scm
 
-from ..errors import SceMLError
 from ..players import meaning
 from .context import Action, Context, Event
 from .entities import performance_of
@@ -106,7 +105,7 @@ def plan_drive_distance(ctx: Context, node: scm.DriveDistance, groups: list[Grou
         ctx.values.raw(node, "distance"), ctx.values.raw(node, "speed")
     )
     if duration == float("inf"):
-        raise SceMLError("a DriveDistance at speed 0 never finishes", element=str(node.name))
+        raise ValueError(f"{node.name}: a DriveDistance at 0 m/s never finishes (SCEML-Y001)")
     driven = ctx.extra_event(node, "driven")
     done = Event(
         driven, entity, [ctx.marker_action(driven, driven)], delayed(groups, number(duration))
