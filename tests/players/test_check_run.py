@@ -126,11 +126,20 @@ def test_a_jump_in_the_trace_is_a_teleport(recording) -> None:  # type: ignore[n
 def test_the_command_says_whether_to_trust_a_run(recording) -> None:  # type: ignore[no-untyped-def]
     runner = CliRunner()
     log, trace = recording("nested-1.3")
-    good = runner.invoke(cli, ["check-run", str(model("nested-1.3")), "--log", str(log), "--csv", str(trace)])
+    good = runner.invoke(
+        cli, ["check-run", str(model("nested-1.3")), "--log", str(log), "--csv", str(trace)]
+    )
     assert good.exit_code == 0, good.output
     assert "the run kept the scenario's meaning" in good.output
     log, trace = recording("drive-after-moving-before-issue-25-1.3")
-    args = ["check-run", str(model("drive-after-moving-1.3")), "--log", str(log), "--csv", str(trace)]
+    args = [
+        "check-run",
+        str(model("drive-after-moving-1.3")),
+        "--log",
+        str(log),
+        "--csv",
+        str(trace),
+    ]
     bad = runner.invoke(cli, args)
     assert bad.exit_code == 1
     assert "DriveDistance_1" in bad.output and "1 violation(s)" in bad.output

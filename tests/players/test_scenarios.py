@@ -6,6 +6,7 @@ import importlib.util
 from pathlib import Path
 
 import pytest
+
 from sceml import io
 from sceml.export import build_xosc
 

@@ -109,7 +109,9 @@ def test_the_overtaking_example_runs_its_nested_modules() -> None:
     assert all(r.finished is not None for r in run.timeline)
 
 
-def test_the_overtaking_example_overtakes_without_contact_and_is_back_before_the_road_ends() -> None:
+def test_the_overtaking_example_overtakes_without_contact_and_is_back_before_the_road_ends() -> (
+    None
+):
     run = run_of("overtaking-concrete.xmi")
     assert not run.collided and not run.notes  # nobody touches, nobody reaches the road's end
     back = run.node("Overtaking_1.PassVehicle_1.ChangeLaneRight_1.LaneChange_1").finished

@@ -23,7 +23,9 @@ def test_a_drive_distance_at_zero_speed_never_finishes() -> None:
     assert codes(b.scenario) == {"SCEML-Y001"}
     moving = scenario()
     ego = moving.root.actors[0]
-    moving.chain(moving.root, moving.add("DriveDistance", ego, distance=20.0, speed=5.0), moving.end)
+    moving.chain(
+        moving.root, moving.add("DriveDistance", ego, distance=20.0, speed=5.0), moving.end
+    )
     assert codes(moving.scenario) == set()
 
 
@@ -33,7 +35,9 @@ def test_a_zero_speed_drive_distance_inside_a_module_is_found_at_its_use() -> No
     driver = module.role("driver", "FourWheeler")
     speed = module.parameter("speed", "m/s", 5.0)
     module.chain(
-        module.in_port, module.add("DriveDistance", driver, distance=10.0, speed=speed), module.out_port
+        module.in_port,
+        module.add("DriveDistance", driver, distance=10.0, speed=speed),
+        module.out_port,
     )
     b = scenario()
     ego = b.root.actors[0]
@@ -71,5 +75,7 @@ def test_for_carla_a_drive_distance_of_a_moving_actor_is_warned() -> None:
     assert codes(b.scenario) == set()  # the generic export measures from the node's start
     resting = scenario(speed=0.0)
     ego = resting.root.actors[0]
-    resting.chain(resting.root, resting.add("DriveDistance", ego, distance=20.0, speed=5.0), resting.end)
+    resting.chain(
+        resting.root, resting.add("DriveDistance", ego, distance=20.0, speed=5.0), resting.end
+    )
     assert codes(resting.scenario, osc_profile="carla") == set()

@@ -205,7 +205,6 @@ def plan_turn(ctx: Context, node: scm.RoutedManeuver, groups: list[Group]) -> Pl
     running speed maneuver of the actor; a route controls no domain (`players.meaning`)."""
     name = ctx.event_names[node]
     destination = ctx.position(node.destination)
-    entity = ctx.entity(node.referenceActor)
     if ctx.profile == "carla":  # scenario_runner reads no AssignRouteAction
         route = Action(ctx.action_name(name), "acquire", {"position": destination})
     else:

@@ -120,7 +120,9 @@ def check_run(
     ending, problems = _check_end(end_node, tree, run, finish)
     problems.extend(teleports(run))
     version = run.osc_version or "?"
-    return RunReport(name, f"{run.player} {run.version}", version, list(checks.values()), ending, stop, problems)
+    return RunReport(
+        name, f"{run.player} {run.version}", version, list(checks.values()), ending, stop, problems
+    )
 
 
 def _events_by_node(tree: etree._ElementTree, first_events: object) -> dict[str, list[str]]:
@@ -223,7 +225,9 @@ def _check_end(
             ]
         return f"end node at {at}", []
     if by_timeout:
-        return f"time-out at {at}", ["stopped by the maximum-duration time-out, not by the end node"]
+        return f"time-out at {at}", [
+            "stopped by the maximum-duration time-out, not by the end node"
+        ]
     return f"unknown at {at}", ["cannot tell from the log which StopTrigger group fired"]
 
 

@@ -116,7 +116,9 @@ def parse_csv(text: str, file: str = "<csv>") -> tuple[dict[str, Trace], float |
                 values = [float(cells[at[key]]) for key in _FIELDS]
                 rows.setdefault(name, []).append((time, *values))
         except (IndexError, ValueError):
-            raise LoadError("a row of the CSV log cannot be read", file=file, line=line_number) from None
+            raise LoadError(
+                "a row of the CSV log cannot be read", file=file, line=line_number
+            ) from None
     traces = {name: _trace(values) for name, values in rows.items()}
     times = next(iter(traces.values())).times if traces else np.array([])
     step = float(np.median(np.diff(times))) if len(times) > 1 else None

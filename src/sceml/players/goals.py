@@ -171,7 +171,9 @@ def _near(node: EObject, at: Moment, position: EObject | None, radius: float) ->
     k = trace.at(at.finish)
     off = math.hypot(trace.x[k] - point[0], trace.y[k] - point[1])
     if off > radius + at.reach(trace):
-        return f"the actor was {off:.2f} m from ({point[0]:g}, {point[1]:g}), not within {radius:g} m"
+        return (
+            f"the actor was {off:.2f} m from ({point[0]:g}, {point[1]:g}), not within {radius:g} m"
+        )
     return None
 
 

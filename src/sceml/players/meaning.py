@@ -104,7 +104,9 @@ def gap_limits(max_speed: float, max_acceleration: float, max_deceleration: floa
     )
 
 
-def gap_acceleration(gap: float, distance: float, relative_speed: float, limits: GapLimits) -> float:
+def gap_acceleration(
+    gap: float, distance: float, relative_speed: float, limits: GapLimits
+) -> float:
     """The acceleration gap keeping asks for: `gap` is centre to centre along the road,
     `relative_speed` the actor's speed minus the target's. esmini's spring: the tension is the
     acceleration limit when the actor is too close (gap below distance), else the deceleration

@@ -107,7 +107,6 @@ class Actor:
         self.lateral = lateral
         self.shift: Shift | None = None
         self.speed = speed
-        self.travelled = 0.0
         self.control: SpeedControl = Hold()
         self.x = self.y = self.heading = 0.0
         self.place()
@@ -140,12 +139,11 @@ class Actor:
             slope = self.shift.slope(self.d) if self.shift is not None else 0.0
             self.d += step / math.sqrt(1.0 + slope * slope)
             if end is not None and self.d >= end:
-                self.travelled += step - (self.d - end)
                 self.d, self.speed = end, 0.0
                 self.place()
                 return True
-            self.travelled += step
             self.place()
+        return False
 
     def follow(self, path: Path, lateral: float = 0.0) -> None:
         """Go on along a new path that starts where the actor is."""

@@ -8,7 +8,6 @@ the boxes.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 
 from pyecore.ecore import EObject

@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import math
-
 import scemlmodel as scm
 
 from ..maps import PositionError, RoadMap

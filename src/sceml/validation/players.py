@@ -65,9 +65,7 @@ def drive_distance_moves(node: scm.DriveDistance, context: Context) -> Iterator[
 )
 def turn_starts_from_the_start(node: scm.RoutedManeuver, context: Context) -> Iterator[Finding]:
     earlier = sorted(
-        str(before.name)
-        for before in _earlier_of_same_actor(node)
-        if before.eClass.name in _ROUTED
+        str(before.name) for before in _earlier_of_same_actor(node) if before.eClass.name in _ROUTED
     )
     if earlier:
         yield (
