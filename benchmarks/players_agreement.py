@@ -55,7 +55,7 @@ def row(path: Path, version: str, binary: str, folder: Path) -> tuple[str, bool]
         f"{result.worst_start:.2f} ({_short(result.worst_start_node)}) | "
         f"{result.worst_position:.2f} ({result.worst_position_actor} at "
         f"{result.worst_position_time:.2f} s) | {report.ending} | "
-        f"{preview.end_reason} at {preview.end_time:.2f} s | "
+        f"{preview.end_reason} at {preview.end_time:.2f} s | {'yes' if result.agrees else 'NO'} | "
         f"{player_seconds * 1000:.0f} / {preview_seconds * 1000:.0f} ms |"
     )
     return line, clean
@@ -82,10 +82,10 @@ def main(argv: list[str] | None = None) -> int:
     versions = arguments.versions or ["1.0", "1.3"]
     print(
         "| scenario | OSC | check-run violations | worst node start apart (s) | "
-        "worst position apart (m) | esmini stopped by | preview ended by | "
+        "worst position apart (m) | esmini stopped by | preview ended by | agree | "
         "wall time esmini / preview |"
     )
-    print("|---|---|---|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|---|---|---|")
     clean = True
     with tempfile.TemporaryDirectory(prefix="sceml-players-") as temporary:
         folder = (arguments.keep or Path(temporary)).resolve()

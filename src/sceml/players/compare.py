@@ -37,10 +37,13 @@ class Comparison:
     worst_position_time: float
     preview_end: str
     player_end: str
+    #: How far apart the two runs stopped (s); infinite when one did not stop.
+    end_apart: float
 
     @property
     def same_end(self) -> bool:
-        return self.preview_end == self.player_end
+        """Both stopped the same way (end node or time limit) within the start agreement."""
+        return self.preview_end == self.player_end and self.end_apart <= START_AGREEMENT + 1e-9
 
     @property
     def agrees(self) -> bool:
@@ -110,4 +113,5 @@ def compare(preview: Run, report: RunReport, run: PlayerRun) -> Comparison:
         worst_time,
         preview.end_reason,
         "end node" if report.ending.startswith("end node") else "maximum duration",
+        abs(preview.end_time - run.stop_time) if run.stop_time is not None else math.inf,
     )
