@@ -101,3 +101,24 @@ def test_overtake_passes_in_three_phases_and_returns_ahead_of_the_target() -> No
     assert ego_x - run.states[1, -1, 0] >= 10.0  # at least the gap ahead
     assert run.states[0, :, 1].max() == pytest.approx(1.75, abs=1e-6)  # it used the other lane
     assert not run.pair("ego", "truck").collision
+
+
+def test_an_actor_stops_at_the_end_of_a_road_without_a_link_and_a_follow_does_not_stall() -> None:
+    b = builder()
+    # The east arm ends at x = 109 with no road on: the lead (from x = 89 at 10 m/s) stops
+    # there at 2.0 s, as players stop it, and the ego following it closes up and finishes.
+    ego = b.actor("Car", "ego", ego=True, start=lane(2, -1, 5.0), speed=8.0)
+    lead = b.actor("Car", "lead", start=lane(2, -1, 80.0), speed=10.0)
+    follow = b.add("Follow", ego, target=lead, distance=15.0)
+    b.chain(b.root, follow, b.end)
+    b.chain(b.root, b.add("TimeElapsed", lead, duration=1.0), b.end)
+    run = simulate(b.scenario, Path(MAP))
+    assert run.end_reason == END_NODE
+    k = int(round(2.0 / run.step))
+    assert run.states[1, k, :2] == pytest.approx((109.0, -1.75))
+    assert np.all(run.states[1, k:, 0] == 109.0) and np.all(run.states[1, k:, 3] == 0.0)
+    assert "lead stopped at the end of its road at 2.00 s (no road on)" in run.notes
+    finished = run.node(follow.name).finished
+    assert finished is not None and finished > 2.0  # it was still running when the lead stopped
+    gap = run.states[1, -1, 0] - run.states[0, -1, 0]
+    assert gap < 15.0 + 1.5 and not run.pair("ego", "lead").collision

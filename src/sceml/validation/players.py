@@ -82,7 +82,6 @@ def turn_starts_from_the_start(node: scm.RoutedManeuver, context: Context) -> It
     "for the carla profile, a DriveDistance's actor has not moved before it: scenario_runner "
     "counts the distance from the act's start, so what was driven before counts too",
     source=_SOURCE,
-    through_modules=True,
 )
 def carla_drive_distance_from_rest(node: scm.DriveDistance, context: Context) -> Iterator[Finding]:
     if context.osc_profile != "carla":
