@@ -21,7 +21,6 @@ equal this script's output (tests/players/test_scenarios.py).
   follow-in-turn.xmi      a Follow of a car that turns, while the follower turns too
   join-one-race.xmi       two cars race; a JoinOneFinished of their arrivals ends it
   parallel.xmi            two actors, each with a lateral and a longitudinal maneuver at once
-  follow-to-road-end.xmi  a Follow whose lead stops at the end of its road
 """
 
 from __future__ import annotations
@@ -233,21 +232,6 @@ def build_parallel(map_text: str) -> scm.Scenario:
     return b.scenario
 
 
-def build_follow_to_road_end(map_text: str) -> scm.Scenario:
-    """Issue 25, 6: the lead stops where its road ends; the Follow still finishes."""
-    b = new_scenario("FollowToRoadEnd", map_text, "The ego follows a car to the end of the road.")
-    ego = b.actor("Car", "ego", ego=True, start=lane(EAST, -1, 5.0), speed=8.0)
-    lead = b.actor("Car", "lead", start=lane(EAST, -1, 80.0), speed=10.0)
-    b.chain(
-        b.root,
-        b.add("Follow", ego, target=lead, distance=15.0),
-        b.add("Stop", ego, rate=6.0),
-        b.end,
-    )
-    b.chain(b.root, b.add("KeepVelocity", lead, duration=2.0), b.end)
-    return b.scenario
-
-
 def build_library() -> scm.Library:
     """Inner in Middle in Outer, each with a role `driver` and a parameter passed down."""
     library = LibraryBuilder("player checks", "Modules nested three deep, with joins inside.")
@@ -313,7 +297,6 @@ def build_all(out: Path) -> list[Path]:
         "follow-in-turn.xmi": build_follow_in_turn(map_text),
         "join-one-race.xmi": build_join_one_race(map_text),
         "parallel.xmi": build_parallel(map_text),
-        "follow-to-road-end.xmi": build_follow_to_road_end(map_text),
     }
     for name, scenario in scenarios.items():
         written.append(io.save(scenario, out / name))

@@ -7,6 +7,7 @@ Expected times are worked out from the scenarios by hand: each flow costs esmini
 from __future__ import annotations
 
 import math
+import shutil
 from pathlib import Path
 
 import numpy as np
@@ -160,3 +161,20 @@ def test_without_a_trace_only_the_timeline_is_checked(recording) -> None:  # typ
     # The old marker held at once (24.8 m driven since t = 0) at 3.10 s; Stop from 3.15 s,
     # 8 m/s at 4 m/s2 in 2 s acting from its first step: 5.10 s; the end a step later.
     assert math.isclose(report.stop_time or 0.0, 5.15)
+
+
+def test_the_old_overtaking_stopped_dead_at_the_road_end_is_refused(
+    recording, tmp_path: Path
+) -> None:  # type: ignore[no-untyped-def]
+    """Issue 25, 3: the Overtaking example of before (its files kept beside the recording) ran
+    out of road in esmini with its lane change back half done; esmini stopped the ego dead."""
+    examples = tmp_path / "examples"
+    shutil.copytree(HERE / "data" / "overtaking-before-issue-25", examples)
+    shutil.copytree(HERE.parent.parent / "maps", tmp_path / "maps")
+    log, trace = recording("overtaking-concrete-before-issue-25-1.3")
+    report = check_player_run(examples / "overtaking-concrete.xmi", log, trace)
+    # The east arm ends at x = 109; the ego's centre was 0.85 m short of its lane's (y = -1.75).
+    assert report.violations() == [
+        "the player stopped ego dead at (109.0, -0.9) at 10.55 s from 11.0 m/s "
+        "(the end of its road?): a maneuver cut short"
+    ]

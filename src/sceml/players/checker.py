@@ -7,7 +7,8 @@ Checked against the flattened graph and the exported document:
   end        the storyboard was stopped by the end node's trigger, not by the time-out;
   goals      each maneuver's and condition's goal held when it finished (`goals`);
   teleports  no actor jumped between two samples of the trace;
-  cut short  the player stopped no action of a node before the node finished.
+  cut short  the player stopped no action of a node before the node finished, and stopped no
+             actor dead (as esmini does where a road ends: the scenario drove it off the map).
 """
 
 from __future__ import annotations
@@ -27,6 +28,9 @@ from .record import EventRun, PlayerRun
 
 #: A step longer than the speed allows by this much (m) is a jump, not a move.
 TELEPORT_MARGIN = 0.5
+#: A speed lost faster than this (m/s2) is no braking any vehicle does: the player stopped the
+#: actor (esmini does at the end of a road without a link).
+ABRUPT_DECELERATION = 20.0
 
 
 @dataclass
@@ -119,6 +123,7 @@ def check_run(
             check.problems.append("never finished" if check.start is not None else "never started")
     ending, problems = _check_end(end_node, tree, run, finish)
     problems.extend(teleports(run))
+    problems.extend(abrupt_stops(run))
     version = run.osc_version or "?"
     return RunReport(
         name, f"{run.player} {run.version}", version, list(checks.values()), ending, stop, problems
@@ -247,5 +252,22 @@ def teleports(run: PlayerRun) -> list[str]:
             found.append(
                 f"{actor} jumped {steps[jumps[0]]:.2f} m at {trace.times[k]:.2f} s "
                 f"(a teleport; {jumps.size} jump(s) in all)"
+            )
+    return found
+
+
+def abrupt_stops(run: PlayerRun) -> list[str]:
+    """Every actor the player stopped dead: from speed to standing in one sample."""
+    found = []
+    for actor, trace in run.traces.items():
+        if len(trace.times) < 2:
+            continue
+        lost = -np.diff(trace.speed) / np.maximum(np.diff(trace.times), 1e-9)
+        stops = np.nonzero((lost > ABRUPT_DECELERATION) & (trace.speed[1:] < 0.01))[0]
+        for k in stops[:1]:
+            x, y, t = trace.x[k + 1], trace.y[k + 1], trace.times[k + 1]
+            found.append(
+                f"the player stopped {actor} dead at ({x:.1f}, {y:.1f}) at {t:.2f} s from "
+                f"{trace.speed[k]:.1f} m/s (the end of its road?): a maneuver cut short"
             )
     return found
