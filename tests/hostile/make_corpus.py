@@ -44,6 +44,7 @@ READERS = {
         "export-distribution",
         "simulate",
         "explore",
+        "check-run",
     ),
     "xosc": ("check-xosc", "import"),
     "config": ("limits", "ranges"),

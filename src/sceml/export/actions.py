@@ -108,9 +108,23 @@ def plan_drive_distance(ctx: Context, node: scm.DriveDistance, groups: list[Grou
         raise ValueError(f"{node.name}: a DriveDistance at 0 m/s never finishes (SCEML-Y001)")
     driven = ctx.extra_event(node, "driven")
     done = Event(
-        driven, entity, [ctx.marker_action(driven, driven)], delayed(groups, number(duration))
+        driven, entity, [ctx.marker_action(driven, driven)], delayed(groups, _drive_time(ctx, node))
     )
     return [event, done], driven
+
+
+def _drive_time(ctx: Context, node: scm.DriveDistance) -> str:
+    """distance / speed as written: a number, or where either is a declared parameter an
+    expression of them, so the file keeps its meaning when the parameter is changed."""
+    distance, speed = ctx.values.text(node, "distance"), ctx.values.text(node, "speed")
+    if not (distance.startswith("$") or speed.startswith("$")):
+        return number(meaning.drive_distance_duration(float(distance), float(speed)))
+    if not ctx.traits.expressions:
+        raise ValueError(
+            f"{node.name}: a DriveDistance finishes distance / speed after it starts, and "
+            "OpenSCENARIO 1.0 has no expressions to write that of parameters; export 1.1 or later"
+        )
+    return f"${{{distance} / {speed}}}"
 
 
 @planner("Follow", "Approach")
