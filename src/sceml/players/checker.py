@@ -13,6 +13,7 @@ Checked against the flattened graph and the exported document:
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -130,14 +131,14 @@ def check_run(
     )
 
 
-def _events_by_node(tree: etree._ElementTree, first_events: object) -> dict[str, list[str]]:
+def _events_by_node(tree: etree._ElementTree, first_events: Iterable[str]) -> dict[str, list[str]]:
     """Every Event of the document under the node it belongs to (`<node>__<suffix>`)."""
-    owners = {str(first): str(first) for first in first_events}  # type: ignore[attr-defined]
+    owners = set(first_events)
     events: dict[str, list[str]] = {first: [] for first in owners}
     for element in tree.getroot().iter("Event"):
         event = str(element.get("name"))
-        owner = owners.get(event.split(SEPARATOR, 1)[0])
-        if owner is not None:
+        owner = event.split(SEPARATOR, 1)[0]
+        if owner in owners:
             events[owner].append(event)
     return events
 

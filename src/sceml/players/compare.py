@@ -14,6 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .. import catalog
 from ..simulate.run import Run
 from .checker import RunReport, required
 from .meaning import FLOW_DELAY_STEPS
@@ -61,22 +62,11 @@ def player_starts(report: RunReport, step: float) -> dict[str, float]:
     starts: dict[str, float] = {}
     for node in report.nodes:
         ready = required([finishes.get(name, 0.0) for name in node.after], node.one)
-        if node.kind in _CONDITIONS and ready is not None:
+        if catalog.is_kind_of(node.kind, "Condition") and ready is not None:
             starts[node.name] = round(ready + FLOW_DELAY_STEPS * step, 9)
         elif node.start is not None:
             starts[node.name] = node.start
     return starts
-
-
-_CONDITIONS = frozenset(
-    {
-        "InLocationRadius",
-        "InVehicleRadius",
-        "TimeElapsed",
-        "SpeedCondition",
-        "TimeToCollision",
-    }
-)
 
 
 def compare(preview: Run, report: RunReport, run: PlayerRun) -> Comparison:

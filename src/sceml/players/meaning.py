@@ -17,6 +17,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from .. import catalog
+
 # --- when a node starts --------------------------------------------------------------------------
 
 #: A node starts this many time steps after its predecessors finished. Players evaluate a
@@ -27,31 +29,17 @@ FLOW_DELAY_STEPS = 1
 
 # --- who controls what --------------------------------------------------------------------------
 
-#: The parts of its actor a maneuver kind controls: `speed` (the longitudinal domain of
-#: OpenSCENARIO) and `path` (lateral). A turn is routed, not driven: it sets where the actor goes
-#: at junctions and leaves its speed to whatever maneuver controls it (exported as
-#: AssignRouteAction, which players run in no control domain, so a running Accelerate or
-#: Follow of the same actor goes on).
-CONTROLS: dict[str, tuple[str, ...]] = {
-    "Accelerate": ("speed",),
-    "Decelerate": ("speed",),
-    "Stop": ("speed",),
-    "DriveDistance": ("speed",),
-    "Follow": ("speed",),
-    "Approach": ("speed",),
-    "KeepVelocity": ("speed",),
-    "LaneChange": ("path",),
-    "TurnLeft": ("path",),
-    "TurnRight": ("path",),
-    "Cross": ("path",),
-    "FollowTrajectory": ("path",),
-    "Overtake": ("speed", "path"),
-}
+#: The parts of its actor a maneuver controls, by its metamodel category: `speed` (the
+#: longitudinal domain of OpenSCENARIO), `path` (lateral), both (composite). A turn is lateral:
+#: it is routed, not driven, setting where the actor goes at junctions and leaving its speed to
+#: whatever maneuver controls it (exported as AssignRouteAction, which players run in no
+#: control domain, so a running Accelerate or Follow of the same actor goes on).
+_CONTROLS = {"longitudinal": ("speed",), "lateral": ("path",), "composite": ("speed", "path")}
 
 
 def controls(kind: str) -> tuple[str, ...]:
     """The parts of its actor a maneuver of `kind` controls (none for conditions)."""
-    return CONTROLS.get(kind, ())
+    return _CONTROLS.get(catalog.category(kind) or "", ())
 
 
 # --- speed ----------------------------------------------------------------------------------------
