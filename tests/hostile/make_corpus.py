@@ -45,6 +45,7 @@ READERS = {
         "simulate",
         "explore",
         "migrate",
+        "check-run",
     ),
     "xosc": ("check-xosc", "import"),
     "config": ("limits", "ranges"),

@@ -25,6 +25,8 @@ from sceml.modules.flatten import FlattenError, flatten
 from .make_corpus import CORPUS, READERS, cases, manifest
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+#: A recorded esmini log (of UIS2 at 1.0) for `check-run`, whose model is the hostile file.
+PLAYER_LOG = EXAMPLES.parent / "tests" / "players" / "data" / "uis2-concrete-1.0.log.txt"
 SECONDS = 20  # generous for a loaded 2-core machine; a hang is what this catches
 MANIFEST = [line.split("\t") for line in (CORPUS / "MANIFEST").read_text().splitlines()]
 
@@ -45,6 +47,7 @@ ENTRY_POINTS: dict[str, Callable[[Path, Path], list[str]]] = {
     "explore": lambda file, out: ["explore", str(file), "--budget", "2", "-o", str(out / "x")],
     "import": lambda file, out: ["import", str(file), "-o", str(out / "imported.xmi")],
     "migrate": lambda file, out: ["migrate", str(file), "-o", str(out / "migrated.xmi")],
+    "check-run": lambda file, out: ["check-run", str(file), "--log", str(PLAYER_LOG)],
     "limits": lambda file, out: [
         "validate",
         "--limits",

@@ -146,9 +146,17 @@ def test_the_exported_distribution_imports_as_the_logical_scenario(
     # A SceML export maps completely; only the run count and seed have no place in the model.
     assert imported.report.counts()["opaque"] == 0
     assert imported.report.counts()["guessed"] == 0
-    assert [e.message for e in imported.report.section("not represented")] == [
+    expected = [
         "numberOfTestRuns=100 and randomSeed=0.0 are not kept: `sceml sample` takes --n and --seed"
     ]
+    if name == "uis2":
+        # DriveDistance finishes ${$distance / $speed} after it starts (issue 25); the node's
+        # speed comes from its SpeedAction, the delay is read at the declared value.
+        expected.append(
+            "$DriveDistance_1_speed at <Condition delay> keeps its declared value 8.0 "
+            "(it is used in an expression)"
+        )
+    assert [e.message for e in imported.report.section("not represented")] == expected
     assert "ego.initialSpeed" in imported.report.logical
 
 

@@ -24,6 +24,7 @@ COMMANDS = {
     "promote": "promote:promote",
     "sample": "sample:sample",
     "simulate": "simulate:simulate_command",
+    "check-run": "check_run:check_run",
     "explore": "explore:explore_command",
     "export-distribution": "export_logical:export_distribution_command",
     "module": "module:module",

@@ -14,6 +14,7 @@ from lxml import etree
 
 import scemlmodel as scm
 
+from ..players.meaning import TTC_FREESPACE
 from . import traced
 from .context import Build
 from .opaque import opaque_node
@@ -207,10 +208,11 @@ def _ttc(build: Build, test: etree._Element, actor: scm.Actor, wanted: str) -> s
         build.report.add(
             "guessed", f"{wanted}: {test.get('rule')} read as {rule[0]}", build.where(test)
         )
-    if test.get("freespace") == "true":
+    # SceML's TimeToCollision is between the boxes (players.meaning.TTC_FREESPACE).
+    if (test.get("freespace") == "true") != TTC_FREESPACE:
         build.report.add(
             "guessed",
-            f"{wanted}: a freespace time read as between reference points",
+            f"{wanted}: a time between reference points read as between the boxes",
             build.where(test),
         )
     node = _node(build, "TimeToCollision", actor, wanted, time=number(test, "value"))
