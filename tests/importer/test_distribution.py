@@ -140,7 +140,7 @@ def test_the_exported_distribution_imports_as_the_logical_scenario(
 ) -> None:
     logical = EXAMPLES / f"{name}-logical.xmi"
     pvd = _export_distribution(logical, tmp_path / "out")
-    imported = import_file(pvd)
+    imported = import_file(pvd, allow=[REPO / "maps"])
     assert imported.scenario.nodes[0].level is scm.AbstractionLevel.logical
     same(flatten(io.load(logical).root), imported.scenario)
     # A SceML export maps completely; only the run count and seed have no place in the model.
