@@ -1,7 +1,7 @@
 """How faithfully `sceml import` reads real OpenSCENARIO files (issue 24): the corpus table.
 
     python benchmarks/import_corpus.py DIR... [--esmini PATH] [--catalog-path DIR]
-        [--csv per-file.csv] [--work DIR] [--timeout 60]
+        [--allow DIR] [--csv per-file.csv] [--work DIR] [--timeout 60]
 
 Every `.xosc` scenario below the DIRs (catalogs and ParameterValueDistributions are skipped) is
 imported (`sceml import`, with the DIRs allowed), validated, and exported back at its own
@@ -206,7 +206,7 @@ def measure(path: Path, work: Path, options: argparse.Namespace) -> Row:
     model = work / "models" / f"{path.stem}.xmi"
     try:
         imported = import_to_file(
-            path, model, catalog_paths=options.catalog_path, allow=options.dirs
+            path, model, catalog_paths=options.catalog_path, allow=options.allowed
         )
     except SceMLError as error:
         row.why = f"import: {error}"
@@ -216,7 +216,7 @@ def measure(path: Path, work: Path, options: argparse.Namespace) -> Row:
         return row
     row.writes = True
     row.opaque = imported.report.counts()["opaque"]
-    document = io.load_scenario(model, allow=options.dirs)
+    document = io.load_scenario(model, allow=options.allowed)
     errors = [
         d for d in validate(document.root, document=document) if d.severity is Severity.ERROR
     ]
@@ -275,11 +275,19 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser.add_argument("dirs", nargs="+", type=Path, metavar="DIR")
     parser.add_argument("--esmini", type=Path, help="esmini binary: play and compare")
     parser.add_argument("--catalog-path", type=Path, action="append", default=[])
+    parser.add_argument(
+        "--allow",
+        type=Path,
+        action="append",
+        default=[],
+        help="another folder the files may read maps and catalogs from (the DIRs always)",
+    )
     parser.add_argument("--csv", type=Path, help="write one row per file here")
     parser.add_argument("--work", type=Path, help="folder for models, exports, logs (temporary)")
     parser.add_argument("--timeout", type=float, default=60.0, help="seconds per esmini run")
     options = parser.parse_args(argv)
     options.dirs = [d.resolve() for d in options.dirs]
+    options.allowed = [*options.dirs, *(d.resolve() for d in options.allow)]
     with tempfile.TemporaryDirectory() as temporary:
         work = (options.work or Path(temporary)).resolve()
         for sub in ("original", "again", "models", "exports"):

@@ -392,12 +392,14 @@ def test_scenariogeneration_cut_in(version: int, tmp_path: Path) -> None:
     source = tmp_path / "cut-in.xosc"
     sg_cut_in(source, version)
     imported = import_file(source)
+    # The StopTrigger is only a time: the end also waits for that time (the run lasts it).
     assert kinds(imported.scenario) == [
         "Decelerate",
         "EndNode",
         "InVehicleRadius",
         "OpaqueAction",
         "RootNode",
+        "TimeElapsed",
     ]
     # An absolute target lane has no SceML kind: kept, with its line.
     assert opaque_tags(imported.scenario) == {"Action LaneChangeAction"}
@@ -419,6 +421,7 @@ def test_scenariogeneration_pedestrian_crossing(version: int, tmp_path: Path) ->
         "InVehicleRadius",
         "RootNode",
         "Stop",
+        "TimeElapsed",
     ]
     cross = next(n for n in imported.scenario.nodes if isinstance(n, scm.Cross))
     assert cross.referenceActor.name == "walker"

@@ -17,7 +17,8 @@ import scemlmodel as scm
 from . import traced
 from .context import Build
 from .opaque import opaque_node
-from .positions import number, position
+from .placing import place
+from .positions import number
 
 #: Comparison rules SceML has, and the 1.2+ ones read as their strict neighbour (a guess).
 RULES = {
@@ -128,7 +129,7 @@ def _node(
 def _reach(
     build: Build, test: etree._Element, actor: scm.Actor, wanted: str
 ) -> scm.ActionNode | str:
-    where = position(test)
+    where = place(build, test, initial=False)
     if where is None:
         return "the position is not a world or lane position"
     node = _node(build, "InLocationRadius", actor, wanted, radius=number(test, "tolerance"))
@@ -140,7 +141,7 @@ def _reach(
 def _distance(
     build: Build, test: etree._Element, actor: scm.Actor, wanted: str
 ) -> scm.ActionNode | str:
-    where = position(test)
+    where = place(build, test, initial=False)
     if where is None or test.get("rule") not in _BELOW:
         return "only 'closer than' a world or lane position maps (InLocationRadius)"
     if test.get("relativeDistanceType", "euclidianDistance") not in (

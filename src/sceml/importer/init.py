@@ -12,7 +12,8 @@ import scemlmodel as scm
 from . import traced
 from .context import Build
 from .opaque import opaque_node
-from .positions import number, position
+from .placing import place
+from .positions import number
 
 #: fractionalCloudCover (1.2+) -> cloud state; eight oktas is overcast or, with dim sun, rainy.
 OKTAS = {
@@ -65,7 +66,7 @@ def _private(build: Build, actor: scm.Actor, private: etree._Element) -> bool:
     """Apply a teleport or speed action to the actor; False when it is something else."""
     teleport = private.find("TeleportAction")
     if teleport is not None:
-        start = position(teleport)
+        start = place(build, teleport, initial=True)
         if start is None:
             return False
         actor.startPosition = start
