@@ -75,7 +75,7 @@ def import_file(
     )
     roots = io.reading_roots(source.path, extra)
     report = ImportReport(str(source.path), source.version)
-    report.catalog_entries = catalogs.resolve(source, search, roots)
+    report.catalog_entries = catalogs.resolve(source, search, roots, report)
     resolved = parameters.resolve(source, () if varied is None else varied.specs)
     report.parameters = {k: v for k, v in resolved.top.items() if k != markers.MARKER}
     build = _start(source, report, map_path, roots)

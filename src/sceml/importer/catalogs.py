@@ -25,6 +25,7 @@ from lxml import etree
 from .. import io, schema
 from .parameters import declared_name, value_of, values_at
 from .reading import ORIGIN, Source
+from .report import ImportReport
 
 #: Rounds of resolution: an entry may refer to another catalog's entry this deep.
 MAX_DEPTH = 8
@@ -35,12 +36,15 @@ MAX_COPIED_ELEMENTS = 1_000_000
 
 
 def resolve(
-    source: Source, search: Sequence[Path] = (), roots: Sequence[Path] | None = None
+    source: Source,
+    search: Sequence[Path] = (),
+    roots: Sequence[Path] | None = None,
+    report: ImportReport | None = None,
 ) -> list[str]:
     """Replace every CatalogReference in the tree; returns 'catalog/entry' of each one used.
 
     `search` are the `--catalog-path` folders; `roots` the folders files may be read from
-    (default: `io.reading_roots` of the scenario with `search`).
+    (default: `io.reading_roots` of the scenario with `search`); `report` gets the guesses.
     """
     if roots is None:
         roots = io.reading_roots(source.path, search)
@@ -70,6 +74,10 @@ def resolve(
             assert parent is not None
             parent.replace(reference, entry)
             used.append(f"{catalog_name}/{entry_name}")
+            for message, where in catalogs.guesses:
+                if report is not None:
+                    report.add("guessed", message, source.where(where))
+            catalogs.guesses.clear()
     left = next(source.root.iter("CatalogReference"), None)
     if left is None:
         return used
@@ -108,11 +116,14 @@ class _Catalogs:
             found = next((c for c in candidates if c.is_dir()), candidates[0])
             self.folders.append((Path(found), directory))
         self.folders.extend((Path(folder), None) for folder in search)
-        self._read: dict[str, tuple[Path, etree._Element]] | None = None
+        self._read: list[tuple[str, Path, etree._Element]] | None = None
+        #: Entries found in another catalog than the one named: (message, reference).
+        self.guesses: list[tuple[str, etree._Element]] = []
 
-    def _catalogs(self) -> dict[str, tuple[Path, etree._Element]]:
+    def _catalogs(self) -> list[tuple[str, Path, etree._Element]]:
+        """(catalog name, file, Catalog element) of every catalog file, in search order."""
         if self._read is None:
-            self._read = {}
+            self._read = []
             for folder, named_by in self.folders:
                 self._check_inside(folder, named_by)
                 for path in sorted(folder.glob("*.xosc")) if folder.is_dir() else []:
@@ -136,19 +147,40 @@ class _Catalogs:
         # elsewhere is passed over (its content is never read nor echoed).
         if not real.is_file() or not any(_is_within(real, root) for root in self.roots):
             return
+        if any(known == path for _, known, _ in self._read):
+            return
         try:
             catalog = schema.parse_file(real).getroot().find("Catalog")
         except (OSError, schema.SchemaError) as error:
             raise self.source.error(f"cannot read the catalog file {path}: {error}") from None
         if catalog is not None:
-            self._read.setdefault(str(catalog.get("name")), (path, catalog))
+            self._read.append((str(catalog.get("name")), path, catalog))
 
     def entry(
         self, reference: etree._Element, catalog_name: str, entry_name: str
     ) -> tuple[Path, etree._Element]:
-        """The catalog file and a fresh copy of the entry a reference names."""
-        found = self._catalogs().get(catalog_name)
-        if found is None:
+        """The catalog file and a fresh copy of the entry a reference names.
+
+        Like esmini, an entry that the catalog of that name lacks (or a catalog name no file
+        declares) is looked for in every catalog file of the folders (reported as guessed).
+        """
+        catalogs = self._catalogs()
+        named = [(path, catalog) for name, path, catalog in catalogs if name == catalog_name]
+        others = [(path, catalog) for name, path, catalog in catalogs if name != catalog_name]
+        for index, (path, catalog) in enumerate([*named, *others]):
+            found = _find(catalog, entry_name)
+            if found is None:
+                continue
+            if index >= len(named):
+                self.guesses.append(
+                    (
+                        f"catalog {catalog_name!r} has no entry {entry_name!r}: taken from "
+                        f"{path} (catalog {catalog.get('name')!r}), as esmini does",
+                        reference,
+                    )
+                )
+            return path, found
+        if not named:
             where = ", ".join(str(f) for f, _ in self.folders) or "no CatalogLocations"
             missing = [str(f) for f, _ in self.folders if not f.is_dir()]
             why = f"; missing folder {', '.join(missing)}" if missing else ""
@@ -157,13 +189,16 @@ class _Catalogs:
                 "with --catalog-path",
                 reference,
             )
-        path, catalog = found
-        for candidate in catalog:
-            if isinstance(candidate.tag, str) and candidate.get("name") == entry_name:
-                return path, copy.deepcopy(candidate)
         raise self.source.error(
-            f"catalog {catalog_name!r} ({path}) has no entry {entry_name!r}", reference
+            f"catalog {catalog_name!r} ({named[0][0]}) has no entry {entry_name!r}", reference
         )
+
+
+def _find(catalog: etree._Element, entry_name: str) -> etree._Element | None:
+    for candidate in catalog:
+        if isinstance(candidate.tag, str) and candidate.get("name") == entry_name:
+            return copy.deepcopy(candidate)
+    return None
 
 
 def _is_within(path: Path, root: Path) -> bool:

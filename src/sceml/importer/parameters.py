@@ -181,4 +181,7 @@ def _value(
             raise ExpressionError(f"parameter ${name} is not declared")
         return scope[name]
     except ExpressionError as error:
+        if key == "name" and text.startswith("${"):
+            # A name is only a label: esmini keeps an expression it cannot compute as text.
+            return text
         raise source.error(f"<{element.tag} {key}={text!r}>: {error}", element) from None
