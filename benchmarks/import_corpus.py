@@ -202,7 +202,9 @@ def measure(path: Path, work: Path, options: argparse.Namespace) -> Row:
         row.plays = isinstance(original, Run)
     tree = etree.parse(str(path), hardened_parser())
     row.actions = sum(1 for _ in tree.getroot().iter("Action", "Condition", "PrivateAction"))
-    row.actions -= sum(1 for a in tree.getroot().iter("PrivateAction") if a.getparent().tag == "Action")
+    row.actions -= sum(
+        1 for a in tree.getroot().iter("PrivateAction") if a.getparent().tag == "Action"
+    )
     model = work / "models" / f"{path.stem}.xmi"
     try:
         imported = import_to_file(
@@ -217,9 +219,7 @@ def measure(path: Path, work: Path, options: argparse.Namespace) -> Row:
     row.writes = True
     row.opaque = imported.report.counts()["opaque"]
     document = io.load_scenario(model, allow=options.allowed)
-    errors = [
-        d for d in validate(document.root, document=document) if d.severity is Severity.ERROR
-    ]
+    errors = [d for d in validate(document.root, document=document) if d.severity is Severity.ERROR]
     row.exit0 = row.clean = not errors
     if errors:
         row.why = f"validate: [{errors[0].code}] {errors[0].message}"
@@ -228,9 +228,7 @@ def measure(path: Path, work: Path, options: argparse.Namespace) -> Row:
     try:
         from sceml.export import export_to_file
 
-        export_to_file(
-            document.root, again, version=imported.report.version, source_path=model
-        )
+        export_to_file(document.root, again, version=imported.report.version, source_path=model)
     except SceMLError as error:
         row.why = row.why or f"export: {error}"
         return row

@@ -32,7 +32,7 @@ from .context import Build
 from .distribution import Distribution, read_distribution
 from .ending import read_stop
 from .entities import read_entities
-from .errors import XoscImportError
+from .errors import BadValue, XoscImportError
 from .init import read_init
 from .logical import apply_distribution
 from .markers import marker_name
@@ -78,6 +78,21 @@ def import_file(
     report.catalog_entries = catalogs.resolve(source, search, roots, report)
     resolved = parameters.resolve(source, () if varied is None else varied.specs)
     report.parameters = {k: v for k, v in resolved.top.items() if k != markers.MARKER}
+    try:
+        return _build(source, report, varied, resolved, map_path, roots)
+    except BadValue as error:
+        raise source.error(str(error), error.element) from None  # type: ignore[arg-type]
+
+
+def _build(
+    source: Source,
+    report: ImportReport,
+    varied: Distribution | None,
+    resolved: parameters.Resolved,
+    map_path: str | Path | None,
+    roots: Sequence[Path],
+) -> Imported:
+    """Every stage after reading, catalogs and parameters."""
     build = _start(source, report, map_path, roots)
     if varied is not None and varied.scenario.resolve() != source.path.resolve():
         report.add(

@@ -20,7 +20,7 @@ from .context import Build, last_name
 from .geometry import classify
 from .opaque import summary
 from .placing import place
-from .positions import number
+from .positions import lane_id, number
 
 
 @dataclass
@@ -174,7 +174,7 @@ def _lane_change(
     if relative is None:
         return "a change to an absolute lane has no SceML kind"
     reference = build.actor(relative.get("entityRef"), relative)
-    lanes = int(float(str(relative.get("value"))))
+    lanes = lane_id(relative, "value")
     direction: str | None = "left" if lanes > 0 else "right"
     if reference is not request.actor or abs(lanes) != 1:
         direction = _towards(request.actor, reference, lanes)
