@@ -94,6 +94,7 @@ def _declare(
     top = element is source.root
     for declaration in declarations.iterchildren("ParameterDeclaration"):
         name, text = declared_name(declaration), str(declaration.get("value", ""))
+        declaration.set("name", name)  # the name is no reference, even with its `$`
         alias = _REFERENCE.fullmatch(text)
         origin = origins.get(alias.group(1)) if alias is not None else None
         _substitute(source, declaration, _Scope(values, origins), None)
