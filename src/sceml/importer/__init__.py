@@ -81,7 +81,7 @@ def import_file(
     try:
         return _build(source, report, varied, resolved, map_path, roots)
     except BadValue as error:
-        raise source.error(str(error), error.element) from None  # type: ignore[arg-type]
+        raise source.error(str(error), error.element) from None
 
 
 def _build(

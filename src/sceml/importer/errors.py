@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from lxml import etree
+
 from ..errors import SceMLError
 
 
@@ -20,6 +22,6 @@ class BadValue(Exception):  # noqa: N818 - not a ValueError on purpose: never re
     readers that take a ValueError to mean "not this kind of position" do not swallow it.
     """
 
-    def __init__(self, message: str, element: object) -> None:
+    def __init__(self, message: str, element: etree._Element) -> None:
         super().__init__(message)
         self.element = element
