@@ -1,7 +1,7 @@
 """How faithfully `sceml import` reads real OpenSCENARIO files (issue 24): the corpus table.
 
     python benchmarks/import_corpus.py DIR... [--esmini PATH] [--catalog-path DIR]
-        [--allow DIR] [--csv per-file.csv] [--work DIR] [--timeout 60]
+        [--allow DIR] [--csv per-file.csv] [--work DIR] [--timeout 60] [--constructs]
 
 Every `.xosc` scenario below the DIRs (catalogs and ParameterValueDistributions are skipped) is
 imported (`sceml import`, with the DIRs allowed), validated, and exported back at its own
@@ -15,8 +15,9 @@ re-export are played headless at 0.05 s steps and compared:
 - the run ends at the same time (within one step).
 
 It prints the stage table (play / import writes / exit 0 / validates clean / exports / plays
-the same), the opaque rate (opaque nodes over the Actions and Conditions of the originals) and,
-with `--csv`, one row per file with the reason a stage failed. A progress line per file goes to
+the same), the opaque rate (opaque nodes over the Actions and Conditions of the originals),
+with `--constructs` what the files use that metamodel 1.0 has no class for, and, with `--csv`,
+one row per file with the reason a stage failed. A progress line per file goes to
 stderr. Nothing is written into the DIRs.
 """
 
@@ -30,6 +31,7 @@ import re
 import subprocess
 import sys
 import tempfile
+from collections import Counter
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, field, fields
 from pathlib import Path
@@ -74,8 +76,8 @@ class Row:
     actions: int = 0
     opaque: int = 0
     why: str = ""
-    #: Position kinds and other constructs seen in the original (for the metamodel list).
-    kinds: list[str] = field(default_factory=list)
+    #: Constructs of the original the metamodel lacks (`constructs`), with their counts.
+    kinds: Counter[str] = field(default_factory=Counter)
 
 
 def scenarios(folders: Sequence[Path]) -> Iterator[Path]:
@@ -89,6 +91,78 @@ def scenarios(folders: Sequence[Path]) -> Iterator[Path]:
                 continue
             if root.find("Storyboard") is not None:
                 yield path
+
+
+#: Position kinds SceML 1.0 has no class for.
+POSITIONS = (
+    "RoadPosition",
+    "RelativeRoadPosition",
+    "RelativeLanePosition",
+    "RelativeObjectPosition",
+    "RelativeWorldPosition",
+    "RoutePosition",
+    "TrajectoryPosition",
+    "GeoPosition",
+)
+#: Elements counted as they are (tag -> label).
+COUNTED = {
+    "ObjectController": "controller: ObjectController (entity)",
+    "AssignControllerAction": "controller: AssignControllerAction",
+    "ActivateControllerAction": "controller: ActivateControllerAction",
+    "OverrideControllerValueAction": "controller: OverrideControllerValueAction",
+    "TraveledDistanceCondition": "condition: TraveledDistance",
+    "TimeHeadwayCondition": "condition: TimeHeadway",
+    "ParameterCondition": "condition: Parameter",
+    "VariableCondition": "condition: Variable",
+    "ParameterAction": "action: Parameter",
+    "VariableAction": "action: Variable",
+    "TrafficSignalCondition": "traffic signal: condition",
+    "TrafficSignalControllerCondition": "traffic signal: controller condition",
+    "TrafficSignalStateAction": "traffic signal: state action",
+    "TrafficSignalControllerAction": "traffic signal: controller action",
+    "FollowTrajectoryAction": "action: FollowTrajectory",
+    "LaneOffsetAction": "action: LaneOffset",
+    "SynchronizeAction": "action: Synchronize",
+}
+
+
+def constructs(root: etree._Element) -> Counter[str]:
+    """What the metamodel 1.0 lacks, as used in one file: position kinds by where they are
+    (start, destination, condition), controllers, TimeToCollision options, lane change targets,
+    parameter and variable conditions, traffic signals, repeat counts."""
+    found: Counter[str] = Counter()
+    for position in root.iter("Position"):
+        kind = next((c.tag for c in position if isinstance(c.tag, str)), "")
+        if kind in POSITIONS:
+            found[f"position: {kind} as {_use(position)}"] += 1
+    for element in root.iter(*COUNTED):
+        found[COUNTED[str(element.tag)]] += 1
+    for ttc in root.iter("TimeToCollisionCondition"):
+        distance = ttc.get("relativeDistanceType", "(1.0: alongRoute)")
+        found[f"TimeToCollision: freespace={ttc.get('freespace')} distance={distance}"] += 1
+    for change in root.iter("LaneChangeTarget"):
+        target = next((c.tag for c in change if isinstance(c.tag, str)), "")
+        value = next(iter(change)).get("value", "")
+        found[f"lane change: {target} {value}"] += 1
+    for event in root.iter("Event"):
+        if int(event.get("maximumExecutionCount", "1") or 1) > 1:
+            found["repeat: Event maximumExecutionCount > 1"] += 1
+    for group in root.iter("ManeuverGroup"):
+        if int(group.get("maximumExecutionCount", "1") or 1) > 1:
+            found["repeat: ManeuverGroup maximumExecutionCount > 1"] += 1
+    for act in root.iter("Act"):
+        if act.find("StopTrigger/ConditionGroup") is not None:
+            found["act StopTrigger"] += 1
+    return found
+
+
+def _use(position: etree._Element) -> str:
+    ancestors = {a.tag for a in position.iterancestors()}
+    if "Condition" in ancestors:
+        return "condition"
+    if "Init" in ancestors and "TeleportAction" in ancestors:
+        return "start"
+    return "destination or other action"
 
 
 def play(esmini: Path, scenario: Path, work: Path, timeout: float) -> Run | str:
@@ -201,6 +275,7 @@ def measure(path: Path, work: Path, options: argparse.Namespace) -> Row:
         original = play(options.esmini, path, work / "original", options.timeout)
         row.plays = isinstance(original, Run)
     tree = etree.parse(str(path), hardened_parser())
+    row.kinds = constructs(tree.getroot())
     row.actions = sum(1 for _ in tree.getroot().iter("Action", "Condition", "PrivateAction"))
     row.actions -= sum(
         1 for a in tree.getroot().iter("PrivateAction") if a.getparent().tag == "Action"
@@ -268,6 +343,19 @@ def table(rows: list[Row]) -> str:
     return "\n".join(lines) + "\n"
 
 
+def growth(rows: list[Row]) -> str:
+    """What the files use that metamodel 1.0 lacks: elements and files, most files first."""
+    elements: Counter[str] = Counter()
+    files: Counter[str] = Counter()
+    for row in rows:
+        elements.update(row.kinds)
+        files.update(row.kinds.keys())
+    lines = ["", "| construct (not in metamodel 1.0) | elements | files |", "|---|---|---|"]
+    for name, count in sorted(files.items(), key=lambda item: (-item[1], item[0])):
+        lines.append(f"| {name} | {elements[name]} | {count} |")
+    return "\n".join(lines) + "\n"
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("dirs", nargs="+", type=Path, metavar="DIR")
@@ -283,6 +371,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser.add_argument("--csv", type=Path, help="write one row per file here")
     parser.add_argument("--work", type=Path, help="folder for models, exports, logs (temporary)")
     parser.add_argument("--timeout", type=float, default=60.0, help="seconds per esmini run")
+    parser.add_argument(
+        "--constructs",
+        action="store_true",
+        help="also count what the files use that metamodel 1.0 lacks",
+    )
     options = parser.parse_args(argv)
     options.dirs = [d.resolve() for d in options.dirs]
     options.allowed = [*options.dirs, *(d.resolve() for d in options.allow)]
@@ -296,6 +389,8 @@ def main(argv: Sequence[str] | None = None) -> int:
             print(f"[{number}/{len(files)}] {path}", file=sys.stderr, flush=True)
             rows.append(measure(path, work, options))
     print(table(rows), end="")
+    if options.constructs:
+        print(growth(rows), end="")
     if options.csv is not None:
         with options.csv.open("w", newline="") as out:
             writer = csv.writer(out)
