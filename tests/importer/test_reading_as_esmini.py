@@ -365,3 +365,32 @@ def test_an_uncomputable_number_is_still_refused(tmp_path: Path) -> None:
     with pytest.raises(XoscImportError, match="unexpected 'When'") as caught:
         import_file(path)
     assert caught.value.line is not None
+
+
+def test_a_gradual_init_speed_change_is_a_maneuver_from_the_start(tmp_path: Path) -> None:
+    gradual = (
+        '<Private entityRef="Ego"><PrivateAction><LongitudinalAction><SpeedAction>'
+        '<SpeedActionDynamics dynamicsShape="linear" value="4" dynamicsDimension="rate"/>'
+        '<SpeedActionTarget><AbsoluteTargetSpeed value="20"/></SpeedActionTarget>'
+        "</SpeedAction></LongitudinalAction></PrivateAction></Private>"
+    )
+    path = scenario(
+        tmp_path,
+        init=LANE_START.format(name="Ego", position=EGO_START) + gradual,
+        maneuvers='<Maneuver name="M">'
+        + SPEED_EVENT.format(
+            name="Slow",
+            speed=5,
+            condition='<SimulationTimeCondition value="10" rule="greaterThan"/>',
+        )
+        + "</Maneuver>",
+    )
+    imported = import_file(path)
+    ego = actor(imported.scenario, "Ego")
+    # esmini starts the car at rest and speeds it up at 4 m/s² (20 m/s after 5 s).
+    assert ego.initialSpeed is None or ego.initialSpeed.value == 0.0
+    speed_up = next(n for n in imported.scenario.nodes if isinstance(n, scm.Accelerate))
+    assert isinstance(speed_up.incoming[0].source, scm.RootNode)
+    assert (speed_up.targetSpeed.value, speed_up.rate.value) == (20.0, 4.0)
+    # The later change is read from 20 m/s: down to 5 is a deceleration.
+    assert any(isinstance(n, scm.Decelerate) for n in imported.scenario.nodes)

@@ -56,7 +56,10 @@ class Storyboard:
     def collect(self) -> None:
         """Index every story element by name; each actor starts at its initial speed."""
         for actor in self.build.actors.values():
-            self.motion.speed[str(actor.name)] = params.concrete(actor, "initialSpeed")
+            name = str(actor.name)
+            self.motion.speed[name] = self.build.init_speeds.get(
+                name, params.concrete(actor, "initialSpeed")
+            )
         storyboard = self.build.source.root.find("Storyboard")
         assert storyboard is not None
         for story in storyboard.iterchildren("Story"):
