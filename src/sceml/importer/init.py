@@ -78,7 +78,11 @@ def _private(build: Build, actor: scm.Actor, private: etree._Element) -> bool:
     if speed is None or target is None:
         return False
     dynamics = speed.find("SpeedActionDynamics")
-    if dynamics is not None and dynamics.get("dynamicsShape") != "step":
+    if (
+        dynamics is not None
+        and dynamics.get("dynamicsShape") != "step"
+        and number(dynamics, "value", 0.0) != 0  # zero time or distance: a step after all
+    ):
         return _gradual(build, actor, private, speed)
     actor.initialSpeed = traced.value(number(target, "value"))
     build.report.add("mapped", f"{actor.name}: initial speed", build.where(speed))
