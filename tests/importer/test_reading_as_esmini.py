@@ -394,3 +394,12 @@ def test_a_gradual_init_speed_change_is_a_maneuver_from_the_start(tmp_path: Path
     assert (speed_up.targetSpeed.value, speed_up.rate.value) == (20.0, 4.0)
     # The later change is read from 20 m/s: down to 5 is a deceleration.
     assert any(isinstance(n, scm.Decelerate) for n in imported.scenario.nodes)
+
+
+def test_a_lane_offset_reaching_into_the_next_lane_is_that_lane(tmp_path: Path) -> None:
+    # Lane -1's centre is t = -1.75; 3.5 m further right is -5.25, the centre of lane -2.
+    start, _ = start_of(tmp_path, '<LanePosition roadId="1" laneId="-1" s="70" offset="-3.5"/>')
+    assert lane(start) == ("1", -2, 70.0, 0.0)
+    # Within its lane, a position stays as written.
+    start, _ = start_of(tmp_path, '<LanePosition roadId="1" laneId="-1" s="70" offset="-1"/>')
+    assert lane(start) == ("1", -1, 70.0, -1.0)

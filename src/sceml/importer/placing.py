@@ -18,6 +18,7 @@ from lxml import etree
 import scemlmodel as scm
 
 from ..maps.model import PositionError, WorldPose
+from . import traced
 from .context import Build, last_name
 from .positions import number, position
 
@@ -49,6 +50,8 @@ def place(build: Build, holder: etree._Element | None, *, initial: bool) -> scm.
     `initial`: read in Init, where relative positions can be resolved.
     """
     plain = position(holder)
+    if isinstance(plain, scm.LanePosition) and build.road_map is not None:
+        return _in_its_lane(build, plain, holder)
     if plain is not None or holder is None:
         return plain
     element = holder if holder.tag == "Position" else holder.find("Position")
@@ -69,6 +72,32 @@ def place(build: Build, holder: etree._Element | None, *, initial: bool) -> scm.
             build.where(kind),
         )
     return made
+
+
+def _in_its_lane(
+    build: Build, given: scm.LanePosition, holder: etree._Element | None
+) -> scm.LanePosition:
+    """A lane position whose offset reaches into another lane, as that lane's position (the
+    same point: players place it there, SceML's map rules want the lane it lies in)."""
+    assert build.road_map is not None
+    offset = float(given.offset.value) if given.offset is not None else 0.0
+    try:
+        band = build.road_map.band(str(given.roadId), int(given.laneId), float(given.s.value))
+        if abs(offset) <= band.width / 2 + 1e-6:
+            return given
+        moved = _on_road(build, str(given.roadId), float(given.s.value), band.centre + offset)
+    except (PositionError, ValueError):
+        return given
+    if moved is None or isinstance(given.s.value, traced.Traced):
+        return given  # off the road, or a distributed s: left as written
+    where = None if holder is None else holder.find(".//LanePosition")
+    build.report.add(
+        "guessed",
+        f"lane {given.laneId} with offset {offset:g} m lies in lane {moved.laneId}: "
+        f"read as {_text(moved)}",
+        None if where is None else build.where(where),
+    )
+    return moved
 
 
 def _compute(build: Build, kind: etree._Element) -> scm.Position | None:
