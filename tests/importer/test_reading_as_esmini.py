@@ -403,3 +403,30 @@ def test_a_lane_offset_reaching_into_the_next_lane_is_that_lane(tmp_path: Path) 
     # Within its lane, a position stays as written.
     start, _ = start_of(tmp_path, '<LanePosition roadId="1" laneId="-1" s="70" offset="-1"/>')
     assert lane(start) == ("1", -1, 70.0, -1.0)
+
+
+def test_with_a_time_limit_too_the_other_branches_end_the_run_only_after_it(
+    tmp_path: Path,
+) -> None:
+    path = scenario(
+        tmp_path,
+        maneuvers='<Maneuver name="M">'
+        + SPEED_EVENT.format(name="Go", speed=10, condition=AT_START)
+        + SPEED_EVENT.format(
+            name="Later",
+            speed=0,
+            condition='<SimulationTimeCondition value="5" rule="greaterThan"/>',
+        )
+        + "</Maneuver>",
+        stop='<ConditionGroup><Condition name="Done" delay="0" conditionEdge="rising">'
+        '<ByValueCondition><StoryboardElementStateCondition storyboardElementType="event" '
+        'storyboardElementRef="Go" state="endTransition"/></ByValueCondition></Condition>'
+        '</ConditionGroup><ConditionGroup><Condition name="Time" delay="0" conditionEdge="rising">'
+        '<ByValueCondition><SimulationTimeCondition value="300" rule="greaterThan"/>'
+        "</ByValueCondition></Condition></ConditionGroup>",
+    )
+    imported = import_file(path)
+    rest = next(n for n in imported.scenario.nodes if n.name == "branches_done")
+    waits = {f.source.eClass.name: f.source for f in rest.incoming}
+    assert set(waits) == {"Stop", "TimeElapsed"}
+    assert waits["TimeElapsed"].duration.value == 300.0

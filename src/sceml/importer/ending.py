@@ -52,6 +52,13 @@ def read_stop(build: Build, storyboard: Storyboard) -> None:
             + (f" and {min(limits):g} s" if limits else ""),
         )
     elif others:
+        if limits:
+            # With a time limit too, the original runs on to it when the StopTrigger's
+            # elements never finish: the other branches end the run only once it has passed.
+            limit = min(limits)
+            others.append(
+                trigger.timed(build.root, limit, "stop_time", "TimeElapsed", trigger.actor)
+            )
         ends = _stop_or_rest(build, ends, others)
         build.report.add(
             "guessed",
