@@ -430,3 +430,29 @@ def test_with_a_time_limit_too_the_other_branches_end_the_run_only_after_it(
     waits = {f.source.eClass.name: f.source for f in rest.incoming}
     assert set(waits) == {"Stop", "TimeElapsed"}
     assert waits["TimeElapsed"].duration.value == 300.0
+
+
+def test_the_conditions_of_one_group_are_a_group_not_a_chain(tmp_path: Path) -> None:
+    def speed(name: str, value: int) -> str:
+        return (
+            f'<Condition name="{name}" delay="0" conditionEdge="none"><ByEntityCondition>'
+            '<TriggeringEntities triggeringEntitiesRule="any"><EntityRef entityRef="Ego"/>'
+            f'</TriggeringEntities><EntityCondition><SpeedCondition value="{value}" '
+            'rule="greaterThan"/></EntityCondition></ByEntityCondition></Condition>'
+        )
+
+    path = scenario(
+        tmp_path,
+        stop='<ConditionGroup><Condition name="Late" delay="0" conditionEdge="none">'
+        '<ByValueCondition><StoryboardElementStateCondition storyboardElementType="event" '
+        'storyboardElementRef="Go" state="completeState"/></ByValueCondition></Condition>'
+        f"{speed('Fast', 8)}{speed('Faster', 9)}</ConditionGroup>",
+    )
+    imported = import_file(path)
+    checks = [n for n in imported.scenario.nodes if isinstance(n, scm.SpeedCondition)]
+    go = next(n for n in imported.scenario.nodes if isinstance(n, scm.Accelerate))
+    # Both speeds are watched from the moment Go has finished, side by side, and meet in one join.
+    assert sorted(c.name for c in checks) == ["Fast", "Faster"]
+    assert all([f.source for f in c.incoming] == [go] for c in checks)
+    joins = {f.target.name for c in checks for f in c.outgoing}
+    assert len(joins) == 1
