@@ -93,7 +93,7 @@ def import_command(
         f"{imported.report.version}); {counts['opaque']} kept opaque, {counts['guessed']} "
         f"guessed{logical}"
     )
-    document = load_scenario(output)
+    document = load_scenario(output, allow=[*allow, *catalog_paths])
     diagnostics = validate(document.root, document=document)
     echo_diagnostics([d for d in diagnostics if d.severity is not Severity.INFO], document, output)
     if any(d.severity is Severity.ERROR for d in diagnostics):
