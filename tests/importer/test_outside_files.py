@@ -98,13 +98,14 @@ HAND_WRITTEN = {
             "Follow",
             "JoinAllFinished",
             "OpaqueAction",
+            # A freespace time to collision fires at another time than SceML's: kept as written.
+            "OpaqueAction",
             "RootNode",
             "Stop",
             "Stop",
             "TimeElapsed",
-            "TimeToCollision",
         ],
-        {"Action ActivateControllerAction"},
+        {"Action ActivateControllerAction", "Condition TimeToCollisionCondition"},
     ),
     "alks-lane-keeping": (
         "1.3",
