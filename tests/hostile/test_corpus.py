@@ -44,6 +44,7 @@ ENTRY_POINTS: dict[str, Callable[[Path, Path], list[str]]] = {
     "simulate": lambda file, out: ["simulate", str(file), "-o", str(out / "run.html")],
     "explore": lambda file, out: ["explore", str(file), "--budget", "2", "-o", str(out / "x")],
     "import": lambda file, out: ["import", str(file), "-o", str(out / "imported.xmi")],
+    "migrate": lambda file, out: ["migrate", str(file), "-o", str(out / "migrated.xmi")],
     "limits": lambda file, out: [
         "validate",
         "--limits",
@@ -206,7 +207,7 @@ def test_100k_nested_elements_are_a_clean_error(tmp_path: Path) -> None:
     deep = tmp_path / "deep.xmi"
     body = "<nodes>" * 100_000 + "</nodes>" * 100_000
     deep.write_text(
-        f'<?xml version="1.0"?>\n<s:Scenario xmlns:s="https://sceml.org/metamodel/1.0">{body}</s:Scenario>'
+        f'<?xml version="1.0"?>\n<s:Scenario xmlns:s="https://sceml.org/metamodel/1.1">{body}</s:Scenario>'
     )
     exit_code, output = run(["info", str(deep)])
     assert exit_code == 2 and "Excessive depth" in output

@@ -31,6 +31,7 @@ COMMANDS: dict[str, tuple[Path, Callable[[Path], list[str]]]] = {
     "render": (CONCRETE, lambda out: ["-o", str(out / "a.svg")]),
     "report": (CONCRETE, lambda out: ["-o", str(out / "a.html")]),
     "flatten": (CONCRETE, lambda out: ["-o", str(out / "a.xmi")]),
+    "migrate": (CONCRETE, lambda out: ["-o", str(out / "m.xmi")]),
     "check-xosc": (XOSC, lambda out: ["--no-quality-checker", "-o", str(out / "report.txt")]),
     "import": (XOSC, lambda out: ["-o", str(out / "i.xmi")]),
     "concretize": (
@@ -112,7 +113,13 @@ def files(folder: Path) -> list[Path]:
 
 def test_every_command_is_scanned() -> None:
     # `edit` is scanned by test_edit_refuses_bad_input_before_serving.
-    assert set(COMMANDS) == set(_leaf_commands()) - {"dev generate", "dev class-diagram", "edit"}
+    assert set(COMMANDS) == set(_leaf_commands()) - {
+        "dev generate",
+        "dev check-release",
+        "dev release",
+        "dev class-diagram",
+        "edit",
+    }
 
 
 @pytest.mark.parametrize("command", sorted(COMMANDS))

@@ -171,14 +171,18 @@ def test_the_comparison_sees_a_changed_distribution(tmp_path: Path, canonical) -
 def test_the_import_validates_and_samples(tmp_path: Path) -> None:
     pvd = _export_distribution(EXAMPLES / "uis2-logical.xmi", tmp_path / "out")
     output = tmp_path / "uis2.xmi"
-    result = CliRunner().invoke(cli, ["import", str(pvd), "-o", str(output), "--report"])
+    # The export names the repository's map, outside tmp_path: allowed, it is read.
+    maps = str(EXAMPLES.parent / "maps")
+    result = CliRunner().invoke(
+        cli, ["import", str(pvd), "-o", str(output), "--report", "--allow", maps]
+    )
     assert result.exit_code == 0, result.output
     assert "6 places logical" in result.output
     assert (
         "CrossingManeuver_1_Accelerate_1.targetSpeed = $CrossingManeuver_1_crossingSpeed: U(1, 2)"
         in (result.output)
     )
-    document = io.load_scenario(output)
+    document = io.load_scenario(output, allow=[EXAMPLES.parent / "maps"])
     errors = [d for d in validate(document.root, document=document) if d.severity is Severity.ERROR]
     assert errors == []
     samples = tmp_path / "samples"
@@ -195,6 +199,8 @@ def test_the_import_validates_and_samples(tmp_path: Path) -> None:
             "1",
             "--executor",
             "local",
+            "--allow",
+            str(EXAMPLES.parent / "maps"),
             "-o",
             str(samples),
         ],

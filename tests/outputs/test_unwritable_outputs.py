@@ -35,6 +35,7 @@ WRITERS: dict[str, Callable[[Path], list[str]]] = {
     "render": lambda out: ["render", str(UIS1), "-o", str(out / "a.svg")],
     "report": lambda out: ["report", str(UIS1), "-o", str(out / "a.html")],
     "flatten": lambda out: ["flatten", str(UIS1), "-o", str(out / "a.xmi")],
+    "migrate": lambda out: ["migrate", str(UIS1), "-o", str(out / "a.xmi")],
     "concretize": lambda out: ["concretize", str(LOGICAL), *CONCRETE_VALUES, "-o", str(out / "a")],
     "promote": lambda out: [
         "promote",

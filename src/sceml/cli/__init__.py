@@ -28,6 +28,7 @@ COMMANDS = {
     "export-distribution": "export_logical:export_distribution_command",
     "module": "module:module",
     "flatten": "flatten:flatten",
+    "migrate": "migrate:migrate",
     "dev": "dev:dev",
     "edit": "edit:edit",
 }

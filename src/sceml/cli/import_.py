@@ -9,7 +9,7 @@ import click
 
 from ..diagnostics import Severity
 from ..importer import import_to_file
-from ..io import load_scenario
+from ..io import load_scenario, reading_roots
 from ..validation import validate
 from .common import SceMLCommand, allow_option, echo_diagnostics
 
@@ -93,7 +93,13 @@ def import_command(
         f"{imported.report.version}); {counts['opaque']} kept opaque, {counts['guessed']} "
         f"guessed{logical}"
     )
-    document = load_scenario(output, allow=[*allow, *catalog_paths])
+    # The written model names the map the import may read (inside the input's folders, --allow
+    # and --catalog-path, or the --map given): validating it reads that map again. A LogicFile
+    # outside them the import did not open, and the validation does not open it either.
+    given_map = [] if map_path is None else [map_path.resolve().parent]
+    document = load_scenario(
+        output, allow=[*reading_roots(file), *allow, *catalog_paths, *given_map]
+    )
     diagnostics = validate(document.root, document=document)
     echo_diagnostics([d for d in diagnostics if d.severity is not Severity.INFO], document, output)
     if any(d.severity is Severity.ERROR for d in diagnostics):

@@ -18,13 +18,14 @@ from . import (
     simultaneity,
     structure,
 )
-from .engine import INTERNAL_ERROR, is_valid, iter_diagnostics, validate
+from .engine import INTERNAL_ERROR, OLDER_RELEASE, is_valid, iter_diagnostics, validate
 from .limits import DEFAULT_LIMITS, Limits, LimitsError, load_limits
 from .registry import REGISTRY, Registry, Rule, constraint
 
 __all__ = [
     "DEFAULT_LIMITS",
     "INTERNAL_ERROR",
+    "OLDER_RELEASE",
     "REGISTRY",
     "Limits",
     "LimitsError",
