@@ -24,8 +24,8 @@ def test_import_writes_the_scenario_and_prints_the_report(tmp_path: Path) -> Non
     assert result.exit_code == 0, result.output
     assert "OpenSCENARIO 1.1; 11 mapped, 1 opaque, 3 guessed, 0 not represented" in result.output
     assert (
-        "line 99: CutInStartCondition: <Condition TimeHeadwayCondition> kept verbatim"
-        in result.output
+        "line 99: CutInStartCondition: <Condition TimeHeadwayCondition entityRef=Target "
+        "value=0.4 freespace=false alongRoute=true rule=greaterThan> kept verbatim" in result.output
     )
     assert "catalog entries used: VehicleCatalog/car_white" in result.output
     assert f"{output}: 7 nodes from" in result.output

@@ -140,7 +140,7 @@ def test_the_exported_distribution_imports_as_the_logical_scenario(
 ) -> None:
     logical = EXAMPLES / f"{name}-logical.xmi"
     pvd = _export_distribution(logical, tmp_path / "out")
-    imported = import_file(pvd)
+    imported = import_file(pvd, allow=[REPO / "maps"])
     assert imported.scenario.nodes[0].level is scm.AbstractionLevel.logical
     same(flatten(io.load(logical).root), imported.scenario)
     # A SceML export maps completely; only the run count and seed have no place in the model.
@@ -179,7 +179,11 @@ def test_the_comparison_sees_a_changed_distribution(tmp_path: Path, canonical) -
 def test_the_import_validates_and_samples(tmp_path: Path) -> None:
     pvd = _export_distribution(EXAMPLES / "uis2-logical.xmi", tmp_path / "out")
     output = tmp_path / "uis2.xmi"
-    result = CliRunner().invoke(cli, ["import", str(pvd), "-o", str(output), "--report"])
+    # The export names the repository's map, outside tmp_path: allowed, it is read.
+    maps = str(EXAMPLES.parent / "maps")
+    result = CliRunner().invoke(
+        cli, ["import", str(pvd), "-o", str(output), "--report", "--allow", maps]
+    )
     assert result.exit_code == 0, result.output
     assert "6 places logical" in result.output
     assert (

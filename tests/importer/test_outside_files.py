@@ -83,14 +83,19 @@ HAND_WRITTEN = {
             "FollowTrajectory",
             "InLocationRadius",
             "JoinAllFinished",
+            # The end: the StopTrigger, or the unnamed branches once its 25 s have passed.
+            "JoinAllFinished",
             "OpaqueAction",
+            "OpaqueAction",
+            # Between reference points (freespace="false"): SceML's is between the boxes, so it
+            # is kept as written rather than fire at another time.
             "OpaqueAction",
             "RootNode",
             "Stop",
             "TimeElapsed",
-            "TimeToCollision",
+            "TimeElapsed",
         ],
-        {"Action VisibilityAction"},
+        {"Action VisibilityAction", "Condition TimeToCollisionCondition"},
     ),
     "follow-and-brake": (
         "1.2",
@@ -104,6 +109,7 @@ HAND_WRITTEN = {
             "Stop",
             "Stop",
             "TimeElapsed",
+            # Between the boxes (freespace), as SceML's TimeToCollision measures.
             "TimeToCollision",
         ],
         {"Action ActivateControllerAction"},
@@ -115,11 +121,14 @@ HAND_WRITTEN = {
             "Decelerate",
             "EndNode",
             "InVehicleRadius",
+            # The end: the StopTrigger, or the unnamed branch once its 60 s have passed.
+            "JoinAllFinished",
             "LaneChange",
             "OpaqueAction",
             "OpaqueAction",
             "RootNode",
             "SpeedCondition",
+            "TimeElapsed",
             "TimeElapsed",
         ],
         {"Action LaneOffsetAction", "Condition TraveledDistanceCondition"},
@@ -397,12 +406,14 @@ def test_scenariogeneration_cut_in(version: int, tmp_path: Path) -> None:
     source = tmp_path / "cut-in.xosc"
     sg_cut_in(source, version)
     imported = import_file(source)
+    # The StopTrigger is only a time: the end also waits for that time (the run lasts it).
     assert kinds(imported.scenario) == [
         "Decelerate",
         "EndNode",
         "InVehicleRadius",
         "OpaqueAction",
         "RootNode",
+        "TimeElapsed",
     ]
     # An absolute target lane has no SceML kind: kept, with its line.
     assert opaque_tags(imported.scenario) == {"Action LaneChangeAction"}
@@ -424,6 +435,7 @@ def test_scenariogeneration_pedestrian_crossing(version: int, tmp_path: Path) ->
         "InVehicleRadius",
         "RootNode",
         "Stop",
+        "TimeElapsed",
     ]
     cross = next(n for n in imported.scenario.nodes if isinstance(n, scm.Cross))
     assert cross.referenceActor.name == "walker"
