@@ -1,0 +1,200 @@
+"""Path changes: turns through junctions, lane changes, and crossings by people and bikes.
+
+They are found where the heading (of the smoothed motion) turns faster than a threshold. What
+the change was is told by how much the heading turned in the end and how far the actor moved
+sideways: a lasting turn is TurnLeft or TurnRight (for people and bikes off a junction: Cross);
+a sideways move with the heading back as before is a LaneChange.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..maps import RoadMap
+from .events import Event
+from .motion import Array, Motion
+from .thresholds import Thresholds
+
+#: Actor kinds whose lasting change of heading off a junction is a crossing.
+CROSSERS = ("Pedestrian", "Bicycle")
+#: A crossing needs only this change of heading (rad): a bike veers across the road.
+_CROSS_ANGLE = 0.15
+
+
+def path_events(
+    motion: Motion, kind: str, thresholds: Thresholds, road_map: RoadMap | None
+) -> list[Event]:
+    """The actor's path changes in time order."""
+    step = motion.step
+    moving = motion.speed > thresholds.standing_speed
+    rate = np.gradient(motion.heading, step)
+    turning = (np.abs(rate) > thresholds.yaw_rate) & moving
+    settle = max(1, int(round(thresholds.smoothing_window / step / 2)))
+    events: list[Event] = []
+    for a, b in _runs(turning, gap=max(1, int(0.5 / step))):
+        first, last = max(a - settle, 0), min(b + settle, len(motion.times) - 1)
+        turned = float(motion.heading[last] - motion.heading[first])
+        event = _classify(motion, kind, first, last, turned, thresholds, road_map)
+        if event is not None:
+            events.append(event)
+    if kind == "Pedestrian" and not any(e.kind == "Cross" for e in events) and moving.any():
+        events.append(_walk(motion, int(np.argmax(moving)), len(motion.times) - 1, thresholds))
+    _finish_destinations(motion, events, thresholds)
+    return sorted(events, key=lambda e: e.start)
+
+
+def _classify(
+    motion: Motion,
+    kind: str,
+    first: int,
+    last: int,
+    turned: float,
+    thresholds: Thresholds,
+    road_map: RoadMap | None,
+) -> Event | None:
+    times = motion.times
+    if kind in CROSSERS and abs(turned) > _CROSS_ANGLE and not _in_junction(motion, first, last, road_map):
+        middle = _midway(motion, first, last)
+        return Event("Cross", motion.name, middle, middle, {"tolerance": thresholds.arrival_tolerance})
+    if abs(turned) > thresholds.turn_angle:
+        side = "TurnLeft" if turned > 0 else "TurnRight"
+        return Event(
+            side,
+            motion.name,
+            float(times[first]),
+            float(times[last]),
+            {"tolerance": thresholds.arrival_tolerance},
+            flexible=True,
+        )
+    return _lane_change(motion, first, last, thresholds)
+
+
+def _lane_change(motion: Motion, first: int, last: int, thresholds: Thresholds) -> Event | None:
+    """A sideways move (against the heading before it) of at least the threshold, fitted as the
+    half cosine over a distance that lane changes follow."""
+    h0 = float(motion.heading[first])
+    reach = int(round(2.0 / motion.step))
+    lo, hi = max(first - reach, 0), min(last + reach, len(motion.times) - 1)
+    dx, dy = motion.x[lo : hi + 1] - motion.x[lo], motion.y[lo : hi + 1] - motion.y[lo]
+    sideways = -dx * math.sin(h0) + dy * math.cos(h0)
+    arc = motion.arc[lo : hi + 1]
+    shift = float(sideways[-1] - sideways[0])
+    if abs(shift) < thresholds.lane_change_offset:
+        return None
+    fitted = _fit_half_cosine(arc, sideways, float(motion.arc[first]), float(motion.arc[last]))
+    s1, length = fitted
+    t1 = float(np.interp(s1, motion.arc, motion.times))
+    t2 = float(np.interp(s1 + length, motion.arc, motion.times))
+    return Event(
+        "LaneChange",
+        motion.name,
+        t1,
+        t2,
+        {"direction": "left" if shift > 0 else "right", "distance": round(length, 1)},
+        finish=t2,
+    )
+
+
+def _fit_half_cosine(arc: Array, offset: Array, s_first: float, s_last: float) -> tuple[float, float]:
+    """(start, length) along the path of the half cosine c + d (1 - cos(pi w)) / 2 that fits
+    the sideways offset best; each candidate is a linear least-squares problem in (c, d)."""
+    pad = max((s_last - s_first) / 2, 2.0)
+    starts = np.arange(s_first - pad, s_first + pad, 0.25)
+    lengths = np.arange(max(s_last - s_first - 2 * pad, 2.0), s_last - s_first + 2 * pad, 0.25)
+    s1, length = (g.ravel() for g in np.meshgrid(starts, lengths, indexing="ij"))
+    w = np.clip((arc[None, :] - s1[:, None]) / length[:, None], 0.0, 1.0)
+    shape = (1 - np.cos(np.pi * w)) / 2
+    n = arc.size
+    sum_shape, sum_square = shape.sum(axis=1), (shape**2).sum(axis=1)
+    sum_y, sum_shape_y = offset.sum(), shape @ offset
+    determinant = n * sum_square - sum_shape**2
+    d = (n * sum_shape_y - sum_shape * sum_y) / np.where(determinant == 0, 1, determinant)
+    c = (sum_y - d * sum_shape) / n
+    errors = ((c[:, None] + d[:, None] * shape - offset[None, :]) ** 2).sum(axis=1)
+    best = int(np.argmin(errors))
+    return float(s1[best]), float(length[best])
+
+
+def _walk(motion: Motion, first: int, last: int, thresholds: Thresholds) -> Event:
+    """A pedestrian that walks off without turning: a crossing from its first step."""
+    start = float(motion.times[first])
+    return Event(
+        "Cross", motion.name, start, start, {"tolerance": thresholds.arrival_tolerance}, flexible=True
+    )
+
+
+def _midway(motion: Motion, first: int, last: int) -> float:
+    """When the heading was halfway between its values before and after a quick change: the
+    moment a sharp turn happened, which the smoothing spreads over its window."""
+    before, after = motion.heading[first], motion.heading[last]
+    middle = (before + after) / 2
+    span = motion.heading[first : last + 1]
+    crossed = np.nonzero((span - middle) * np.sign(after - before) >= 0)[0]
+    k = first + int(crossed[0]) if len(crossed) else (first + last) // 2
+    return float(motion.times[k])
+
+
+def _in_junction(motion: Motion, first: int, last: int, road_map: RoadMap | None) -> bool:
+    if road_map is None:
+        return False
+    k = (first + last) // 2
+    found = road_map.world_to_lane(float(motion.x[k]), float(motion.y[k]))
+    return bool(found) and all(road_map.road(c.road_id).junction != "-1" for c in found)
+
+
+def _finish_destinations(motion: Motion, events: list[Event], thresholds: Thresholds) -> None:
+    """Give turns and crossings a destination and the time they will finish in a replay.
+
+    A turn ends a little past where its heading settled; a crossing where it stops going
+    straight: at the next change of path, where it stops, or where the recording ends.
+    """
+    events.sort(key=lambda e: e.start)
+    tolerance = thresholds.arrival_tolerance
+    for i, event in enumerate(events):
+        if event.kind not in ("TurnLeft", "TurnRight", "Cross"):
+            continue
+        if event.kind == "Cross":
+            later = [e.start for e in events[i + 1 :]]
+            end = _last_moving(motion, event.start, later[0] if later else None, thresholds)
+        else:
+            end_arc = motion.at(motion.arc, event.end) + thresholds.turn_settle
+            end = float(np.interp(end_arc, motion.arc, motion.times))
+        x, y = motion.position(end)
+        heading = motion.at(motion.heading, end)
+        event.destination = (x, y, heading)
+        event.end = max(event.end, event.start)
+        event.finish = _arrival(motion, event.start, x, y, tolerance)
+
+
+def _last_moving(motion: Motion, start: float, until: float | None, thresholds: Thresholds) -> float:
+    k0 = motion.index(start)
+    k1 = motion.index(until) if until is not None else len(motion.times) - 1
+    moving = np.nonzero(motion.speed[k0 : k1 + 1] > thresholds.standing_speed)[0]
+    return float(motion.times[k0 + int(moving[-1])]) if len(moving) else float(motion.times[k1])
+
+
+def _arrival(motion: Motion, start: float, x: float, y: float, tolerance: float) -> float:
+    """The first time from `start` the actor is within `tolerance` of (x, y)."""
+    k0 = motion.index(start)
+    near = np.nonzero(np.hypot(motion.x[k0:] - x, motion.y[k0:] - y) <= tolerance)[0]
+    return float(motion.times[k0 + int(near[0])]) if len(near) else float(motion.times[-1])
+
+
+def _runs(mask: Array, gap: int) -> list[tuple[int, int]]:
+    """Index spans [a, b] where mask holds, joining runs apart by at most `gap` samples."""
+    spans: list[tuple[int, int]] = []
+    k, n = 0, len(mask)
+    while k < n:
+        if not mask[k]:
+            k += 1
+            continue
+        a = k
+        while k < n and mask[k]:
+            k += 1
+        if spans and a - spans[-1][1] <= gap:
+            spans[-1] = (spans[-1][0], k - 1)
+        else:
+            spans.append((a, k - 1))
+    return spans

@@ -1,0 +1,143 @@
+"""From a recording to a concrete SceML scenario: smooth, segment, explain, build, replay."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+import scemlmodel as scm
+
+from ..build import ScenarioBuilder
+from ..errors import ArgumentError
+from ..maps import RoadMap
+from ..validation.limits import Limits
+from .actors import ActorSpec, actor_kind, start_position
+from .assemble import Inferred, add_actor_graph
+from .events import Event
+from .lateral import path_events
+from .longitudinal import speed_events, within_limits
+from .motion import Motion, sample_step, smooth
+from .recording import Recording
+from .replay import ReplayFit, replay
+from .thresholds import Thresholds
+
+
+@dataclass(frozen=True)
+class ExtractedActor:
+    """An actor as extracted: its kind, whether it is the ego, and its maneuvers in order."""
+
+    name: str
+    kind: str
+    ego: bool
+    initial_speed: float
+    maneuvers: tuple[Event, ...]
+
+
+@dataclass(frozen=True)
+class Extraction:
+    """The scenario extracted from a recording, with what was inferred and how well it replays."""
+
+    scenario: scm.Scenario
+    recording: Recording
+    actors: tuple[ExtractedActor, ...]
+    inferred: tuple[Inferred, ...]
+    replay: ReplayFit | None
+    thresholds: Thresholds
+    notes: tuple[str, ...] = field(default=())
+
+
+def extract(
+    recording: Recording,
+    road_map: RoadMap | None = None,
+    *,
+    map_reference: str | None = None,
+    name: str = "Extracted",
+    thresholds: Thresholds | None = None,
+    actors: Sequence[ActorSpec] = (),
+    ego: str | None = None,
+    check_replay: bool = True,
+    limits: Limits | None = None,
+) -> Extraction:
+    """Extract a concrete scenario from a recording driven on `road_map`.
+
+    `map_reference` is the map as the scenario names it (a path relative to where the
+    scenario will be saved); `actors` set kinds and sizes the recording lacks; `ego` names
+    the ego (else the recording's, else the first actor). Rates are kept within `limits`
+    (the plausibility limits validation applies). With `check_replay`, the scenario is run in
+    the preview and compared with the recording.
+    """
+    thresholds = thresholds or Thresholds()
+    limits = limits or Limits()
+    given = {spec.name: spec for spec in actors}
+    unknown = sorted(set(given) - {t.name for t in recording.tracks})
+    if ego is not None and ego not in {t.name for t in recording.tracks}:
+        unknown.append(ego)
+    if unknown:
+        names = ", ".join(t.name for t in recording.tracks)
+        raise ArgumentError(f"no actor {', '.join(unknown)} in the recording; it has {names}")
+    step = min(sample_step(t) for t in recording.tracks)
+    motions = {t.name: smooth(t, thresholds, step) for t in recording.tracks}
+    ego = ego or next((t.name for t in recording.tracks if t.ego), recording.tracks[0].name)
+    builder = ScenarioBuilder(
+        name,
+        map=map_reference,
+        level="concrete",
+        max_duration=math.ceil(recording.end - recording.start + 0.5),
+        description=f"Extracted from {recording.source} ({recording.format}) by sceml extract.",
+    )
+    builder.environment()
+    found: list[ExtractedActor] = []
+    models: dict[str, scm.Actor] = {}
+    plans: dict[str, list[Event]] = {}
+    for track in recording.tracks:
+        motion = motions[track.name]
+        spec = given.get(track.name)
+        kind = actor_kind(track, motion, spec, ego=track.name == ego)
+        speeds = speed_events(motion, thresholds)
+        within_limits(
+            speeds,
+            limits.limit(kind, "max_acceleration"),
+            limits.limit(kind, "max_deceleration"),
+        )
+        events = sorted(
+            speeds + path_events(motion, kind, thresholds, road_map), key=lambda e: e.start
+        )
+        speed = _initial_speed(motion, events)
+        size = {
+            key: value
+            for key, value in (
+                ("length", spec.length if spec and spec.length else track.length),
+                ("width", spec.width if spec and spec.width else track.width),
+            )
+            if value is not None
+        }
+        models[track.name] = builder.actor(
+            kind,
+            track.name,
+            ego=track.name == ego,
+            start=start_position(motion, kind, road_map),
+            speed=round(speed, 2),
+            **size,
+        )
+        plans[track.name] = events
+        found.append(ExtractedActor(track.name, kind, track.name == ego, speed, tuple(events)))
+    inferred: list[Inferred] = []
+    for track in recording.tracks:
+        inferred += add_actor_graph(
+            builder, models[track.name], plans[track.name], motions, models, ego, thresholds
+        )
+    if not builder.end.incoming:
+        builder.flow(builder.root, builder.end)  # nobody did anything: the scenario is the start
+    scenario = builder.scenario
+    fit = replay(scenario, recording, road_map) if check_replay else None
+    return Extraction(scenario, recording, tuple(found), tuple(inferred), fit, thresholds)
+
+
+def _initial_speed(motion: Motion, events: list[Event]) -> float:
+    """The speed at the start: before a speed change that starts at once, else as smoothed."""
+    t0 = float(motion.times[0])
+    for event in events:
+        if event.longitudinal and event.start <= t0 + 1e-9 and event.from_speed is not None:
+            return max(event.from_speed, 0.0)
+    return max(float(motion.speed[: max(1, int(0.5 / motion.step))].mean()), 0.0)
