@@ -103,7 +103,7 @@ def extract(
         events = sorted(
             speeds + path_events(motion, kind, thresholds, road_map), key=lambda e: e.start
         )
-        speed = _initial_speed(motion, events)
+        speed = _initial_speed(motion, events, thresholds.standing_speed)
         size = {
             key: value
             for key, value in (
@@ -134,10 +134,12 @@ def extract(
     return Extraction(scenario, recording, tuple(found), tuple(inferred), fit, thresholds)
 
 
-def _initial_speed(motion: Motion, events: list[Event]) -> float:
-    """The speed at the start: before a speed change that starts at once, else as smoothed."""
+def _initial_speed(motion: Motion, events: list[Event], standing: float) -> float:
+    """The speed at the start: before a speed change that starts at once, else as smoothed;
+    0 below the standing speed (what is left there is noise)."""
     t0 = float(motion.times[0])
+    speed = float(motion.speed[: max(1, int(0.5 / motion.step))].mean())
     for event in events:
         if event.longitudinal and event.start <= t0 + 1e-9 and event.from_speed is not None:
-            return max(event.from_speed, 0.0)
-    return max(float(motion.speed[: max(1, int(0.5 / motion.step))].mean()), 0.0)
+            speed = event.from_speed
+    return speed if speed > standing else 0.0
