@@ -28,12 +28,13 @@ def path_events(
 ) -> list[Event]:
     """The actor's path changes in time order."""
     step = motion.step
-    moving = motion.speed > thresholds.standing_speed
-    rate = np.gradient(motion.heading, step)
-    turning = (np.abs(rate) > thresholds.yaw_rate) & moving
+    moving = motion.moving
+    turning = (np.abs(motion.turn_rate) > thresholds.yaw_rate) & moving
     settle = max(1, int(round(thresholds.smoothing_window / step / 2)))
     events: list[Event] = []
     for a, b in _runs(turning, gap=max(1, int(0.5 / step))):
+        if b >= len(motion.times) - settle:
+            continue  # still turning when the recording ends (or the smoothing's edge)
         first, last = max(a - settle, 0), min(b + settle, len(motion.times) - 1)
         turned = float(motion.heading[last] - motion.heading[first])
         event = _classify(motion, kind, first, last, turned, thresholds, road_map)
@@ -171,7 +172,7 @@ def _finish_destinations(motion: Motion, events: list[Event], thresholds: Thresh
 def _last_moving(motion: Motion, start: float, until: float | None, thresholds: Thresholds) -> float:
     k0 = motion.index(start)
     k1 = motion.index(until) if until is not None else len(motion.times) - 1
-    moving = np.nonzero(motion.speed[k0 : k1 + 1] > thresholds.standing_speed)[0]
+    moving = np.nonzero(motion.moving[k0 : k1 + 1])[0]
     return float(motion.times[k0 + int(moving[-1])]) if len(moving) else float(motion.times[k1])
 
 

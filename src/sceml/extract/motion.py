@@ -25,7 +25,9 @@ class Motion:
     x: Array
     y: Array
     speed: Array
+    moving: NDArray[np.bool_]
     heading: Array
+    turn_rate: Array
     arc: Array
     along: Array
 
@@ -71,18 +73,35 @@ def smooth(track: Track, thresholds: Thresholds, step: float | None = None) -> M
     vx = savgol_filter(x, window, 3, deriv=1, delta=step, mode="interp")
     vy = savgol_filter(y, window, 3, deriv=1, delta=step, mode="interp")
     speed = np.hypot(vx, vy)
-    heading = _heading(track, times, xs, ys, speed, window // 2, thresholds.standing_speed)
+    moving = _moving(xs, ys, window // 2, step, thresholds.standing_speed)
+    heading = _heading(track, times, xs, ys, moving, window // 2)
+    turn_rate = savgol_filter(heading, window, 2, deriv=1, delta=step, mode="interp")
     lengths = np.hypot(np.diff(xs), np.diff(ys))
     # Standing still, the smoothed noise would add up to a distance never driven.
-    lengths[(speed[1:] + speed[:-1]) / 2 <= thresholds.standing_speed] = 0.0
+    lengths[~(moving[1:] | moving[:-1])] = 0.0
     arc = np.concatenate([[0.0], np.cumsum(lengths)])
     along = _along(x, y, xs, ys, arc, heading, thresholds.standing_speed, speed)
-    return Motion(track.name, times, xs, ys, speed, heading, arc, along)
+    return Motion(track.name, times, xs, ys, speed, moving, heading, turn_rate, arc, along)
 
 
-def _heading(
-    track: Track, times: Array, x: Array, y: Array, speed: Array, half: int, standing: float
-) -> Array:
+def _shifted(values: Array, by: int) -> Array:
+    """values[k + by], held at the ends."""
+    if by >= 0:
+        return np.concatenate([values[by:], np.repeat(values[-1], by)])
+    return np.concatenate([np.repeat(values[0], -by), values[:by]])
+
+
+def _moving(x: Array, y: Array, half: int, step: float, standing: float) -> NDArray[np.bool_]:
+    """Where the actor moves: the chord across the window is longer than standing would give.
+
+    The smoothed derivative would do on clean data, but on noisy data a standing actor's
+    derivative jitters past any small threshold; the chord averages over the whole window.
+    """
+    chord = np.hypot(_shifted(x, half) - _shifted(x, -half), _shifted(y, half) - _shifted(y, -half))
+    return np.asarray(chord > standing * 2 * half * step)
+
+
+def _heading(track: Track, times: Array, x: Array, y: Array, moving: NDArray[np.bool_], half: int) -> Array:
     """The direction of motion where the actor moves; held over standing stretches.
 
     It is the direction of the chord across the smoothing window, not of the smoothed
@@ -90,10 +109,9 @@ def _heading(
     backwards. Before the first motion the recorded heading (if any) is used, else the first
     direction of motion.
     """
-    moving = speed > standing
-    ahead = np.concatenate([x[half:], np.repeat(x[-1], half)]), np.concatenate([y[half:], np.repeat(y[-1], half)])
-    behind = np.concatenate([np.repeat(x[0], half), x[:-half]]), np.concatenate([np.repeat(y[0], half), y[:-half]])
-    raw = np.arctan2(ahead[1] - behind[1], ahead[0] - behind[0])
+    raw = np.arctan2(
+        _shifted(y, half) - _shifted(y, -half), _shifted(x, half) - _shifted(x, -half)
+    )
     if not moving.any():
         if track.heading is not None:
             return np.interp(times, track.times, track.heading)

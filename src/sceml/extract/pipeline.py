@@ -6,6 +6,8 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 
+import numpy as np
+
 import scemlmodel as scm
 
 from ..build import ScenarioBuilder
@@ -135,11 +137,14 @@ def extract(
 
 
 def _initial_speed(motion: Motion, events: list[Event], standing: float) -> float:
-    """The speed at the start: before a speed change that starts at once, else as smoothed;
-    0 below the standing speed (what is left there is noise)."""
+    """The speed at the start: before a speed change that starts at once, 0 for an actor that
+    stands (the smoothed speed of a standing actor is noise), else the median of its first
+    second."""
     t0 = float(motion.times[0])
-    speed = float(motion.speed[: max(1, int(0.5 / motion.step))].mean())
     for event in events:
         if event.longitudinal and event.start <= t0 + 1e-9 and event.from_speed is not None:
-            speed = event.from_speed
+            return event.from_speed if event.from_speed > standing else 0.0
+    if not motion.moving[0]:
+        return 0.0
+    speed = float(np.median(motion.speed[: max(1, int(1.0 / motion.step))]))
     return speed if speed > standing else 0.0

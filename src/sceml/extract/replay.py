@@ -9,7 +9,7 @@ import numpy as np
 import scemlmodel as scm
 
 from ..maps import RoadMap
-from ..simulate import simulate
+from ..simulate import Run, simulate
 from .recording import Recording
 
 
@@ -31,6 +31,7 @@ class ReplayFit:
     until: float
     replay_end: float
     end_reason: str
+    run: Run
 
     @property
     def largest(self) -> float:
@@ -52,4 +53,4 @@ def replay(scenario: scm.Scenario, recording: Recording, road_map: RoadMap | Non
         error = np.hypot(run.states[index, keep, 0] - x, run.states[index, keep, 1] - y)
         worst = int(np.argmax(error))
         fits.append(ActorFit(info.name, float(error[worst]), float(times[worst]), float(error.mean())))
-    return ReplayFit(tuple(fits), until, float(run.end_time), run.end_reason)
+    return ReplayFit(tuple(fits), until, float(run.end_time), run.end_reason, run)
