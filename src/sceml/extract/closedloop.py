@@ -15,7 +15,7 @@ tests/extract and benchmarks/extract_closed_loop.py use it.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -58,9 +58,18 @@ def recording_of(run: Run, *, noise: float = 0.0, every: int = 1, seed: int = 0)
     return Recording(tuple(tracks), run.scenario, "preview run")
 
 
-def signature(scenario: scm.Scenario, run: Run, thresholds: Thresholds | None = None) -> Signature:
-    """What the run of `scenario` shows (module uses are flattened as the preview does)."""
+def signature(
+    scenario: scm.Scenario, run: Run, thresholds: Thresholds | None = None, *, min_change: float | None = None
+) -> Signature:
+    """What the run of `scenario` shows (module uses are flattened as the preview does).
+
+    A speed change smaller than `min_change` (m/s; by default the extraction's threshold)
+    shows nothing: a comparison under noise sets it higher, where changes near the threshold
+    are seen or missed by chance.
+    """
     thresholds = thresholds or Thresholds()
+    if min_change is not None:
+        thresholds = replace(thresholds, min_speed_change=min_change)
     flat = flatten(scenario) if any(isinstance(n, scm.ModuleUse) for n in scenario.nodes) else scenario
     by_name = {str(n.name): n for n in flat.nodes}
     maneuvers: dict[str, list[str]] = {str(a.name): [] for a in scenario_actors(flat)}

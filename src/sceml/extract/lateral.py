@@ -36,7 +36,7 @@ def path_events(
         if b >= len(motion.times) - settle:
             continue  # still turning when the recording ends (or the smoothing's edge)
         first, last = max(a - settle, 0), min(b + settle, len(motion.times) - 1)
-        turned = float(motion.heading[last] - motion.heading[first])
+        turned = _turned(motion, first, last, 2 * settle)
         event = _classify(motion, kind, first, last, turned, thresholds, road_map)
         if event is not None:
             events.append(event)
@@ -72,20 +72,36 @@ def _classify(
     return _lane_change(motion, first, last, thresholds)
 
 
+def _turned(motion: Motion, first: int, last: int, span: int) -> float:
+    """How far the heading turned from before `first` to after `last`: the medians over `span`
+    samples either side, which noise moves less than single samples."""
+    before = motion.heading[max(first - span, 0) : first + 1]
+    after = motion.heading[last : last + span + 1]
+    moving_before = motion.moving[max(first - span, 0) : first + 1]
+    moving_after = motion.moving[last : last + span + 1]
+    if moving_before.any():
+        before = before[moving_before]
+    if moving_after.any():
+        after = after[moving_after]
+    return float(np.median(after) - np.median(before))
+
+
 def _lane_change(motion: Motion, first: int, last: int, thresholds: Thresholds) -> Event | None:
     """A sideways move (against the heading before it) of at least the threshold, fitted as the
-    half cosine over a distance that lane changes follow."""
+    half cosine over a distance that lane changes follow.
+
+    Only the turning stretch and a smoothing window either side are looked at, so the start of
+    a crossing or turn just after it does not count as sideways motion.
+    """
     h0 = float(motion.heading[first])
-    reach = int(round(2.0 / motion.step))
+    reach = max(1, int(round(thresholds.smoothing_window / motion.step)))
     lo, hi = max(first - reach, 0), min(last + reach, len(motion.times) - 1)
     dx, dy = motion.x[lo : hi + 1] - motion.x[lo], motion.y[lo : hi + 1] - motion.y[lo]
     sideways = -dx * math.sin(h0) + dy * math.cos(h0)
     arc = motion.arc[lo : hi + 1]
-    shift = float(sideways[-1] - sideways[0])
-    if abs(shift) < thresholds.lane_change_offset:
-        return None
-    fitted = _fit_half_cosine(arc, sideways, float(motion.arc[first]), float(motion.arc[last]))
-    s1, length = fitted
+    s1, length, shift = _fit_half_cosine(arc, sideways, float(motion.arc[first]), float(motion.arc[last]))
+    if abs(shift) < thresholds.lane_change_offset or length < 3 * abs(shift):
+        return None  # too little, or too abrupt for a lane change: noise
     t1 = float(np.interp(s1, motion.arc, motion.times))
     t2 = float(np.interp(s1 + length, motion.arc, motion.times))
     return Event(
@@ -98,9 +114,12 @@ def _lane_change(motion: Motion, first: int, last: int, thresholds: Thresholds) 
     )
 
 
-def _fit_half_cosine(arc: Array, offset: Array, s_first: float, s_last: float) -> tuple[float, float]:
-    """(start, length) along the path of the half cosine c + d (1 - cos(pi w)) / 2 that fits
-    the sideways offset best; each candidate is a linear least-squares problem in (c, d)."""
+def _fit_half_cosine(
+    arc: Array, offset: Array, s_first: float, s_last: float
+) -> tuple[float, float, float]:
+    """(start, length, shift d) along the path of the half cosine c + d (1 - cos(pi w)) / 2
+    that fits the sideways offset best; each candidate is a linear least-squares problem in
+    (c, d)."""
     pad = max((s_last - s_first) / 2, 2.0)
     starts = np.arange(s_first - pad, s_first + pad, 0.25)
     lengths = np.arange(max(s_last - s_first - 2 * pad, 2.0), s_last - s_first + 2 * pad, 0.25)
@@ -115,7 +134,7 @@ def _fit_half_cosine(arc: Array, offset: Array, s_first: float, s_last: float) -
     c = (sum_y - d * sum_shape) / n
     errors = ((c[:, None] + d[:, None] * shape - offset[None, :]) ** 2).sum(axis=1)
     best = int(np.argmin(errors))
-    return float(s1[best]), float(length[best])
+    return float(s1[best]), float(length[best]), float(d[best])
 
 
 def _walk(motion: Motion, first: int, last: int, thresholds: Thresholds) -> Event:

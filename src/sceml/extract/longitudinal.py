@@ -8,6 +8,7 @@ then each one's start and end are refined by least squares against the profile a
 from __future__ import annotations
 
 import numpy as np
+from scipy.signal import savgol_filter
 
 from .events import Event
 from .motion import Array, Motion
@@ -17,16 +18,23 @@ from .thresholds import Thresholds
 def speed_events(motion: Motion, thresholds: Thresholds) -> list[Event]:
     """The actor's speed changes as Accelerate, Decelerate and Stop events, in time order."""
     step = motion.step
-    acceleration = np.gradient(motion.speed, step)
+    window = max(5, int(round(thresholds.smoothing_window / step)) | 1)
+    acceleration = savgol_filter(motion.speed, min(window, len(motion.speed) // 2 * 2 - 1), 2, deriv=1, delta=step)
     changing = np.abs(acceleration) > thresholds.accel_threshold
     spans = _runs(changing, gap=max(1, int(0.5 / step)))
     events = []
     bounds = [0, *[k for span in spans for k in span], len(motion.times) - 1]
     # The plateaus either side weigh in up to this many samples: enough to pin v0 and v1.
     margin = int(3.0 / step)
+    edge = len(motion.times) - max(1, int(thresholds.smoothing_window / step / 2))
     for i, (a, b) in enumerate(spans):
+        if a >= edge:
+            continue  # a change that shows only in the smoothing's last window: its edge
+        b = min(b, edge)
         before, after = max(bounds[2 * i], a - margin), min(bounds[2 * i + 3], b + margin)
-        fitted = _fit_ramp(motion.times, motion.along, before, a, b, after, step)
+        fitted = _fit_ramp(
+            motion.times, motion.along, before, a, b, after, step, thresholds.smoothing_window / 2
+        )
         if fitted is None:
             continue
         t1, t2, v0, v1 = fitted
@@ -71,7 +79,14 @@ def _runs(mask: Array, gap: int) -> list[tuple[int, int]]:
 
 
 def _fit_ramp(
-    times: Array, along: Array, before: int, a: int, b: int, after: int, step: float
+    times: Array,
+    along: Array,
+    before: int,
+    a: int,
+    b: int,
+    after: int,
+    step: float,
+    anchor: float,
 ) -> tuple[float, float, float, float] | None:
     """Least-squares fit of the distance driven over [before, after]: speed v0 until t1, a
     linear change to v1 at t2, then v1.
@@ -94,14 +109,20 @@ def _fit_ramp(
         return None
     fine = np.arange(-step, step + 1e-9, step / 4)
     refined = _best_ramp(window, values, coarse[0] + fine, coarse[1] + fine)
-    t1, t2, v0, v1 = refined or coarse
+    t1, t2, v0, v1, error = refined or coarse
+    if before == 0 and t1 - times[0] <= anchor:
+        # Near the start of a recording the smoothing is weakest and a ramp that began with it
+        # tends to be fitted a little late; it is taken from the start when that fits as well.
+        anchored = _best_ramp(window, values, np.array([times[0]]), coarse[1] + fine)
+        if anchored is not None and anchored[4] <= 1.05 * error:
+            t1, t2, v0, v1, error = anchored
     return t1, t2, max(v0, 0.0), max(v1, 0.0)
 
 
 def _best_ramp(
     window: Array, values: Array, starts: Array, ends: Array
-) -> tuple[float, float, float, float] | None:
-    """The (t1, t2, v0, v1) of the candidate pairs that fits `values` best."""
+) -> tuple[float, float, float, float, float] | None:
+    """The (t1, t2, v0, v1, squared error) of the candidate pairs that fits `values` best."""
     t1, t2 = (grid.ravel() for grid in np.meshgrid(starts, ends, indexing="ij"))
     keep = (t2 > t1 + 1e-9) & (t1 >= window[0]) & (t2 <= window[-1])
     t1, t2 = t1[keep], t2[keep]
@@ -116,7 +137,13 @@ def _best_ramp(
     fitted = np.einsum("pni,pi->pn", design, solution)
     errors = ((fitted - values) ** 2).sum(axis=1)
     best = int(np.argmin(errors))
-    return float(t1[best]), float(t2[best]), float(solution[best, 1]), float(solution[best, 2])
+    return (
+        float(t1[best]),
+        float(t2[best]),
+        float(solution[best, 1]),
+        float(solution[best, 2]),
+        float(errors[best]),
+    )
 
 
 def _ramp_integral(t: Array, t1: Array, t2: Array) -> Array:
