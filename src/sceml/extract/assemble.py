@@ -56,8 +56,9 @@ def add_actor_graph(
     inferred: list[Inferred] = []
     for event in sorted(events, key=lambda e: e.start):
         ready = [t for t in tails if t.finish <= event.start + thresholds.sync_tolerance]
-        if ready:
-            tail = max(ready, key=lambda t: t.finish)
+        if ready or event.flexible:
+            # A turn or a walk may start later than it shows: it goes after the latest node.
+            tail = max(ready or tails, key=lambda t: t.finish)
             tails.remove(tail)
         else:
             tail = _Tail(builder.root, t0)  # a branch of its own

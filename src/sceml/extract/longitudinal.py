@@ -156,12 +156,17 @@ def _ramp_integral(t: Array, t1: Array, t2: Array) -> Array:
     return primitive(t) - primitive(t[..., :1])
 
 
-def within_limits(events: list[Event], acceleration: float | None, deceleration: float | None) -> None:
-    """Slow down ramps steeper than the actor kind's plausibility limits (SCEML-L002).
+def within_limits(
+    events: list[Event], kind: str, acceleration: float | None, deceleration: float | None
+) -> list[str]:
+    """Slow down ramps steeper than the actor kind's plausibility limits (SCEML-L002); returns
+    a note for each.
 
     A speed that jumps (a player's step change) becomes a ramp at the limit with the same
-    midpoint, so the actor covers the same distance by the ramp's end.
+    midpoint, so the actor covers the same distance by the ramp's end; in between it is off
+    by up to (speed change)² / (8 × limit).
     """
+    notes = []
     for event in events:
         if not event.longitudinal or event.from_speed is None:
             continue
@@ -175,6 +180,11 @@ def within_limits(events: list[Event], acceleration: float | None, deceleration:
         event.start, event.end = max(middle - half, 0.0), middle + half
         event.finish = event.end
         event.parameters["rate"] = float(limit)
+        notes.append(
+            f"{event.actor}: the {event.kind} at {middle:.2f} s ran at {rate:g} m/s², above the "
+            f"{kind} limit of {limit:g} m/s²; it is extracted at the limit"
+        )
+    return notes
 
 
 def _target(event: Event) -> float:

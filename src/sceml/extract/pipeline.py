@@ -90,6 +90,7 @@ def extract(
     )
     builder.environment()
     found: list[ExtractedActor] = []
+    notes: list[str] = []
     models: dict[str, scm.Actor] = {}
     plans: dict[str, list[Event]] = {}
     for track in recording.tracks:
@@ -97,8 +98,9 @@ def extract(
         spec = given.get(track.name)
         kind = actor_kind(track, motion, spec, ego=track.name == ego)
         speeds = speed_events(motion, thresholds)
-        within_limits(
+        notes += within_limits(
             speeds,
+            kind,
             limits.limit(kind, "max_acceleration"),
             limits.limit(kind, "max_deceleration"),
         )
@@ -133,7 +135,9 @@ def extract(
         builder.flow(builder.root, builder.end)  # nobody did anything: the scenario is the start
     scenario = builder.scenario
     fit = replay(scenario, recording, road_map) if check_replay else None
-    return Extraction(scenario, recording, tuple(found), tuple(inferred), fit, thresholds)
+    return Extraction(
+        scenario, recording, tuple(found), tuple(inferred), fit, thresholds, tuple(notes)
+    )
 
 
 def _initial_speed(motion: Motion, events: list[Event], standing: float) -> float:

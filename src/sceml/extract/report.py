@@ -77,6 +77,7 @@ def report_data(extraction: Extraction) -> dict[str, Any]:
             ],
         },
         "thresholds": dataclasses.asdict(extraction.thresholds),
+        "notes": list(extraction.notes),
     }
 
 
@@ -117,3 +118,5 @@ def report_lines(extraction: Extraction) -> Iterator[str]:
         )
         for a in fit.actors:
             yield f"    {a.name}: largest {a.largest:.2f} m at {a.when:.2f} s, mean {a.mean:.2f} m"
+    for note in extraction.notes:
+        yield f"  note: {note}"

@@ -68,7 +68,7 @@ def explain(
     found = [
         *_vehicle_radius(actor, motions[actor], others, start, activation, thresholds),
         *_speed(actor, others, start, activation, thresholds),
-        *_location(actor, others, start, activation, thresholds),
+        *_location(motions[actor], others, start, activation, thresholds),
     ]
     if not found:
         return _waited(actor, start, activation, driving)
@@ -187,10 +187,11 @@ def _speed(
 
 
 def _location(
-    actor: str, others: list[Motion], start: float, activation: float, thresholds: Thresholds
+    own: Motion, others: list[Motion], start: float, activation: float, thresholds: Thresholds
 ) -> list[Explanation]:
     found = []
     radius = thresholds.location_radius
+    here = own.position(start)
     for other in others:
         if other.at(other.speed, start) <= thresholds.standing_speed:
             continue
@@ -200,6 +201,8 @@ def _location(
         when = float(np.interp(ahead, other.arc, other.times))
         x, y = other.position(when)
         heading = other.at(other.heading, when)
+        if math.hypot(x - here[0], y - here[1]) > thresholds.location_reach:
+            continue  # too far away to be why this actor started
         held = np.hypot(other.x - x, other.y - y) <= radius
         fires = _first(held, other.times, activation)
         if fires is None or abs(fires - start) > thresholds.sync_tolerance:

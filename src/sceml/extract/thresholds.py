@@ -36,6 +36,8 @@ class Thresholds:
     vehicle_radius: float = 22.0
     #: Radius (m) of an inferred InLocationRadius about another actor's position.
     location_radius: float = 3.0
+    #: Only a place this close (m) to the waiting actor can explain its start (InLocationRadius).
+    location_reach: float = 50.0
     #: A shorter wait (s) between two maneuvers of an actor needs no node between them.
     min_wait: float = 0.3
     #: How far (s) an inferred condition may fire from the start it explains, on the recording.
