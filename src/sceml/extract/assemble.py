@@ -69,9 +69,9 @@ def add_actor_graph(
         node = builder.add(event.kind, actor, **parameters)
         wait = event.start - tail.finish
         if not event.flexible and wait > thresholds.min_wait:
-            driving = own.at(own.speed, event.start) > thresholds.standing_speed and not _speed_changing(
-                events, tail.finish, event.start
-            )
+            driving = own.at(
+                own.speed, event.start
+            ) > thresholds.standing_speed and not _speed_changing(events, tail.finish, event.start)
             why = explain(name, event.start, tail.finish, motions, ego, thresholds, driving=driving)
             condition = _condition(builder, why, actors)
             builder.chain(tail.node, condition, node)

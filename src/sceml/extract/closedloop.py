@@ -31,7 +31,13 @@ from .thresholds import Thresholds
 
 _SPEED_KINDS = (*LONGITUDINAL, "DriveDistance")
 _QUIET = ("KeepVelocity",)
-_CONDITIONS = ("InVehicleRadius", "InLocationRadius", "SpeedCondition", "TimeElapsed", "TimeToCollision")
+_CONDITIONS = (
+    "InVehicleRadius",
+    "InLocationRadius",
+    "SpeedCondition",
+    "TimeElapsed",
+    "TimeToCollision",
+)
 
 
 @dataclass(frozen=True)
@@ -52,14 +58,16 @@ def recording_of(run: Run, *, noise: float = 0.0, every: int = 1, seed: int = 0)
         states = run.states[index, ::every]
         x = states[:, 0] + rng.normal(0.0, noise, len(times)) if noise else states[:, 0]
         y = states[:, 1] + rng.normal(0.0, noise, len(times)) if noise else states[:, 1]
-        tracks.append(
-            Track(info.name, times, x, y, states[:, 2], kind=info.kind, ego=info.ego)
-        )
+        tracks.append(Track(info.name, times, x, y, states[:, 2], kind=info.kind, ego=info.ego))
     return Recording(tuple(tracks), run.scenario, "preview run")
 
 
 def signature(
-    scenario: scm.Scenario, run: Run, thresholds: Thresholds | None = None, *, min_change: float | None = None
+    scenario: scm.Scenario,
+    run: Run,
+    thresholds: Thresholds | None = None,
+    *,
+    min_change: float | None = None,
 ) -> Signature:
     """What the run of `scenario` shows (module uses are flattened as the preview does).
 
@@ -70,7 +78,9 @@ def signature(
     thresholds = thresholds or Thresholds()
     if min_change is not None:
         thresholds = replace(thresholds, min_speed_change=min_change)
-    flat = flatten(scenario) if any(isinstance(n, scm.ModuleUse) for n in scenario.nodes) else scenario
+    flat = (
+        flatten(scenario) if any(isinstance(n, scm.ModuleUse) for n in scenario.nodes) else scenario
+    )
     by_name = {str(n.name): n for n in flat.nodes}
     maneuvers: dict[str, list[str]] = {str(a.name): [] for a in scenario_actors(flat)}
     waits: set[tuple[str, int, str, str, str | None]] = set()
@@ -94,7 +104,9 @@ def signature(
                 (
                     actor,
                     index,
-                    "TimeElapsed" if isinstance(condition, scm.KeepVelocity) else condition.eClass.name,
+                    "TimeElapsed"
+                    if isinstance(condition, scm.KeepVelocity)
+                    else condition.eClass.name,
                     str(condition.referenceActor.name),
                     str(target.name) if target is not None else None,
                 )
@@ -115,7 +127,11 @@ def _shown_kind(
     index = run.actor_index(actor)
     # The sample before the start: a step change shows in the sample of the start itself.
     before = float(np.interp(started - run.step, run.times, run.states[index, :, 3]))
-    target = 0.0 if kind == "Stop" else concrete(node, "speed" if kind == "DriveDistance" else "targetSpeed")
+    target = (
+        0.0
+        if kind == "Stop"
+        else concrete(node, "speed" if kind == "DriveDistance" else "targetSpeed")
+    )
     if abs(target - before) < thresholds.min_speed_change:
         return None
     if target < thresholds.standing_speed:

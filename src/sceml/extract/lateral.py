@@ -56,9 +56,15 @@ def _classify(
     road_map: RoadMap | None,
 ) -> Event | None:
     times = motion.times
-    if kind in CROSSERS and abs(turned) > _CROSS_ANGLE and not _in_junction(motion, first, last, road_map):
+    if (
+        kind in CROSSERS
+        and abs(turned) > _CROSS_ANGLE
+        and not _in_junction(motion, first, last, road_map)
+    ):
         middle = _midway(motion, first, last)
-        return Event("Cross", motion.name, middle, middle, {"tolerance": thresholds.arrival_tolerance})
+        return Event(
+            "Cross", motion.name, middle, middle, {"tolerance": thresholds.arrival_tolerance}
+        )
     if abs(turned) > thresholds.turn_angle:
         side = "TurnLeft" if turned > 0 else "TurnRight"
         return Event(
@@ -99,7 +105,9 @@ def _lane_change(motion: Motion, first: int, last: int, thresholds: Thresholds) 
     dx, dy = motion.x[lo : hi + 1] - motion.x[lo], motion.y[lo : hi + 1] - motion.y[lo]
     sideways = -dx * math.sin(h0) + dy * math.cos(h0)
     arc = motion.arc[lo : hi + 1]
-    s1, length, shift = _fit_half_cosine(arc, sideways, float(motion.arc[first]), float(motion.arc[last]))
+    s1, length, shift = _fit_half_cosine(
+        arc, sideways, float(motion.arc[first]), float(motion.arc[last])
+    )
     if abs(shift) < thresholds.lane_change_offset or length < 3 * abs(shift):
         return None  # too little, or too abrupt for a lane change: noise
     t1 = float(np.interp(s1, motion.arc, motion.times))
@@ -141,7 +149,12 @@ def _walk(motion: Motion, first: int, last: int, thresholds: Thresholds) -> Even
     """A pedestrian that walks off without turning: a crossing from its first step."""
     start = float(motion.times[first])
     return Event(
-        "Cross", motion.name, start, start, {"tolerance": thresholds.arrival_tolerance}, flexible=True
+        "Cross",
+        motion.name,
+        start,
+        start,
+        {"tolerance": thresholds.arrival_tolerance},
+        flexible=True,
     )
 
 
@@ -188,7 +201,9 @@ def _finish_destinations(motion: Motion, events: list[Event], thresholds: Thresh
         event.finish = _arrival(motion, event.start, x, y, tolerance)
 
 
-def _last_moving(motion: Motion, start: float, until: float | None, thresholds: Thresholds) -> float:
+def _last_moving(
+    motion: Motion, start: float, until: float | None, thresholds: Thresholds
+) -> float:
     k0 = motion.index(start)
     k1 = motion.index(until) if until is not None else len(motion.times) - 1
     moving = np.nonzero(motion.moving[k0 : k1 + 1])[0]

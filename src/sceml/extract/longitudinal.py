@@ -19,7 +19,9 @@ def speed_events(motion: Motion, thresholds: Thresholds) -> list[Event]:
     """The actor's speed changes as Accelerate, Decelerate and Stop events, in time order."""
     step = motion.step
     window = max(5, int(round(thresholds.smoothing_window / step)) | 1)
-    acceleration = savgol_filter(motion.speed, min(window, len(motion.speed) // 2 * 2 - 1), 2, deriv=1, delta=step)
+    acceleration = savgol_filter(
+        motion.speed, min(window, len(motion.speed) // 2 * 2 - 1), 2, deriv=1, delta=step
+    )
     changing = np.abs(acceleration) > thresholds.accel_threshold
     spans = _runs(changing, gap=max(1, int(0.5 / step)))
     events = []

@@ -101,7 +101,9 @@ def _moving(x: Array, y: Array, half: int, step: float, standing: float) -> NDAr
     return np.asarray(chord > standing * 2 * half * step)
 
 
-def _heading(track: Track, times: Array, x: Array, y: Array, moving: NDArray[np.bool_], half: int) -> Array:
+def _heading(
+    track: Track, times: Array, x: Array, y: Array, moving: NDArray[np.bool_], half: int
+) -> Array:
     """The direction of motion where the actor moves; held over standing stretches.
 
     It is the direction of the chord across the smoothing window, not of the smoothed
@@ -109,9 +111,7 @@ def _heading(track: Track, times: Array, x: Array, y: Array, moving: NDArray[np.
     backwards. Before the first motion the recorded heading (if any) is used, else the first
     direction of motion.
     """
-    raw = np.arctan2(
-        _shifted(y, half) - _shifted(y, -half), _shifted(x, half) - _shifted(x, -half)
-    )
+    raw = np.arctan2(_shifted(y, half) - _shifted(y, -half), _shifted(x, half) - _shifted(x, -half))
     if not moving.any():
         if track.heading is not None:
             return np.interp(times, track.times, track.heading)
@@ -133,7 +133,14 @@ _CLEAN = 0.02
 
 
 def _along(
-    x: Array, y: Array, xs: Array, ys: Array, arc: Array, heading: Array, standing: float, speed: Array
+    x: Array,
+    y: Array,
+    xs: Array,
+    ys: Array,
+    arc: Array,
+    heading: Array,
+    standing: float,
+    speed: Array,
 ) -> Array:
     """Each raw sample's distance along the path.
 

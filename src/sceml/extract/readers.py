@@ -136,7 +136,9 @@ def _read_sceml(rows: list[list[str]], path: Path) -> Recording:
         if not row:
             continue
         if len(row) < len(header):
-            raise LoadError(f"{len(row)} cells where the header has {len(header)}", file=path, line=line)
+            raise LoadError(
+                f"{len(row)} cells where the header has {len(header)}", file=path, line=line
+            )
         name = row[at["actor"]].strip()
         t, x, y = (_number(row[at[c]], path, line, c) for c in ("time", "x", "y"))
         h = _number(row[at["heading"]], path, line, "heading") if "heading" in at else math.nan
@@ -205,7 +207,9 @@ def _read_osc_generator(
     if missing:
         raise LoadError(f"missing column(s) {', '.join(missing)}", file=path, line=1)
     objects = sorted(
-        int(name[len("pos_x_") :]) for name in header if name.startswith("pos_x_") and name[6:].isdigit()
+        int(name[len("pos_x_") :])
+        for name in header
+        if name.startswith("pos_x_") and name[6:].isdigit()
     )
     samples = _Samples(path)
     lat0, lon0 = (math.radians(v) for v in origin)

@@ -52,5 +52,7 @@ def replay(scenario: scm.Scenario, recording: Recording, road_map: RoadMap | Non
         y = np.interp(times + offset, track.times, track.y)
         error = np.hypot(run.states[index, keep, 0] - x, run.states[index, keep, 1] - y)
         worst = int(np.argmax(error))
-        fits.append(ActorFit(info.name, float(error[worst]), float(times[worst]), float(error.mean())))
+        fits.append(
+            ActorFit(info.name, float(error[worst]), float(times[worst]), float(error.mean()))
+        )
     return ReplayFit(tuple(fits), until, float(run.end_time), run.end_reason, run)

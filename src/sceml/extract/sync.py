@@ -128,10 +128,12 @@ def _vehicle_radius(
     activation: float,
     thresholds: Thresholds,
 ) -> list[Explanation]:
-    found = []
+    found: list[tuple[float, Explanation]] = []
     for other in others:
-        distance = np.hypot(own.x - np.interp(own.times, other.times, other.x),
-                            own.y - np.interp(own.times, other.times, other.y))
+        distance = np.hypot(
+            own.x - np.interp(own.times, other.times, other.x),
+            own.y - np.interp(own.times, other.times, other.y),
+        )
         at = own.at(distance, start)
         if at > thresholds.vehicle_radius:
             continue
@@ -140,21 +142,26 @@ def _vehicle_radius(
         if not high > at > low:
             continue  # not closing in at the start
         radius = _round_between(low, high, at)
+        closing = (high - low) / tolerance
         fires = _first(distance <= radius, own.times, activation)
         if fires is None or abs(fires - start) > tolerance:
             continue
         found.append(
-            Explanation(
-                "InVehicleRadius",
-                actor,
-                other.name,
-                {"radius": radius},
-                fires,
-                "",
-                f"{other.name} came within {radius:g} m",
+            (
+                closing,
+                Explanation(
+                    "InVehicleRadius",
+                    actor,
+                    other.name,
+                    {"radius": radius},
+                    fires,
+                    "",
+                    f"{other.name} came within {radius:g} m",
+                ),
             )
         )
-    return sorted(found, key=lambda e: float(str(e.parameters["radius"])))
+    # The fastest approach first: it pins the moment best, and is the likelier cause.
+    return [e for _, e in sorted(found, key=lambda pair: -pair[0])]
 
 
 def _speed(
