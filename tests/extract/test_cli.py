@@ -35,7 +35,14 @@ def map_copy(tmp_path: Path) -> Path:
 
 def test_extract_writes_a_clean_scenario_and_reports_why_the_bike_started(tmp_path: Path) -> None:
     out = tmp_path / "scenarios" / "uis1-extracted.xmi"
-    arguments = ["extract", str(uis1_csv(tmp_path)), "-o", str(out), "--map", str(map_copy(tmp_path))]
+    arguments = [
+        "extract",
+        str(uis1_csv(tmp_path)),
+        "-o",
+        str(out),
+        "--map",
+        str(map_copy(tmp_path)),
+    ]
     result = CliRunner().invoke(cli, [*arguments, "--actor", "bike=Bicycle", "--report"])
     assert result.exit_code == 0, result.output
     assert "InVehicleRadius(bike and ego; radius=12)" in result.output
@@ -48,7 +55,14 @@ def test_extract_writes_a_clean_scenario_and_reports_why_the_bike_started(tmp_pa
 
 def test_the_json_report_lists_maneuvers_conditions_and_the_replay(tmp_path: Path) -> None:
     out = tmp_path / "x.xmi"
-    arguments = ["extract", str(DATA / "uis2-esmini.csv"), "-o", str(out), "--map", str(map_copy(tmp_path))]
+    arguments = [
+        "extract",
+        str(DATA / "uis2-esmini.csv"),
+        "-o",
+        str(out),
+        "--map",
+        str(map_copy(tmp_path)),
+    ]
     result = CliRunner().invoke(cli, [*arguments, "--report", "--format", "json"])
     assert result.exit_code == 0, result.output
     report = json.loads(result.stdout)
@@ -72,7 +86,9 @@ def test_a_broken_recording_is_a_usage_error_naming_its_line(tmp_path: Path) -> 
     bad = tmp_path / "bad.csv"
     bad.write_text("time,actor,x,y\n0,ego,1,2\n0.1,ego,one,2\n", encoding="utf-8")
     out = tmp_path / "x.xmi"
-    result = CliRunner().invoke(cli, ["extract", str(bad), "-o", str(out), "--map", str(map_copy(tmp_path))])
+    result = CliRunner().invoke(
+        cli, ["extract", str(bad), "-o", str(out), "--map", str(map_copy(tmp_path))]
+    )
     assert result.exit_code == 2
     assert f"{bad}:3: x is not a number" in result.output
     assert not out.exists()
@@ -80,7 +96,18 @@ def test_a_broken_recording_is_a_usage_error_naming_its_line(tmp_path: Path) -> 
 
 def test_an_actor_option_that_names_no_kind_is_refused(tmp_path: Path) -> None:
     arguments = ["extract", str(DATA / "uis1-esmini.csv"), "-o", str(tmp_path / "x.xmi")]
-    result = CliRunner().invoke(cli, [*arguments, "--map", str(map_copy(tmp_path)), "--actor", "bike=Unicycle"])
+    result = CliRunner().invoke(
+        cli, [*arguments, "--map", str(map_copy(tmp_path)), "--actor", "bike=Unicycle"]
+    )
     assert result.exit_code == 2 and "unknown actor kind 'Unicycle'" in result.output
-    result = CliRunner().invoke(cli, [*arguments, "--map", str(tmp_path / "maps" / "intersection.xodr"), "--actor", "nobody=Car"])
+    result = CliRunner().invoke(
+        cli,
+        [
+            *arguments,
+            "--map",
+            str(tmp_path / "maps" / "intersection.xodr"),
+            "--actor",
+            "nobody=Car",
+        ],
+    )
     assert result.exit_code == 2 and "no actor nobody in the recording" in result.output

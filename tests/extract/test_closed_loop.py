@@ -20,7 +20,7 @@ import scemlmodel as scm
 from sceml import io
 from sceml.diagnostics import Severity
 from sceml.extract import Extraction, extract
-from sceml.extract.closedloop import recording_of, signature
+from sceml.extract.closedloop import allowed_error, recording_of, signature
 from sceml.levels.apply import FlatTemplate
 from sceml.levels.sampling import design, plan_for
 from sceml.levels.space import parameter_space
@@ -49,19 +49,6 @@ def extracted(run: Run, **noise: float) -> Extraction:
     )
 
 
-def allowed_error(found: Extraction, actor: str) -> float:
-    """1 m, or more for an actor whose speed jumped (see the module's docstring)."""
-    capped = [
-        abs(float(str(e.parameters.get("targetSpeed", 0.0))) - (e.from_speed or 0.0)) ** 2
-        / (8 * float(str(e.parameters["rate"])))
-        for a in found.actors
-        if a.name == actor
-        for e in a.maneuvers
-        if e.longitudinal and any(note.startswith(f"{actor}:") for note in found.notes)
-    ]
-    return max([1.0, *(c + 0.2 for c in capped)])
-
-
 def assert_replays_closely(found: Extraction) -> None:
     assert found.replay is not None
     for fit in found.replay.actors:
@@ -80,13 +67,21 @@ def test_uis1_gives_back_the_trigger_radius_and_a_clean_scenario(tmp_path: Path)
     _, run = original(EXAMPLES / "uis1-concrete.xmi")
     found = extracted(run)
     (why,) = found.inferred
-    assert (why.actor, why.explanation.kind, why.explanation.target) == ("bike", "InVehicleRadius", "ego")
+    assert (why.actor, why.explanation.kind, why.explanation.target) == (
+        "bike",
+        "InVehicleRadius",
+        "ego",
+    )
     assert why.explanation.parameters == {"radius": 12.0}  # examples/build_examples.py: 12 m
     (tmp_path / "maps").mkdir()
-    (tmp_path / "maps" / "intersection.xodr").write_bytes((REPO / "maps" / "intersection.xodr").read_bytes())
+    (tmp_path / "maps" / "intersection.xodr").write_bytes(
+        (REPO / "maps" / "intersection.xodr").read_bytes()
+    )
     saved = io.save(found.scenario, tmp_path / "out" / "uis1.xmi")
     document = io.load_scenario(saved)
-    problems = [d for d in validate(document.root, document=document) if d.severity >= Severity.WARNING]
+    problems = [
+        d for d in validate(document.root, document=document) if d.severity >= Severity.WARNING
+    ]
     assert problems == [], [str(p) for p in problems]
 
 
@@ -95,7 +90,9 @@ def test_overtaking_comes_back_with_its_lane_changes() -> None:
     # only the maneuvers are compared (docs/extract.md, "What a recording cannot tell").
     scenario, run = original(EXAMPLES / "overtaking-concrete.xmi")
     found = extracted(run)
-    assert signature(found.scenario, found.replay.run).maneuvers == signature(scenario, run).maneuvers  # type: ignore[union-attr]
+    assert (
+        signature(found.scenario, found.replay.run).maneuvers == signature(scenario, run).maneuvers
+    )  # type: ignore[union-attr]
     assert_replays_closely(found)
 
 

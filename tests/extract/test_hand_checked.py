@@ -27,8 +27,12 @@ def ramp_distance(t: np.ndarray, v0: float, t1: float, t2: float, v1: float) -> 
     return v0 * np.minimum(t, t1) + v0 * inside + rate * inside**2 / 2 + v1 * np.maximum(t - t2, 0)
 
 
-def straight(name: str, t: np.ndarray, x0: float, y0: float, heading: float, s: np.ndarray) -> Track:
-    return Track(name, t, x0 + s * math.cos(heading), y0 + s * math.sin(heading), np.full(t.shape, heading))
+def straight(
+    name: str, t: np.ndarray, x0: float, y0: float, heading: float, s: np.ndarray
+) -> Track:
+    return Track(
+        name, t, x0 + s * math.cos(heading), y0 + s * math.sin(heading), np.full(t.shape, heading)
+    )
 
 
 def test_a_speed_change_is_one_accelerate_with_its_target_rate_and_start() -> None:
@@ -67,13 +71,19 @@ def test_a_start_when_another_actor_comes_close_is_an_in_vehicle_radius() -> Non
     t = times(9.0)
     start = 6.0 - math.sqrt(200.0) / 10.0
     ego = straight("ego", t, 0.0, 0.0, 0.0, 10.0 * t)
-    walker = straight("walker", t, 60.0, -5.0, math.pi / 2, ramp_distance(t, 0.0, start, start + 1.0, 1.5))
+    walker = straight(
+        "walker", t, 60.0, -5.0, math.pi / 2, ramp_distance(t, 0.0, start, start + 1.0, 1.5)
+    )
     # No OpenDRIVE file: a simulator town's name stands for the map, and positions are world ones.
     found = extract(Recording((ego, walker), "by hand"), map_reference="Town01")
     kinds = {a.name: (a.kind, [e.kind for e in a.maneuvers]) for a in found.actors}
     assert kinds == {"ego": ("Car", []), "walker": ("Pedestrian", ["Accelerate", "Cross"])}
     (why,) = found.inferred
-    assert (why.actor, why.explanation.kind, why.explanation.target) == ("walker", "InVehicleRadius", "ego")
+    assert (why.actor, why.explanation.kind, why.explanation.target) == (
+        "walker",
+        "InVehicleRadius",
+        "ego",
+    )
     assert why.explanation.parameters == {"radius": 15.0}
     assert why.explanation.fires == pytest.approx(start, abs=STEP)
     assert why.explanation.confidence == "medium"  # the ego reaching a place would do as well

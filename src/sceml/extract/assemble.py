@@ -12,6 +12,7 @@ own from the root, with its wait in front.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any, cast
 
 import scemlmodel as scm
 
@@ -51,47 +52,56 @@ def add_actor_graph(
     """Add one actor's maneuvers (with their waits) from the root to the end node."""
     name = str(actor.name)
     own = motions[name]
-    t0 = float(own.times[0])
-    tails = [_Tail(builder.root, t0)]
+    begin = _Tail(builder.root, float(own.times[0]))
+    tails = [begin]
     inferred: list[Inferred] = []
     for event in sorted(events, key=lambda e: e.start):
-        ready = [t for t in tails if t.finish <= event.start + thresholds.sync_tolerance]
-        if ready or event.flexible:
-            # A turn or a walk may start later than it shows: it goes after the latest node.
-            tail = max(ready or tails, key=lambda t: t.finish)
-            tails.remove(tail)
-        else:
-            tail = _Tail(builder.root, t0)  # a branch of its own
-        parameters = dict(event.parameters)
-        if event.destination is not None:
-            x, y, h = event.destination
-            parameters["destination"] = world(round(x, 3), round(y, 3), h=round(h, 4))
-        node = builder.add(event.kind, actor, **parameters)
-        wait = event.start - tail.finish
-        if not event.flexible and wait > thresholds.min_wait:
-            driving = own.at(
-                own.speed, event.start
-            ) > thresholds.standing_speed and not _speed_changing(events, tail.finish, event.start)
+        tail = _tail_for(event, tails, begin, thresholds)
+        node = builder.add(event.kind, actor, **_node_parameters(event.parameters, event))
+        if not event.flexible and event.start - tail.finish > thresholds.min_wait:
+            driving = own.at(own.speed, event.start) > thresholds.standing_speed
+            driving = driving and not _speed_changing(events, tail.finish, event.start)
             why = explain(name, event.start, tail.finish, motions, ego, thresholds, driving=driving)
             condition = _condition(builder, why, actors)
             builder.chain(tail.node, condition, node)
             inferred.append(Inferred(str(condition.name), str(node.name), name, event.start, why))
         else:
             builder.flow(tail.node, node)
-        last: scm.GraphElement = node
-        if event.destination is not None:
-            last = builder.add(
-                "InLocationRadius",
-                actor,
-                position=parameters["destination"],
-                radius=event.parameters.get("tolerance", thresholds.arrival_tolerance),
-            )
-            builder.flow(node, last)
-        tails.append(_Tail(last, max(event.finish, event.start)))
+        tails.append(_Tail(_arrival(builder, actor, node, event), max(event.finish, event.start)))
     for tail in tails:
         if tail.node is not builder.root:
             builder.flow(tail.node, builder.end)
     return inferred
+
+
+def _tail_for(event: Event, tails: list[_Tail], begin: _Tail, thresholds: Thresholds) -> _Tail:
+    """The node a maneuver follows: the actor's node that finished last before it started.
+
+    A turn or a walk may start later than it shows, so it follows the latest node in any case;
+    any other maneuver that started while all the actor's nodes ran gets a branch of its own.
+    """
+    ready = [t for t in tails if t.finish <= event.start + thresholds.sync_tolerance]
+    if not ready and not event.flexible:
+        return _Tail(begin.node, begin.finish)
+    tail = max(ready or tails, key=lambda t: t.finish)
+    tails.remove(tail)
+    return tail
+
+
+def _arrival(
+    builder: ScenarioBuilder, actor: scm.Actor, node: scm.ActionNode, event: Event
+) -> scm.GraphElement:
+    """After a turn or crossing, the check that it arrived; the node itself otherwise."""
+    if event.destination is None:
+        return node
+    arrived = builder.add(
+        "InLocationRadius",
+        actor,
+        position=_position(event.destination),
+        radius=event.parameters.get("tolerance", 2.0),
+    )
+    builder.flow(node, arrived)
+    return arrived
 
 
 def _speed_changing(events: list[Event], begin: float, end: float) -> bool:
@@ -99,12 +109,28 @@ def _speed_changing(events: list[Event], begin: float, end: float) -> bool:
     return any(e.longitudinal and e.start < end and e.finish > begin for e in events)
 
 
+def _position(point: tuple[float, float, float]) -> scm.WorldPosition:
+    x, y, h = point
+    return world(round(x, 3), round(y, 3), h=round(h, 4))
+
+
+def _node_parameters(parameters: dict[str, object], event: Event | None = None) -> dict[str, Any]:
+    """Parameters as the builder takes them: points (x, y, heading) become world positions."""
+    made: dict[str, Any] = {}
+    for key, value in parameters.items():
+        if isinstance(value, tuple):
+            made[key] = _position(cast(tuple[float, float, float], value))
+        else:
+            made[key] = value
+    if event is not None and event.destination is not None:
+        made["destination"] = _position(event.destination)
+    return made
+
+
 def _condition(
     builder: ScenarioBuilder, why: Explanation, actors: dict[str, scm.Actor]
 ) -> scm.ActionNode:
-    parameters = dict(why.parameters)
-    if "position" in parameters:
-        x, y, h = parameters["position"]  # type: ignore[misc]
-        parameters["position"] = world(round(x, 3), round(y, 3), h=round(h, 4))
     target = actors[why.target] if why.target else None
-    return builder.add(why.kind, actors[why.actor], target=target, **parameters)
+    return builder.add(
+        why.kind, actors[why.actor], target=target, **_node_parameters(why.parameters)
+    )

@@ -26,6 +26,7 @@ from ..modules import flatten
 from ..params import concrete
 from ..simulate import Run
 from .events import LONGITUDINAL
+from .pipeline import Extraction
 from .recording import Recording, Track
 from .thresholds import Thresholds
 
@@ -117,11 +118,12 @@ def signature(
 def _shown_kind(
     node: scm.Maneuver, run: Run, actor: str, started: float, thresholds: Thresholds
 ) -> str | None:
-    kind = node.eClass.name
+    kind = str(node.eClass.name)
     if kind in _QUIET:
         return None
     if kind == "LaneChange":
-        return f"LaneChange {node.direction.name if node.direction is not None else 'left'}"
+        side = str(node.direction.name) if node.direction is not None else "left"
+        return f"LaneChange {side}"
     if kind not in _SPEED_KINDS:
         return kind
     index = run.actor_index(actor)
@@ -154,7 +156,31 @@ def _waited_for(node: scm.GraphElement, run: Run) -> list[scm.ActionNode]:
             record = run.node(str(source.name))
         except KeyError:
             continue
-        if record.started is not None and record.finished is not None:
-            if record.finished > record.started + run.step / 2:
-                found.append(source)
+        started, finished = record.started, record.finished
+        if started is not None and finished is not None and finished > started + run.step / 2:
+            found.append(source)
     return found
+
+
+def allowed_error(found: Extraction, actor: str, within: float = 1.0) -> float:
+    """How far (m) the replay of `actor` may stray: `within`, or for an actor whose speed jumped
+    faster than its kind allows (noted by the extraction) the most a ramp at the limit with the
+    same midpoint can differ from a jump, (speed change)² / (8 × limit), plus 0.2 m."""
+    if not any(note.startswith(f"{actor}:") for note in found.notes):
+        return within
+    bounds = [
+        abs(float(str(e.parameters.get("targetSpeed", 0.0))) - (e.from_speed or 0.0)) ** 2
+        / (8 * float(str(e.parameters["rate"])))
+        + 0.2
+        for a in found.actors
+        if a.name == actor
+        for e in a.maneuvers
+        if e.longitudinal
+    ]
+    return max([within, *bounds])
+
+
+def replays_closely(found: Extraction, within: float = 1.0) -> bool:
+    """Whether every actor's replay stays within its `allowed_error`."""
+    assert found.replay is not None
+    return all(f.largest < allowed_error(found, f.name, within) for f in found.replay.actors)

@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from numpy.typing import NDArray
 
 from ..maps import RoadMap
 from .events import Event
@@ -217,7 +218,7 @@ def _arrival(motion: Motion, start: float, x: float, y: float, tolerance: float)
     return float(motion.times[k0 + int(near[0])]) if len(near) else float(motion.times[-1])
 
 
-def _runs(mask: Array, gap: int) -> list[tuple[int, int]]:
+def _runs(mask: NDArray[np.bool_], gap: int) -> list[tuple[int, int]]:
     """Index spans [a, b] where mask holds, joining runs apart by at most `gap` samples."""
     spans: list[tuple[int, int]] = []
     k, n = 0, len(mask)

@@ -8,6 +8,7 @@ then each one's start and end are refined by least squares against the profile a
 from __future__ import annotations
 
 import numpy as np
+from numpy.typing import NDArray
 from scipy.signal import savgol_filter
 
 from .events import Event
@@ -57,7 +58,7 @@ def _event(actor: str, t1: float, t2: float, v0: float, v1: float, thresholds: T
     return Event(kind, actor, t1, t2, parameters, finish=t2, from_speed=v0)
 
 
-def _runs(mask: Array, gap: int) -> list[tuple[int, int]]:
+def _runs(mask: NDArray[np.bool_], gap: int) -> list[tuple[int, int]]:
     """Index spans [a, b] where mask holds, joining runs apart by at most `gap` samples.
 
     Runs are joined whatever their sign: a short dip between two changes (a corner cut by the

@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
+from typing import Any, cast
 
 import numpy as np
 
@@ -122,7 +123,7 @@ def extract(
             ego=track.name == ego,
             start=start_position(motion, kind, road_map),
             speed=round(speed, 2),
-            **size,
+            **cast(dict[str, Any], size),
         )
         plans[track.name] = events
         found.append(ExtractedActor(track.name, kind, track.name == ego, speed, tuple(events)))

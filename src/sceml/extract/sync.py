@@ -15,6 +15,7 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .motion import Array, Motion
 from .thresholds import Thresholds
@@ -102,7 +103,7 @@ def _waited(actor: str, start: float, activation: float, driving: bool) -> Expla
     )
 
 
-def _first(held: Array, times: Array, activation: float) -> float | None:
+def _first(held: NDArray[np.bool_], times: Array, activation: float) -> float | None:
     """The first time from `activation` at which `held` is true; None if never or at once."""
     k0 = int(np.searchsorted(times, activation - 1e-9))
     hits = np.nonzero(held[k0:])[0]
