@@ -58,7 +58,7 @@ def add_actor_graph(
     for event in sorted(events, key=lambda e: e.start):
         tail = _tail_for(event, tails, begin, thresholds)
         node = builder.add(event.kind, actor, **_node_parameters(event.parameters, event))
-        if not event.flexible and event.start - tail.finish > thresholds.min_wait:
+        if not event.flexible and event.start - tail.finish > _least_wait(event, thresholds):
             driving = own.at(own.speed, event.start) > thresholds.standing_speed
             driving = driving and not _speed_changing(events, tail.finish, event.start)
             why = explain(name, event.start, tail.finish, motions, ego, thresholds, driving=driving)
@@ -102,6 +102,15 @@ def _arrival(
     )
     builder.flow(node, arrived)
     return arrived
+
+
+def _least_wait(event: Event, thresholds: Thresholds) -> float:
+    """The shortest gap that needs a wait: a crossing's start (its bend, judged only once the
+    actor is under way) is known only to within the smoothing window, the others to within
+    `min_wait`."""
+    if event.kind == "Cross":
+        return max(thresholds.min_wait, thresholds.smoothing_window)
+    return thresholds.min_wait
 
 
 def _speed_changing(events: list[Event], begin: float, end: float) -> bool:

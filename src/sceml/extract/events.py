@@ -30,6 +30,8 @@ class Event:
     destination: tuple[float, float, float] | None = None
     #: The speed (m/s) before a speed change.
     from_speed: float | None = None
+    #: How far (rad) the heading turned, for a path change.
+    turned: float = 0.0
 
     @property
     def longitudinal(self) -> bool:

@@ -22,6 +22,8 @@ from .thresholds import Thresholds
 CROSSERS = ("Pedestrian", "Bicycle")
 #: A crossing needs only this change of heading (rad): a bike veers across the road.
 _CROSS_ANGLE = 0.15
+#: Below this speed (m/s) the heading is not judged (a chord of 0.8 m over a 1 s window).
+_HEADING_SPEED = 0.8
 
 
 def path_events(
@@ -30,7 +32,9 @@ def path_events(
     """The actor's path changes in time order."""
     step = motion.step
     moving = motion.moving
-    turning = (np.abs(motion.turn_rate) > thresholds.yaw_rate) & moving
+    # Slower than this the heading of a noisy track is mostly noise: it is not judged there.
+    judged = moving & (motion.speed > max(thresholds.standing_speed, _HEADING_SPEED))
+    turning = (np.abs(motion.turn_rate) > thresholds.yaw_rate) & judged
     settle = max(1, int(round(thresholds.smoothing_window / step / 2)))
     events: list[Event] = []
     for a, b in _runs(turning, gap=max(1, int(0.5 / step))):
@@ -43,6 +47,7 @@ def path_events(
             events.append(event)
     if kind == "Pedestrian" and not any(e.kind == "Cross" for e in events) and moving.any():
         events.append(_walk(motion, int(np.argmax(moving)), len(motion.times) - 1, thresholds))
+    events = _one_crossing_at_a_time(events)
     _finish_destinations(motion, events, thresholds)
     return sorted(events, key=lambda e: e.start)
 
@@ -63,9 +68,8 @@ def _classify(
         and not _in_junction(motion, first, last, road_map)
     ):
         middle = _midway(motion, first, last)
-        return Event(
-            "Cross", motion.name, middle, middle, {"tolerance": thresholds.arrival_tolerance}
-        )
+        tolerance = {"tolerance": thresholds.arrival_tolerance}
+        return Event("Cross", motion.name, middle, middle, tolerance, turned=turned)
     if abs(turned) > thresholds.turn_angle:
         side = "TurnLeft" if turned > 0 else "TurnRight"
         return Event(
@@ -144,6 +148,19 @@ def _fit_half_cosine(
     errors = ((c[:, None] + d[:, None] * shape - offset[None, :]) ** 2).sum(axis=1)
     best = int(np.argmin(errors))
     return float(s1[best]), float(length[best]), float(d[best])
+
+
+def _one_crossing_at_a_time(events: list[Event]) -> list[Event]:
+    """Of crossings that follow each other with no other path change between, keep the one
+    that bent most: a crossing goes straight to its destination, so the other bends are noise."""
+    kept: list[Event] = []
+    for event in sorted(events, key=lambda e: e.start):
+        if event.kind == "Cross" and kept and kept[-1].kind == "Cross":
+            if abs(event.turned) > abs(kept[-1].turned):
+                kept[-1] = event
+            continue
+        kept.append(event)
+    return kept
 
 
 def _walk(motion: Motion, first: int, last: int, thresholds: Thresholds) -> Event:

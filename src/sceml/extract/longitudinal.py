@@ -29,14 +29,23 @@ def speed_events(motion: Motion, thresholds: Thresholds) -> list[Event]:
     bounds = [0, *[k for span in spans for k in span], len(motion.times) - 1]
     # The plateaus either side weigh in up to this many samples: enough to pin v0 and v1.
     margin = int(3.0 / step)
-    edge = len(motion.times) - max(1, int(thresholds.smoothing_window / step / 2))
+    edge = len(motion.times) - max(1, int(thresholds.smoothing_window / step))
     for i, (a, b) in enumerate(spans):
         if a >= edge:
             continue  # a change that shows only in the smoothing's last window: its edge
         b = min(b, edge)
         before, after = max(bounds[2 * i], a - margin), min(bounds[2 * i + 3], b + margin)
         fitted = _fit_ramp(
-            motion.times, motion.along, before, a, b, after, step, thresholds.smoothing_window / 2
+            motion.times,
+            motion.along,
+            before,
+            a,
+            b,
+            after,
+            step,
+            # Only a ramp of an actor already moving is taken back to the start: a standing
+            # actor's start is an event of its own, whose time a condition may explain.
+            thresholds.smoothing_window if motion.moving[0] else 0.0,
         )
         if fitted is None:
             continue
@@ -45,6 +54,8 @@ def speed_events(motion: Motion, thresholds: Thresholds) -> list[Event]:
             t1 = float(motion.times[0])  # a change from the first moments: from the start
         if abs(v1 - v0) < thresholds.min_speed_change:
             continue
+        if v1 < v0 and t1 <= motion.times[0] and not motion.moving[0]:
+            continue  # slowing down from the start of an actor that stands: the filter's edge
         events.append(_event(motion.name, t1, t2, v0, v1, thresholds))
     return events
 
@@ -114,10 +125,13 @@ def _fit_ramp(
     refined = _best_ramp(window, values, coarse[0] + fine, coarse[1] + fine)
     t1, t2, v0, v1, error = refined or coarse
     if before == 0 and t1 - times[0] <= anchor:
-        # Near the start of a recording the smoothing is weakest and a ramp that began with it
-        # tends to be fitted a little late; it is taken from the start when that fits as well.
+        # At the start of a noisy recording a ramp that began with it is easily fitted late,
+        # with a short plateau that follows the noise. It is taken from the start when that
+        # fits as well as noise allows: within a few times the noise's variance, which the
+        # free fit's residual estimates (as in a likelihood-ratio test for one parameter more).
         anchored = _best_ramp(window, values, np.array([times[0]]), coarse[1] + fine)
-        if anchored is not None and anchored[4] <= 1.05 * error:
+        variance = error / max(len(window) - 5, 1)
+        if anchored is not None and anchored[4] - error <= 6 * variance:
             t1, t2, v0, v1, error = anchored
     return t1, t2, max(v0, 0.0), max(v1, 0.0)
 
