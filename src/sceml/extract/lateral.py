@@ -68,7 +68,7 @@ def _classify(
         and not _in_junction(motion, first, last, road_map)
     ):
         middle = _midway(motion, first, last)
-        tolerance = {"tolerance": thresholds.arrival_tolerance}
+        tolerance: dict[str, object] = {"tolerance": thresholds.arrival_tolerance}
         return Event("Cross", motion.name, middle, middle, tolerance, turned=turned)
     if abs(turned) > thresholds.turn_angle:
         side = "TurnLeft" if turned > 0 else "TurnRight"
