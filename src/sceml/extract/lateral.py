@@ -42,6 +42,8 @@ def path_events(
             continue  # still turning when the recording ends (or the smoothing's edge)
         first, last = max(a - settle, 0), min(b + settle, len(motion.times) - 1)
         turned = _turned(motion, first, last, 2 * settle)
+        if events and events[-1].kind == "LaneChange" and motion.times[first] < events[-1].end:
+            continue  # the way back of a lane change already found (its heading swings twice)
         event = _classify(motion, kind, first, last, turned, thresholds, road_map)
         if event is not None:
             events.append(event)

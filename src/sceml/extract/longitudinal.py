@@ -124,16 +124,30 @@ def _fit_ramp(
     fine = np.arange(-step, step + 1e-9, step / 4)
     refined = _best_ramp(window, values, coarse[0] + fine, coarse[1] + fine)
     t1, t2, v0, v1, error = refined or coarse
+    variance = error / max(len(window) - 5, 1)
+    if _steady_error(window, values) - error <= _SIGNIFICANT * variance:
+        return None  # a steady speed explains the distance as well, within the noise
     if before == 0 and t1 - times[0] <= anchor:
         # At the start of a noisy recording a ramp that began with it is easily fitted late,
         # with a short plateau that follows the noise. It is taken from the start when that
         # fits as well as noise allows: within a few times the noise's variance, which the
         # free fit's residual estimates (as in a likelihood-ratio test for one parameter more).
         anchored = _best_ramp(window, values, np.array([times[0]]), coarse[1] + fine)
-        variance = error / max(len(window) - 5, 1)
         if anchored is not None and anchored[4] - error <= 6 * variance:
             t1, t2, v0, v1, error = anchored
     return t1, t2, max(v0, 0.0), max(v1, 0.0)
+
+
+#: How many times the noise's variance a ramp must explain beyond a steady speed to count
+#: (a likelihood-ratio test for its three parameters more, at a small chance of noise passing).
+_SIGNIFICANT = 20.0
+
+
+def _steady_error(window: Array, values: Array) -> float:
+    """The squared error of the best steady speed (a straight line) through the distances."""
+    design = np.column_stack([np.ones_like(window), window - window[0]])
+    solution, *_ = np.linalg.lstsq(design, values, rcond=None)
+    return float(((design @ solution - values) ** 2).sum())
 
 
 def _best_ramp(
