@@ -21,7 +21,7 @@ from .events import Event
 from .lateral import path_events
 from .longitudinal import speed_events, within_limits
 from .motion import Motion, sample_step, smooth
-from .recording import Recording
+from .recording import Recording, Track
 from .replay import ReplayFit, replay
 from .thresholds import Thresholds
 
@@ -73,15 +73,9 @@ def extract(
     thresholds = thresholds or Thresholds()
     limits = limits or Limits()
     given = {spec.name: spec for spec in actors}
-    unknown = sorted(set(given) - {t.name for t in recording.tracks})
-    if ego is not None and ego not in {t.name for t in recording.tracks}:
-        unknown.append(ego)
-    if unknown:
-        names = ", ".join(t.name for t in recording.tracks)
-        raise ArgumentError(f"no actor {', '.join(unknown)} in the recording; it has {names}")
+    ego = _check_names(recording, given, ego)
     step = min(sample_step(t) for t in recording.tracks)
     motions = {t.name: smooth(t, thresholds, step) for t in recording.tracks}
-    ego = ego or next((t.name for t in recording.tracks if t.ego), recording.tracks[0].name)
     builder = ScenarioBuilder(
         name,
         map=map_reference,
@@ -93,44 +87,24 @@ def extract(
     found: list[ExtractedActor] = []
     notes: list[str] = []
     models: dict[str, scm.Actor] = {}
-    plans: dict[str, list[Event]] = {}
     for track in recording.tracks:
-        motion = motions[track.name]
-        spec = given.get(track.name)
-        kind = actor_kind(track, motion, spec, ego=track.name == ego)
-        speeds = speed_events(motion, thresholds)
-        notes += within_limits(
-            speeds,
-            kind,
-            limits.limit(kind, "max_acceleration"),
-            limits.limit(kind, "max_deceleration"),
+        actor, model, said = _actor(
+            builder,
+            track,
+            motions[track.name],
+            given.get(track.name),
+            ego,
+            thresholds,
+            limits,
+            road_map,
         )
-        events = sorted(
-            speeds + path_events(motion, kind, thresholds, road_map), key=lambda e: e.start
-        )
-        speed = _initial_speed(motion, events, thresholds.standing_speed)
-        size = {
-            key: value
-            for key, value in (
-                ("length", spec.length if spec and spec.length else track.length),
-                ("width", spec.width if spec and spec.width else track.width),
-            )
-            if value is not None
-        }
-        models[track.name] = builder.actor(
-            kind,
-            track.name,
-            ego=track.name == ego,
-            start=start_position(motion, kind, road_map),
-            speed=round(speed, 2),
-            **cast(dict[str, Any], size),
-        )
-        plans[track.name] = events
-        found.append(ExtractedActor(track.name, kind, track.name == ego, speed, tuple(events)))
+        found.append(actor)
+        models[track.name] = model
+        notes += said
     inferred: list[Inferred] = []
-    for track in recording.tracks:
+    for actor in found:
         inferred += add_actor_graph(
-            builder, models[track.name], plans[track.name], motions, models, ego, thresholds
+            builder, models[actor.name], list(actor.maneuvers), motions, models, ego, thresholds
         )
     if not builder.end.incoming:
         builder.flow(builder.root, builder.end)  # nobody did anything: the scenario is the start
@@ -139,6 +113,51 @@ def extract(
     return Extraction(
         scenario, recording, tuple(found), tuple(inferred), fit, thresholds, tuple(notes)
     )
+
+
+def _check_names(recording: Recording, given: dict[str, ActorSpec], ego: str | None) -> str:
+    """The ego's name, after checking that every actor named by the caller is recorded."""
+    names = [t.name for t in recording.tracks]
+    unknown = sorted(set(given) - set(names))
+    if ego is not None and ego not in names:
+        unknown.append(ego)
+    if unknown:
+        raise ArgumentError(
+            f"no actor {', '.join(unknown)} in the recording; it has {', '.join(names)}"
+        )
+    return ego or next((t.name for t in recording.tracks if t.ego), names[0])
+
+
+def _actor(
+    builder: ScenarioBuilder,
+    track: Track,
+    motion: Motion,
+    spec: ActorSpec | None,
+    ego: str,
+    thresholds: Thresholds,
+    limits: Limits,
+    road_map: RoadMap | None,
+) -> tuple[ExtractedActor, scm.Actor, list[str]]:
+    """One actor: its kind, maneuvers, start and speed, added to the scenario; and notes."""
+    kind = actor_kind(track, motion, spec, ego=track.name == ego)
+    speeds = speed_events(motion, thresholds)
+    notes = within_limits(
+        speeds, kind, limits.limit(kind, "max_acceleration"), limits.limit(kind, "max_deceleration")
+    )
+    events = sorted(speeds + path_events(motion, kind, thresholds, road_map), key=lambda e: e.start)
+    speed = _initial_speed(motion, events, thresholds.standing_speed)
+    length = spec.length if spec and spec.length else track.length
+    width = spec.width if spec and spec.width else track.width
+    size = {k: v for k, v in (("length", length), ("width", width)) if v is not None}
+    model = builder.actor(
+        kind,
+        track.name,
+        ego=track.name == ego,
+        start=start_position(motion, kind, road_map),
+        speed=round(speed, 2),
+        **cast(dict[str, Any], size),
+    )
+    return ExtractedActor(track.name, kind, track.name == ego, speed, tuple(events)), model, notes
 
 
 def _initial_speed(motion: Motion, events: list[Event], standing: float) -> float:
