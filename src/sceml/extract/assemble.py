@@ -80,7 +80,8 @@ def _tail_for(event: Event, tails: list[_Tail], begin: _Tail, thresholds: Thresh
     A turn or a walk may start later than it shows, so it follows the latest node in any case;
     any other maneuver that started while all the actor's nodes ran gets a branch of its own.
     """
-    ready = [t for t in tails if t.finish <= event.start + thresholds.sync_tolerance]
+    slack = max(thresholds.sync_tolerance, _least_wait(event, thresholds))
+    ready = [t for t in tails if t.finish <= event.start + slack]
     if not ready and not event.flexible:
         return _Tail(begin.node, begin.finish)
     tail = max(ready or tails, key=lambda t: t.finish)
