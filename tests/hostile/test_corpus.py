@@ -44,6 +44,14 @@ ENTRY_POINTS: dict[str, Callable[[Path, Path], list[str]]] = {
     "simulate": lambda file, out: ["simulate", str(file), "-o", str(out / "run.html")],
     "explore": lambda file, out: ["explore", str(file), "--budget", "2", "-o", str(out / "x")],
     "import": lambda file, out: ["import", str(file), "-o", str(out / "imported.xmi")],
+    "extract": lambda file, out: [
+        "extract",
+        str(file),
+        "-o",
+        str(out / "extracted.xmi"),
+        "--map",
+        str(EXAMPLES.parent / "maps" / "intersection.xodr"),
+    ],
     "limits": lambda file, out: [
         "validate",
         "--limits",

@@ -37,8 +37,13 @@ def read_recording(
     path = Path(path)
     try:
         text = path.read_text(encoding="utf-8-sig")
-    except (OSError, UnicodeDecodeError) as error:
-        raise LoadError(f"cannot read the recording: {error}", file=path) from None
+    except UnicodeDecodeError as error:
+        line = text_line(path, error.start)
+        raise LoadError("the recording is not valid UTF-8", file=path, line=line) from None
+    except OSError as error:
+        raise LoadError(
+            f"cannot read the recording: {error.strerror or error}", file=path
+        ) from None
     rows = list(csv.reader(text.splitlines(), skipinitialspace=True))
     chosen = format or _detect(rows, path)
     readers: dict[str, Callable[[list[list[str]], Path], Recording]] = {
@@ -52,6 +57,14 @@ def read_recording(
     if not recording.tracks:
         raise LoadError("the recording has no actor with samples", file=path)
     return recording
+
+
+def text_line(path: Path, offset: int) -> int | None:
+    """The line of a byte offset in a file (for an encoding error), None if unreadable."""
+    try:
+        return path.read_bytes()[:offset].count(b"\n") + 1
+    except OSError:
+        return None
 
 
 def _detect(rows: list[list[str]], path: Path) -> str:
