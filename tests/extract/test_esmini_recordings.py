@@ -13,6 +13,7 @@ from conftest import REPO
 
 from sceml import io
 from sceml.cli import cli
+from sceml.editor.session import EditorSession
 from sceml.extract import extract, read_recording
 from sceml.extract.closedloop import allowed_error
 from sceml.maps import load_map
@@ -56,7 +57,7 @@ def test_an_esmini_recording_extracts_to_the_examples_graph(name: str) -> None:
         assert fit.largest < allowed_error(found, fit.name), fit
 
 
-def test_the_extracted_scenario_renders_and_exports(tmp_path: Path) -> None:
+def test_the_extracted_scenario_renders_exports_and_opens_in_the_editor(tmp_path: Path) -> None:
     (tmp_path / "maps").mkdir()
     shutil.copyfile(REPO / "maps" / "intersection.xodr", tmp_path / "maps" / "intersection.xodr")
     found = extract(
@@ -76,3 +77,9 @@ def test_the_extracted_scenario_renders_and_exports(tmp_path: Path) -> None:
         )
         assert exported.exit_code == 0, exported.output
         assert "RelativeDistanceCondition" in target.read_text(encoding="utf-8")
+    session = EditorSession()
+    session.open(saved)
+    view = session.view()
+    # Root, end, 5 maneuvers, 2 inferred conditions and 2 arrival checks; no error on any.
+    assert len(view["nodes"]) == 11
+    assert not [d for d in session.diagnostics() if d.severity.name == "ERROR"]
