@@ -50,11 +50,12 @@ def test_esmini_csv_logger_output_gives_names_boxes_and_positions() -> None:
 def test_osc_generator_csv_places_objects_relative_to_the_ego(tmp_path: Path) -> None:
     # Ego heading 0° = north (OSC-Generator: degrees clockwise from north), so an object 10 m
     # ahead and 2 m to the left is at x = -2, y = 10 in the map's frame (x east, y north).
+    # Class 3 is a pedestrian in OSC-Generator 0.2.0 (man_helpers.label_maneuvers).
     ten_metres = math.degrees(10.0 / 6378137.0)
     path = write(
         tmp_path,
         "timestamp,lat,long,heading,speed,pos_x_1,pos_y_1,speed_x_1,speed_y_1,class_1\n"
-        "0.0,0.0,0.0,0.0,10.0,10.0,2.0,0.0,0.0,5\n"
+        "0.0,0.0,0.0,0.0,10.0,10.0,2.0,0.0,0.0,3\n"
         f"0.1,{ten_metres!r},0.0,90.0,10.0,,,,,\n",
     )
     recording = read_recording(path)

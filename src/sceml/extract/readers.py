@@ -22,8 +22,16 @@ FORMATS = ("sceml", "esmini", "osc-generator")
 #: Earth radius (m) of OSC-Generator's flat-earth conversion between metres and degrees.
 _EARTH_RADIUS = 6378137.0
 
-#: OSC-Generator's object classes (its `class_N` column) as SceML actor kinds.
-_OSC_GENERATOR_KINDS = {1: "Car", 2: "Truck", 3: "Motorcycle", 4: "Bicycle", 5: "Pedestrian"}
+#: OSC-Generator's object classes (its `class_N` column, as its man_helpers.label_maneuvers
+#: names them) as SceML actor kinds; 0 (unknown) and 11 (animal) have none.
+_OSC_GENERATOR_KINDS = {
+    3: "Pedestrian",
+    5: "Bicycle",
+    6: "Motorcycle",
+    7: "Car",
+    8: "Van",
+    9: "Truck",
+}
 
 
 def read_recording(
