@@ -22,6 +22,8 @@ CORPUS = HERE / "corpus"
 EXAMPLES = HERE.parents[1] / "examples"
 XOSC = HERE.parent / "export" / "golden" / "uis1-1.3-generic.xosc"
 CONCRETE, LOGICAL = EXAMPLES / "uis1-concrete.xmi", EXAMPLES / "uis1-logical.xmi"
+RECORDING = HERE.parent / "extract" / "data" / "uis1-esmini.csv"
+MAP = EXAMPLES.parent / "maps" / "intersection.xodr"
 
 #: Each command with good arguments: (input file, arguments after it, given the output folder).
 COMMANDS: dict[str, tuple[Path, Callable[[Path], list[str]]]] = {
@@ -33,6 +35,7 @@ COMMANDS: dict[str, tuple[Path, Callable[[Path], list[str]]]] = {
     "flatten": (CONCRETE, lambda out: ["-o", str(out / "a.xmi")]),
     "check-xosc": (XOSC, lambda out: ["--no-quality-checker", "-o", str(out / "report.txt")]),
     "import": (XOSC, lambda out: ["-o", str(out / "i.xmi")]),
+    "extract": (RECORDING, lambda out: ["-o", str(out / "e.xmi"), "--map", str(MAP)]),
     "concretize": (
         LOGICAL,
         lambda out: [

@@ -17,6 +17,7 @@ from typing import Any, cast
 import scemlmodel as scm
 
 from ..build import ScenarioBuilder, world
+from ..params import value
 from .events import Event
 from .motion import Motion
 from .sync import Explanation, explain
@@ -98,7 +99,7 @@ def _arrival(
     arrived = builder.add(
         "InLocationRadius",
         actor,
-        position=_position(event.destination),
+        position=_place(event.destination),
         radius=event.parameters.get("tolerance", 2.0),
     )
     builder.flow(node, arrived)
@@ -124,14 +125,23 @@ def _position(point: tuple[float, float, float]) -> scm.WorldPosition:
     return world(round(x, 3), round(y, 3), h=round(h, 4))
 
 
+def _place(point: tuple[float, float, float]) -> scm.WorldPosition:
+    """A place a condition waits for: no heading, which a circle about it does not have (and a
+    heading against the lane's traffic, of an actor overtaking, would be flagged)."""
+    x, y, _ = point
+    return scm.WorldPosition(x=value(round(x, 3)), y=value(round(y, 3)))
+
+
 def _node_parameters(parameters: dict[str, object], event: Event | None = None) -> dict[str, Any]:
-    """Parameters as the builder takes them: points (x, y, heading) become world positions."""
+    """Parameters as the builder takes them: points (x, y, heading) become world positions
+    (a condition's `position` a place without heading)."""
     made: dict[str, Any] = {}
-    for key, value in parameters.items():
-        if isinstance(value, tuple):
-            made[key] = _position(cast(tuple[float, float, float], value))
+    for key, item in parameters.items():
+        if isinstance(item, tuple):
+            point = cast(tuple[float, float, float], item)
+            made[key] = _place(point) if key == "position" else _position(point)
         else:
-            made[key] = value
+            made[key] = item
     if event is not None and event.destination is not None:
         made["destination"] = _position(event.destination)
     return made
