@@ -73,6 +73,8 @@ def _classify(
         tolerance: dict[str, object] = {"tolerance": thresholds.arrival_tolerance}
         return Event("Cross", motion.name, middle, middle, tolerance, turned=turned)
     if abs(turned) > thresholds.turn_angle:
+        if road_map is not None and not _in_junction(motion, first, last, road_map, any_lane=True):
+            return None  # a bend of the road, which following the lane already does
         side = "TurnLeft" if turned > 0 else "TurnRight"
         return Event(
             side,
@@ -189,12 +191,17 @@ def _midway(motion: Motion, first: int, last: int) -> float:
     return float(motion.times[k])
 
 
-def _in_junction(motion: Motion, first: int, last: int, road_map: RoadMap | None) -> bool:
+def _in_junction(
+    motion: Motion, first: int, last: int, road_map: RoadMap | None, *, any_lane: bool = False
+) -> bool:
+    """Whether the middle of a change lies in a junction: on junction roads only, or (with
+    `any_lane`) on at least one, as a turn does where the junction's roads overlap the arms."""
     if road_map is None:
         return False
     k = (first + last) // 2
-    found = road_map.world_to_lane(float(motion.x[k]), float(motion.y[k]))
-    return bool(found) and all(road_map.road(c.road_id).junction != "-1" for c in found)
+    found = road_map.world_to_lane(float(motion.x[k]), float(motion.y[k]), tolerance=1.0)
+    inside = [road_map.road(c.road_id).junction != "-1" for c in found]
+    return bool(found) and (any(inside) if any_lane else all(inside))
 
 
 def _finish_destinations(motion: Motion, events: list[Event], thresholds: Thresholds) -> None:

@@ -170,5 +170,12 @@ def _initial_speed(motion: Motion, events: list[Event], standing: float) -> floa
             return event.from_speed if event.from_speed > standing else 0.0
     if not motion.moving[0]:
         return 0.0
-    speed = float(np.median(motion.speed[: max(1, int(1.0 / motion.step))]))
+    # A steady speed up to the first speed change (or the end): the slope of the distance
+    # driven, which noise moves far less than the first second's smoothed speed.
+    changes = [e.start for e in events if e.longitudinal]
+    last = motion.index(changes[0]) if changes else len(motion.times) - 1
+    if last < 4:
+        last = len(motion.times) - 1
+    span = motion.times[: last + 1] - t0
+    speed = float(np.polyfit(span, motion.along[: last + 1], 1)[0])
     return speed if speed > standing else 0.0
