@@ -35,4 +35,5 @@ class Event:
 
     @property
     def longitudinal(self) -> bool:
+        """Whether the event changes the speed (the others change the path)."""
         return self.kind in LONGITUDINAL

@@ -33,6 +33,7 @@ class Motion:
 
     @property
     def step(self) -> float:
+        """The time between samples (s)."""
         return float(self.times[1] - self.times[0])
 
     def index(self, t: float) -> int:
@@ -44,6 +45,7 @@ class Motion:
         return float(np.interp(t, self.times, values))
 
     def position(self, t: float) -> tuple[float, float]:
+        """The smoothed (x, y) at time t."""
         return self.at(self.x, t), self.at(self.y, t)
 
 

@@ -113,6 +113,7 @@ class _Samples:
         self.last_line: dict[str, int] = {}
 
     def add(self, name: str, line: int, t: float, x: float, y: float, h: float) -> None:
+        """One sample of an actor; its time must follow the actor's last one."""
         samples = self.rows.setdefault(name, [])
         if samples and t <= samples[-1][0]:
             raise LoadError(
@@ -124,6 +125,7 @@ class _Samples:
         samples.append((t, x, y, h))
 
     def tracks(self, ego: str | None) -> tuple[Track, ...]:
+        """The gathered samples as tracks, in the order the actors first appeared."""
         made = []
         for name, samples in self.rows.items():
             array = np.array(samples, dtype=float)

@@ -28,6 +28,7 @@ class Track:
 
     @property
     def duration(self) -> float:
+        """Seconds from the first sample to the last."""
         return float(self.times[-1] - self.times[0]) if len(self.times) else 0.0
 
 
@@ -49,8 +50,10 @@ class Recording:
 
     @property
     def start(self) -> float:
+        """The earliest time of any track."""
         return min(float(t.times[0]) for t in self.tracks)
 
     @property
     def end(self) -> float:
+        """The latest time of any track."""
         return max(float(t.times[-1]) for t in self.tracks)

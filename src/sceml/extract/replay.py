@@ -35,6 +35,7 @@ class ReplayFit:
 
     @property
     def largest(self) -> float:
+        """The largest distance (m) of any actor."""
         return max((a.largest for a in self.actors), default=0.0)
 
 

@@ -39,6 +39,7 @@ class Explanation:
     alternatives: tuple[str, ...] = field(default=())
 
     def describe(self) -> str:
+        """The condition as one line: kind, actors and parameters."""
         about = f"{self.actor}" + (f" and {self.target}" if self.target else "")
         values = ", ".join(f"{k}={_show(v)}" for k, v in self.parameters.items())
         return f"{self.kind}({about}; {values})"
