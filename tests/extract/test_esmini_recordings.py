@@ -60,12 +60,13 @@ def test_an_esmini_recording_extracts_to_the_examples_graph(name: str) -> None:
 def test_the_extracted_scenario_renders_exports_and_opens_in_the_editor(tmp_path: Path) -> None:
     (tmp_path / "maps").mkdir()
     shutil.copyfile(REPO / "maps" / "intersection.xodr", tmp_path / "maps" / "intersection.xodr")
+    # The scenario beside the map's folder, so that the map is among the files it may read.
     found = extract(
         read_recording(DATA / "uis2-esmini.csv"),
         load_map(REPO / "maps" / "intersection.xodr"),
-        map_reference="../maps/intersection.xodr",
+        map_reference="maps/intersection.xodr",
     )
-    saved = io.save(found.scenario, tmp_path / "out" / "uis2.xmi")
+    saved = io.save(found.scenario, tmp_path / "uis2.xmi")
     runner = CliRunner()
     drawn = runner.invoke(cli, ["render", str(saved), "-o", str(tmp_path / "uis2.svg")])
     assert drawn.exit_code == 0, drawn.output

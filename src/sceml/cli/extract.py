@@ -178,7 +178,8 @@ def extract_command(
         f"{len(found.inferred)} inferred conditions{fit}",
         err=show_report and report_format == "json",
     )
-    document = load_scenario(output)
+    # The user named the map with --map: validating the written scenario may read it there.
+    document = load_scenario(output, allow=[map_path.resolve().parent])
     diagnostics = validate(document.root, document=document)
     echo_diagnostics([d for d in diagnostics if d.severity is not Severity.INFO], document, output)
     if any(d.severity is Severity.ERROR for d in diagnostics):
