@@ -10,7 +10,7 @@ from ..modules import naming
 from ..modules.library import definition_named
 from ..modules.resolve import resolved_definition
 from ..traversal import attributes, containments
-from .context import EditContext, argument, referrers, require
+from .context import EditContext, argument, check_text, referrers, require
 from .errors import OperationError
 from .fields import actor_kind_names
 from .node_ops import adopt, attribute_value, place
@@ -38,7 +38,9 @@ def add_actor(ctx: EditContext, op: dict[str, Any]) -> None:
     cls = _kind(argument(op, "kind"))
     taken = {str(actor.name) for actor in root.actors}
     name = op.get("name") or naming.numbered(cls.__name__.lower(), taken)
-    require(isinstance(name, str) and name not in taken, f"an actor is already named {name!r}")
+    require(isinstance(name, str), "an actor's name must be text")
+    check_text("name", name)
+    require(name not in taken, f"an actor is already named {name!r}")
     actor = cls(name=name)
     ctx.rec.insert(root, "actors", actor)
     ctx.ids.of(actor, "a")

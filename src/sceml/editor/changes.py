@@ -116,6 +116,20 @@ class _Ordered:
             held.update(values)
 
 
+@dataclass
+class Footprint:
+    """Ids of what a step touched: (object, feature) pairs it set, objects it set on or pointed
+    to, and objects it added or removed."""
+
+    features: set[tuple[int, str]]
+    touched: set[int]
+    lives: set[int]
+
+
+def _is_object(value: object) -> bool:
+    return isinstance(value, EObject)
+
+
 class Recorder:
     """Applies small changes to the model and remembers them, in order, to undo or redo."""
 
@@ -168,6 +182,36 @@ class Recorder:
         """Apply every recorded change again, first first."""
         for step in self.steps:
             step.do()
+
+    def footprint(self) -> Footprint:
+        """What the recorded steps touch, to tell whether another step's undo can pass them."""
+        found = Footprint(set(), set(), set())
+        for step in self.steps:
+            change = step.change
+            if isinstance(change, _Set):
+                found.features.add((id(change.owner), change.feature))
+                found.touched.add(id(change.owner))
+                found.touched.update(id(v) for v in (change.old, change.new) if _is_object(v))
+            else:
+                # Insertions and removals in one list commute (undo removes the very item, or
+                # puts it back near its index); what matters is the item coming and going.
+                found.lives.add(id(change.item))
+        return found
+
+    def overlaps(self, other: Recorder) -> bool:
+        """Whether undoing these changes would disturb `other`'s (made after them), or back."""
+        mine, theirs = self.footprint(), other.footprint()
+        return bool(
+            mine.features & theirs.features
+            or mine.lives & (theirs.lives | theirs.touched)
+            or theirs.lives & mine.touched
+        )
+
+    def removed(self, obj: object) -> bool:
+        """Whether these changes took `obj` out of a list it was in."""
+        return any(
+            isinstance(step.change, _Remove) and step.change.item is obj for step in self.steps
+        )
 
     def changes(self) -> list[Change]:
         """What the recorded steps change, for incremental validation; undo and redo change the

@@ -17,7 +17,7 @@ from .. import io
 from ..copying import Copier
 from ..errors import SceMLError
 from ..modules.extract import extract, find_region
-from .context import EditContext, argument, require
+from .context import EditContext, argument, check_text, require
 from .errors import OperationError
 from .node_ops import detach_flow
 
@@ -25,8 +25,12 @@ from .node_ops import detach_flow
 def extract_module(ctx: EditContext, op: dict[str, Any]) -> None:
     """Move the selected nodes into a new module of a library file and use it instead."""
     require(isinstance(ctx.graph, scm.Scenario), "modules are extracted from a scenario")
-    nodes = [ctx.node(i) for i in argument(op, "nodes") or []]
-    name, library_text = str(argument(op, "name")), str(argument(op, "library"))
+    chosen, name, library_text = (argument(op, key) for key in ("nodes", "name", "library"))
+    require(isinstance(chosen, list), "'nodes' must be a list of node ids")
+    require(isinstance(name, str) and name.strip() != "", "the module needs a name")
+    require(isinstance(library_text, str) and library_text != "", "'library' must name a file")
+    check_text("name", name)
+    nodes = [ctx.node(i) for i in chosen]
     library, path = ctx.find_library(library_text, True)
     try:
         region = find_region(ctx.graph, nodes)
