@@ -5,6 +5,7 @@ import { useCallback, useEffect, useMemo, useRef, useState } from "react";
 import { api, ApiError } from "./api";
 import { Diagram } from "./canvas/Diagram";
 import { ExportDialog, ExtractDialog, OpenDialog, UseModuleDialog, type ExportResult } from "./dialogs/dialogs";
+import { RecoveryDialog } from "./dialogs/RecoveryDialog";
 import { pasteOffset } from "./lib/clipboard";
 import type { Direction } from "./lib/layout";
 import { Palette } from "./panels/Palette";
@@ -48,6 +49,8 @@ export function Editor() {
   const [dialog, setDialog] = useState<DialogState>(null);
   const [clipboard, setClipboard] = useState<{ count: number; pastes: number }>({ count: 0, pastes: 0 });
   const canvas = useRef<HTMLDivElement>(null);
+  // The recovery offer the user put off with Escape (it stays on the server until answered).
+  const [recoveryLater, setRecoveryLater] = useState<string | null>(null);
 
   const editable = view !== null && !view.readOnly;
   const selectedNodes = useMemo(() => diagram.nodes.filter((node) => node.selected), [diagram.nodes]);
@@ -58,6 +61,19 @@ export function Editor() {
   useEffect(() => {
     document.title = view ? `${view.dirty ? "• " : ""}SceML — ${view.document.name}` : "SceML";
   }, [view]);
+  // Text typed into a field without Enter is committed when the page goes away (reload, close):
+  // blurring commits it, and the request is sent with keepalive, so it reaches the server.
+  useEffect(() => {
+    const commitFocused = () => {
+      if (document.activeElement instanceof HTMLInputElement) document.activeElement.blur();
+    };
+    window.addEventListener("beforeunload", commitFocused);
+    window.addEventListener("pagehide", commitFocused);
+    return () => {
+      window.removeEventListener("beforeunload", commitFocused);
+      window.removeEventListener("pagehide", commitFocused);
+    };
+  }, []);
   useEffect(() => {
     if (!view?.dirty) return;
     const warn = (event: BeforeUnloadEvent) => {
@@ -345,6 +361,14 @@ export function Editor() {
         {view && <Properties view={view} node={single} selectionCount={selectedNodes.length} send={send} openDefinition={openDefinition} />}
       </div>
       {view && <Problems diagnostics={view.diagnostics} onShow={showProblem} />}
+      {view?.recovery && editable && recoveryLater !== view.recovery.path && (
+        <RecoveryDialog
+          recovery={view.recovery}
+          documentName={view.document.name}
+          onAnswer={(restore) => void server.run(() => api.recovery(restore))}
+          onLater={() => setRecoveryLater(view.recovery?.path ?? null)}
+        />
+      )}
       {dialog?.type === "open" && <OpenDialog view={view} onOpen={(path, module) => void open(path, module)} onCancel={() => setDialog(null)} />}
       {dialog?.type === "export" && view && <ExportDialog view={view} onExport={exportXosc} onCancel={() => setDialog(null)} />}
       {dialog?.type === "extract" && (

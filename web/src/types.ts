@@ -174,6 +174,8 @@ export interface View {
   palette: PaletteGroup[];
   style: Style;
   choices: Record<string, string[]>;
+  /** A recovery copy an earlier run left (after a crash or kill), offered until answered. */
+  recovery: { path: string; written: string } | null;
 }
 
 export type Op = { op: string } & Record<string, unknown>;
