@@ -224,3 +224,51 @@ def test_invalid_number_text_is_marked_with_the_reason(
         speed.press("Enter")
     expect(speed).not_to_have_attribute("aria-invalid", "true")
     expect(node(page, "Accelerate_1")).to_contain_text("targetSpeed: 9 m/s")
+
+
+def edges_between(page: Page) -> set[tuple[str, str]]:
+    view = page.evaluate("fetch('/api/view').then(r => r.json())")
+    names = {n["id"]: n["name"] for n in view["nodes"]}
+    return {(names[e["source"]], names[e["target"]]) for e in view["edges"]}
+
+
+def test_connect_by_keyboard_and_search_the_palette(
+    page: Page, editor: object, examples_copy: Path
+) -> None:
+    url = editor(examples_copy / "uis1-concrete.xmi")  # type: ignore[operator]
+    open_editor(page, url)
+    # Palette search by typing: "/" focuses it, Enter adds the first match.
+    page.get_by_role("application", name="Diagram").click(position={"x": 5, "y": 5})
+    page.keyboard.press("/")
+    search = page.get_by_role("searchbox", name="Search the palette")
+    expect(search).to_be_focused()
+    page.keyboard.type("decel")
+    palette = page.get_by_role("region", name="Palette")
+    expect(palette.get_by_role("button")).to_have_count(1)
+    with ops_answer(page):
+        page.keyboard.press("Enter")
+    expect(node(page, "Decelerate_1")).to_be_visible()
+    assert ("Accelerate_1", "Decelerate_1") not in edges_between(page)
+
+    # Select the source, C, select the target, C.
+    node(page, "Accelerate_1").focus()
+    page.keyboard.press("Enter")
+    page.keyboard.press("c")
+    expect(page.get_by_text("Connecting from Accelerate_1")).to_be_visible()
+    node(page, "Decelerate_1").focus()
+    page.keyboard.press("Enter")
+    with ops_answer(page):
+        page.keyboard.press("c")
+    expect(page.get_by_text("Connecting from")).to_have_count(0)
+    assert ("Accelerate_1", "Decelerate_1") in edges_between(page)
+
+    # The handles are keyboard controls too: Enter on an out-handle, Enter on an in-handle.
+    diagram = page.get_by_role("application", name="Diagram")
+    out = diagram.get_by_role("button", name="Connect from Decelerate_1")
+    out.focus()
+    page.keyboard.press("Enter")
+    into = diagram.get_by_role("button", name="Connect Decelerate_1 to End")
+    into.focus()
+    with ops_answer(page):
+        page.keyboard.press("Enter")
+    assert ("Decelerate_1", "End") in edges_between(page)

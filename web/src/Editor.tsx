@@ -8,7 +8,7 @@ import { ExportDialog, ExtractDialog, OpenDialog, UseModuleDialog, type ExportRe
 import { RecoveryDialog } from "./dialogs/RecoveryDialog";
 import { pasteOffset } from "./lib/clipboard";
 import type { Direction } from "./lib/layout";
-import { Palette } from "./panels/Palette";
+import { Palette, PALETTE_SEARCH_ID } from "./panels/Palette";
 import { Problems } from "./panels/Problems";
 import { Properties } from "./panels/Properties";
 import { Toolbar } from "./panels/Toolbar";
@@ -242,6 +242,26 @@ export function Editor() {
   );
 
   const fit = useCallback(() => void flow.fitView({ padding: 0.06, maxZoom: 1.25, duration: 200 }), [flow]);
+  // Connecting by keyboard: C on the selected source, then C on the selected target.
+  const [connectFrom, setConnectFrom] = useState<{ id: string; name: string } | null>(null);
+  const keyConnect = useCallback(
+    (id: string, end: "source" | "target") => {
+      if (!editable) return;
+      const name = view?.nodes.find((item) => item.id === id)?.name ?? id;
+      if (connectFrom === null) {
+        if (end === "source") setConnectFrom({ id, name });
+        return;
+      }
+      if (id !== connectFrom.id) void edit([{ op: "connect", source: connectFrom.id, target: id }], "Connect");
+      setConnectFrom(null);
+    },
+    [editable, view, connectFrom, edit],
+  );
+  const connectSelected = useCallback(() => {
+    const only = selectedNodes.length === 1 ? selectedNodes[0] : undefined;
+    if (only && only.connectable !== false) keyConnect(only.id, connectFrom === null ? "source" : "target");
+  }, [selectedNodes, keyConnect, connectFrom]);
+
   const undo = useCallback(() => void (editable && view?.undo && server.run(api.undo)), [editable, view, server]);
   const redo = useCallback(() => void (editable && view?.redo && server.run(api.redo)), [editable, view, server]);
   const save = useCallback(() => {
@@ -309,8 +329,13 @@ export function Editor() {
     cut: () => void cut(),
     selectAll: () => setSelection(new Set(diagram.nodes.filter((node) => node.selectable !== false).map((node) => node.id))),
     save,
-    clearSelection: () => setSelection(new Set()),
+    clearSelection: () => {
+      setConnectFrom(null);
+      setSelection(new Set());
+    },
     fit,
+    connect: connectSelected,
+    search: () => document.getElementById(PALETTE_SEARCH_ID)?.focus(),
   });
 
   const single = selectedNodes.length === 1 && selectedNodes[0] ? selectedNodes[0].data.node : null;
@@ -353,6 +378,8 @@ export function Editor() {
             state={diagram}
             direction={direction}
             toggleExpanded={toggleExpanded}
+            connectFrom={connectFrom}
+            keyConnect={keyConnect}
             onConnect={(source, target) => void edit([{ op: "connect", source, target }], "Connect")}
             onMoved={(positions) => void edit([{ op: "move", positions }], "Move")}
             onDropItem={addItem}

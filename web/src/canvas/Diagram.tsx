@@ -17,17 +17,19 @@ interface Props {
   state: DiagramState;
   direction: Direction;
   toggleExpanded: (id: string) => void;
+  connectFrom: { id: string; name: string } | null;
+  keyConnect: (id: string, end: "source" | "target") => void;
   onConnect: (source: string, target: string) => void;
   onMoved: (positions: Record<string, XY>) => void;
   onDropItem: (item: PaletteItem, at: XY) => void;
 }
 
-export function Diagram({ view, state, direction, toggleExpanded, onConnect, onMoved, onDropItem }: Props) {
+export function Diagram({ view, state, direction, toggleExpanded, connectFrom, keyConnect, onConnect, onMoved, onDropItem }: Props) {
   const flow = useReactFlow();
   const readOnly = view?.readOnly ?? true;
   const context = useMemo(
-    () => ({ style: view?.style, direction, readOnly, toggleExpanded }),
-    [view?.style, direction, readOnly, toggleExpanded],
+    () => ({ style: view?.style, direction, readOnly, toggleExpanded, connectFrom, keyConnect }),
+    [view?.style, direction, readOnly, toggleExpanded, connectFrom, keyConnect],
   );
 
   const onDrop = (event: DragEvent) => {
@@ -77,6 +79,9 @@ export function Diagram({ view, state, direction, toggleExpanded, onConnect, onM
           <MiniMap<DiagramNode> pannable zoomable style={{ width: 170, height: 120 }} nodeColor={minimapColour} nodeStrokeColor="#37474f" nodeStrokeWidth={2} />
           <Controls showInteractive={false} showFitView={false} />
         </ReactFlow>
+        <div className="connect-hint" aria-live="polite">
+          {connectFrom ? `Connecting from ${connectFrom.name}: select the target and press C (or Enter on its in-handle); Escape cancels.` : ""}
+        </div>
       </div>
     </DiagramContext.Provider>
   );
