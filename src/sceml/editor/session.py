@@ -56,6 +56,7 @@ class EditorSession:
         self.ids = Ids()
         self.clipboard = Clipboard()
         self._listing = view.Listing()
+        self._cache = view.NodeCache()
         self.validator: IncrementalValidator | None = None
         #: The folders files may be opened from and written to, fixed by the first file opened
         #: (the one named when the server started), so no request can widen them.
@@ -101,6 +102,7 @@ class EditorSession:
             module = str(graph.name)
         self.document, self.graph, self.module = document, graph, module
         self.stack, self.ids, self._listing = CommandStack(), Ids(), view.Listing()
+        self._cache = view.NodeCache()
         self.validator = IncrementalValidator(document.root, document=document)
         self.version += 1
 
@@ -232,7 +234,7 @@ class EditorSession:
     def view(self, created: list[str] | None = None, tab: str = ANY_TAB) -> dict[str, Any]:
         """The whole view of the protocol, re-validated."""
         assert self.document is not None, "no file is open"
-        listing = view.Lister(self.ids, self.path.parent).graph(self.graph)
+        listing = view.Lister(self.ids, self.path.parent, self._cache).graph(self.graph)
         self._listing = listing
         found = view.problems(self.diagnostics(), listing, self.ids)
         answer: dict[str, Any] = {
@@ -303,8 +305,10 @@ class EditorSession:
         assert self.validator is not None
         for recorder in recorders:
             self.validator.note(recorder.changes())
+            self._cache.forget(recorder.changes(), self.graph)
         if any(isinstance(op, dict) and op.get("op") in operations.OUTSIDE for op in ops):
             self.validator.forget()
+            self._cache.forget_all()
 
     def undo(self, tab: str = ANY_TAB) -> dict[str, Any]:
         """Revert `tab`'s last step (the last step of all, without a tab)."""
@@ -320,6 +324,7 @@ class EditorSession:
         if step is not None:
             assert self.validator is not None
             self.validator.note(step.recorder.changes())
+            self._cache.forget(step.recorder.changes(), self.graph)
             self.version += 1
         return self.view(tab=tab)
 
@@ -342,6 +347,7 @@ class EditorSession:
         # Saving may rewrite references and the file's path: validate the whole model again.
         assert self.validator is not None
         self.validator.forget()
+        self._cache.forget_all()
         if target != self.path:
             if target.parent != self.path.parent:
                 # Relative references (map, libraries) were rewritten for the new folder: read
