@@ -244,7 +244,7 @@ export function Editor() {
   const fit = useCallback(() => void flow.fitView({ padding: 0.06, maxZoom: 1.25, duration: 200 }), [flow]);
   // Connecting by keyboard: C on the selected source, then C on the selected target.
   const [connectFrom, setConnectFrom] = useState<{ id: string; name: string } | null>(null);
-  const keyConnect = useCallback(
+  const connecting = useCallback(
     (id: string, end: "source" | "target") => {
       if (!editable) return;
       const name = view?.nodes.find((item) => item.id === id)?.name ?? id;
@@ -257,6 +257,12 @@ export function Editor() {
     },
     [editable, view, connectFrom, edit],
   );
+  // One function for the whole session: the nodes' context must not change with every view.
+  const latestConnecting = useRef(connecting);
+  useEffect(() => {
+    latestConnecting.current = connecting;
+  }, [connecting]);
+  const keyConnect = useCallback((id: string, end: "source" | "target") => latestConnecting.current(id, end), []);
   const connectSelected = useCallback(() => {
     const only = selectedNodes.length === 1 ? selectedNodes[0] : undefined;
     if (only && only.connectable !== false) keyConnect(only.id, connectFrom === null ? "source" : "target");

@@ -1,7 +1,7 @@
 // The canvas: React Flow with the notation's nodes, connect by dragging, drop from the palette.
 
 import { Background, Controls, MiniMap, ReactFlow, type Connection } from "@xyflow/react";
-import { useMemo, type DragEvent } from "react";
+import { useCallback, useEffect, useMemo, useRef, type DragEvent } from "react";
 import { useReactFlow } from "@xyflow/react";
 import type { Direction } from "../lib/layout";
 import { resolveLook } from "../lib/looks";
@@ -27,9 +27,18 @@ interface Props {
 export function Diagram({ view, state, direction, toggleExpanded, connectFrom, keyConnect, onConnect, onMoved, onDropItem }: Props) {
   const flow = useReactFlow();
   const readOnly = view?.readOnly ?? true;
+  // Every view brings a new (equal) style object; a new context value would redraw every node.
+  const styleText = JSON.stringify(view?.style ?? null);
+  const style = useMemo(() => (JSON.parse(styleText) as View["style"] | null) ?? undefined, [styleText]);
+  // The toggle changes with every view (it reads the view's nodes); the nodes get a stable one.
+  const latestToggle = useRef(toggleExpanded);
+  useEffect(() => {
+    latestToggle.current = toggleExpanded;
+  }, [toggleExpanded]);
+  const toggle = useCallback((id: string) => latestToggle.current(id), []);
   const context = useMemo(
-    () => ({ style: view?.style, direction, readOnly, toggleExpanded, connectFrom, keyConnect }),
-    [view?.style, direction, readOnly, toggleExpanded, connectFrom, keyConnect],
+    () => ({ style, direction, readOnly, toggleExpanded: toggle, connectFrom, keyConnect }),
+    [style, direction, readOnly, toggle, connectFrom, keyConnect],
   );
 
   const onDrop = (event: DragEvent) => {
@@ -69,7 +78,8 @@ export function Diagram({ view, state, direction, toggleExpanded, connectFrom, k
           multiSelectionKeyCode={["Shift", "Meta", "Control"]}
           selectionOnDrag={false}
           panOnDrag
-          minZoom={0.1}
+          minZoom={0.02}
+          onlyRenderVisibleElements
           maxZoom={2.5}
           connectionRadius={30}
           proOptions={{ hideAttribution: true }}
