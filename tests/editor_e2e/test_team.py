@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import http.server
 import os
+import re
 import signal
 import threading
 import time
@@ -272,3 +273,61 @@ def test_connect_by_keyboard_and_search_the_palette(
     with ops_answer(page):
         page.keyboard.press("Enter")
     assert ("Decelerate_1", "End") in edges_between(page)
+
+
+def overlaps(a: dict[str, float], b: dict[str, float]) -> bool:
+    return not (
+        a["x"] + a["width"] <= b["x"]
+        or b["x"] + b["width"] <= a["x"]
+        or a["y"] + a["height"] <= b["y"]
+        or b["y"] + b["height"] <= a["y"]
+    )
+
+
+def test_modules_expand_with_room_unique_labels_fitting_roles_and_a_way_back(
+    page: Page, editor: object, examples_copy: Path
+) -> None:
+    url = editor(examples_copy / "uis2-concrete.xmi")  # type: ignore[operator]
+    open_editor(page, url)
+    use = node(page, "CrossingManeuver_1")
+    toolbar = page.get_by_role("toolbar", name="Editor")
+    with ops_answer(page):  # every position saved, as after any move: the hard case
+        toolbar.get_by_role("button", name="Arrange").click()
+    with ops_answer(page):
+        use.get_by_role("button", name="Expand").click()
+    expect(toolbar.get_by_role("button", name="Undo")).to_have_attribute(
+        "title", re.compile("Arrange")
+    )
+    # The internals are labelled by their use: no two boxes share a name.
+    expect(node(page, "CrossingManeuver_1.Accelerate_1")).to_be_visible()
+    labels = page.locator(".react-flow__node").evaluate_all("els => els.map(e => e.ariaLabel)")
+    assert len(labels) == len(set(labels)), labels
+    # The frame made room: it covers no other top-level box.
+    page.wait_for_timeout(500)
+    frame = use.bounding_box()
+    for name in ("Accelerate_1", "End", "Root"):
+        assert not overlaps(frame, node(page, name).bounding_box()), name
+
+    # Dropping the module again: only fitting actors, a single fitting one chosen already.
+    page.get_by_role("region", name="Palette").get_by_role(
+        "button", name="CrossingManeuver", exact=True
+    ).click()
+    dialog = page.get_by_role("dialog", name="Use CrossingManeuver")
+    crosser = dialog.get_by_label("crosser", exact=True)
+    expect(crosser).to_have_value("pedestrian")
+    expect(crosser.locator("option")).to_have_text(["(none)", "pedestrian (Pedestrian)"])
+    expect(dialog.get_by_label("trigger", exact=True).locator("option")).to_have_text(
+        ["(none)", "ego (Car)", "car (Car)"]
+    )
+    dialog.get_by_role("button", name="Cancel").click()
+
+    # Open definition, then back to the scenario.
+    use.focus()
+    page.keyboard.press("Enter")
+    props = page.get_by_role("region", name="Properties")
+    page.once("dialog", lambda dialog: dialog.accept())  # "Save the changes and open ...?"
+    props.get_by_role("button", name="Open definition").click()
+    expect(toolbar).to_contain_text("sceml-library.xmi")
+    toolbar.get_by_role("button", name="Back to scenario").click()
+    expect(toolbar).to_contain_text("uis2-concrete.xmi")
+    expect(toolbar.get_by_role("button", name="Back to scenario")).to_have_count(0)

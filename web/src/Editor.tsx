@@ -27,6 +27,7 @@ type DialogState =
   | null;
 
 const DIRECTION_KEY = "sceml-layout-direction";
+const BACK_KEY = "sceml-back-to";
 
 function storedDirection(): Direction {
   return localStorage.getItem(DIRECTION_KEY) === "RIGHT" ? "RIGHT" : "DOWN";
@@ -87,12 +88,15 @@ export function Editor() {
   // The first layout of a document fits the view.
   const fittedFor = useRef<string | null>(null);
   const laidOut = diagram.laidOut;
+  // So does the layout after expanding or collapsing a module use.
+  const fitNext = useRef(false);
   useEffect(() => {
     if (!laidOut) return;
     const document = `${laidOut.document.path}#${laidOut.document.module ?? ""}`;
-    if (fittedFor.current === document) return;
+    if (fittedFor.current === document && !fitNext.current) return;
     fittedFor.current = document;
-    requestAnimationFrame(() => void flow.fitView({ padding: 0.06, maxZoom: 1.25 }));
+    fitNext.current = false;
+    requestAnimationFrame(() => void flow.fitView({ padding: 0.06, maxZoom: 1.25, duration: 200 }));
   }, [laidOut, flow]);
 
   /** Where every top-level node is drawn now. */
@@ -231,6 +235,19 @@ export function Editor() {
     [diagram, direction, editable, server],
   );
 
+  // Expanding or collapsing a use changes what takes room: lay the diagram out again (one
+  // undoable "Arrange" step when positions are saved; ELK places unsaved ones anyway) and fit.
+  const expandedOf = useRef<{ document: string; uses: string } | null>(null);
+  useEffect(() => {
+    if (!view) return;
+    const now = { document: `${view.document.path}#${view.document.module ?? ""}`, uses: [...expanded].sort().join(",") };
+    const before = expandedOf.current;
+    expandedOf.current = now;
+    if (!before || before.document !== now.document || before.uses === now.uses) return;
+    fitNext.current = true;
+    if (editable && view.nodes.some((node) => node.parent === null && node.position !== null)) void arrange();
+  }, [view, expanded, editable, arrange]);
+
   const changeDirection = useCallback(
     (to: Direction) => {
       localStorage.setItem(DIRECTION_KEY, to);
@@ -310,9 +327,20 @@ export function Editor() {
     [server],
   );
 
+  // "Back to scenario" after Open definition: where the user came from, kept per tab.
+  const [cameFrom, setCameFrom] = useState<{ path: string; name: string } | null>(() => {
+    const kept = sessionStorage.getItem(BACK_KEY);
+    return kept ? (JSON.parse(kept) as { path: string; name: string }) : null;
+  });
+  useEffect(() => {
+    if (cameFrom) sessionStorage.setItem(BACK_KEY, JSON.stringify(cameFrom));
+    else sessionStorage.removeItem(BACK_KEY);
+  }, [cameFrom]);
+
   // Opening another file with unsaved changes is refused (409): offer to save them first.
   const openDefinition = useCallback(
-    (node: ViewNode) =>
+    (node: ViewNode) => {
+      if (view && view.document.kind === "scenario") setCameFrom({ path: view.document.path, name: view.document.name });
       void server.run(async () => {
         try {
           return await api.openDefinition(node.id);
@@ -322,8 +350,9 @@ export function Editor() {
           await api.save();
           return api.openDefinition(node.id);
         }
-      }),
-    [server],
+      });
+    },
+    [server, view],
   );
 
   useShortcuts({
@@ -350,6 +379,7 @@ export function Editor() {
     <div className={`editor${view?.readOnly ? " read-only" : ""}`}>
       <Toolbar
         view={view}
+        back={view?.document.kind === "module" && cameFrom ? { name: cameFrom.name, go: () => void open(cameFrom.path, "") } : null}
         direction={direction}
         hasSelection={ownSelection.length > 0 || selectedEdges.length > 0}
         canPaste={clipboard.count > 0}
@@ -407,6 +437,7 @@ export function Editor() {
       {dialog?.type === "extract" && (
         <ExtractDialog
           count={ownSelection.length}
+          libraries={[...new Set(view?.palette.flatMap((group) => group.items.map((item) => item.library ?? "")).filter(Boolean))]}
           onCancel={() => setDialog(null)}
           onExtract={(name, library) => {
             setDialog(null);

@@ -126,7 +126,8 @@ export interface PaletteItem {
   module: string | null;
   library: string | null;
   /** Roles of a module item, for the "Use <module>" dialog (optional, see the protocol). */
-  roles?: { role: string; allowedKinds: string[] }[];
+  /** Each role, the kinds it accepts, and the actors (or outer roles) that fit it. */
+  roles?: { role: string; allowedKinds: string[]; actors?: string[] }[];
 }
 
 export interface PaletteGroup {

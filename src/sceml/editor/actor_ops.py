@@ -9,6 +9,7 @@ import scemlmodel as scm
 from ..modules import naming
 from ..modules.library import definition_named
 from ..modules.resolve import resolved_definition
+from ..render.labels import loaded_definition
 from ..traversal import attributes, containments
 from .context import EditContext, argument, check_text, referrers, require
 from .errors import OperationError
@@ -114,6 +115,10 @@ def add_module_use(ctx: EditContext, op: dict[str, Any]) -> None:
         definition = definition_named(library, str(argument(op, "module")))
     except Exception as error:
         raise OperationError(str(getattr(error, "message", error))) from None
+    require(
+        not _uses_itself(ctx.graph, definition),
+        f"{definition.name} cannot be used inside its own definition",
+    )
     bindings, overrides = op.get("bindings") or {}, op.get("overrides") or {}
     require(isinstance(bindings, dict) and isinstance(overrides, dict), "bad bindings/overrides")
     roles = [str(role.name) for role in definition.roles]
@@ -133,6 +138,25 @@ def add_module_use(ctx: EditContext, op: dict[str, Any]) -> None:
     adopt(ctx, use)
     if op.get("position") is not None:
         place(ctx, use, op["position"])
+
+
+def _uses_itself(graph: scm.Graph, definition: scm.ModuleDefinition) -> bool:
+    """Whether using `definition` in `graph` would make a module use itself (through others)."""
+    if not isinstance(graph, scm.ModuleDefinition):
+        return False
+    pending, seen = [definition], set()
+    while pending:
+        current = pending.pop()
+        if current is graph:
+            return True
+        if id(current) in seen:
+            continue
+        seen.add(id(current))
+        for node in current.nodes:
+            inner = loaded_definition(node) if isinstance(node, scm.ModuleUse) else None
+            if inner is not None:
+                pending.append(inner)
+    return False
 
 
 def _use(ctx: EditContext, op: dict[str, Any]) -> tuple[scm.ModuleUse, scm.ModuleDefinition]:

@@ -12,6 +12,7 @@ request can be rolled back. Two pyecore 0.15.2 habits are handled here, once:
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -76,6 +77,24 @@ class _Remove:
         return Change(self.owner, self.feature, self.item, None)
 
 
+@dataclass
+class _Outside:
+    """A change outside the edited model (a module written into its library file)."""
+
+    owner: EObject
+    apply: Callable[[], None]
+    revert: Callable[[], None]
+
+    def do(self) -> None:
+        self.apply()
+
+    def undo(self) -> None:
+        self.revert()
+
+    def described(self) -> Change:
+        return Change(self.owner, "modules", None, None)
+
+
 def _assign(owner: EObject, feature: str, value: Any, is_set: bool) -> None:
     if isinstance(owner, scm.Flow) and feature in _FLOW_ENDS:
         # Clearing first updates the old end's opposite list, which a plain reassignment does not.
@@ -87,7 +106,7 @@ def _assign(owner: EObject, feature: str, value: Any, is_set: bool) -> None:
         owner._isset.pop(owner.eClass.findEStructuralFeature(feature), None)
 
 
-Step = _Set | _Insert | _Remove
+Step = _Set | _Insert | _Remove | _Outside
 
 
 @dataclass
@@ -163,6 +182,15 @@ class Recorder:
         index = list(owner.eGet(feature)).index(item)
         self._apply(_Remove(owner, feature, item, index))
 
+    def outside(self, owner: EObject, apply: Callable[[], None], revert: Callable[[], None]) -> None:
+        """Run `apply` (a change of another file, owned by `owner`) now; undo runs `revert`."""
+        self._apply(_Outside(owner, apply, revert))
+
+    @property
+    def reaches_outside(self) -> bool:
+        """Whether these changes include one outside the model (validate everything again)."""
+        return any(isinstance(step.change, _Outside) for step in self.steps)
+
     def detach(self, obj: EObject) -> None:
         """Take an object out of its container, if it has one."""
         container, feature = obj.eContainer(), obj.eContainmentFeature()
@@ -188,7 +216,9 @@ class Recorder:
         found = Footprint(set(), set(), set())
         for step in self.steps:
             change = step.change
-            if isinstance(change, _Set):
+            if isinstance(change, _Outside):
+                found.lives.add(id(change.owner))
+            elif isinstance(change, _Set):
                 found.features.add((id(change.owner), change.feature))
                 found.touched.add(id(change.owner))
                 found.touched.update(id(v) for v in (change.old, change.new) if _is_object(v))

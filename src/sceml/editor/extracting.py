@@ -1,7 +1,7 @@
 """The extract_module operation: selected nodes become a library module, used in their place.
 
 The module is built by `sceml.modules.extract` on a copy of the scenario and written to its
-library at once (another file, so undo leaves it there). The live scenario is then changed
+library at once; undo puts the library file back as it was (and redo writes it again). The live scenario is then changed
 through the recorder like any other edit, so undo gives back the very same nodes and flows.
 """
 
@@ -32,13 +32,33 @@ def extract_module(ctx: EditContext, op: dict[str, Any]) -> None:
     check_text("name", name)
     nodes = [ctx.node(i) for i in chosen]
     library, path = ctx.find_library(library_text, True)
+    previous = path.read_bytes() if path.is_file() else None
     try:
         region = find_region(ctx.graph, nodes)
         built = _build_module(ctx.graph, nodes, name, library)
-        io.save(library, path)
     except SceMLError as error:
         _forget(library, name)
         raise OperationError(error.message) from None
+    definition = built[2]
+
+    def write() -> None:
+        if definition not in library.modules:
+            library.modules.append(definition)
+        try:
+            io.save(library, path)
+        except SceMLError as error:
+            _forget(library, name)
+            raise OperationError(error.message) from None
+
+    def unwrite() -> None:
+        # Undo puts the library file back as it was: without the module, or not there at all.
+        _forget(library, name)
+        if previous is None:
+            path.unlink(missing_ok=True)
+        else:
+            io.write_atomically(path, previous)
+
+    ctx.rec.outside(library, write, unwrite)
     _replace(ctx, region.nodes, region.source, region.targets, built)
 
 

@@ -206,7 +206,10 @@ class EditorSession:
                 library, _ = self.find_library(str(path))
             except OperationError:
                 continue  # an unreadable library is left out of the palette, not fatal
-            groups.append(palette.library_group(library, view.relative(path, self.path.parent)))
+            shown = view.relative(path, self.path.parent)
+            participants = self._context().participants()
+            editing = self.graph if isinstance(self.graph, scm.ModuleDefinition) else None
+            groups.append(palette.library_group(library, shown, participants, editing))
         return groups
 
     # The view ------------------------------------------------------------------------------
@@ -325,6 +328,8 @@ class EditorSession:
             assert self.validator is not None
             self.validator.note(step.recorder.changes())
             self._cache.forget(step.recorder.changes(), self.graph)
+            if step.recorder.reaches_outside:
+                self.validator.forget()
             self.version += 1
         return self.view(tab=tab)
 

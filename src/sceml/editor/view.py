@@ -14,6 +14,7 @@ import scemlmodel as scm
 
 from .. import catalog
 from ..diagnostics import Diagnostic
+from ..modules import naming
 from ..render.flow import inner_scope
 from ..render.labels import (
     Scope,
@@ -219,14 +220,22 @@ class Lister:
         for definition, use in fragment.uses_of.items():
             self.listing.uses_of.setdefault(definition, use)
 
-    def node(self, node: EObject, node_id: str, scope: Scope, parent: str | None) -> None:
-        """One node; a module use also lists its definition's nodes under its id."""
+    def node(
+        self, node: EObject, node_id: str, scope: Scope, parent: str | None, within: str = ""
+    ) -> None:
+        """One node; a module use also lists its definition's nodes under its id.
+
+        `within` is the name of the expanded use that shows the node: its name is scoped by it
+        (`CrossingManeuver_1.Accelerate_1`, as flatten names copies), so that two boxes on the
+        canvas never share a label.
+        """
         title, lines = title_and_lines(node, scope)
+        own = str(node.name or "")
         entry: dict[str, Any] = {
             "id": node_id,
             "kind": node.eClass.name,
             "look": look(node),
-            "name": str(node.name or ""),
+            "name": naming.scoped(within, own) if within and own else own,
             "title": title,
             "lines": lines,
             "position": _position(node),
@@ -240,13 +249,13 @@ class Lister:
         self.listing.shown.setdefault(node, node_id)
         if isinstance(node, scm.ModuleUse):
             entry["module"] = module_info(node, self.folder)
-            self.inside(node, node_id, scope)
+            self.inside(node, node_id, scope, entry["name"])
 
     def edge(self, edge_id: str, source: str, target: str) -> None:
         """One edge between listed nodes."""
         self.listing.edges.append({"id": edge_id, "source": source, "target": target})
 
-    def inside(self, use: scm.ModuleUse, use_id: str, scope: Scope) -> None:
+    def inside(self, use: scm.ModuleUse, use_id: str, scope: Scope, shown_name: str) -> None:
         """A use's definition: its nodes as `<use>/<index>` (ports `<use>/in`, `/out`)."""
         definition = loaded_definition(use)
         if definition is None or any(definition is seen for seen in scope.chain):
@@ -256,7 +265,7 @@ class Lister:
         local: dict[EObject, str] = {}
         for index, node in enumerate(definition.nodes):
             local[node] = f"{use_id}/{_PORT_IDS.get(node.eClass.name, index)}"
-            self.node(node, local[node], inner, use_id)
+            self.node(node, local[node], inner, use_id, shown_name)
         for index, flow in enumerate(definition.flows):
             if flow.source in local and flow.target in local:
                 self.edge(f"{use_id}/f{index}", local[flow.source], local[flow.target])

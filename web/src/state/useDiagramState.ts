@@ -92,7 +92,9 @@ export function useDiagramState(
     const key = structureKey(shown, direction);
     const last = lastLayout.current;
     const known = last?.key === key ? remeasured(last.layout, shown, measures) : null;
-    const laying = known ? Promise.resolve(known) : layoutGraph(shown, direction, measures);
+    // Read-only, an expanded use cannot make room by an Arrange step: lay it all out anew.
+    const fresh = view.readOnly && shown.frames.size > 0;
+    const laying = known ? Promise.resolve(known) : layoutGraph(shown, direction, measures, fresh);
     void laying.then((layout) => {
       if (cancelled) return;
       // Kept with the sizes ELK saw, so that growth is measured from them, not step by step.
