@@ -182,7 +182,9 @@ class Recorder:
         index = list(owner.eGet(feature)).index(item)
         self._apply(_Remove(owner, feature, item, index))
 
-    def outside(self, owner: EObject, apply: Callable[[], None], revert: Callable[[], None]) -> None:
+    def outside(
+        self, owner: EObject, apply: Callable[[], None], revert: Callable[[], None]
+    ) -> None:
         """Run `apply` (a change of another file, owned by `owner`) now; undo runs `revert`."""
         self._apply(_Outside(owner, apply, revert))
 
