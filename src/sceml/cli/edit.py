@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 from pathlib import Path
 
 import click
@@ -94,4 +95,6 @@ def edit(
         announce=lambda url: click.echo(f"SceML editor: {url} (Ctrl-C to stop)"),
     )
     if result.recovered is not None:
-        click.echo(f"unsaved changes were written to {result.recovered}", err=True)
+        # After a SIGHUP the terminal may be gone: the copy is written either way.
+        with contextlib.suppress(OSError):
+            click.echo(f"unsaved changes were written to {result.recovered}", err=True)
