@@ -59,9 +59,9 @@ def edit(
 ) -> None:
     """Edit FILE, a scenario (.xmi), in the browser; a missing FILE starts a new scenario.
 
-    The server runs on 127.0.0.1 until Ctrl-C, SIGTERM or SIGHUP. Unsaved changes are kept
-    in a recovery copy beside the file (.NAME.recovered.xmi) after every edit and when the
-    server stops; its path is printed. If the server was killed, the next `sceml edit FILE`
+    The server runs on 127.0.0.1 until Ctrl-C, `kill` or a closed terminal. Unsaved changes
+    are kept in a recovery copy beside the file (.NAME.recovered.xmi) after every edit and
+    when the server stops; its path is printed. If the server was killed, the next `sceml edit FILE`
     offers to restore that copy.
 
     Files are opened, saved and exported only inside FILE's folder, its project root and the

@@ -86,6 +86,16 @@ export function numberProblem(text: string | undefined): string | null {
   return null;
 }
 
+/** Why a coordinate's text (a number or a compact distribution, see formatParam) cannot be
+ * used, or null. */
+export function paramTextProblem(text: string | undefined): string | null {
+  const trimmed = (text ?? "").trim();
+  if (trimmed === "" || parseParam(trimmed) !== undefined) return null;
+  // A number too large for a double is named as such; anything else gets the forms it may take.
+  if (Math.abs(Number(trimmed)) === Infinity) return numberProblem(trimmed);
+  return `“${trimmed}” is neither a number nor a value like [5, 10], U(5, 10), N(8, 1) or {5, 8}`;
+}
+
 /** Why a typed list of numbers cannot be used: the first item's problem, or null. */
 export function numberListProblem(text: string | undefined): string | null {
   for (const item of (text ?? "").split(/[,;\s]+/)) {
