@@ -94,9 +94,11 @@ export function Editor() {
     if (!laidOut) return;
     const document = `${laidOut.document.path}#${laidOut.document.module ?? ""}`;
     if (fittedFor.current === document && !fitNext.current) return;
+    // The first fit of a document is immediate (nothing to follow yet); a re-fit glides.
+    const duration = fittedFor.current === document ? 200 : 0;
     fittedFor.current = document;
     fitNext.current = false;
-    requestAnimationFrame(() => void flow.fitView({ padding: 0.06, maxZoom: 1.25, duration: 200 }));
+    requestAnimationFrame(() => void flow.fitView({ padding: 0.06, maxZoom: 1.25, duration }));
   }, [laidOut, flow]);
 
   /** Where every top-level node is drawn now. */
