@@ -157,17 +157,23 @@ def test_every_answer_forbids_framing(client: TestClient) -> None:
         assert "frame-ancestors 'none'" in policy and "script-src 'self'" in policy
 
 
+@pytest.fixture
+def outside(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """A folder beside the test's own (whose project root holds the copied examples)."""
+    return tmp_path_factory.mktemp("elsewhere")
+
+
 def test_save_and_export_stay_in_the_allowed_folders(
-    client: TestClient, examples_copy: Path, tmp_path: Path
+    client: TestClient, examples_copy: Path, outside: Path
 ) -> None:
-    outside = tmp_path / "elsewhere"
-    outside.mkdir()
     for route, name in (("/api/save", "a.xmi"), ("/api/export", "a.xosc")):
         answer = client.post(route, json={"path": str(outside / name)})
         assert answer.status_code == 400
         assert "outside the folders the editor may use" in answer.json()["error"]
         assert "--allow" in answer.json()["error"]
-    climbing = client.post("/api/save", json={"path": "../elsewhere/b.xmi"})
+    climbing = client.post(
+        "/api/save", json={"path": os.path.relpath(outside / "b.xmi", examples_copy)}
+    )
     assert climbing.status_code == 400
     assert client.post("/api/open", json={"path": "/etc/passwd"}).status_code == 400
     extract = {"op": "extract_module", "nodes": [], "name": "M", "library": "/tmp/x/lib.xmi"}
@@ -178,18 +184,18 @@ def test_save_and_export_stay_in_the_allowed_folders(
     assert (examples_copy / "out" / "uis1.xosc").is_file()
 
 
-def test_allow_opens_another_folder(examples_copy: Path, tmp_path: Path) -> None:
-    outside = tmp_path / "elsewhere"
-    outside.mkdir()
+def test_allow_opens_another_folder(examples_copy: Path, outside: Path) -> None:
+    refused = client_for(examples_copy / "uis1-concrete.xmi")
+    assert refused.post("/api/export", json={"path": str(outside / "a.xosc")}).status_code == 400
     client = client_for(examples_copy / "uis1-concrete.xmi", allow=[outside])
     assert client.post("/api/export", json={"path": str(outside / "a.xosc")}).status_code == 200
     assert (outside / "a.xosc").is_file()
 
 
 def test_a_link_out_of_the_allowed_folders_is_refused(
-    client: TestClient, examples_copy: Path, tmp_path: Path
+    client: TestClient, examples_copy: Path, outside: Path
 ) -> None:
-    victim = tmp_path / "victim.txt"
+    victim = outside / "victim.txt"
     victim.write_text("keep me", encoding="utf-8")
     os.symlink(victim, examples_copy / "link.xmi")
     answer = client.post("/api/save", json={"path": "link.xmi"})
