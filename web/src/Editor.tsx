@@ -408,6 +408,17 @@ export function Editor() {
           </button>
         </div>
       )}
+      {view?.document.olderRelease && editable && (
+        <div className="banner release" role="status">
+          <span>
+            {view.document.name} was saved with metamodel release {view.document.olderRelease.saved}
+            ; SceML reads it as release {view.document.olderRelease.current}.
+          </span>
+          <button type="button" onClick={save}>
+            Save in release {view.document.olderRelease.current}
+          </button>
+        </div>
+      )}
       <div className="workspace">
         {view && !view.readOnly && <Palette view={view} onAdd={(item) => addItem(item)} />}
         <div className="canvas" ref={canvas}>

@@ -155,6 +155,8 @@ export interface DocumentInfo {
   path: string;
   name: string;
   module?: string;
+  /** Set when the file was saved with an older metamodel release and read through a migration. */
+  olderRelease?: { saved: string; current: string };
 }
 
 export interface View {

@@ -271,6 +271,14 @@ class EditorSession:
         }
         if self.module is not None:
             info["module"] = self.module
+        migration = self.document.migration if self.document is not None else None
+        if migration is not None:
+            # Read through a migration and not saved since: the page offers to save it in
+            # the current release (docs/metamodel.md, "Reading an older file").
+            info["olderRelease"] = {
+                "saved": migration.from_release,
+                "current": migration.to_release,
+            }
         return info
 
     # Changes -------------------------------------------------------------------------------
@@ -349,6 +357,7 @@ class EditorSession:
         assert self.document is not None
         target = self.path if path is None else self.allowed(path, "'path'")
         io.save(self.document.root, target)
+        self.document.resource.sceml_migration = None  # the file is of the current release now
         # Saving may rewrite references and the file's path: validate the whole model again.
         assert self.validator is not None
         self.validator.forget()
