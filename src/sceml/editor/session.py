@@ -264,7 +264,7 @@ class EditorSession:
         return answer
 
     def _document_info(self) -> dict[str, Any]:
-        info = {
+        info: dict[str, Any] = {
             "kind": "module" if self.module is not None else "scenario",
             "path": str(self.path),
             "name": self.path.name,
