@@ -284,3 +284,34 @@ def test_many_parallel_events_of_one_actor_stay_linear_in_joins(tmp_path: Path) 
         imported = import_file(write(tmp_path, events=events))
     joins = [n for n in imported.scenario.nodes if isinstance(n, scm.JoinAllFinished)]
     assert len(joins) == 299 and all(len(j.incoming) == 2 for j in joins)
+
+
+def test_a_distribution_set_of_a_million_values_is_refused_quickly(tmp_path: Path) -> None:
+    # Issue 26: a DistributionSet of 10^6 values took over 120 s (a model object per value).
+    path = write(
+        tmp_path,
+        events=EVENT.format(name="Go", speed="$Speed"),
+    )
+    path.write_text(
+        path.read_text().replace(
+            "<ParameterDeclarations/>",
+            '<ParameterDeclarations><ParameterDeclaration name="Speed" parameterType="double" '
+            'value="10"/></ParameterDeclarations>',
+        )
+    )
+    elements = "".join(f'<Element value="{i % 97 + 1}"/>' for i in range(1_000_000))
+    pvd = tmp_path / "pvd.xosc"
+    pvd.write_text(
+        '<?xml version="1.0"?>\n<OpenSCENARIO><FileHeader revMajor="1" revMinor="1" '
+        'date="2024-01-01T00:00:00" description="d" author="d"/><ParameterValueDistribution>'
+        '<ScenarioFile filepath="scenario.xosc"/><Deterministic>'
+        '<DeterministicSingleParameterDistribution parameterName="Speed">'
+        f"<DistributionSet>{elements}</DistributionSet>"
+        "</DeterministicSingleParameterDistribution></Deterministic>"
+        "</ParameterValueDistribution></OpenSCENARIO>"
+    )
+    with deadline():
+        imported = import_file(path, distribution=pvd)
+    told = " ".join(e.message for e in imported.report.section("not represented"))
+    assert "a DistributionSet of 1,000,000 values" in told
+    assert "at most 10,000 options" in told

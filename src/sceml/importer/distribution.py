@@ -184,12 +184,27 @@ def _range(kind: etree._Element) -> scm.ParameterValue:
     return params.span(*_limits(kind), step)
 
 
+#: The most options a discrete set may have: a model object is made per option, and a million
+#: of them took over a minute and a gigabyte to build (issue 26); sampling needs far fewer.
+MAX_OPTIONS = 10_000
+
+
+def _options(kind: etree._Element) -> list[etree._Element]:
+    elements = list(kind.iterchildren("Element"))
+    if len(elements) > MAX_OPTIONS:
+        raise _Unrepresentable(
+            f"a {kind.tag} of {len(elements):,} values (SceML keeps at most {MAX_OPTIONS:,} "
+            "options in a discrete set)"
+        )
+    return elements
+
+
 def _set(kind: etree._Element) -> scm.ParameterValue:
-    return params.discrete([_number(e, "value") for e in kind.iterchildren("Element")])
+    return params.discrete([_number(e, "value") for e in _options(kind)])
 
 
 def _weighted(kind: etree._Element) -> scm.ParameterValue:
-    elements = list(kind.iterchildren("Element"))
+    elements = _options(kind)
     weights = [_number(e, "weight") for e in elements]
     if any(w < 0 for w in weights) or not sum(weights) > 0:
         raise _Unrepresentable("a set whose weights are negative or all 0")
@@ -245,6 +260,12 @@ def _marginal(name: str, assignments: list[etree._Element], sets: int, line: int
         return Spec(name, line, None, why)
     counts = Counter(numbers)
     levels = list(counts)
+    if len(levels) > MAX_OPTIONS:
+        why = (
+            f"a ValueSetDistribution giving {name} {len(levels):,} different values (SceML keeps "
+            f"at most {MAX_OPTIONS:,} options in a discrete set)"
+        )
+        return Spec(name, line, None, why)
     weights = [float(counts[v]) for v in levels] if len(set(counts.values())) > 1 else None
     value = params.discrete(levels, weights)
     return Spec(name, line, value, f"ValueSetDistribution -> {params.describe(value)}")
