@@ -30,6 +30,9 @@ COMMANDS = {
     "flatten": "flatten:flatten",
     "dev": "dev:dev",
     "edit": "edit:edit",
+    "diff": "diff:diff",
+    "merge": "merge:merge",
+    "git-setup": "git_setup:git_setup",
 }
 
 
