@@ -14,7 +14,16 @@ from .. import io
 from .changes import PARTS, Change, Diff, compare
 from .snapshot import Snapshot, snapshot
 
-__all__ = ["PARTS", "Change", "Diff", "Snapshot", "compare", "compare_files", "compare_models", "snapshot"]
+__all__ = [
+    "PARTS",
+    "Change",
+    "Diff",
+    "Snapshot",
+    "compare",
+    "compare_files",
+    "compare_models",
+    "snapshot",
+]
 
 
 def compare_models(old: scm.Scenario, new: scm.Scenario) -> Diff:

@@ -59,7 +59,12 @@ def copy_leaf(target: EObject, source: EObject, path: str, actors: ActorLookup) 
         last = index == len(steps) - 1
         if key is not None:
             source_item, target_item = _item(source, name, key), _item(target, name, key)
-            if last or source_item is None or target_item is None or _kinds_differ(source_item, target_item):
+            if (
+                last
+                or source_item is None
+                or target_item is None
+                or _kinds_differ(source_item, target_item)
+            ):
                 _replace_item(target, name, key, source_item, actors)
                 return
             target, source = target_item, source_item

@@ -110,7 +110,9 @@ def _element_changes(
         after = new.leaves.get(path)
         if before != after:
             unit = new.units.get(path) or old.units.get(path, "")
-            yield Change(where, "changed", name, f"{name}.{path}", new.kind, before, after, unit, was)
+            yield Change(
+                where, "changed", name, f"{name}.{path}", new.kind, before, after, unit, was
+            )
     if old.layout != new.layout:
         yield Change("layout", "moved", name, name, new.kind, old.layout, new.layout, was=was)
 

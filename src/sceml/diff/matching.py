@@ -61,7 +61,9 @@ def translate(leaf: Leaf, actors: dict[str, str]) -> Leaf:
     return leaf
 
 
-def _neighbours(flows: Iterable[tuple[str, str]]) -> tuple[dict[str, set[str]], dict[str, set[str]]]:
+def _neighbours(
+    flows: Iterable[tuple[str, str]],
+) -> tuple[dict[str, set[str]], dict[str, set[str]]]:
     after: dict[str, set[str]] = defaultdict(set)
     before: dict[str, set[str]] = defaultdict(set)
     for source, target in flows:

@@ -117,14 +117,22 @@ class _Merger:
                 self._deleted_by_theirs(part, base, mine)
             elif mine is None:
                 if self._edited(base, other, "theirs"):
-                    self._conflict(base.name, base.name, "deleted by ours, edited by theirs", "deleted", "edited")
+                    self._conflict(
+                        base.name,
+                        base.name,
+                        "deleted by ours, edited by theirs",
+                        "deleted",
+                        "edited",
+                    )
             else:
                 self._both_kept(base, mine, other)
 
     def _deleted_by_theirs(self, part: str, base: Element, mine: Element | None) -> None:
         assert mine is not None
         if self._edited(base, mine, "ours"):
-            self._conflict(base.name, mine.name, "edited by ours, deleted by theirs", "edited", "deleted")
+            self._conflict(
+                base.name, mine.name, "edited by ours, deleted by theirs", "edited", "deleted"
+            )
             return
         self._delete(part, mine.obj)
         self.result.taken.append(f"- {base.name}")
@@ -145,7 +153,13 @@ class _Merger:
             if mine.name != base.name:
                 self._conflict(base.name, base.name, "renamed differently", mine.name, other.name)
             elif self._name_taken(mine, other.name):
-                self._conflict(base.name, other.name, "theirs' new name is taken by ours", mine.name, other.name)
+                self._conflict(
+                    base.name,
+                    other.name,
+                    "theirs' new name is taken by ours",
+                    mine.name,
+                    other.name,
+                )
             else:
                 mine.obj.name = other.name
                 self.result.taken.append(f"~ {base.name} renamed to {other.name}")
@@ -158,8 +172,11 @@ class _Merger:
         if other.layout != base.layout and other.layout != mine.layout:
             if mine.layout != base.layout:
                 self._conflict(
-                    base.name, f"{mine.name} (position)", "moved differently",
-                    position_text(mine.layout), position_text(other.layout),
+                    base.name,
+                    f"{mine.name} (position)",
+                    "moved differently",
+                    position_text(mine.layout),
+                    position_text(other.layout),
                 )
             else:
                 set_layout(mine.obj, other.obj)
@@ -173,12 +190,17 @@ class _Merger:
         unit = other.units.get(path, "")
         if now_ours != was:
             self._conflict(
-                base.name, f"{mine.name}.{path}", "changed differently",
-                leaf_text(now_ours, unit), leaf_text(now_theirs, unit),
+                base.name,
+                f"{mine.name}.{path}",
+                "changed differently",
+                leaf_text(now_ours, unit),
+                leaf_text(now_theirs, unit),
             )
             return
         copy_leaf(mine.obj, other.obj, path, self._actor)
-        self.result.taken.append(f"~ {mine.name}.{path}: {leaf_text(was)} -> {leaf_text(now_theirs, unit)}")
+        self.result.taken.append(
+            f"~ {mine.name}.{path}: {leaf_text(was)} -> {leaf_text(now_theirs, unit)}"
+        )
 
     def _name_taken(self, mine: Element, name: str) -> bool:
         container = mine.obj.eContainer()
@@ -259,8 +281,19 @@ class _Merger:
             ends[0] = self._ours_node(source)
         if target not in self.node_of:
             ends[1] = self._ours_node(target)
-        if ends[0] is None or ends[1] is None or ends[0].eContainer() is None or ends[1].eContainer() is None:
-            self._conflict(source, f"{source} -> {target}", "flow added to a node ours deleted", "deleted", "connected")
+        if (
+            ends[0] is None
+            or ends[1] is None
+            or ends[0].eContainer() is None
+            or ends[1].eContainer() is None
+        ):
+            self._conflict(
+                source,
+                f"{source} -> {target}",
+                "flow added to a node ours deleted",
+                "deleted",
+                "connected",
+            )
             return
         self.result.scenario.flows.append(scm.Flow(source=ends[0], target=ends[1]))
         self.result.taken.append(f"+ {source} -> {target}")
@@ -284,9 +317,13 @@ class _Merger:
         _, cyclic = topological_order(self.result.scenario)
         if cyclic:
             names = ", ".join(sorted(str(n.name) for n in cyclic))
-            self._conflict(names, "flows", "the two sides' flows together make a cycle", "acyclic", "acyclic")
+            self._conflict(
+                names, "flows", "the two sides' flows together make a cycle", "acyclic", "acyclic"
+            )
 
-    def check_rules(self, base_errors: Iterable[str], sides: tuple[scm.Scenario, scm.Scenario]) -> None:
+    def check_rules(
+        self, base_errors: Iterable[str], sides: tuple[scm.Scenario, scm.Scenario]
+    ) -> None:
         """Validation errors of the merge that neither side has are conflicts."""
         from ..validation import validate
 
@@ -296,9 +333,11 @@ class _Merger:
         for diagnostic in validate(self.result.scenario):
             if diagnostic.severity is Severity.ERROR and _key(diagnostic) not in had:
                 self._conflict(
-                    diagnostic.path or "", diagnostic.path or "",
+                    diagnostic.path or "",
+                    diagnostic.path or "",
                     f"together the changes break a rule: {diagnostic.code} {diagnostic.message}",
-                    "valid", "valid",
+                    "valid",
+                    "valid",
                 )
 
     def _conflict(self, element: str, path: str, reason: str, ours: str, theirs: str) -> None:

@@ -42,7 +42,9 @@ class DiffReport:
 
 
 def _grouped(changes: Sequence[Change]) -> list[tuple[str, list[Change]]]:
-    return [(p, [c for c in changes if c.part == p]) for p in PARTS if any(c.part == p for c in changes)]
+    return [
+        (p, [c for c in changes if c.part == p]) for p in PARTS if any(c.part == p for c in changes)
+    ]
 
 
 def summary(report: DiffReport) -> str:
@@ -96,7 +98,11 @@ def leaf_json(leaf: Leaf) -> object:
     if word == "discrete":
         values = [v for v, _ in rest[0]]
         weights = [w for _, w in rest[0]]
-        return {"type": "discrete", "values": values, "weights": None if None in weights else weights}
+        return {
+            "type": "discrete",
+            "values": values,
+            "weights": None if None in weights else weights,
+        }
     if word in shapes:
         return {"type": word, **dict(zip(shapes[word], rest, strict=True))}
     return {"x": leaf[0], "y": leaf[1]} if len(leaf) == 2 else list(leaf)

@@ -115,7 +115,9 @@ def _read(obj: EObject, prefix: str, element: Element, *, top: bool = False) -> 
             _read_child(obj, name, held, prefix + name, element)
 
 
-def _read_items(owner: EObject, name: str, items: list[EObject], prefix: str, element: Element) -> None:
+def _read_items(
+    owner: EObject, name: str, items: list[EObject], prefix: str, element: Element
+) -> None:
     key = _ITEM_KEYS.get(name)
     for index, item in enumerate(items):
         label = str(item.eGet(key)) if key else str(index)

@@ -39,7 +39,9 @@ def leaf_text(leaf: Leaf, unit: str = "") -> str:
             bounds = f" in [{number(rest[2])}, {number(rest[3])}]"
         return f"N({number(rest[0])}, {number(rest[1])}){bounds}{suffix}"
     if word == "discrete":
-        items = ", ".join(number(v) + (f"@{number(w)}" if w is not None else "") for v, w in rest[0])
+        items = ", ".join(
+            number(v) + (f"@{number(w)}" if w is not None else "") for v, w in rest[0]
+        )
         return "{" + items + "}" + suffix
     if word == "ref":
         return f"${rest[0]}"
@@ -65,7 +67,9 @@ def describe(change: Change) -> str:
     if change.action == "renamed":
         return f"{mark} {change.was} renamed to {change.element} ({change.kind})"
     if change.action == "moved":
-        return f"{mark} {change.path} moved {position_text(change.old)} -> {position_text(change.new)}"
+        return (
+            f"{mark} {change.path} moved {position_text(change.old)} -> {position_text(change.new)}"
+        )
     if change.action == "changed":
         # The unit once, at the end: `-34 -> -30 m`.
         old, new = leaf_text(change.old), leaf_text(change.new, change.unit)
