@@ -13,14 +13,20 @@ from ..diff.merge import merge as merge_models
 from .common import SceMLCommand
 
 
-def _scenario_file(name: str) -> click.Path:
+def _scenario_file() -> click.Path:
     return click.Path(exists=True, dir_okay=False, path_type=Path)
 
 
+def _scenario(path: Path) -> scm.Scenario:
+    root = io.load_scenario(path).root
+    assert isinstance(root, scm.Scenario)
+    return root
+
+
 @click.command(cls=SceMLCommand)
-@click.argument("base", type=_scenario_file("BASE"))
-@click.argument("ours", type=_scenario_file("OURS"))
-@click.argument("theirs", type=_scenario_file("THEIRS"))
+@click.argument("base", type=_scenario_file())
+@click.argument("ours", type=_scenario_file())
+@click.argument("theirs", type=_scenario_file())
 @click.option(
     "-o",
     "--output",
@@ -53,10 +59,9 @@ def merge(
     had) is listed with both sides on standard error, and nothing is written: exit 1. Exit 0
     when the merge is written, 2 when a file cannot be read.
     """
-    documents = [io.load_scenario(path) for path in (base, ours, theirs)]
-    roots = [d.root for d in documents]
-    assert all(isinstance(root, scm.Scenario) for root in roots)
-    result = merge_models(*roots, validate=not no_validate)  # type: ignore[arg-type]
+    # Each file in its own resource set: the three versions share names, not objects.
+    roots = [_scenario(path) for path in (base, ours, theirs)]
+    result = merge_models(roots[0], roots[1], roots[2], validate=not no_validate)
     label = name or str(ours)
     if not result.ok:
         for conflict in result.conflicts:

@@ -95,9 +95,10 @@ def _node_actions(changes: list[Change]) -> dict[str, str]:
     """Each node's strongest change: added, else changed (or renamed); removed ones apart."""
     found: dict[str, str] = {}
     for change in changes:
-        if change.part in _NODE_PARTS and change.action in ("added", "changed", "renamed"):
-            if found.get(change.element) != "added":
-                found[change.element] = "added" if change.action == "added" else "changed"
+        if change.part not in _NODE_PARTS or change.action not in ("added", "changed", "renamed"):
+            continue
+        if found.get(change.element) != "added":
+            found[change.element] = "added" if change.action == "added" else "changed"
     return found
 
 

@@ -159,7 +159,8 @@ def format_junit(report: DiffReport) -> str:
             failure.text = describe(change)
     root = etree.Element("testsuites")
     root.append(suite)
-    return etree.tostring(root, pretty_print=True, xml_declaration=True, encoding="UTF-8").decode()
+    data: bytes = etree.tostring(root, pretty_print=True, xml_declaration=True, encoding="UTF-8")
+    return data.decode("utf-8")
 
 
 FORMATS = {
