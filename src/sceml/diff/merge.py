@@ -11,7 +11,6 @@ result must not be written (`MergeResult.ok` is false).
 
 from __future__ import annotations
 
-from collections.abc import Iterable
 from dataclasses import dataclass, field
 
 from pyecore.ecore import EObject
@@ -19,7 +18,7 @@ from pyecore.ecore import EObject
 import scemlmodel as scm
 
 from ..diagnostics import Diagnostic, Severity
-from ..graph import topological_order
+from ..graph import successors, topological_order
 from .apply import copied, copy_leaf, set_layout
 from .matching import Matching, match
 from .snapshot import Element, Leaf, Snapshot, snapshot
@@ -60,15 +59,26 @@ def merge(
     theirs: scm.Scenario,
     validate: bool = True,
 ) -> MergeResult:
-    """Carry theirs' changes since base onto ours (changed in place); conflicts in the result."""
+    """Carry theirs' changes since base onto ours (changed in place); conflicts in the result.
+
+    With `validate`, errors the merged scenario has and neither side had are conflicts.
+    """
+    # Ours is validated before the merge changes it in place.
+    had = _errors(ours) | _errors(theirs) if validate else set()
     merger = _Merger(snapshot(base), snapshot(ours), snapshot(theirs), ours)
     merger.actors()
     merger.nodes()
     merger.flows()
     merger.check_cycles()
     if validate and not merger.result.conflicts:
-        merger.check_rules(base_errors=(), sides=(ours, theirs))
+        merger.check_rules(had)
     return merger.result
+
+
+def _errors(scenario: scm.Scenario) -> set[str]:
+    from ..validation import validate  # the rules load only when a merge validates
+
+    return {_key(d) for d in validate(scenario) if d.severity is Severity.ERROR}
 
 
 def _inverse(pairs: dict[str, str]) -> dict[str, str]:
@@ -314,22 +324,22 @@ class _Merger:
     # Checks of the result --------------------------------------------------------------------
 
     def check_cycles(self) -> None:
-        _, cyclic = topological_order(self.result.scenario)
+        _, after_cycles = topological_order(self.result.scenario)
+        cyclic = _on_cycles(after_cycles)
         if cyclic:
             names = ", ".join(sorted(str(n.name) for n in cyclic))
             self._conflict(
-                names, "flows", "the two sides' flows together make a cycle", "acyclic", "acyclic"
+                names,
+                f"flows among {names}",
+                "the two sides' flows together make a cycle",
+                "acyclic",
+                "acyclic",
             )
 
-    def check_rules(
-        self, base_errors: Iterable[str], sides: tuple[scm.Scenario, scm.Scenario]
-    ) -> None:
-        """Validation errors of the merge that neither side has are conflicts."""
+    def check_rules(self, had: set[str]) -> None:
+        """Validation errors of the merge that neither side had (`had`) are conflicts."""
         from ..validation import validate
 
-        had = set(base_errors)
-        for side in sides:
-            had |= {_key(d) for d in validate(side) if d.severity is Severity.ERROR}
         for diagnostic in validate(self.result.scenario):
             if diagnostic.severity is Severity.ERROR and _key(diagnostic) not in had:
                 self._conflict(
@@ -342,6 +352,17 @@ class _Merger:
 
     def _conflict(self, element: str, path: str, reason: str, ours: str, theirs: str) -> None:
         self.result.conflicts.append(Conflict(element, path, reason, ours, theirs))
+
+
+def _on_cycles(unordered: set[scm.GraphElement]) -> set[scm.GraphElement]:
+    """Of the nodes a topological order could not place, those on a cycle (what only follows
+    one is peeled off, sinks first)."""
+    remaining = set(unordered)
+    while True:
+        sinks = {n for n in remaining if not any(s in remaining for s in successors(n))}
+        if not sinks:
+            return remaining
+        remaining -= sinks
 
 
 def _key(diagnostic: Diagnostic) -> str:
