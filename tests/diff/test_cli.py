@@ -64,7 +64,9 @@ def test_json_gives_parameter_values_in_the_editor_protocol_shape(uis2: Path, ed
 
 
 def test_junit_fails_the_guarded_changes_only(uis2: Path, edited) -> None:
-    code, shown = run("diff", uis2, edited(_tolerance_and_move), "--format", "junit", "--exit-code", "layout")
+    code, shown = run(
+        "diff", uis2, edited(_tolerance_and_move), "--format", "junit", "--exit-code", "layout"
+    )
     assert code == 1
     suite = etree.fromstring(shown.encode()).find("testsuite")
     assert suite is not None

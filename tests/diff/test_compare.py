@@ -30,7 +30,11 @@ def test_a_coordinate_change_is_one_change_by_name_path_and_unit(uis2: Path, edi
     found = compare_files(uis2, edited(edit)).changes
     assert len(found) == 1
     change = found[0]
-    assert (change.part, change.action, change.path) == ("nodes", "changed", "TurnLeft_1.destination.x")
+    assert (change.part, change.action, change.path) == (
+        "nodes",
+        "changed",
+        "TurnLeft_1.destination.x",
+    )
     assert (change.old, change.new, change.unit) == (("value", -34.0), ("value", -30.0), "m")
     assert describe(change) == "~ TurnLeft_1.destination.x: -34 -> -30 m"
 

@@ -59,9 +59,17 @@ TOLERANCE = '<tolerance xsi:type="scemlmodel:Value" value="3.0"/>'
 
 
 def test_setup_twice_writes_one_attributes_line(repo: Path) -> None:
-    subprocess.run([str(SCEML), "git-setup", "--program", str(SCEML)], cwd=repo, check=True, capture_output=True)
+    subprocess.run(
+        [str(SCEML), "git-setup", "--program", str(SCEML)],
+        cwd=repo,
+        check=True,
+        capture_output=True,
+    )
     assert (repo / ".gitattributes").read_text() == "*.xmi diff=sceml merge=sceml\n"
-    assert git(repo, "config", "merge.sceml.driver").stdout.strip() == f"{SCEML} merge %O %A %B -o %A --name %P"
+    assert (
+        git(repo, "config", "merge.sceml.driver").stdout.strip()
+        == f"{SCEML} merge %O %A %B -o %A --name %P"
+    )
 
 
 def test_git_diff_shows_the_change_in_the_model_s_terms(repo: Path) -> None:
@@ -99,7 +107,10 @@ def test_a_conflicting_merge_leaves_ours_and_lists_the_conflict(repo: Path) -> N
     merged = git(repo, "merge", "theirs", "-m", "merge", check=False)
     assert merged.returncode != 0
     output = merged.stdout + merged.stderr
-    assert "uis2.xmi: conflict: DriveDistance_1.distance: changed differently (ours: 75 m; theirs: 80 m)" in output
+    assert (
+        "uis2.xmi: conflict: DriveDistance_1.distance: changed differently (ours: 75 m; theirs: 80 m)"
+        in output
+    )
     assert "CONFLICT" in output
     assert scenario.read_bytes() == ours
     assert "UU uis2.xmi" in git(repo, "status", "--short").stdout

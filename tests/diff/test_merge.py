@@ -70,7 +70,9 @@ def test_an_added_node_and_its_flows_come_across(uis2: Path, edited) -> None:
         scenario.flows.append(scm.Flow(source=stop, target=end))
 
     out = uis2.with_name("merged.xmi")
-    code, shown = merge(uis2, edited(_longer_drive, "ours.xmi"), edited(theirs_edit, "theirs.xmi"), out)
+    code, shown = merge(
+        uis2, edited(_longer_drive, "ours.xmi"), edited(theirs_edit, "theirs.xmi"), out
+    )
     assert code == 0, shown
     assert sorted(describe(c) for c in compare_files(uis2, out).changes) == [
         "+ DriveDistance_1 -> Stop_1 (flow) added",
@@ -92,7 +94,10 @@ def test_two_values_for_one_parameter_conflict_and_nothing_is_written(uis2: Path
     out = uis2.with_name("merged.xmi")
     code, shown = merge(uis2, ours, edited(other_value, "theirs.xmi"), ours)
     assert code == 1
-    assert "conflict: DriveDistance_1.distance: changed differently (ours: 70 m; theirs: 80 m)" in shown
+    assert (
+        "conflict: DriveDistance_1.distance: changed differently (ours: 70 m; theirs: 80 m)"
+        in shown
+    )
     assert ours.read_bytes() == before and not out.exists()
 
 
@@ -117,12 +122,16 @@ def test_flows_that_together_make_a_cycle_conflict(uis2: Path, edited) -> None:
     # meet), theirs InLocationRadius_2 -> Accelerate_1, which leads to TurnLeft_1.
     def forward(scenario: scm.Scenario) -> None:
         scenario.flows.append(
-            scm.Flow(source=node(scenario, "TurnLeft_1"), target=node(scenario, "InLocationRadius_2"))
+            scm.Flow(
+                source=node(scenario, "TurnLeft_1"), target=node(scenario, "InLocationRadius_2")
+            )
         )
 
     def back(scenario: scm.Scenario) -> None:
         scenario.flows.append(
-            scm.Flow(source=node(scenario, "InLocationRadius_2"), target=node(scenario, "Accelerate_1"))
+            scm.Flow(
+                source=node(scenario, "InLocationRadius_2"), target=node(scenario, "Accelerate_1")
+            )
         )
 
     out = uis2.with_name("merged.xmi")
@@ -171,6 +180,8 @@ def test_renamed_differently_on_both_sides_conflicts(uis2: Path, edited) -> None
         return edit
 
     out = uis2.with_name("merged.xmi")
-    code, shown = merge(uis2, edited(name("Left"), "ours.xmi"), edited(name("Turn"), "theirs.xmi"), out)
+    code, shown = merge(
+        uis2, edited(name("Left"), "ours.xmi"), edited(name("Turn"), "theirs.xmi"), out
+    )
     assert code == 1
     assert "renamed differently (ours: Left; theirs: Turn)" in shown

@@ -153,16 +153,27 @@ class Editing:
         actions = [i for i in free if parameters(nodes[i]) and nodes[i]["kind"] != "RootNode"]
         names = [a["name"] for a in self.view["actors"]]
         actors = [a["id"] for a in self.view["actors"]]
-        edges = [e["id"] for e in self.view["edges"] if not {e["source"], e["target"]} & self.frozen]
+        edges = [
+            e["id"] for e in self.view["edges"] if not {e["source"], e["target"]} & self.frozen
+        ]
         found = [
-            st.builds(lambda n, p: {"op": "move", "positions": {n: p}}, st.sampled_from(list(nodes)), POSITION),
+            st.builds(
+                lambda n, p: {"op": "move", "positions": {n: p}},
+                st.sampled_from(list(nodes)),
+                POSITION,
+            ),
             st.builds(
                 lambda k, a: {"op": "add_node", "kind": k, "actor": a},
                 st.sampled_from(self.ADDED_KINDS),
                 st.sampled_from(names),
             ),
             st.builds(
-                lambda a, v: {"op": "set_actor_parameter", "actor": a, "field": "initialSpeed", "value": v},
+                lambda a, v: {
+                    "op": "set_actor_parameter",
+                    "actor": a,
+                    "field": "initialSpeed",
+                    "value": v,
+                },
                 st.sampled_from(actors),
                 PARAMETER,
             ),
@@ -177,13 +188,17 @@ class Editing:
             )
             found.append(st.builds(lambda n: {"op": "delete", "nodes": [n]}, st.sampled_from(free)))
         if edges:
-            found.append(st.builds(lambda e: {"op": "delete", "edges": [e]}, st.sampled_from(edges)))
+            found.append(
+                st.builds(lambda e: {"op": "delete", "edges": [e]}, st.sampled_from(edges))
+            )
         if actions:
             found.append(self.parameter_op(nodes, actions))
             found.append(self.rename_op(actions))
         return found
 
-    def parameter_op(self, nodes: dict[str, Any], actions: list[str]) -> st.SearchStrategy[dict[str, Any]]:
+    def parameter_op(
+        self, nodes: dict[str, Any], actions: list[str]
+    ) -> st.SearchStrategy[dict[str, Any]]:
         @st.composite
         def draw(draw_: st.DrawFn) -> dict[str, Any]:
             node = draw_(st.sampled_from(actions))
@@ -296,7 +311,9 @@ def split(data: st.DataObject, base: Path) -> tuple[list[str], list[str]]:
     session = EditorSession()
     nodes = [n["name"] for n in top_nodes(session.open(base)).values() if parameters(n)]
     nodes = [n for n in nodes if n != "Root"]
-    ours = data.draw(st.lists(st.sampled_from(nodes), min_size=1, max_size=len(nodes) - 1, unique=True))
+    ours = data.draw(
+        st.lists(st.sampled_from(nodes), min_size=1, max_size=len(nodes) - 1, unique=True)
+    )
     return ours, [n for n in nodes if n not in ours]
 
 
@@ -320,13 +337,17 @@ def test_independent_edits_merge_to_both_applied(data: st.DataObject) -> None:
 
 @SETTINGS
 @given(data=st.data(), values=st.lists(NUMBER, min_size=2, max_size=2, unique=True))
-def test_two_values_for_one_parameter_are_a_conflict(data: st.DataObject, values: list[float]) -> None:
+def test_two_values_for_one_parameter_are_a_conflict(
+    data: st.DataObject, values: list[float]
+) -> None:
     with copied_examples() as folder:
         base = folder / BASE
         mine, others = split(data, base)
         target = data.draw(st.sampled_from(mine))
         ours_plan = [("parameter", target, {"type": "value", "value": values[0]})]
-        ours_plan += [s for s in plan(data, mine, "ego", "Stop") if s[0] not in ("delete", "parameter")]
+        ours_plan += [
+            s for s in plan(data, mine, "ego", "Stop") if s[0] not in ("delete", "parameter")
+        ]
         theirs_plan = [("parameter", target, {"type": "value", "value": values[1]})]
         theirs_plan += plan(data, others, "bike", "TimeElapsed")
         ours = edited_copy(base, "ours.xmi", ours_plan)

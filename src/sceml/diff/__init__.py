@@ -11,6 +11,7 @@ from pathlib import Path
 import scemlmodel as scm
 
 from .. import io
+from ..collector import collector_paused
 from .changes import PARTS, Change, Diff, compare
 from .snapshot import Snapshot, snapshot
 
@@ -28,7 +29,10 @@ __all__ = [
 
 def compare_models(old: scm.Scenario, new: scm.Scenario) -> Diff:
     """Every change from one scenario to another."""
-    return compare(snapshot(old), snapshot(new))
+    # A snapshot makes a few tuples per element while both models are alive: the collector
+    # would rescan them all again and again (10k nodes: seconds, for nothing to collect).
+    with collector_paused():
+        return compare(snapshot(old), snapshot(new))
 
 
 def compare_files(old: str | Path | None, new: str | Path | None) -> Diff:
@@ -37,11 +41,12 @@ def compare_files(old: str | Path | None, new: str | Path | None) -> Diff:
     None stands for a file that does not exist on that side (git's /dev/null): everything in
     the other one is then added, or removed.
     """
-    before = snapshot(_scenario(old)) if old is not None else None
-    after = snapshot(_scenario(new)) if new is not None else None
-    if before is None and after is None:
-        raise ValueError("compare_files needs at least one file")
-    return compare(before or _empty(after), after or _empty(before))  # type: ignore[arg-type]
+    with collector_paused():
+        before = snapshot(_scenario(old)) if old is not None else None
+        after = snapshot(_scenario(new)) if new is not None else None
+        if before is None and after is None:
+            raise ValueError("compare_files needs at least one file")
+        return compare(before or _empty(after), after or _empty(before))  # type: ignore[arg-type]
 
 
 def _empty(like: Snapshot) -> Snapshot:

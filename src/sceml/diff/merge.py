@@ -17,6 +17,7 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
+from ..collector import collector_paused
 from ..diagnostics import Diagnostic, Severity
 from ..graph import successors, topological_order
 from .apply import copied, copy_leaf, set_layout
@@ -65,11 +66,13 @@ def merge(
     """
     # Ours is validated before the merge changes it in place.
     had = _errors(ours) | _errors(theirs) if validate else set()
-    merger = _Merger(snapshot(base), snapshot(ours), snapshot(theirs), ours)
-    merger.actors()
-    merger.nodes()
-    merger.flows()
-    merger.check_cycles()
+    # Three readings of large models are built while all three are alive: see compare_models.
+    with collector_paused():
+        merger = _Merger(snapshot(base), snapshot(ours), snapshot(theirs), ours)
+        merger.actors()
+        merger.nodes()
+        merger.flows()
+        merger.check_cycles()
     if validate and not merger.result.conflicts:
         merger.check_rules(had)
     return merger.result
@@ -92,6 +95,8 @@ class _Merger:
         self.base, self.ours, self.theirs = base, ours, theirs
         self.to_ours: Matching = match(base, ours)
         self.to_theirs: Matching = match(base, theirs)
+        self.ours_actor_names = _inverse(self.to_ours.actors)
+        self.theirs_actor_names = _inverse(self.to_theirs.actors)
         self.result = MergeResult(model)
         root = next((n for n in model.nodes if isinstance(n, scm.RootNode)), None)
         self.root = root
@@ -155,8 +160,7 @@ class _Merger:
 
     def _names_in(self, which: str) -> dict[str, str]:
         """A side's actor names -> the base's (leaves compare in the base's names)."""
-        matching = self.to_ours if which == "ours" else self.to_theirs
-        return _inverse(matching.actors)
+        return self.ours_actor_names if which == "ours" else self.theirs_actor_names
 
     def _both_kept(self, base: Element, mine: Element, other: Element) -> None:
         if other.name != base.name and other.name != mine.name:
@@ -267,7 +271,7 @@ class _Merger:
         if part == "nodes":
             scenario = self.result.scenario
             for flow in [f for f in scenario.flows if obj in (f.source, f.target)]:
-                scenario.flows.remove(flow)
+                _unlink(scenario, flow)
         obj.eContainer().eGet(obj.eContainmentFeature()).remove(obj)
 
     # Flows -----------------------------------------------------------------------------------
@@ -317,7 +321,7 @@ class _Merger:
         scenario = self.result.scenario
         for held in list(scenario.flows):
             if (held.source, held.target) == ends:
-                scenario.flows.remove(held)
+                _unlink(scenario, held)
                 self.result.taken.append(f"- {flow[0]} -> {flow[1]}")
                 return
 
@@ -352,6 +356,14 @@ class _Merger:
 
     def _conflict(self, element: str, path: str, reason: str, ours: str, theirs: str) -> None:
         self.result.conflicts.append(Conflict(element, path, reason, ours, theirs))
+
+
+def _unlink(scenario: scm.Scenario, flow: scm.Flow) -> None:
+    """Take a flow out, ends first: its nodes' `incoming`/`outgoing` (the transient opposites
+    validation reads) would otherwise keep it."""
+    flow.source = None
+    flow.target = None
+    scenario.flows.remove(flow)
 
 
 def _on_cycles(unordered: set[scm.GraphElement]) -> set[scm.GraphElement]:

@@ -11,9 +11,10 @@ positions are kept apart (`layout`): they never change what a scenario means.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cache
 from typing import Any
 
-from pyecore.ecore import EEnumLiteral, EObject, EProxy
+from pyecore.ecore import EClass, EEnumLiteral, EObject, EProxy
 
 import scemlmodel as scm
 
@@ -61,11 +62,8 @@ def snapshot(scenario: scm.Scenario) -> Snapshot:
                 read = _element(actor)
                 actors[_unique(read.name, actors)] = read
     names = {element.obj: name for name, element in nodes.items()}
-    flows = [
-        (names[flow.source], names[flow.target])
-        for flow in scenario.flows
-        if flow.source in names and flow.target in names
-    ]
+    ends = ((stored(flow, "source"), stored(flow, "target")) for flow in scenario.flows)
+    flows = [(names[s], names[t]) for s, t in ends if s in names and t in names]
     return Snapshot(actors=actors, nodes=nodes, flows=flows, root=scenario)
 
 
@@ -79,39 +77,66 @@ def _unique(name: str, taken: dict[str, Element]) -> str:
     return f"{name}#{count}"
 
 
+@dataclass(frozen=True)
+class _Shape:
+    """A metaclass's features as plain names, read once: each access to a pyecore feature's own
+    attributes (`name`, `many`) goes through a descriptor, and a snapshot reads them per object."""
+
+    kind: str
+    attributes: tuple[tuple[str, object], ...]  # (name, default)
+    references: tuple[str, ...]  # single-valued cross-references
+    containments: tuple[tuple[str, bool], ...]  # (name, many)
+
+
+@cache
+def _shape(eclass: EClass) -> _Shape:
+    return _Shape(
+        kind=str(eclass.name),
+        attributes=tuple((str(a.name), a.get_default_value()) for a in attributes(eclass)),
+        references=tuple(str(r.name) for r in cross_references(eclass) if not r.many),
+        containments=tuple((str(c.name), bool(c.many)) for c in containments(eclass)),
+    )
+
+
 def _element(obj: EObject) -> Element:
-    name = str(obj.name) if getattr(obj, "name", None) else f"({obj.eClass.name})"
-    element = Element(kind=obj.eClass.name, name=name, obj=obj)
-    position = stored(obj, "diagramPosition") if "diagramPosition" in obj.__dict__ else None
+    shape = _shape(obj.eClass)
+    given = stored(obj, "name") if any(n == "name" for n, _ in shape.attributes) else None
+    name = str(given) if given else f"({shape.kind})"
+    element = Element(kind=shape.kind, name=name, obj=obj)
+    position = stored(obj, "diagramPosition")
     if isinstance(position, scm.DiagramPosition):
-        element.layout = (_number(position.x), _number(position.y))
+        element.layout = (_number(stored(position, "x")), _number(stored(position, "y")))
     _read(obj, "", element, top=True)
     return element
 
 
 def _read(obj: EObject, prefix: str, element: Element, *, top: bool = False) -> None:
     """Add the leaves of `obj`'s features under `prefix`."""
-    eclass = obj.eClass
-    for attribute in attributes(eclass):
-        if top and attribute.name == "name":
+    shape = _shape(obj.eClass)
+    leaves = element.leaves
+    for name, default in shape.attributes:
+        if top and name == "name":
             continue
-        # eGet, not the stored holder: an unset attribute reads as its default, as it does once
-        # saved (files are written with their defaults) and read back.
-        held = obj.eGet(attribute)
+        # An unset attribute reads as its default, as it does once saved (files are written
+        # with their defaults) and read back.
+        held = stored(obj, name)
+        if held is None:
+            held = default
         if held is not None:
-            element.leaves[prefix + attribute.name] = _plain(held)
-    for reference in cross_references(eclass):
-        held = stored(obj, reference.name)
-        if held is not None and not reference.many:
-            element.leaves[prefix + reference.name] = reference_leaf(held)
-    for containment in containments(eclass):
-        name = containment.name
-        if (top and name in ("diagramPosition", "actors")) or name not in obj.__dict__:
+            leaves[prefix + name] = _plain(held)
+    for name in shape.references:
+        held = stored(obj, name)
+        if held is not None:
+            leaves[prefix + name] = reference_leaf(held)
+    for name, many in shape.containments:
+        if top and name in ("diagramPosition", "actors"):
             continue
         held = stored(obj, name)
-        if containment.many:
+        if held is None:
+            continue
+        if many:
             _read_items(obj, name, list(held), prefix, element)
-        elif held is not None:
+        else:
             _read_child(obj, name, held, prefix + name, element)
 
 
@@ -186,7 +211,7 @@ def reference_leaf(target: object) -> Leaf:
         resource = target.eResource
         file = resource.uri.normalize().rsplit("/", 1)[-1] if resource is not None else ""
         return ("module", file, str(target.name))
-    return ("actor", str(getattr(target, "name", "")))
+    return ("actor", str(stored(target, "name") or "") if isinstance(target, EObject) else "")
 
 
 def parameter_leaf(value: scm.ParameterValue) -> Leaf:
