@@ -17,14 +17,13 @@ import scemlmodel as scm
 
 from ..copying import copy_tree
 from ..traversal import all_contents, single_references
+from .snapshot import ITEM_KEYS
 
 #: The receiving model's actor of a given name (None when it has none).
 ActorLookup = Callable[[str], EObject | None]
 
 _SEGMENT = re.compile(r"(\w+)(?:\[([^\]]*)\])?")
 
-#: Keyed lists: the attribute that names an item (snapshot._ITEM_KEYS).
-_ITEM_KEYS = {"bindings": "role", "overrides": "parameter"}
 
 
 def segments(path: str) -> list[tuple[str, str | None]]:
@@ -113,7 +112,7 @@ def _kinds_differ(one: EObject, other: EObject) -> bool:
 
 def _item(owner: EObject, name: str, key: str) -> EObject | None:
     items = list(owner.eGet(name))
-    attribute = _ITEM_KEYS.get(name)
+    attribute = ITEM_KEYS.get(name)
     if attribute is None:
         position = int(key)
         return items[position] if position < len(items) else None
@@ -125,7 +124,7 @@ def _replace_item(
 ) -> None:
     items = owner.eGet(name)
     own = _item(owner, name, key)
-    if _ITEM_KEYS.get(name) is None:
+    if ITEM_KEYS.get(name) is None:
         # Positions in a list (waypoints): replace in place, append, or drop the tail item.
         position = int(key)
         if own is not None and item is not None:

@@ -25,7 +25,7 @@ from ..traversal import attributes, containments, cross_references, stored
 Leaf = Any
 
 #: Keyed lists: the attribute that names an item, so `bindings[crosser]` survives reordering.
-_ITEM_KEYS = {"bindings": "role", "overrides": "parameter"}
+ITEM_KEYS = {"bindings": "role", "overrides": "parameter"}
 
 
 @dataclass
@@ -143,7 +143,7 @@ def _read(obj: EObject, prefix: str, element: Element, *, top: bool = False) -> 
 def _read_items(
     owner: EObject, name: str, items: list[EObject], prefix: str, element: Element
 ) -> None:
-    key = _ITEM_KEYS.get(name)
+    key = ITEM_KEYS.get(name)
     for index, item in enumerate(items):
         label = str(item.eGet(key)) if key else str(index)
         path = f"{prefix}{name}[{label}]"
