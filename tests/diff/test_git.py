@@ -114,3 +114,12 @@ def test_a_conflicting_merge_leaves_ours_and_lists_the_conflict(repo: Path) -> N
     assert "CONFLICT" in output
     assert scenario.read_bytes() == ours
     assert "UU uis2.xmi" in git(repo, "status", "--short").stdout
+
+
+def test_an_added_file_lists_everything_as_added(repo: Path) -> None:
+    shutil.copy(repo / "uis2.xmi", repo / "copy.xmi")
+    git(repo, "add", "copy.xmi")
+    git(repo, "commit", "-qm", "a copy")
+    shown = git(repo, "show", "--ext-diff", "HEAD").stdout
+    assert "a/copy.xmi -> b/copy.xmi: 20 changes\n" in shown
+    assert "  + ego (Car) added\n" in shown and "  - " not in shown
