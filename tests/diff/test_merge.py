@@ -185,3 +185,29 @@ def test_renamed_differently_on_both_sides_conflicts(uis2: Path, edited) -> None
     )
     assert code == 1
     assert "renamed differently (ours: Left; theirs: Turn)" in shown
+
+
+def test_a_binding_and_an_override_of_one_module_use_merge(uis2: Path, edited) -> None:
+    def ours_edit(scenario: scm.Scenario) -> None:
+        use = node(scenario, "CrossingManeuver_1")
+        next(b for b in use.bindings if b.role == "trigger").actor = actor(scenario, "ego")
+
+    def theirs_edit(scenario: scm.Scenario) -> None:
+        use = node(scenario, "CrossingManeuver_1")
+        next(o for o in use.overrides if o.parameter == "destinationX").value = params.value(-12.0)
+        node(scenario, "TurnLeft_1").destination = scm.LanePosition(
+            roadId="2", laneId=-1, s=params.value(5.0)
+        )
+
+    out = uis2.with_name("merged.xmi")
+    code, shown = merge(uis2, edited(ours_edit, "ours.xmi"), edited(theirs_edit, "theirs.xmi"), out)
+    assert code == 0, shown
+    merged = io.load_scenario(out).root
+    use = node(merged, "CrossingManeuver_1")
+    assert next(b for b in use.bindings if b.role == "trigger").actor is actor(merged, "ego")
+    override = next(o for o in use.overrides if o.parameter == "destinationX")
+    assert override.value.value == -12.0
+    assert len(use.overrides) == 5  # replaced in place of the old one, not added beside it
+    destination = node(merged, "TurnLeft_1").destination
+    assert isinstance(destination, scm.LanePosition)
+    assert (destination.roadId, destination.laneId, destination.s.value) == ("2", -1, 5.0)

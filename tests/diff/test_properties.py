@@ -39,6 +39,20 @@ PARAMETER = st.one_of(
     st.builds(lambda a: {"type": "range", "min": a, "max": a + 5, "step": None}, NUMBER),
     st.builds(lambda a: {"type": "uniform", "min": a, "max": a + 2}, NUMBER),
 )
+#: A destination or location: a world position (x, y, maybe a heading) or a lane position.
+PLACE = st.one_of(
+    st.builds(
+        lambda x, y, h: {"type": "world", "x": x, "y": y, "z": None, "h": h},
+        PARAMETER.filter(lambda v: v is not None),
+        PARAMETER.filter(lambda v: v is not None),
+        PARAMETER,
+    ),
+    st.builds(
+        lambda road, s: {"type": "lane", "roadId": road, "laneId": 1, "s": s, "offset": None},
+        st.sampled_from(["1", "2", "3"]),
+        PARAMETER.filter(lambda v: v is not None),
+    ),
+)
 POSITION = st.builds(lambda x, y: {"x": x, "y": y}, NUMBER, NUMBER)
 SETTINGS = settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
@@ -243,10 +257,12 @@ def plan(data: st.DataObject, nodes: list[str], actor: str, kind: str) -> Plan:
     """Edits of the nodes `nodes` and the actor `actor` only; added nodes are of `kind`."""
     steps: Plan = []
     for _ in range(data.draw(st.integers(1, 6))):
-        what = data.draw(st.sampled_from(["parameter", "move", "delete", "add", "actor"]))
+        what = data.draw(st.sampled_from(["parameter", "position", "move", "delete", "add", "actor"]))
         node = data.draw(st.sampled_from(nodes))
         if what == "parameter":
             steps.append(("parameter", node, data.draw(PARAMETER)))
+        elif what == "position":
+            steps.append(("position", node, data.draw(PLACE)))
         elif what == "move":
             steps.append(("move", node, data.draw(POSITION)))
         elif what == "delete":
@@ -271,6 +287,12 @@ def apply_plan(session: EditorSession, steps: Plan) -> None:
             node = ids[step[1]]
             field = sorted(parameters(top_nodes(view)[node]))[0]
             session.apply([{"op": "set_parameter", "node": node, "field": field, "value": step[2]}])
+        elif what == "position":
+            node = top_nodes(view)[ids[step[1]]]
+            fields = [f["name"] for f in node["fields"] if f["type"] == "position"]
+            if fields:
+                op = {"op": "set_position", "node": ids[step[1]], "field": fields[0]}
+                session.apply([{**op, "value": step[2]}])
         elif what == "move":
             session.apply([{"op": "move", "positions": {ids[step[1]]: step[2]}}])
         elif what == "delete":

@@ -69,10 +69,14 @@ def copy_leaf(target: EObject, source: EObject, path: str, actors: ActorLookup) 
             target, source = target_item, source_item
             continue
         feature = target.eClass.findEStructuralFeature(name)
+        if feature is None:
+            # The object on the way was replaced whole by theirs' of another kind (a lane
+            # position for a world one), which has no such leaf: nothing is left to carry.
+            return
         if isinstance(feature, EAttribute):
             target.eSet(feature, source.eGet(name))
             return
-        assert isinstance(feature, EReference), f"{target.eClass.name} has no feature {name}"
+        assert isinstance(feature, EReference)
         held = source.eGet(name)
         if not feature.containment:
             target.eSet(feature, _retarget(held, actors))
