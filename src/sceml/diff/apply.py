@@ -25,7 +25,6 @@ ActorLookup = Callable[[str], EObject | None]
 _SEGMENT = re.compile(r"(\w+)(?:\[([^\]]*)\])?")
 
 
-
 def segments(path: str) -> list[tuple[str, str | None]]:
     """`waypoints[1].x` -> [("waypoints", "1"), ("x", None)]."""
     found = []

@@ -8,6 +8,7 @@ so that a renamed actor does not make every node that refers to it look changed.
 
 from __future__ import annotations
 
+import re
 from collections import defaultdict
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
@@ -32,13 +33,13 @@ class Matching:
 
 def match(old: Snapshot, new: Snapshot) -> Matching:
     """Pair the actors, then the nodes, of two versions of a scenario."""
-    actors = _pair(old.actors, new.actors, lambda name, element: set(element.leaves.items()))
+    actors = _pair(old.actors, new.actors, lambda name, element: _fields(element.leaves))
     old_next, old_previous = _neighbours(old.flows)
     new_next, new_previous = _neighbours(new.flows)
     nodes: dict[str, str] = {}
 
     def old_signals(name: str, element: Element) -> set[object]:
-        leaves = {(k, translate(v, actors)) for k, v in element.leaves.items()}
+        leaves = _fields({k: translate(v, actors) for k, v in element.leaves.items()})
         after = {("next", nodes.get(n, n)) for n in old_next[name]}
         before = {("previous", nodes.get(n, n)) for n in old_previous[name]}
         return leaves | after | before
@@ -46,12 +47,21 @@ def match(old: Snapshot, new: Snapshot) -> Matching:
     def new_signals(name: str, element: Element) -> set[object]:
         after = {("next", n) for n in new_next[name]}
         before = {("previous", n) for n in new_previous[name]}
-        return set(element.leaves.items()) | after | before
+        return _fields(element.leaves) | after | before
 
     # Nodes of the same name first, so that their neighbours count as signals for the rest.
     nodes.update(_same_names(old.nodes, new.nodes))
     nodes.update(_pair(old.nodes, new.nodes, old_signals, new_signals, taken=nodes))
     return Matching(actors=actors, nodes=nodes)
+
+
+def _fields(leaves: dict[str, Leaf]) -> set[object]:
+    """One signal per field: a destination is one parameter of a node however many leaves it
+    has (x, y, z, h), so a changed destination weighs as much as a changed speed."""
+    grouped: dict[str, list[tuple[str, Leaf]]] = defaultdict(list)
+    for path, leaf in leaves.items():
+        grouped[re.split(r"[.\[]", path, maxsplit=1)[0]].append((path, leaf))
+    return {(field, tuple(items)) for field, items in grouped.items()}
 
 
 def translate(leaf: Leaf, actors: dict[str, str]) -> Leaf:
