@@ -123,3 +123,20 @@ def test_an_added_file_lists_everything_as_added(repo: Path) -> None:
     shown = git(repo, "show", "--ext-diff", "HEAD").stdout
     assert "a/copy.xmi -> b/copy.xmi: 20 changes\n" in shown
     assert "  + ego (Car) added\n" in shown and "  - " not in shown
+
+
+def test_global_setup_writes_the_user_s_config_and_attributes(tmp_path: Path) -> None:
+    home = tmp_path / "home"
+    home.mkdir()
+    environment = {**os.environ, "HOME": str(home), "GIT_CONFIG_NOSYSTEM": "1"}
+    environment.pop("GIT_CONFIG_GLOBAL", None)
+    subprocess.run(
+        [str(SCEML), "git-setup", "--global", "--program", "sceml"],
+        cwd=tmp_path, env=environment, check=True, capture_output=True,
+    )  # fmt: skip
+    config = (home / ".gitconfig").read_text()
+    assert "command = sceml diff --git" in config
+    assert "driver = sceml merge %O %A %B -o %A --name %P" in config
+    attributes = home / ".config" / "git" / "attributes"
+    assert f"attributesFile = {attributes}" in config
+    assert attributes.read_text() == "*.xmi diff=sceml merge=sceml\n"
