@@ -36,11 +36,9 @@ class Mark:
     legend: str
 
 
-ADDED = Mark("#1e8e3e", "bold", "+ added", "Added: green, bold border, + added")
-CHANGED = Mark(
-    "#e37400", "dashed,bold", "~ changed", "Changed or renamed: orange, dashed border, ~ changed"
-)
-REMOVED = Mark("#d93025", "dashed", "- removed", "Removed: red, grey dashed ghost, - removed")
+ADDED = Mark("#1e8e3e", "bold", "+ added", "Added: green, bold border")
+CHANGED = Mark("#e37400", "dashed,bold", "~ changed", "Changed or renamed: orange, dashed border")
+REMOVED = Mark("#d93025", "dashed", "- removed", "Removed: red border, grey dashed ghost")
 MARKS_BY_ACTION = {"added": ADDED, "changed": CHANGED, "renamed": CHANGED, "removed": REMOVED}
 
 _NODE_PARTS = ("root", "nodes", "modules")
