@@ -44,6 +44,8 @@ READERS = {
         "export-distribution",
         "simulate",
         "explore",
+        "diff",
+        "merge",
     ),
     "xosc": ("check-xosc", "import"),
     "config": ("limits", "ranges"),
