@@ -19,6 +19,7 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
+import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -270,11 +271,12 @@ class Editing:
         )
 
 
+@pytest.mark.parametrize("example", [BASE, "uis2-logical.xmi"])  # UIS2: with a module use
 @SETTINGS
 @given(data=st.data(), length=st.integers(1, 10))
-def test_the_diff_lists_exactly_the_edits(data: st.DataObject, length: int) -> None:
+def test_the_diff_lists_exactly_the_edits(example: str, data: st.DataObject, length: int) -> None:
     with copied_examples() as folder:
-        base = folder / BASE
+        base = folder / example
         session = EditorSession()
         before = session.open(base)
         editing = Editing(data, session, before)
