@@ -211,3 +211,40 @@ def test_a_binding_and_an_override_of_one_module_use_merge(uis2: Path, edited) -
     destination = node(merged, "TurnLeft_1").destination
     assert isinstance(destination, scm.LanePosition)
     assert (destination.roadId, destination.laneId, destination.s.value) == ("2", -1, 5.0)
+
+
+def test_an_added_actor_and_a_node_of_it_come_across_together(uis2: Path, edited) -> None:
+    def theirs_edit(scenario: scm.Scenario) -> None:
+        truck = scm.Truck(name="truck", initialSpeed=params.value(8.0))
+        node(scenario, "Root").actors.append(truck)
+        scenario.nodes.append(scm.KeepVelocity(name="KeepVelocity_1", referenceActor=truck))
+        scenario.flows.append(scm.Flow(source=node(scenario, "Root"), target=scenario.nodes[-1]))
+        scenario.flows.append(scm.Flow(source=scenario.nodes[-1], target=node(scenario, "End")))
+
+    out = uis2.with_name("merged.xmi")
+    code, shown = merge(
+        uis2, edited(_longer_drive, "ours.xmi"), edited(theirs_edit, "theirs.xmi"), out
+    )
+    assert code == 0, shown
+    merged = io.load_scenario(out).root
+    assert node(merged, "KeepVelocity_1").referenceActor is actor(merged, "truck")
+    assert actor(merged, "truck").initialSpeed.value == 8.0
+
+
+def test_an_actor_removed_by_theirs_goes_with_its_references(uis2: Path, edited) -> None:
+    def theirs_edit(scenario: scm.Scenario) -> None:
+        car = actor(scenario, "car")
+        node(scenario, "DriveDistance_1").referenceActor = actor(scenario, "ego")
+        use = node(scenario, "CrossingManeuver_1")
+        next(b for b in use.bindings if b.role == "trigger").actor = actor(scenario, "ego")
+        node(scenario, "Root").actors.remove(car)
+
+    out = uis2.with_name("merged.xmi")
+    code, shown = merge(
+        uis2, edited(_wider_turn, "ours.xmi"), edited(theirs_edit, "theirs.xmi"), out
+    )
+    assert code == 0, shown
+    merged = io.load_scenario(out).root
+    assert [a.name for a in node(merged, "Root").actors] == ["ego", "pedestrian"]
+    assert node(merged, "DriveDistance_1").referenceActor is actor(merged, "ego")
+    assert node(merged, "TurnLeft_1").tolerance.value == 5.0
