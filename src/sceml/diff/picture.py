@@ -158,7 +158,8 @@ def _drawn(
 
 def _legend(graph: graphviz.Digraph) -> None:
     with graph.subgraph(name="cluster_diff_legend") as legend:
-        legend.attr(label="Changes", style="rounded", color="#9aa0a6", fontsize="12")
+        # One row: chained down, each sample would take a rank as tall as the diagram's.
+        legend.attr(label="Changes", style="rounded", color="#9aa0a6", fontsize="12", rank="same")
         previous = None
         for index, mark in enumerate((ADDED, CHANGED, REMOVED)):
             name = f"diff-legend-{index}"
