@@ -118,7 +118,7 @@ def add_overtaking_modules(library: LibraryBuilder) -> None:
         "LaneChange",
         driver,
         direction="left",
-        distance=left.parameter("laneChangeDistance", "m", 20.0),
+        distance=left.parameter("laneChangeDistance", "m", 15.0),
     )
     left.chain(left.in_port, closing, pull_out, left.out_port)
 
@@ -127,12 +127,12 @@ def add_overtaking_modules(library: LibraryBuilder) -> None:
         "Stays in the passing lane for a while, then changes back into the lane on the right.",
     )
     driver = right.role("driver", "FourWheeler", "Motorcycle")
-    hold = right.add("TimeElapsed", driver, duration=right.parameter("holdTime", "s", 3.0))
+    hold = right.add("TimeElapsed", driver, duration=right.parameter("holdTime", "s", 1.5))
     cut_in = right.add(
         "LaneChange",
         driver,
         direction="right",
-        distance=right.parameter("laneChangeDistance", "m", 20.0),
+        distance=right.parameter("laneChangeDistance", "m", 15.0),
     )
     right.chain(right.in_port, hold, cut_in, right.out_port)
 
@@ -142,8 +142,8 @@ def add_overtaking_modules(library: LibraryBuilder) -> None:
     )
     overtaker = passing.role("overtaker", "FourWheeler", "Motorcycle")
     overtaken = passing.role("overtaken", "FourWheeler", "TwoWheeler")
-    speed = passing.parameter("passingSpeed", "m/s", 11.0)
-    time = passing.parameter("passingTime", "s", 3.0)
+    speed = passing.parameter("passingSpeed", "m/s", 13.0)
+    time = passing.parameter("passingTime", "s", 1.5)
     pull_out_use = passing.use(left.definition, {"driver": overtaker, "lead": overtaken})
     speed_up = passing.add("Accelerate", overtaker, targetSpeed=speed)
     cut_in_use = passing.use(right.definition, {"driver": overtaker}, {"holdTime": time})
@@ -161,8 +161,8 @@ def add_overtaking_modules(library: LibraryBuilder) -> None:
         passing.definition,
         {"overtaker": overtaker, "overtaken": overtaken},
         {
-            "passingSpeed": overtaking.parameter("passingSpeed", "m/s", 11.0),
-            "passingTime": overtaking.parameter("passingTime", "s", 3.0),
+            "passingSpeed": overtaking.parameter("passingSpeed", "m/s", 13.0),
+            "passingTime": overtaking.parameter("passingTime", "s", 1.5),
         },
     )
     sighted = overtaking.add(
@@ -174,8 +174,8 @@ def add_overtaking_modules(library: LibraryBuilder) -> None:
     approach = overtaking.add(
         "DriveDistance",
         oncoming,
-        distance=overtaking.parameter("oncomingDistance", "m", 60.0),
-        speed=overtaking.parameter("oncomingSpeed", "m/s", 8.0),
+        distance=overtaking.parameter("oncomingDistance", "m", 30.0),
+        speed=overtaking.parameter("oncomingSpeed", "m/s", 10.0),
     )
     overtaking.chain(overtaking.in_port, pass_use)
     overtaking.chain(overtaking.in_port, sighted, approach)
@@ -337,7 +337,7 @@ def build_overtaking(level: str, arm: dict, library: scm.Library) -> scm.Scenari
         "ego",
         ego=True,
         start=on_road(road, lanes["outbound"], 2.0, level),
-        speed=pick(8.0, span(7.0, 9.0, 1.0)),
+        speed=pick(10.0, span(9.0, 11.0, 1.0)),
         model="vehicle.tesla.model3",
     )
     truck = b.actor(
@@ -354,12 +354,12 @@ def build_overtaking(level: str, arm: dict, library: scm.Library) -> scm.Scenari
         speed=pick(0.0),
         model="vehicle.audi.a2",
     )
-    keep = b.add("KeepVelocity", truck, **given(duration=pick(12.0)))
+    keep = b.add("KeepVelocity", truck, **given(duration=pick(6.0)))
     overtaking = next(m for m in library.modules if m.name == "Overtaking")
     overrides = given(
-        passingSpeed=pick(11.0, uniform(10.0, 12.0)),
+        passingSpeed=pick(13.0, uniform(12.0, 14.0)),
         oncomingTriggerRadius=pick(40.0, span(30.0, 50.0, 10.0)),
-        oncomingSpeed=pick(8.0, discrete([6.0, 8.0, 10.0])),
+        oncomingSpeed=pick(10.0, discrete([8.0, 10.0, 12.0])),
     )
     bindings = {"overtaker": ego, "overtaken": truck, "oncoming": oncoming}
     manoeuvre = b.use(overtaking, bindings, overrides)

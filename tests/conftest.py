@@ -23,8 +23,13 @@ def pytest_addoption(parser: pytest.Parser) -> None:
 
 @pytest.fixture
 def examples_copy(tmp_path: Path) -> Path:
-    """A private copy of examples/ (and the map it refers to) that a test may change freely."""
+    """A private copy of examples/ (and the map it refers to) that a test may change freely.
+
+    Like the repository, the copy is one project (tmp_path holds a `.sceml-root` marker), so the
+    examples may read ../maps by the reading rule; a test of files outside a project removes it.
+    """
     target = tmp_path / "examples"
     shutil.copytree(EXAMPLES, target, ignore=shutil.ignore_patterns("*.py", "__pycache__"))
     shutil.copytree(REPO / "maps", tmp_path / "maps", ignore=shutil.ignore_patterns("*.py"))
+    (tmp_path / ".sceml-root").touch()
     return target

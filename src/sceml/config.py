@@ -10,6 +10,7 @@ from pathlib import Path
 import yaml
 
 from .errors import LoadError
+from .safefiles import read_input
 
 #: Configuration files (limits, ranges) are small; anything bigger is a mistake or an attack.
 CONFIG_MAX_BYTES = 1024 * 1024
@@ -22,7 +23,8 @@ def read_config_text(path: str | Path, what: str, max_bytes: int = CONFIG_MAX_BY
         size = path.stat().st_size
         if size > max_bytes:
             raise LoadError(f"{what} is {size} bytes, above the {max_bytes} byte limit", file=path)
-        data = path.read_bytes()
+        # The reading rule of every input: a regular file, the limit counted while reading.
+        data = read_input(path, max_bytes=max_bytes, what=what)
     except OSError as error:
         raise LoadError(f"cannot read {what}: {error.strerror}", file=path) from None
     try:

@@ -58,6 +58,8 @@ def _definition_label(use: scm.ModuleUse) -> tuple[str, str]:
             definition.force_resolve()
         except Exception:
             return f"(unresolved: {href})", href
+        if not isinstance(definition, scm.ModuleDefinition):  # `#//`: the file's own root
+            return f"(not a module definition: {href})", href.split("#")[0]
         return str(definition.name), href.split("#")[0]
     resource = definition.eResource
     return str(definition.name), resource.uri.plain if resource is not None else ""

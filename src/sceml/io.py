@@ -24,6 +24,12 @@ import scemlmodel as scm
 from . import xmi_reader
 from .collector import collector_paused
 from .errors import LoadError, SaveError, SceMLError
+
+# The roots rule lives with the reading rule; it is part of this module's API too.
+from .safefiles import PROJECT_MARKERS as PROJECT_MARKERS
+from .safefiles import output_target, read_input
+from .safefiles import project_root as project_root
+from .safefiles import reading_roots as reading_roots
 from .safexml import (  # noqa: F401 (the size limit is part of this module's API)
     DEFAULT_MAX_BYTES,
     MAX_BYTES_VARIABLE,
@@ -33,7 +39,7 @@ from .safexml import (  # noqa: F401 (the size limit is part of this module's AP
     max_bytes_limit,
     size_problem,
 )
-from .traversal import all_contents
+from .traversal import all_contents, cross_references, stored
 
 # Deeper documents are refused by libxml2 itself (its limit without huge_tree is 256 levels), so
 # pyecore's recursive decoder never sees more than that and cannot overflow Python's stack.
@@ -54,20 +60,13 @@ _BOOLEAN_TYPES = frozenset({"EBoolean", "EBooleanObject"})
 def parse_xml_safely(path: Path, max_bytes: int | None = None) -> etree._ElementTree:
     """Parse an XML file with every dangerous feature off; LoadError names the file and line.
 
-    Files above `max_bytes` (default: `max_bytes_limit()`) are refused before they are read.
+    Read by the one reading rule (`sceml.safefiles.read_input`): a regular file of at most
+    `max_bytes` (default: `max_bytes_limit()`); a larger file is refused before it is read.
     """
-    max_bytes = max_bytes_limit() if max_bytes is None else max_bytes
     try:
-        size = path.stat().st_size
+        data = read_input(path, max_bytes=max_bytes)
     except FileNotFoundError:
         raise LoadError("no such file", file=path) from None
-    except OSError as error:
-        raise LoadError(f"cannot read file: {error.strerror}", file=path) from None
-    too_large = size_problem(size, max_bytes)
-    if too_large is not None:
-        raise LoadError(too_large, file=path)
-    try:
-        data = path.read_bytes()
     except OSError as error:
         raise LoadError(f"cannot read file: {error.strerror}", file=path) from None
     line = doctype_line(data)
@@ -120,6 +119,7 @@ class SafeXMIResource(XMIResource):  # type: ignore[misc]  # pyecore is untyped
                 file=path,
             )
         tree = parse_xml_safely(path, getattr(resource_set, "sceml_max_bytes", None))
+        self.sceml_migration = _migrate_if_older(tree, path)
         _check_tree(tree, path)
         self.sceml_tree = tree
         # iD attribute values seen so far: EMF fragments name elements by them, so they must be
@@ -237,6 +237,41 @@ class SafeXMIResource(XMIResource):  # type: ignore[misc]  # pyecore is untyped
                     _line_in(self, holder),
                 ) from None
         self._later = []
+
+
+def _migrate_if_older(tree: etree._ElementTree, path: Path) -> Any:
+    """Rewrite a file saved with an older metamodel release to the current one, in memory.
+
+    Returns the migration's report (`sceml.migrations.Report`), or None for a file of the
+    current release; the migration code is imported only for the others.
+    """
+    root = tree.getroot()
+    model = next(iter(root), None) if etree.QName(root).localname == "XMI" else root
+    if model is None or etree.QName(model).namespace == scm.nsURI:
+        return None
+    from . import migrations
+
+    report = migrations.upgrade(tree, path)
+    if report is not None:
+        for listener in list(_MIGRATION_LISTENERS):
+            listener(report)
+    return report
+
+
+_MIGRATION_LISTENERS: list[Any] = []
+
+
+@contextlib.contextmanager
+def migration_notices(listener: Any) -> Iterator[None]:
+    """Call `listener(report)` for every file migrated while loading, within the block.
+
+    For front ends (the CLI prints a notice); library code never says anything itself.
+    """
+    _MIGRATION_LISTENERS.append(listener)
+    try:
+        yield
+    finally:
+        _MIGRATION_LISTENERS.remove(listener)
 
 
 def _check_tree(tree: etree._ElementTree, path: Path) -> None:
@@ -382,32 +417,6 @@ def _is_within(path: Path, root: Path) -> bool:
     return True
 
 
-#: What marks a project's root folder: a version control checkout, or SceML's own marker file.
-PROJECT_MARKERS = (".git", ".hg", ".svn", ".sceml-root")
-
-
-def project_root(path: str | Path) -> Path | None:
-    """The nearest folder at or above `path`'s folder that holds one of PROJECT_MARKERS."""
-    folder = Path(path).resolve().parent
-    for candidate in [folder, *folder.parents]:
-        if any((candidate / marker).exists() for marker in PROJECT_MARKERS):
-            return candidate
-    return None
-
-
-def reading_roots(path: str | Path, allow: Iterable[str | Path] = ()) -> list[Path]:
-    """The folders that files `path` refers to may be read from: the one rule of every reader.
-
-    They are `path`'s own folder, its project root (see `project_root`), and the folders in
-    `allow` (the CLI's `--allow`), each with everything below it.
-    """
-    roots: list[Path] = []
-    for root in [Path(path).resolve().parent, project_root(path), *allow]:
-        if root is not None and Path(root).resolve() not in roots:
-            roots.append(Path(root).resolve())
-    return roots
-
-
 def new_resource_set(
     allowed_roots: Iterable[str | Path] | None = None, max_bytes: int | None = None
 ) -> ResourceSet:
@@ -443,10 +452,40 @@ class Document:
         lines = getattr(obj.eResource, "sceml_lines", None) if obj.eResource else None
         return lines.get(obj) if lines is not None else None
 
+    @property
+    def migration(self) -> Any:
+        """How this file was migrated from an older metamodel release (a
+        `sceml.migrations.Report`), or None when it was saved with the current one."""
+        return getattr(self.resource, "sceml_migration", None)
+
+    def migrations(self) -> list[Any]:
+        """The migration reports of this file and of every file it has loaded since (libraries)."""
+        # A resource set may hold one file under two URIs; each file is reported once.
+        found: dict[Path, Any] = {}
+        for resource in self.resource_set.resources.values():
+            report = getattr(resource, "sceml_migration", None)
+            if report is not None:
+                found.setdefault(Path(report.file).resolve(), report)
+        return list(found.values())
+
+    @property
+    def allowed_roots(self) -> list[Path] | None:
+        """The folders files this model names (libraries, maps) may be read from; None: any."""
+        return allowed_roots_of(self.root)
+
     def file_of(self, obj: EObject) -> Path | None:
         """The file an object was read from (a library, for module internals)."""
         resource = obj.eResource
         return Path(resource.uri.normalize()) if resource is not None else None
+
+
+def allowed_roots_of(obj: EObject) -> list[Path] | None:
+    """The folders the files `obj`'s model names may be read from, as it was loaded (`load`'s
+    allowed roots); None for a model that was not loaded with them (built in Python)."""
+    resource = obj.eResource
+    resource_set = resource.resource_set if resource is not None else None
+    roots: list[Path] | None = getattr(resource_set, "sceml_allowed_roots", None)
+    return roots
 
 
 def _containment_steps(obj: EObject) -> list[tuple[str, int]]:
@@ -579,19 +618,74 @@ def load_library(path: str | Path, **kwargs: object) -> Document:
     return document
 
 
-def unresolved_references(root: EObject) -> Iterator[tuple[EObject, str, str]]:
-    """Every cross-file reference below `root` that cannot be loaded: (holder, href, reason)."""
-    for obj in [root, *root.eAllContents()]:
-        if not isinstance(obj, scm.ModuleUse):
-            continue
-        target = obj.definition
-        if not isinstance(target, EProxy):
-            continue
-        href = target._proxy_path
-        try:
-            target.force_resolve()
-        except Exception as error:  # pyecore wraps our LoadError, or raises its own for fragments
-            yield obj, href, _resolution_failure(href, error)
+def unresolved_references(
+    root: EObject, *, through_files: bool = False
+) -> Iterator[tuple[EObject, str, str]]:
+    """Every cross-file reference below `root` that cannot be loaded: (holder, href, reason).
+
+    Any reference may name another file (a ModuleUse's definition by design, a node's
+    referenceActor by a hand-edited file); each is tried here, so that no tool meets a proxy
+    that fails later with pyecore's TypeError. With `through_files`, the files reached are
+    searched too, each once: a library's own broken reference is found before a tool expands
+    its modules.
+    """
+    pending, seen = [root], {id(root)}
+    while pending:
+        top = pending.pop()
+        for obj in [top, *all_contents(top)]:
+            for holder, target, failure in _proxies_of(obj):
+                if failure is not None:
+                    yield holder, target._proxy_path, failure
+                    continue
+                reached = target.eRoot() if through_files else None
+                if reached is not None and id(reached) not in seen:
+                    seen.add(id(reached))
+                    pending.append(reached)
+
+
+def _proxies_of(obj: EObject) -> Iterator[tuple[EObject, EProxy, str | None]]:
+    """`obj`'s references to other files, each tried: (obj, proxy, why it fails or None).
+
+    Only a module use's definition may name another file (SceML writes no other); any other
+    reference that does is a failure without reading what it names.
+    """
+    for reference in cross_references(obj.eClass):
+        held = stored(obj, reference.name)
+        for target in list(held) if reference.many and held is not None else [held]:
+            if not isinstance(target, EProxy):
+                continue
+            if not (isinstance(obj, scm.ModuleUse) and reference.name == "definition"):
+                yield (
+                    obj,
+                    target,
+                    (
+                        f"{reference.name} refers to another file ({target._proxy_path!r}); only a "
+                        "module use's definition may"
+                    ),
+                )
+                continue
+            try:
+                target.force_resolve()
+            except Exception as error:  # pyecore wraps our LoadError, or raises its own
+                yield obj, target, _resolution_failure(target._proxy_path, error)
+                continue
+            # `#//` names the file's own root: it loads, and is no module definition.
+            kind = target.eClass
+            # The generated package types a reference by its Python class, which holds the EClass.
+            wanted = (
+                reference.eType if isinstance(reference.eType, EClass) else reference.eType.eClass
+            )
+            fits = kind is wanted or wanted in kind.eAllSuperTypes()
+            yield (
+                obj,
+                target,
+                None
+                if fits
+                else (
+                    f"cannot resolve {target._proxy_path!r}: it names a {kind.name}, not a "
+                    f"{wanted.name}"
+                ),
+            )
 
 
 def broken_references(document: Document) -> list[SceMLError]:
@@ -602,11 +696,11 @@ def broken_references(document: Document) -> list[SceMLError]:
     return [
         SceMLError(
             reason,
-            file=document.path,
+            file=document.file_of(holder) or document.path,
             line=document.line_of(holder),
             element=model_path(holder),
         )
-        for holder, _href, reason in unresolved_references(document.root)
+        for holder, _href, reason in unresolved_references(document.root, through_files=True)
     ]
 
 
@@ -764,16 +858,17 @@ def _reason(error: OSError) -> str:
 def write_atomically(path: str | Path, data: bytes) -> None:
     """Write bytes to `path` through a temporary file in the same folder and an atomic rename.
 
+    What is replaced follows the one writing rule (`sceml.safefiles.output_target`): a regular
+    file, or the regular file a symbolic link names; a folder, device, FIFO or socket is refused.
     Any failure is a SaveError naming `path` (`cannot write: reason`); the previous file, if
     any, stays as it was, and neither the temporary file nor folders made for it are left.
     """
     path = Path(path)
-    if path.is_dir():
-        raise SaveError("cannot write: it is a folder", file=path)
-    created = make_folder(path.parent, target=path)
+    target = output_target(path)
+    created = make_folder(target.parent, target=path)
     try:
         handle, temporary = tempfile.mkstemp(
-            prefix=f".{path.name}.", suffix=".tmp", dir=path.parent
+            prefix=f".{target.name}.", suffix=".tmp", dir=target.parent
         )
     except OSError as error:
         remove_folders(created)
@@ -784,7 +879,7 @@ def write_atomically(path: str | Path, data: bytes) -> None:
             # batch export of thousands of files would pay for a disk flush on every one.
             stream.write(data)
         os.chmod(temporary, 0o644)
-        os.replace(temporary, path)
+        os.replace(temporary, target)
     except BaseException as error:
         Path(temporary).unlink(missing_ok=True)
         remove_folders(created)
@@ -799,12 +894,14 @@ def write_staged(path: str | Path, data: bytes, staging: str | Path) -> None:
     For writers of many files at once (the batch's worker processes): `staging` is a private
     folder on the same file system as `path` (e.g. inside the output folder) that its owner
     creates beforehand and removes as a whole afterwards, so no temporary name has to be made
-    up: one file creation and one rename. `path`'s folder must exist.
+    up: one file creation and one rename. `path`'s folder must exist. What is replaced follows
+    the writing rule of `write_atomically`.
     Any failure is a SaveError naming `path` (`cannot write: reason`); the previous file, if
     any, stays as it was and the staged file is removed. A process killed midway can leave a
     staged file, never a half-written `path`; removing `staging` removes that too.
     """
     path = Path(path)
+    target = output_target(path)
     staged = Path(staging) / path.name
     flags = os.O_WRONLY | os.O_CREAT | os.O_TRUNC | getattr(os, "O_BINARY", 0)  # (Windows)
     try:
@@ -819,7 +916,7 @@ def write_staged(path: str | Path, data: bytes, staging: str | Path) -> None:
         finally:
             os.close(handle)
         os.chmod(staged, 0o644)  # as write_atomically leaves a file, whatever the umask
-        os.replace(staged, path)
+        os.replace(staged, target)
     except BaseException as error:
         staged.unlink(missing_ok=True)
         if isinstance(error, OSError):

@@ -34,8 +34,9 @@ from typing import TYPE_CHECKING, Any, Final, TypeAlias
 from lxml import etree
 
 from sceml.diagnostics import Diagnostic, Severity
-from sceml.errors import SceMLError
-from sceml.safexml import doctype_line, hardened_parser, has_dtd, max_bytes_limit, size_problem
+from sceml.errors import LoadError, SceMLError
+from sceml.safefiles import read_input
+from sceml.safexml import doctype_line, hardened_parser, has_dtd
 
 if TYPE_CHECKING:
     import xmlschema
@@ -261,18 +262,17 @@ def parse_file(path: str | os.PathLike[str]) -> etree._ElementTree:
     Raises UnsafeXMLError for documents with a DOCTYPE (checked before parsing, so entity
     bombs are never expanded and external entities never fetched) and XMLParseError for
     malformed XML; both carry ``file`` and ``line`` and print gcc-style as ``file:line: ...``.
-    Files above ``sceml.safexml.max_bytes_limit()`` (64 MiB, or $SCEML_MAX_BYTES) raise SchemaError
-    unread. OSError propagates for unreadable files.
+    Files above ``sceml.safexml.max_bytes_limit()`` (64 MiB, or $SCEML_MAX_BYTES), and anything
+    but a regular file (a FIFO, a device), raise SchemaError unread. OSError propagates for
+    missing or unreadable files.
     """
     name = os.fspath(path)
-    limit = max_bytes_limit()
-    with open(name, "rb") as fh:
-        # Refused by size before reading, like models: the file is parsed in memory.
-        size = os.fstat(fh.fileno()).st_size
-        too_large = size_problem(size, limit)
-        if too_large is not None:
-            raise SchemaError(too_large, file=name)
-        data = fh.read()
+    # The one reading rule: a regular file, refused by size before reading and counted while
+    # reading, like models (the file is parsed in memory).
+    try:
+        data = read_input(name, what="OpenSCENARIO file")
+    except LoadError as error:
+        raise SchemaError(error.message, file=name) from None
     line = doctype_line(data)
     if line is not None:
         raise UnsafeXMLError(

@@ -10,6 +10,7 @@ entity is judged on the SceML model (SCEML-R004), not here.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 from pathlib import Path
 from typing import TYPE_CHECKING, Final
 
@@ -18,6 +19,7 @@ from lxml import etree
 from .diagnostics import Diagnostic, Severity
 from .maps import MapError
 from .maps.reference import is_town_name
+from .safefiles import reading_roots
 
 if TYPE_CHECKING:
     from .maps.roadmap import RoadMap
@@ -28,8 +30,14 @@ MAP_SKIPPED_CODE: Final = "XOSC-MAP-SKIPPED"
 TOLERANCE: Final = 0.5
 
 
-def map_diagnostics(tree: etree._ElementTree, path: Path) -> list[Diagnostic]:
-    """Every position of the file that is not on its map; an info when the map is not a file."""
+def map_diagnostics(
+    tree: etree._ElementTree, path: Path, allow: Iterable[Path] = ()
+) -> list[Diagnostic]:
+    """Every position of the file that is not on its map; an info when the map is not a file.
+
+    The map is read by the reading rule of models: from the file's folder, its project root and
+    `allow` only.
+    """
     logic = tree.find("RoadNetwork/LogicFile")
     text = (logic.get("filepath") or "").strip() if logic is not None else ""
     file = str(path)
@@ -48,7 +56,7 @@ def map_diagnostics(tree: etree._ElementTree, path: Path) -> list[Diagnostic]:
 
     map_path = (path.resolve().parent / text).resolve()
     try:
-        road_map = load_map(map_path)
+        road_map = load_map(map_path, reading_roots(path, allow))
     except MapError as error:
         return [
             Diagnostic(

@@ -85,6 +85,7 @@ def test_outside_a_project_allow_names_the_library_folder(
     examples_copy: Path, command: str
 ) -> None:
     project = examples_copy.parent
+    (project / ".sceml-root").unlink()  # no project: only the file's folder is allowed
     derived = project / "out" / "uis2-c.xmi"
     concretize(examples_copy, derived)
     denied = sceml(*READERS[command](derived, project / "out"))
@@ -93,7 +94,8 @@ def test_outside_a_project_allow_names_the_library_folder(
     said = denied.output + (page.read_text() if page.exists() else "")
     assert "leaves the allowed folders" in said and "--allow" in said, said
     arguments = READERS[command](derived, project / "out")
-    allowed = sceml(*arguments, "--allow", examples_copy / "library")
+    # The library, and the map the examples name from a sibling folder (../maps).
+    allowed = sceml(*arguments, "--allow", examples_copy / "library", "--allow", project / "maps")
     assert allowed.exit_code == 0, allowed.output
 
 
@@ -130,13 +132,15 @@ def test_sampled_and_promoted_files_are_read_back(examples_copy: Path) -> None:
     ids=["sample", "export-distribution", "concretize"],
 )
 def test_commands_on_logical_files_take_allow(examples_copy: Path, arguments: list[str]) -> None:
+    (examples_copy.parent / ".sceml-root").unlink()  # no project: only the file's folder
     logical = examples_copy / "sub" / "uis2-logical.xmi"
     io.save(io.load(examples_copy / "uis2-logical.xmi").root, logical)  # refers to ../library
     command, *options = arguments
     out = examples_copy.parent / "out" / ("c.xmi" if command == "concretize" else "")
     denied = sceml(command, logical, *options, "-o", out)
     assert denied.exit_code != 0 and "--allow" in denied.output, denied.output
-    allowed = sceml(command, logical, *options, "-o", out, "--allow", examples_copy / "library")
+    library, maps = examples_copy / "library", examples_copy.parent / "maps"
+    allowed = sceml(command, logical, *options, "-o", out, "--allow", library, "--allow", maps)
     assert allowed.exit_code == 0, allowed.output
 
 

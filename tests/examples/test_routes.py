@@ -69,6 +69,7 @@ def _r006(scenario_text: str, tmp_path: Path, name: str) -> list[str]:
         for file in (REPO / "examples" / "library").glob("*.xmi"):
             (library / file.name).write_bytes(file.read_bytes())
     copy.write_text(scenario_text, encoding="utf-8")
+    (tmp_path / ".sceml-root").touch()  # one project, as the repository is
     document = io.load(copy)
     return [d.message for d in validate(document.root, document=document) if d.code == "SCEML-R006"]
 

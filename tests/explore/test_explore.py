@@ -47,7 +47,7 @@ def test_explore_finds_collisions_of_ego_and_bike_that_simulate_again_as_collisi
     for rank in (1, 2, 3):
         concrete = tmp_path / f"uis1_critical_{rank:02d}.xmi"
         assert concrete.with_suffix(".xosc").exists()
-        document = io.load_scenario(concrete)
+        document = io.load_scenario(concrete, allow=[UIS1.parent.parent / "maps"])
         run = simulate(document.root, concrete)  # the saved file, read back, on its map
         assert run.pair("ego", "bike").collision
 

@@ -1,6 +1,7 @@
 """What players rely on to play an export as SPEC §3 means it (issue 13), checked on the XML.
 
-esmini is not available in CI; scripts/esmini_check.py runs it where it is. These tests keep
+esmini is not available in CI; benchmarks/players_agreement.py runs it where it is, and
+tests/players checks recorded runs. These tests keep
 the properties its runs showed to matter: trajectory vertices without headings, start triggers
 that wait for the predecessors' finish events, a StopTrigger that waits for the end node, and
 distance keeping that drives within the actor's limits.
@@ -186,16 +187,19 @@ def test_stop_trigger_waits_for_the_end_nodes_predecessors(
 
 @pytest.mark.parametrize("version", VERSIONS)
 def test_distance_keeping_drives_within_the_actors_limits(version: str) -> None:
-    """Without DynamicConstraints esmini moves the actor to the gap in one step (teleports)."""
+    """Without DynamicConstraints esmini moves the actor to the gap in one step (teleports).
+    The limits are gap keeping's (players.meaning): at most 3 m/s2 up and 6 m/s2 down, within
+    the car's 10 m/s2 either way, and the car's top speed."""
     _, document, _ = exported("every-kind", version, "generic")
     actions = list(document.iter("LongitudinalDistanceAction"))
     assert len(actions) == 2
     ego = document.find("Entities/ScenarioObject[@name='ego']/Vehicle/Performance")
+    assert (ego.get("maxAcceleration"), ego.get("maxDeceleration")) == ("10.0", "10.0")
     for action in actions:
         limits = action.find("DynamicConstraints")
         assert limits is not None
-        for attribute in ("maxAcceleration", "maxDeceleration", "maxSpeed"):
-            assert limits.get(attribute) == ego.get(attribute)
+        assert (limits.get("maxAcceleration"), limits.get("maxDeceleration")) == ("3.0", "6.0")
+        assert limits.get("maxSpeed") == ego.get("maxSpeed")
 
 
 @pytest.mark.parametrize("version", VERSIONS)
@@ -226,3 +230,67 @@ def test_keep_velocity_holds_the_speed_and_ends_after_its_duration(version: str)
     kept = document.find(f".//Event[@name='{finish}']")
     delays = {c.get("delay") for c in kept.iter("Condition")}
     assert delays == {"1.0"}
+
+
+@pytest.mark.parametrize("version", VERSIONS)
+def test_drive_distance_finishes_after_distance_over_speed_from_its_activation(
+    version: str,
+) -> None:
+    """TraveledDistanceCondition counts from the simulation's start: a DriveDistance after
+    moving finished at once in esmini (issue 25). 20 m at a held 5 m/s take 4 s."""
+    _, document, events_of = exported("every-kind", version, "generic")
+    assert next(document.iter("TraveledDistanceCondition"), None) is None
+    first, finish = events_of["DriveDistance_1"]
+    assert finish == f"{first}{SEPARATOR}driven"
+    driven = document.find(f".//Event[@name='{finish}']")
+    assert {c.get("delay") for c in driven.iter("Condition")} == {"4.0"}
+    # The activation it is delayed from is the node's own: after the InLocationRadius marker.
+    assert state_refs(driven.find(".//ConditionGroup")) == {events_of["InLocationRadius_1"][1]}
+
+
+@pytest.mark.parametrize("version", VERSIONS)
+def test_turns_are_routes_that_leave_the_speed_alone(version: str) -> None:
+    """esmini runs AcquirePositionAction in the longitudinal domain and stops a running
+    Accelerate or Follow of the actor for it; AssignRouteAction controls no domain."""
+    _, document, events_of = exported("every-kind", version, "generic")
+    assert next(document.iter("AcquirePositionAction"), None) is None
+    for node in ("TurnLeft_1", "TurnRight_1"):
+        event = document.find(f".//Event[@name='{events_of[node][0]}']")
+        waypoints = list(event.iter("Waypoint"))
+        assert len(waypoints) == 2
+        # From the actor's start (resolved when the file loads) to the destination.
+        start = waypoints[0].find("Position/LanePosition")
+        assert (start.get("roadId"), start.get("laneId"), start.get("s")) == ("2", "-1", "5.0")
+        assert waypoints[1].find("Position/WorldPosition") is not None
+
+
+def test_the_carla_profile_keeps_acquire_position_and_traveled_distance() -> None:
+    """scenario_runner reads neither AssignRouteAction nor condition delays as SceML means."""
+    _, document, _ = exported("uis2", "1.0", "carla")
+    assert next(document.iter("AssignRouteAction"), None) is None
+    assert next(document.iter("AcquirePositionAction"), None) is not None
+    assert next(document.iter("TraveledDistanceCondition"), None) is not None
+
+
+@pytest.mark.parametrize("version", VERSIONS)
+def test_time_to_collision_is_measured_between_the_boxes(version: str) -> None:
+    _, document, _ = exported("every-kind", version, "generic")
+    conditions = list(document.iter("TimeToCollisionCondition"))
+    assert conditions and all(c.get("freespace") == "true" for c in conditions)
+
+
+@pytest.mark.parametrize("version", VERSIONS)
+def test_approach_finishes_within_half_a_metre_of_its_gap(version: str) -> None:
+    _, document, events_of = exported("every-kind", version, "generic")
+    first, finish = events_of["Approach_1"]
+    assert finish == f"{first}{SEPARATOR}gap_reached"
+    marker = document.find(f".//Event[@name='{finish}']")
+    bounds = {(c.get("rule"), c.get("value")) for c in marker.iter("RelativeDistanceCondition")}
+    assert bounds == {("lessThan", "10.5"), ("greaterThan", "9.5")}
+
+
+def test_the_reference_point_is_the_box_centre() -> None:
+    """SceML positions are centres: the file's reference point is put there too."""
+    _, document, _ = exported("every-kind", "1.3", "generic")
+    centres = {c.get("x") for c in document.iter("Center")}
+    assert centres == {"0.0"}

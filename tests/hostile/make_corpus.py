@@ -24,7 +24,7 @@ EXAMPLES = HERE.parents[1] / "examples"
 XML_HEAD = '<?xml version="1.0" encoding="UTF-8"?>\n'
 NS = (
     'xmlns:xmi="http://www.omg.org/XMI" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance" '
-    'xmlns:scemlmodel="https://sceml.org/metamodel/1.0" xmi:version="2.0"'
+    'xmlns:scemlmodel="https://sceml.org/metamodel/1.1" xmi:version="2.0"'
 )
 
 
@@ -44,6 +44,8 @@ READERS = {
         "export-distribution",
         "simulate",
         "explore",
+        "migrate",
+        "check-run",
         "diff",
         "merge",
     ),

@@ -25,6 +25,8 @@ from sceml.modules.flatten import FlattenError, flatten
 from .make_corpus import CORPUS, READERS, cases, manifest
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+#: A recorded esmini log (of UIS2 at 1.0) for `check-run`, whose model is the hostile file.
+PLAYER_LOG = EXAMPLES.parent / "tests" / "players" / "data" / "uis2-concrete-1.0.log.txt"
 SECONDS = 20  # generous for a loaded 2-core machine; a hang is what this catches
 MANIFEST = [line.split("\t") for line in (CORPUS / "MANIFEST").read_text().splitlines()]
 
@@ -44,6 +46,8 @@ ENTRY_POINTS: dict[str, Callable[[Path, Path], list[str]]] = {
     "simulate": lambda file, out: ["simulate", str(file), "-o", str(out / "run.html")],
     "explore": lambda file, out: ["explore", str(file), "--budget", "2", "-o", str(out / "x")],
     "import": lambda file, out: ["import", str(file), "-o", str(out / "imported.xmi")],
+    "migrate": lambda file, out: ["migrate", str(file), "-o", str(out / "migrated.xmi")],
+    "check-run": lambda file, out: ["check-run", str(file), "--log", str(PLAYER_LOG)],
     "diff": lambda file, out: ["diff", str(EXAMPLES / "uis1-concrete.xmi"), str(file)],
     "merge": lambda file, out: [
         "merge",
@@ -215,7 +219,7 @@ def test_100k_nested_elements_are_a_clean_error(tmp_path: Path) -> None:
     deep = tmp_path / "deep.xmi"
     body = "<nodes>" * 100_000 + "</nodes>" * 100_000
     deep.write_text(
-        f'<?xml version="1.0"?>\n<s:Scenario xmlns:s="https://sceml.org/metamodel/1.0">{body}</s:Scenario>'
+        f'<?xml version="1.0"?>\n<s:Scenario xmlns:s="https://sceml.org/metamodel/1.1">{body}</s:Scenario>'
     )
     exit_code, output = run(["info", str(deep)])
     assert exit_code == 2 and "Excessive depth" in output

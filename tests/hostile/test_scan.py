@@ -22,6 +22,8 @@ CORPUS = HERE / "corpus"
 EXAMPLES = HERE.parents[1] / "examples"
 XOSC = HERE.parent / "export" / "golden" / "uis1-1.3-generic.xosc"
 CONCRETE, LOGICAL = EXAMPLES / "uis1-concrete.xmi", EXAMPLES / "uis1-logical.xmi"
+#: A recorded esmini log of UIS2 at 1.0, for `check-run`.
+PLAYER_LOG = HERE.parent / "players" / "data" / "uis2-concrete-1.0.log.txt"
 
 #: Each command with good arguments: (input file, arguments after it, given the output folder).
 COMMANDS: dict[str, tuple[Path, Callable[[Path], list[str]]]] = {
@@ -31,8 +33,10 @@ COMMANDS: dict[str, tuple[Path, Callable[[Path], list[str]]]] = {
     "render": (CONCRETE, lambda out: ["-o", str(out / "a.svg")]),
     "report": (CONCRETE, lambda out: ["-o", str(out / "a.html")]),
     "flatten": (CONCRETE, lambda out: ["-o", str(out / "a.xmi")]),
+    "migrate": (CONCRETE, lambda out: ["-o", str(out / "m.xmi")]),
     "check-xosc": (XOSC, lambda out: ["--no-quality-checker", "-o", str(out / "report.txt")]),
     "import": (XOSC, lambda out: ["-o", str(out / "i.xmi")]),
+    "check-run": (EXAMPLES / "uis2-concrete.xmi", lambda out: ["--log", str(PLAYER_LOG)]),
     "concretize": (
         LOGICAL,
         lambda out: [
@@ -67,7 +71,7 @@ COMMANDS: dict[str, tuple[Path, Callable[[Path], list[str]]]] = {
         ],
     ),
 }
-READS_ONLY = {"info", "module list", "module show"}
+READS_ONLY = {"info", "module list", "module show", "check-run"}
 #: Commands whose output is a report on their inputs, written whether or not they can be read.
 REPORTERS = {"validate", "check-xosc"}
 
@@ -115,8 +119,14 @@ def files(folder: Path) -> list[Path]:
 def test_every_command_is_scanned() -> None:
     # `edit` is scanned by test_edit_refuses_bad_input_before_serving; `git-setup` reads no
     # input file (tests/diff/test_git.py runs it).
-    dev = {"dev generate", "dev class-diagram"}
-    assert set(COMMANDS) == set(_leaf_commands()) - dev - {"edit", "git-setup"}
+    assert set(COMMANDS) == set(_leaf_commands()) - {
+        "dev generate",
+        "dev check-release",
+        "dev release",
+        "dev class-diagram",
+        "edit",
+        "git-setup",
+    }
 
 
 @pytest.mark.parametrize("command", sorted(COMMANDS))

@@ -15,10 +15,12 @@ EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
 def test_fast_path_bytes_equal_a_full_export_of_apply(tmp_path: Path) -> None:
-    logical_path = EXAMPLES / "uis2-logical.xmi"
+    # UIS1: UIS2's DriveDistance finishes after distance / speed, a number the export derives
+    # from a sampled one, so its samples take the full export (see the next test).
+    logical_path = EXAMPLES / "uis1-logical.xmi"
     logical = io.load_scenario(logical_path).root
     space = parameter_space(logical)
-    config = BatchConfig(logical_path, tmp_path, space.paths, ("xosc",), "1.2", "uis2", 5)
+    config = BatchConfig(logical_path, tmp_path, space.paths, ("xosc",), "1.2", "uis1", 5)
     worker = Worker(config)
     assert worker.fast is not None  # substitution reproduced the probe export
     for index, row in enumerate(design(space, Plan("random", 5, seed=21))):
@@ -31,6 +33,23 @@ def test_fast_path_bytes_equal_a_full_export_of_apply(tmp_path: Path) -> None:
         ).data
         assert target.read_bytes() == expected
     assert worker.fast is not None  # the per-worker byte comparison held
+
+
+def test_a_derived_number_sends_samples_to_the_full_export(tmp_path: Path) -> None:
+    logical_path = EXAMPLES / "uis2-logical.xmi"
+    logical = io.load_scenario(logical_path).root
+    space = parameter_space(logical)
+    worker = Worker(BatchConfig(logical_path, tmp_path, space.paths, ("xosc",), "1.2", "uis2", 2))
+    assert worker.fast is None  # the probe's substitution did not reproduce the export
+    for index, row in enumerate(design(space, Plan("random", 2, seed=21))):
+        record = worker.run(index, row)
+        assert record.status == "written", record.reason
+        concrete = apply(logical, dict(zip(space.paths, (float(v) for v in row), strict=True)))
+        target = tmp_path / record.files[0]
+        expected = build_xosc(
+            concrete, version="1.2", source_path=logical_path, output_path=target
+        ).data
+        assert target.read_bytes() == expected
 
 
 def test_samples_breaking_a_rule_are_skipped_with_a_reason(tmp_path: Path) -> None:

@@ -14,13 +14,14 @@ from sceml.levels.batch import BatchConfig, Worker
 from sceml.levels.sampling import Plan, design
 from sceml.levels.space import parameter_space
 
-UIS2 = Path(__file__).resolve().parents[2] / "examples" / "uis2-logical.xmi"
+#: UIS1: UIS2's samples take the full export (its DriveDistance's duration is derived).
+LOGICAL = Path(__file__).resolve().parents[2] / "examples" / "uis1-logical.xmi"
 
 
 @pytest.fixture(scope="module")
 def worker(tmp_path_factory: pytest.TempPathFactory) -> Worker:
-    space = parameter_space(io.load_scenario(UIS2).root)
-    config = BatchConfig(UIS2, tmp_path_factory.mktemp("out"), space.paths, ("xosc",), "1.3")
+    space = parameter_space(io.load_scenario(LOGICAL).root)
+    config = BatchConfig(LOGICAL, tmp_path_factory.mktemp("out"), space.paths, ("xosc",), "1.3")
     return Worker(config)
 
 
@@ -31,7 +32,7 @@ def _parsed_verdict(data: bytes) -> str:
 
 
 def _rows() -> list[list[float]]:
-    space = parameter_space(io.load_scenario(UIS2).root)
+    space = parameter_space(io.load_scenario(LOGICAL).root)
     drawn = [[float(v) for v in row] for row in design(space, Plan("random", 40, seed=5))]
     odd = [float("nan"), float("inf"), -0.0, 1e300, 5e-324, -2.5]
     # Numbers the XSD refuses (nan, inf: it spells them NaN and INF) or that look unusual.

@@ -21,6 +21,9 @@ def changed_copy(tmp_path: Path, old: str, new: str, name: str = "uis1-1.3-gener
     folder = tmp_path / "a" / "b" / "c"  # the golden LogicFile is ../../../maps/intersection.xodr
     folder.mkdir(parents=True)
     (tmp_path / "maps").mkdir()
+    # The map lies above the file's folder: the marker makes tmp_path the project root, from
+    # which the reading rule lets check-xosc read it.
+    (tmp_path / ".sceml-root").touch()
     (tmp_path / "maps" / "intersection.xodr").write_bytes(MAP.read_bytes())
     target = folder / name
     target.write_text(text.replace(old, new, 1), encoding="utf-8")

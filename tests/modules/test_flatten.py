@@ -114,11 +114,11 @@ def test_nesting_three_deep_flattens_with_scoped_names_roles_and_parameters() ->
     assert (closing.referenceActor.name, closing.targetActor.name) == ("ego", "truck")
     assert closing.time.value == 3.0  # ChangeLaneLeft's default
     # passingSpeed: overridden in the scenario, passed on by Overtaking to PassVehicle.
-    assert by_name[prefix + "Accelerate_1"].targetSpeed.value == 11.0
+    assert by_name[prefix + "Accelerate_1"].targetSpeed.value == 13.0
     # passingTime: Overtaking's default, passed on twice, down to ChangeLaneRight's holdTime.
-    assert by_name[prefix + "ChangeLaneRight_1.TimeElapsed_1"].duration.value == 3.0
+    assert by_name[prefix + "ChangeLaneRight_1.TimeElapsed_1"].duration.value == 1.5
     cut_in = by_name[prefix + "ChangeLaneRight_1.LaneChange_1"]
-    assert (cut_in.direction.name, cut_in.distance.value) == ("right", 20.0)
+    assert (cut_in.direction.name, cut_in.distance.value) == ("right", 15.0)
     join = by_name["Overtaking_1.JoinAllFinished_1"]
     assert {p.name for p in predecessors(join)} == {
         "Overtaking_1.DriveDistance_1",
@@ -182,7 +182,7 @@ def test_an_override_reaches_the_innermost_node_at_the_logical_level() -> None:
     flat = flatten(io.load(EXAMPLES / "overtaking-logical.xmi").root)
     speed_up = next(n for n in flat.nodes if n.name == "Overtaking_1.PassVehicle_1.Accelerate_1")
     assert isinstance(speed_up.targetSpeed, scm.UniformDistribution)
-    assert (speed_up.targetSpeed.min, speed_up.targetSpeed.max) == (10.0, 12.0)
+    assert (speed_up.targetSpeed.min, speed_up.targetSpeed.max) == (12.0, 14.0)
 
 
 def test_a_library_change_is_seen_when_flattening(examples_copy: Path) -> None:

@@ -11,6 +11,10 @@ from conftest import EXAMPLES
 from sceml import io
 from sceml.simulate import END_NODE, Run, simulate
 
+#: Every flow costs one time step (players.meaning.FLOW_DELAY_STEPS): a node starts one step
+#: after its predecessor finished.
+STEP = 0.05
+
 
 def run_of(name: str) -> Run:
     path = EXAMPLES / name
@@ -38,20 +42,21 @@ def test_uis1_the_bike_waits_until_the_ego_is_within_the_radius() -> None:
     bike = run.actor_index("bike")
     assert np.all(run.states[bike, : k + 1, 3] == 0.0)  # the bike stands until then
     assert np.allclose(run.states[bike, : k + 1, :2], (4.5, -24.0))
-    assert run.node("Accelerate_2").started == trigger.finished
-    # Accelerate_2: 0 -> 4 m/s at 1.5 m/s2 takes 8/3 s, the next sample past 0.6 + 2.667 s.
+    assert run.node("Accelerate_2").started == pytest.approx(trigger.finished + STEP)
+    # Accelerate_2: 0 -> 4 m/s at 1.5 m/s2 takes 8/3 s from the step it starts in (0.6 s to
+    # 0.65 s), the next sample past 0.6 + 2.667 s.
     assert run.node("Accelerate_2").finished == pytest.approx(3.3)
-    assert run.node("Cross_1").started == run.node("Accelerate_2").finished
+    assert run.node("Cross_1").started == pytest.approx(3.3 + STEP)
 
 
 def test_uis1_ends_when_both_branches_of_the_end_have_finished() -> None:
     run = run_of("uis1-concrete.xmi")
-    # Accelerate_1: 5 -> 8 m/s at 2 m/s2, 1.5 s; then the turn.
+    # Accelerate_1: 5 -> 8 m/s at 2 m/s2, 1.5 s from the first step; then the turn.
     assert run.node("Accelerate_1").finished == pytest.approx(1.5)
-    assert run.node("TurnRight_1").started == pytest.approx(1.5)
+    assert run.node("TurnRight_1").started == pytest.approx(1.5 + STEP)
     last = max(run.node("InLocationRadius_1").finished, run.node("InLocationRadius_2").finished)
-    assert run.end_reason == END_NODE and run.end_time == last
-    assert run.node("End").finished == last
+    assert run.end_reason == END_NODE and run.end_time == pytest.approx(last + STEP)
+    assert run.node("End").finished == pytest.approx(last + STEP)
     # The ego ends its turn on the east arm within 3 m of (34, -1.75); the bike across the road
     # within 2 m of (10, 4.5).
     ego_end = run.states[run.actor_index("ego"), index(run, run.node("TurnRight_1").finished)]
@@ -63,16 +68,20 @@ def test_uis1_ends_when_both_branches_of_the_end_have_finished() -> None:
 def test_uis2_the_pedestrian_crosses_after_the_car_comes_close() -> None:
     run = run_of("uis2-concrete.xmi")
     # The car starts when the ego is within 4 m of the intersection location.
-    assert run.node("DriveDistance_1").started == run.node("InLocationRadius_2").finished
+    assert run.node("DriveDistance_1").started == pytest.approx(
+        run.node("InLocationRadius_2").finished + STEP
+    )
     car = run.actor_index("car")
-    k_car = index(run, run.node("DriveDistance_1").started)
+    k_car = index(run, run.node("DriveDistance_1").started) - 1  # it moves in its first step
     assert np.all(run.states[car, :k_car, 3] == 0.0)
     trigger = run.node("CrossingManeuver_1.InVehicleRadius_1")
     k = index(run, trigger.finished)
     assert trigger.finished > run.node("DriveDistance_1").started
     assert distance(run, "pedestrian", "car", k) <= 15.0 < distance(run, "pedestrian", "car", k - 1)
     cross = run.node("CrossingManeuver_1.Cross_1")
-    assert cross.started == run.node("CrossingManeuver_1.Accelerate_1").finished
+    assert cross.started == pytest.approx(
+        run.node("CrossingManeuver_1.Accelerate_1").finished + STEP
+    )
     walker = run.states[run.actor_index("pedestrian")]
     assert walker[0, 1] == pytest.approx(-4.5)
     assert walker[-1, 1] >= 4.5 - 2.0  # across the road, within the arrival radius
@@ -87,7 +96,8 @@ def test_uis2_ends_by_its_end_node_when_its_three_branches_are_done() -> None:
         run.node("CrossingManeuver_1.InLocationRadius_1").finished,
     ]
     assert all(t is not None for t in ends)
-    assert run.end_reason == END_NODE and run.end_time == max(ends)  # type: ignore[type-var]
+    last = max(ends)  # type: ignore[type-var]
+    assert run.end_reason == END_NODE and run.end_time == pytest.approx(last + STEP)
     # DriveDistance: 60 m at 10 m/s (a step) takes 6 s.
     drive = run.node("DriveDistance_1")
     assert drive.finished - drive.started == pytest.approx(6.0)  # type: ignore[operator]
@@ -97,3 +107,20 @@ def test_the_overtaking_example_runs_its_nested_modules() -> None:
     run = run_of("overtaking-concrete.xmi")
     assert run.end_reason == END_NODE
     assert all(r.finished is not None for r in run.timeline)
+
+
+def test_the_overtaking_example_overtakes_without_contact_and_is_back_before_the_road_ends() -> (
+    None
+):
+    run = run_of("overtaking-concrete.xmi")
+    assert not run.collided and not run.notes  # nobody touches, nobody reaches the road's end
+    back = run.node("Overtaking_1.PassVehicle_1.ChangeLaneRight_1.LaneChange_1").finished
+    assert back is not None
+    ego, truck = run.actor_index("ego"), run.actor_index("truck")
+    k = index(run, back)
+    # Back on its own lane (centre y = -1.75) ahead of the truck, short of the road's end
+    # (x = 109); it had used the oncoming lane (centre y = +1.75) to pass.
+    assert run.states[ego, k, 1] == pytest.approx(-1.75, abs=1e-6)
+    assert run.states[truck, k, 0] < run.states[ego, k, 0] < 109.0
+    assert run.states[ego, :, 1].max() == pytest.approx(1.75, abs=1e-6)
+    assert run.pair("ego", "oncoming").min_distance > 1.0

@@ -1,7 +1,9 @@
 """Cases with an answer worked out by hand: straight lines, constant speeds, known timings.
 
 The actors stand on no map (no map named): each moves straight along its heading, so every
-expectation below follows from x = x0 + v t with boxes of 4 m x 2 m.
+expectation below follows from x = x0 + v t with boxes of 4 m x 2 m. Every flow costs one time
+step of 0.05 s, as in players (`players.meaning.FLOW_DELAY_STEPS`): the root finishes at 0, the
+nodes after it start at 0.05 s, and the end node finishes one step after its last predecessor.
 """
 
 from __future__ import annotations
@@ -37,14 +39,15 @@ def test_constant_speeds_on_a_straight_road_give_the_analytic_ttc_and_distance()
     car(b, "lead", 30.0, 0.0, 0.0, 10.0)
     b.chain(b.root, wait(b, ego, 2.0), b.end)
     run = simulate(b.scenario)
-    # Gap between the boxes: 30 - 4/2 - 4/2 = 26 m at t = 0, closing at 15 - 10 = 5 m/s.
-    # At the end (t = 2 s) it is 26 - 2 * 5 = 16 m, and the TTC 16 / 5 = 3.2 s: both least then.
-    assert run.end_reason == END_NODE and run.end_time == pytest.approx(2.0)
+    # The wait runs from 0.05 to 2.05 s, the end node finishes at 2.1 s. Gap between the
+    # boxes: 30 - 4/2 - 4/2 = 26 m at t = 0, closing at 15 - 10 = 5 m/s. At the end it is
+    # 26 - 2.1 * 5 = 15.5 m, and the TTC 15.5 / 5 = 3.1 s: both least then.
+    assert run.end_reason == END_NODE and run.end_time == pytest.approx(2.1)
     pair = run.pair("ego", "lead")
-    assert pair.min_distance == pytest.approx(16.0)
-    assert pair.min_distance_time == pytest.approx(2.0)
-    assert pair.min_ttc == pytest.approx(3.2)
-    assert pair.min_ttc_time == pytest.approx(2.0)
+    assert pair.min_distance == pytest.approx(15.5)
+    assert pair.min_distance_time == pytest.approx(2.1)
+    assert pair.min_ttc == pytest.approx(3.1)
+    assert pair.min_ttc_time == pytest.approx(2.1)
     assert not pair.collision and pair.pet is None  # one path: nothing crosses
 
 
@@ -113,11 +116,12 @@ def test_a_condition_true_before_its_activation_does_not_fire_early() -> None:
     b.chain(b.root, delay, inside, b.end)
     b.chain(b.root, at_once, b.end)
     run = simulate(b.scenario)
-    # The ego stands inside the radius from t = 0; the first condition is activated at 2 s.
-    assert run.node(inside.name).started == pytest.approx(2.0)
-    assert run.node(inside.name).finished == pytest.approx(2.0)
-    assert run.node(at_once.name).finished == 0.0
-    assert run.end_time == pytest.approx(2.0)
+    # The ego stands inside the radius from t = 0; the wait runs from 0.05 to 2.05 s, so the
+    # first condition is activated (and holds) at 2.1 s, the other at 0.05 s.
+    assert run.node(inside.name).started == pytest.approx(2.1)
+    assert run.node(inside.name).finished == pytest.approx(2.1)
+    assert run.node(at_once.name).finished == pytest.approx(0.05)
+    assert run.end_time == pytest.approx(2.15)
 
 
 def test_a_location_condition_holds_when_the_actor_reaches_the_radius() -> None:
@@ -126,7 +130,8 @@ def test_a_location_condition_holds_when_the_actor_reaches_the_radius() -> None:
     there = b.add("InLocationRadius", ego, position=world(50.0, 0.0), radius=5.0)
     b.chain(b.root, there, b.end)
     run = simulate(b.scenario)
-    # Within 5 m of x = 50 from x = 45: at 10 m/s, t = 4.5 s.
+    # Within 5 m of x = 50 from x = 45: at 10 m/s, t = 4.5 s (checked at every step from
+    # its activation at 0.05 s).
     assert run.node(there.name).finished == pytest.approx(4.5)
 
 
@@ -136,9 +141,14 @@ def test_speed_changes_at_the_rate_and_finishes_at_the_target() -> None:
     speed_up = b.add("Accelerate", ego, targetSpeed=15.0, rate=2.0)
     b.chain(b.root, speed_up, b.end)
     run = simulate(b.scenario)
-    # (15 - 5) / 2 = 5 s; distance 5 * 5 + 2 * 5^2 / 2 = 50 m.
+    # Started at 0.05 s, it acts in the step ending then (as a player's action does), so the
+    # speed changes from t = 0: (15 - 5) / 2 = 5 s, 5 * 5 + 2 * 5^2 / 2 = 50 m by t = 5 s;
+    # the end node finishes a step later, 15 * 0.05 = 0.75 m further.
+    assert run.node(speed_up.name).started == pytest.approx(0.05)
     assert run.node(speed_up.name).finished == pytest.approx(5.0)
-    assert run.states[0, -1, 0] == pytest.approx(50.0)
+    k = int(round(5.0 / run.step))
+    assert run.states[0, k, 0] == pytest.approx(50.0)
+    assert run.states[0, -1, 0] == pytest.approx(50.75)
     assert run.states[0, -1, 3] == pytest.approx(15.0)
 
 
@@ -154,11 +164,13 @@ def test_join_one_finishes_with_the_first_branch_and_does_not_cancel_the_other()
     both = b.join_all(after, long)
     b.chain(both, b.end)
     run = simulate(b.scenario)
-    assert run.node(first.name).finished == pytest.approx(1.0)
-    assert run.node(after.name).finished == pytest.approx(1.5)
-    assert run.node(long.name).finished == pytest.approx(3.0)  # not cancelled
-    assert run.node(both.name).finished == pytest.approx(3.0)
-    assert run.end_time == pytest.approx(3.0)
+    # short 0.05-1.05 s, long 0.05-3.05 s; the join-one at 1.1 s, after 1.15-1.65 s; the
+    # join-all one step after long, 3.1 s, the end node at 3.15 s.
+    assert run.node(first.name).finished == pytest.approx(1.1)
+    assert run.node(after.name).finished == pytest.approx(1.65)
+    assert run.node(long.name).finished == pytest.approx(3.05)  # not cancelled
+    assert run.node(both.name).finished == pytest.approx(3.1)
+    assert run.end_time == pytest.approx(3.15)
 
 
 def test_a_join_one_end_stops_at_the_first_branch() -> None:
@@ -168,7 +180,8 @@ def test_a_join_one_end_stops_at_the_first_branch() -> None:
     b.chain(b.root, short, b.end)
     b.chain(b.root, long, b.end)
     run = simulate(b.scenario)
-    assert run.end_reason == END_NODE and run.end_time == pytest.approx(1.0)
+    # short finishes at 1.05 s, the end node a step later.
+    assert run.end_reason == END_NODE and run.end_time == pytest.approx(1.1)
     assert run.node(long.name).finished is None  # still running when the scenario stopped
 
 

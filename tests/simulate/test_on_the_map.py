@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import numpy as np
 import pytest
 from conftest import REPO
 
@@ -26,9 +27,11 @@ def test_an_actor_follows_its_lane_centre_line() -> None:
     ego = b.actor("Car", "ego", ego=True, start=lane(2, -1, 10.0), speed=10.0)
     b.chain(b.root, b.add("TimeElapsed", ego, duration=3.0), b.end)
     run = simulate(b.scenario, Path(MAP))
-    # s = 10 is x = 19; after 3 s at 10 m/s, x = 49, still on the centre line y = -1.75.
+    # s = 10 is x = 19; the wait runs 0.05-3.05 s, the end node finishes at 3.1 s: at 10 m/s,
+    # x = 50, still on the centre line y = -1.75.
+    assert run.end_time == pytest.approx(3.1)
     x, y, heading, _ = run.states[0, -1]
-    assert (x, y, heading) == pytest.approx((49.0, -1.75, 0.0), abs=1e-6)
+    assert (x, y, heading) == pytest.approx((50.0, -1.75, 0.0), abs=1e-6)
 
 
 def test_a_lane_change_ends_on_the_lane_beside_after_its_distance() -> None:
@@ -37,14 +40,20 @@ def test_a_lane_change_ends_on_the_lane_beside_after_its_distance() -> None:
     change = b.add("LaneChange", ego, direction="left", distance=20.0)
     b.chain(b.root, change, b.end)
     run = simulate(b.scenario, Path(MAP))
-    # 20 m at 10 m/s: 2 s, from x = 19 to x = 39, one lane (3.5 m) to the left, still eastwards.
-    assert run.node(change.name).finished == pytest.approx(2.0)
-    x, y, heading, _ = run.states[0, -1]
-    assert (x, y) == pytest.approx((39.0, 1.75), abs=1e-6)
+    # 20 m along the road, one lane (3.5 m) to the left on half a cosine. The speed is along
+    # the heading, so the car needs the curve's length at 10 m/s: the arc length of
+    # y = 1.75 (1 - cos(pi x / 20)) over 20 m, 20.38 m (integrated here), about 2.04 s from
+    # the start of the first step; the step that passes it ends at 2.05 s.
+    x = np.linspace(0.0, 20.0, 20001)
+    slope = 1.75 * np.pi / 20.0 * np.sin(np.pi * x / 20.0)
+    arc = float(np.sum(np.hypot(np.diff(x), np.diff(x) * (slope[1:] + slope[:-1]) / 2)))
+    assert arc == pytest.approx(20.38, abs=0.01)
+    assert run.node(change.name).finished == pytest.approx(2.05)
+    assert run.end_time == pytest.approx(2.1)
+    x_end, y_end, heading, _ = run.states[0, -1]
+    # Then on along the new lane: x = 19 + 20 + 10 * (2.1 - arc / 10) at y = 1.75.
+    assert (x_end, y_end) == pytest.approx((39.0 + 10 * (2.1 - arc / 10), 1.75), abs=0.02)
     assert heading == pytest.approx(0.0, abs=1e-6)
-    # Half-way the half cosine has moved it half the way: y = -1.75 + 1.75 = 0 at x = 29.
-    k = int(round(1.0 / run.step))
-    assert run.states[0, k, :2] == pytest.approx((29.0, 0.0), abs=1e-6)
 
 
 def test_follow_closes_up_to_the_gap_and_keeps_it() -> None:
@@ -52,7 +61,8 @@ def test_follow_closes_up_to_the_gap_and_keeps_it() -> None:
     ego = b.actor("Car", "ego", ego=True, start=lane(2, -1, 5.0), speed=12.0)
     lead = b.actor("Car", "lead", start=lane(2, -1, 45.0), speed=8.0)
     follow = b.add("Follow", ego, target=lead, distance=15.0)
-    b.chain(b.root, follow, b.add("TimeElapsed", ego, duration=15.0), b.end)
+    # The lead reaches the end of its road (x = 109) at about 6.9 s and stops there.
+    b.chain(b.root, follow, b.add("TimeElapsed", ego, duration=2.5), b.end)
     run = simulate(b.scenario, Path(MAP))
     assert run.node(follow.name).finished is not None
     gap = run.states[1, -1, 0] - run.states[0, -1, 0]
@@ -91,3 +101,24 @@ def test_overtake_passes_in_three_phases_and_returns_ahead_of_the_target() -> No
     assert ego_x - run.states[1, -1, 0] >= 10.0  # at least the gap ahead
     assert run.states[0, :, 1].max() == pytest.approx(1.75, abs=1e-6)  # it used the other lane
     assert not run.pair("ego", "truck").collision
+
+
+def test_an_actor_stops_at_the_end_of_a_road_without_a_link_and_a_follow_does_not_stall() -> None:
+    b = builder()
+    # The east arm ends at x = 109 with no road on: the lead (from x = 89 at 10 m/s) stops
+    # there at 2.0 s, as players stop it, and the ego following it closes up and finishes.
+    ego = b.actor("Car", "ego", ego=True, start=lane(2, -1, 5.0), speed=8.0)
+    lead = b.actor("Car", "lead", start=lane(2, -1, 80.0), speed=10.0)
+    follow = b.add("Follow", ego, target=lead, distance=15.0)
+    b.chain(b.root, follow, b.end)
+    b.chain(b.root, b.add("TimeElapsed", lead, duration=1.0), b.end)
+    run = simulate(b.scenario, Path(MAP))
+    assert run.end_reason == END_NODE
+    k = int(round(2.0 / run.step))
+    assert run.states[1, k, :2] == pytest.approx((109.0, -1.75))
+    assert np.all(run.states[1, k:, 0] == 109.0) and np.all(run.states[1, k:, 3] == 0.0)
+    assert "lead stopped at the end of its road at 2.00 s (no road on)" in run.notes
+    finished = run.node(follow.name).finished
+    assert finished is not None and finished > 2.0  # it was still running when the lead stopped
+    gap = run.states[1, -1, 0] - run.states[0, -1, 0]
+    assert gap < 15.0 + 1.5 and not run.pair("ego", "lead").collision

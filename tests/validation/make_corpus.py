@@ -783,6 +783,25 @@ on_map("r007-cross-clean", "")(_walk(lane(4, -2, 1.0)))
 on_map("r007-cross-along-the-sidewalk", "SCEML-R007")(_walk(lane(4, 2, 20.0)))
 
 
+def _drive_at_rest(b: ScenarioBuilder, ego: scm.Actor) -> None:
+    b.chain(b.root, b.add("DriveDistance", ego, distance=20.0, speed=0.0), b.end)
+
+
+def _turn_after_trajectory(b: ScenarioBuilder, ego: scm.Actor) -> None:
+    """The car `other` from the north follows its lane to s = 20, then turns left (east)."""
+    other = b.actor("Car", "other", start=lane(1, 1, 30.0), speed=5.0)
+    b.chain(
+        b.root,
+        b.add("FollowTrajectory", other, waypoints=[lane(1, 1, 25.0), lane(1, 1, 20.0)]),
+        b.add("TurnLeft", other, destination=lane(2, -1, 20.0)),
+        b.end,
+    )
+
+
+on_map("y001-drive-distance-at-rest", "SCEML-Y001")(_drive_at_rest)
+on_map("y002-turn-after-a-trajectory", "SCEML-Y002")(_turn_after_trajectory)
+
+
 # Several faults at once ----------------------------------------------------------------------
 
 

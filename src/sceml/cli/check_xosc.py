@@ -9,7 +9,7 @@ import click
 
 from ..report import exit_code, render
 from ..xosc_check import check_file
-from .common import SceMLCommand, emit_report, file_progress, report_options
+from .common import SceMLCommand, allow_option, emit_report, file_progress, report_options
 
 
 @click.command("check-xosc", cls=SceMLCommand)
@@ -21,12 +21,14 @@ from .common import SceMLCommand, emit_report, file_progress, report_options
     is_flag=True,
     help="Check the XSD only, without ASAM's Quality Checker bundle.",
 )
+@allow_option
 def check_xosc(
     files: tuple[Path, ...],
     output_format: str,
     strict: bool,
     skip_quality: bool,
     output: Path | None,
+    allow: tuple[Path, ...],
 ) -> None:
     """Check OpenSCENARIO FILES (.xosc) against the official XSD of their declared version and,
     for 1.2 and later, ASAM's OpenSCENARIO XML Quality Checker bundle.
@@ -35,6 +37,6 @@ def check_xosc(
     errors or files that cannot be read (missing, malformed, DOCTYPE, unknown version).
     """
     with file_progress(files, "checking") as todo:
-        reports = [check_file(path, quality=not skip_quality) for path in todo]
+        reports = [check_file(path, quality=not skip_quality, allow=allow) for path in todo]
     emit_report(render(reports, output_format, strict, tool="sceml check-xosc"), output)
     sys.exit(exit_code(reports, strict))

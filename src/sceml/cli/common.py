@@ -14,7 +14,7 @@ import click
 
 from ..diagnostics import Diagnostic
 from ..errors import ArgumentError, SceMLError
-from ..io import Document, write_atomically
+from ..io import Document, migration_notices, write_atomically
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -46,11 +46,35 @@ class SceMLCommand(click.Command):
     cannot be used, 1 otherwise), never with a traceback.
     """
 
+    #: Whether the command notes on stderr each file it read that was saved with an older
+    #: metamodel release (validate and migrate report those themselves).
+    notes_migrations = True
+
     def invoke(self, ctx: click.Context) -> Any:
+        notice = _note_migration if self.notes_migrations else _ignore
         try:
-            return super().invoke(ctx)
+            with migration_notices(notice):
+                return super().invoke(ctx)
         except SceMLError as error:
             raise ReportedError(error) from None
+
+
+def _note_migration(report: Any) -> None:
+    click.echo(
+        f"note: {report.file}: {report.summary()}; `sceml migrate {report.file} --in-place` "
+        "rewrites it",
+        err=True,
+    )
+
+
+def _ignore(report: Any) -> None:
+    pass
+
+
+class ReportsMigrations(SceMLCommand):
+    """A command that reports migrated files itself (validate's warning, migrate's report)."""
+
+    notes_migrations = False
 
 
 class SceMLGroup(click.Group):
@@ -152,7 +176,7 @@ def allow_option(command: F) -> F:
         "allow",
         multiple=True,
         type=click.Path(file_okay=False, path_type=Path),
-        help="Another folder that files the input refers to (module libraries) may be read "
+        help="Another folder that files the input refers to (module libraries, maps) may be read "
         "from; repeatable. Always allowed: the input's folder and its project root (the "
         "nearest folder above with .git, .hg, .svn or .sceml-root), with their subfolders.",
     )(command)

@@ -13,6 +13,7 @@ from ..diagnostics import Severity
 from ..levels.checks import validate_model
 from ..levels.concretize import concretize as make_concrete
 from ..levels.concretize import parse_assignment
+from ..reach import unreadable_from
 from .common import Parsed, SceMLCommand, allow_option, echo_diagnostics
 
 
@@ -49,6 +50,12 @@ def concretize(
     result = make_concrete(document.root, dict(assignments))
     io.save(result, output, origin=file)
     click.echo(f"wrote {output}")
+    for named in unreadable_from(result, file, output):
+        click.echo(
+            f"Warning: {output} names {named}, outside its folder and project root: commands "
+            f"that read it will refuse it unless given --allow {named.parent}",
+            err=True,
+        )
     report_validation(result, output)
 
 

@@ -11,8 +11,10 @@ import click
 
 from ..executors import Executor, check, open_executor
 from ..io import Document, load_scenario, make_folder, remove_folders, write_atomically
+from ..levels.counts import parse_count
+from ..outputset import output_set
 from ..schema import SUPPORTED_VERSIONS
-from .common import SceMLCommand, allow_option, executor_options
+from .common import Parsed, SceMLCommand, allow_option, executor_options
 
 if TYPE_CHECKING:
     from ..explore import Exploration
@@ -35,7 +37,12 @@ _METRICS = ("min-ttc", "min-distance", "collision", "pet")
     "post-encroachment time.",
 )
 @click.option(
-    "--budget", type=click.IntRange(min=2), default=200, show_default=True, help="Runs in all."
+    "--budget",
+    type=Parsed("N", parse_count),
+    default=200,
+    show_default=True,
+    help="Runs in all (at least 2): 200, 1e4 or 2^12. A budget whose runs this machine's free "
+    "memory cannot hold is refused.",
 )
 @click.option("--seed", type=click.IntRange(min=0), default=0, show_default=True, help="Seed.")
 @click.option(
@@ -100,6 +107,7 @@ def explore_command(
 
     check(executor, scheduler)
     document = load_scenario(logical, allow=allow)
+    _check_budget(document, budget, step)
     # Made before the search, so that an output that cannot be written fails now, not after it.
     created = make_folder(out_dir)
     try:
@@ -107,11 +115,19 @@ def explore_command(
             found = _search(
                 document, logical, runner, allow, metric=metric, budget=budget, seed=seed, step=step
             )
-        write_atomically(out_dir / "runs.csv", runs_csv(found).encode("utf-8"))
-        plot_space(found, out_dir / "parameter-space.png")
-        critical = write_critical(found, document.root, logical, out_dir, top, osc_version)
-    except BaseException:
+        # All outputs or none: a plot that fails must not leave runs.csv alone.
+        with output_set() as outputs:
+            runs = outputs.stage(out_dir / "runs.csv")
+            write_atomically(runs, runs_csv(found).encode("utf-8"))
+            plot_space(found, outputs.stage(out_dir / "parameter-space.png"))
+            critical = write_critical(
+                found, document.root, logical, out_dir, top, osc_version, stage=outputs.stage
+            )
+    except BaseException as error:
         remove_folders(created)  # where nothing was written
+        if isinstance(error, KeyboardInterrupt):  # as sample: 130, and what became of the outputs
+            click.echo("Interrupted: no output was written.", err=True)
+            raise click.exceptions.Exit(130) from None
         raise
     ran = [e for e in found.evaluations if e.run is not None]
     collisions = sum(1 for e in ran if e.run is not None and e.run.collided)
@@ -127,6 +143,18 @@ def explore_command(
         if problem:
             click.echo(f"    no .xosc: {problem}", err=True)
     click.echo(f"wrote {out_dir / 'runs.csv'}, {out_dir / 'parameter-space.png'}")
+
+
+def _check_budget(document: Document, budget: int, step: float) -> None:
+    """Refuse, before anything runs, a budget whose runs would not fit in memory."""
+    from ..levels.counts import check_count
+    from ..simulate.limits import run_samples
+
+    if budget < 2:
+        raise click.BadParameter("the budget must allow at least 2 runs", param_hint="'--budget'")
+    # Each run keeps its trajectories (about 40 bytes a sample) for the ranking and the plot.
+    each = 40 * run_samples(document.root, step) + 8192
+    check_count(budget, "runs", memory_each=each, hint="ask for fewer with --budget")
 
 
 def _search(

@@ -9,9 +9,9 @@ import click
 
 from ..diagnostics import Severity
 from ..importer import import_to_file
-from ..io import load_scenario
+from ..io import load_scenario, reading_roots
 from ..validation import validate
-from .common import SceMLCommand, echo_diagnostics
+from .common import SceMLCommand, allow_option, echo_diagnostics
 
 
 @click.command(cls=SceMLCommand)
@@ -38,6 +38,17 @@ from .common import SceMLCommand, echo_diagnostics
     "distributions, and the scenario logical.",
 )
 @click.option(
+    "--catalog-path",
+    "catalog_paths",
+    multiple=True,
+    type=click.Path(exists=True, file_okay=False, path_type=Path),
+    metavar="DIR",
+    help="Another folder to find catalogs in, as esmini's --path: searched itself, and the "
+    "file's CatalogLocations are also tried relative to it; repeatable. Read even when "
+    "outside the allowed folders.",
+)
+@allow_option
+@click.option(
     "--report", "show_report", is_flag=True, help="Print what was mapped, kept opaque and guessed."
 )
 def import_command(
@@ -45,6 +56,8 @@ def import_command(
     output: Path,
     map_path: Path | None,
     distribution: Path | None,
+    catalog_paths: tuple[Path, ...],
+    allow: tuple[Path, ...],
     show_report: bool,
 ) -> None:
     """Import the OpenSCENARIO 1.0-1.3 FILE as a SceML scenario OUT.
@@ -56,10 +69,20 @@ def import_command(
 
     Entities become actors, Init their start and speed, events maneuver nodes, start triggers
     flows, conditions and joins, the StopTrigger the end node. What has no SceML kind is kept as
-    an opaque node with its XML and line (docs/import.md). The scenario is validated after it
+    an opaque node with its XML and line (docs/import.md). Catalogs are found as esmini finds
+    them: CatalogLocations relative to FILE, then relative to each --catalog-path. Files FILE
+    names (catalogs, LogicFile, a distribution's ScenarioFile) are read only from FILE's
+    folder, its project root, --allow and --catalog-path folders. The scenario is validated after it
     is written: exit 1 when it has errors, 2 when FILE cannot be used.
     """
-    imported = import_to_file(file, output, map_path=map_path, distribution=distribution)
+    imported = import_to_file(
+        file,
+        output,
+        map_path=map_path,
+        distribution=distribution,
+        catalog_paths=catalog_paths,
+        allow=allow,
+    )
     if show_report:
         click.echo(imported.report.text(), nl=False)
     counts = imported.report.counts()
@@ -70,7 +93,13 @@ def import_command(
         f"{imported.report.version}); {counts['opaque']} kept opaque, {counts['guessed']} "
         f"guessed{logical}"
     )
-    document = load_scenario(output)
+    # The written model names the map the import may read (inside the input's folders, --allow
+    # and --catalog-path, or the --map given): validating it reads that map again. A LogicFile
+    # outside them the import did not open, and the validation does not open it either.
+    given_map = [] if map_path is None else [map_path.resolve().parent]
+    document = load_scenario(
+        output, allow=[*reading_roots(file), *allow, *catalog_paths, *given_map]
+    )
     diagnostics = validate(document.root, document=document)
     echo_diagnostics([d for d in diagnostics if d.severity is not Severity.INFO], document, output)
     if any(d.severity is Severity.ERROR for d in diagnostics):

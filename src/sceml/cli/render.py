@@ -9,7 +9,15 @@ import click
 
 import scemlmodel as scm
 
-from ..io import Document, broken_references, load, write_atomically
+from ..errors import SceMLError
+from ..io import (
+    Document,
+    broken_references,
+    load,
+    model_path,
+    unresolved_references,
+    write_atomically,
+)
 from ..render import FORMATS, MAX_DIAGRAM_NODES, ModuleChoiceError, View, diagram, to_bytes
 from ..render.flow import Modules
 from .common import SceMLCommand, allow_option, exit_if_broken
@@ -111,6 +119,7 @@ def render(
         click.echo(f"wrote {output}")
         return
     document = load(file, allow=allow)
+    _refuse_broken_actors(document)
     if view == "map":
         _render_map(document, output, fmt, extent)
     else:
@@ -118,6 +127,20 @@ def render(
     click.echo(f"wrote {output}")
     # The diagram draws a broken module use as such; the exit status still says it is broken.
     exit_if_broken(list(broken_references(document)))
+
+
+def _refuse_broken_actors(document: Document) -> None:
+    # A module use whose definition cannot be loaded is drawn as broken (and exits 1 after);
+    # any other reference to another file that cannot be loaded (a hand-edited referenceActor)
+    # leaves nothing to draw it by, and is refused before anything is written.
+    for holder, _href, reason in unresolved_references(document.root, through_files=True):
+        if not isinstance(holder, scm.ModuleUse):
+            raise SceMLError(
+                reason,
+                file=document.file_of(holder) or document.path,
+                line=document.line_of(holder),
+                element=model_path(holder),
+            )
 
 
 def _render_diagram(
@@ -141,8 +164,9 @@ def _render_diagram(
             max_nodes=max_nodes,
         )
         write_atomically(output, to_bytes(graph, fmt))
-    except ModuleChoiceError as error:
-        raise click.UsageError(error.message) from None
+    except ModuleChoiceError as error:  # exit 2, at the file's model (the library or scenario)
+        error.file, error.line = str(document.path), document.line_of(document.root)
+        raise
 
 
 def _render_diff(old: Path, new: Path, output: Path, fmt: str, view: str) -> None:
@@ -158,7 +182,11 @@ def _render_diff(old: Path, new: Path, output: Path, fmt: str, view: str) -> Non
 def _render_map(document: Document, output: Path, fmt: str, extent: str) -> None:
     """The map view; what it could not place is said on standard error."""
     if not isinstance(document.root, scm.Scenario):
-        raise click.UsageError("the map view draws scenarios, not module libraries")
+        raise ModuleChoiceError(
+            "the map view draws scenarios, not module libraries",
+            file=document.path,
+            line=document.line_of(document.root),
+        )
     # matplotlib is loaded only when a map is drawn: the other commands start faster without it.
     from ..render.mapview import Extent, map_view
 

@@ -21,15 +21,19 @@ from ..errors import ArgumentError, SceMLError
 from ..executors import check, open_executor
 from ..graph import root_node
 from ..levels.batch import BatchConfig, BatchResult, Rows, run_batch
+from ..levels.counts import SAMPLE_MEMORY_BYTES, check_count, parse_count
 from ..levels.manifest import SampleRecord, write_manifest
 from ..levels.paths import LevelError
 from ..levels.sampling import STRATEGIES, plan_for, values_at
 from ..levels.space import parameter_space
 from ..schema import SUPPORTED_VERSIONS
 from ..validation import validate
-from .common import SceMLCommand, allow_option, echo_diagnostics, executor_options
+from .common import Parsed, SceMLCommand, allow_option, echo_diagnostics, executor_options
 
 _FORMATS = {"xmi": ("xmi",), "xosc": ("xosc",), "both": ("xosc", "xmi")}
+
+# scipy's Latin hypercube holds about four float64 arrays of the design's shape at once.
+_LHS_ROW_BYTES = 32
 
 # A run leaves a large heap (scipy, imported to draw from normal distributions, and the model),
 # which the interpreter's last garbage collections walked for 0.1-0.2 s after the manifest was
@@ -50,8 +54,9 @@ atexit.register(gc.freeze)
 @click.option(
     "--n",
     "n",
-    type=click.IntRange(min=0),
-    help="Number of samples (required for random and lhs; caps the grid).",
+    type=Parsed("N", parse_count),
+    help="Number of samples (required for random and lhs; caps the grid): 1000, 1e6 or 2^20. "
+    "A count that this machine's free memory or the output's disk cannot hold is refused.",
 )
 @click.option("--seed", type=click.IntRange(min=0), default=0, show_default=True, help="Seed.")
 @click.option(
@@ -125,6 +130,15 @@ def sample(
         if index is not None and strategy == "lhs" and n is None:
             raise click.UsageError("--index with --strategy lhs needs the --n of the run")
         plan = plan_for(space, strategy, n, seed)  # type: ignore[arg-type]
+        if index is None:
+            _check_size(plan.n, len(space.dimensions), _FORMATS[file_format], logical, out_dir, n)
+        elif strategy == "lhs":  # one sample of a Latin hypercube needs the whole design drawn
+            check_count(
+                plan.n,
+                "rows of the Latin hypercube",
+                memory_each=_LHS_ROW_BYTES * max(1, len(space.dimensions)),
+                hint="one sample of it is reproduced by drawing them all; ask for fewer with --n",
+            )
         indices = np.arange(plan.n) if index is None else np.array([index])
         # A whole run's values are drawn while the workers start: drawing takes a while (scipy,
         # for a normal distribution, takes half a second to import), and so does their setup.
@@ -166,6 +180,32 @@ def sample(
             click.echo(f"{path} = {float(value)!r}")
     click.echo(_summary(records, elapsed))
     _exit_status(result, len(indices))
+
+
+def _check_size(
+    count: int,
+    dimensions: int,
+    formats: tuple[str, ...],
+    logical: Path,
+    out_dir: Path,
+    n: int | None,
+) -> None:
+    """Refuse a run whose samples this machine cannot hold, before anything is allocated."""
+    # A sample file is about the size of the logical file it comes from (an .xosc about twice).
+    per_file = 2 * logical.stat().st_size
+    hint = (
+        "ask for fewer with --n"
+        if n is not None
+        else "the grid has that many points; cap it with --n"
+    )
+    check_count(
+        count,
+        "samples",
+        memory_each=SAMPLE_MEMORY_BYTES + 8 * dimensions,
+        disk_each=per_file * len(formats),
+        folder=out_dir,
+        hint=hint,
+    )
 
 
 def _exit_status(result: BatchResult, planned: int) -> None:

@@ -11,6 +11,7 @@ from pathlib import Path
 import click
 
 from ..io import load_scenario, write_atomically
+from ..outputset import output_set
 from ..simulate import DEFAULT_STEP, Run, simulate
 from ..simulate.outputs import summary, trajectories_csv
 from ..simulate.timeline import shown_nodes
@@ -76,12 +77,15 @@ def simulate_command(
     from ..simulate.page import preview_page  # matplotlib's helpers: loaded only for the page
 
     page = output or Path(f"{file.stem}-preview.html")
-    write_atomically(page, preview_page(run, document.root, file).encode("utf-8"))
-    if csv_path is not None:
-        write_atomically(csv_path, trajectories_csv(run).encode("utf-8"))
-    if json_path is not None:
-        text = json.dumps(summary(run), indent=2) + "\n"
-        write_atomically(json_path, text.encode("utf-8"))
+    # The page, CSV and JSON appear together or not at all (a CSV that cannot be written
+    # must not leave the page of the run behind).
+    with output_set() as outputs:
+        write_atomically(outputs.stage(page), preview_page(run, document.root, file).encode())
+        if csv_path is not None:
+            write_atomically(outputs.stage(csv_path), trajectories_csv(run).encode("utf-8"))
+        if json_path is not None:
+            text = json.dumps(summary(run), indent=2) + "\n"
+            write_atomically(outputs.stage(json_path), text.encode("utf-8"))
     for line in describe(run):
         click.echo(line)
     click.echo(f"wrote {page}" + "".join(f", {p}" for p in (csv_path, json_path) if p))

@@ -7,14 +7,15 @@ from pathlib import Path
 
 import click
 
+from ..diagnostics import Diagnostic, Severity
 from ..errors import LoadError
 from ..export.profiles import PROFILES
-from ..io import load
+from ..io import Document, load
 from ..report import FileReport, exit_code, render
 from ..schema import SUPPORTED_VERSIONS
-from ..validation import Limits, load_limits
+from ..validation import OLDER_RELEASE, Limits, load_limits
 from ..validation import validate as validate_model
-from .common import SceMLCommand, allow_option, emit_report, file_progress, report_options
+from .common import ReportsMigrations, allow_option, emit_report, file_progress, report_options
 
 
 def validate_file(
@@ -37,10 +38,29 @@ def validate_file(
         osc_version=osc_version,
         osc_profile=osc_profile,
     )
-    return FileReport(str(path), diagnostics)
+    return FileReport(str(path), [*older_releases(document), *diagnostics])
 
 
-@click.command("validate", cls=SceMLCommand)
+def older_releases(document: Document) -> list[Diagnostic]:
+    """A warning for each file read (the model, its libraries) saved with an older release."""
+    found = []
+    for report in document.migrations():
+        changes = "; ".join(change.describe() for change in report.changes[:5])
+        more = f"; and {len(report.changes) - 5} more" if len(report.changes) > 5 else ""
+        found.append(
+            Diagnostic(
+                Severity.WARNING,
+                OLDER_RELEASE,
+                f"{report.summary()}{': ' + changes + more if changes else ''}; "
+                f"`sceml migrate {report.file} --in-place` rewrites it",
+                file=str(report.file),
+                line=1,
+            )
+        )
+    return found
+
+
+@click.command("validate", cls=ReportsMigrations)
 @click.argument("files", nargs=-1, required=True, type=click.Path(dir_okay=False, path_type=Path))
 @report_options(json_help="see docs/validation-json.md")
 @click.option(

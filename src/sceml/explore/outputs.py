@@ -5,7 +5,7 @@ from __future__ import annotations
 import csv
 import io as text_io
 import math
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from pathlib import Path
 
 import numpy as np
@@ -77,8 +77,13 @@ def write_critical(
     out_dir: Path,
     top: int,
     osc_version: str,
+    stage: Callable[[Path], Path] = Path,
 ) -> list[tuple[Evaluation, list[Path], str | None]]:
-    """The `top` most critical runs as concrete .xmi and .xosc files: (run, files, problem)."""
+    """The `top` most critical runs as concrete .xmi and .xosc files: (run, files, problem).
+
+    Each file is written under the name `stage` gives for it (e.g. `OutputSet.stage`); the
+    files returned are the targets.
+    """
     writer = XoscWriter(logical_file, osc_version)
     stem = logical_file.stem.removesuffix("-logical")
     written = []
@@ -87,8 +92,8 @@ def write_critical(
         concrete = apply(logical, values)
         base = out_dir / f"{stem}_critical_{rank:02d}"
         xmi = base.with_suffix(".xmi")
-        io.save(concrete, xmi, origin=logical_file)
-        problem = writer.write(concrete, base.with_suffix(".xosc"))
+        io.save(concrete, stage(xmi), origin=logical_file)
+        problem = writer.write(concrete, stage(base.with_suffix(".xosc")))
         files = [xmi] if problem else [xmi, base.with_suffix(".xosc")]
         written.append((evaluation, files, problem))
     return written

@@ -33,7 +33,9 @@ from ..levels.batch import (
     mirrored,
     setup_worker,
 )
+from ..maps.reader import MapError
 from ..maps.reference import map_reference
+from ..safefiles import read_input, reading_roots
 from ..simulate import Run, simulate
 
 #: What became of one candidate: its run, or the message of the error that stopped it.
@@ -65,12 +67,16 @@ def make_search_payload(
     config = BatchConfig(logical=file, out_dir=file.parent, paths=paths, formats=(), allow=allow)
     batch = make_payload(config)
     root = root_node(logical)
-    reference = map_reference(root.map if root is not None else None, file)
+    roots = reading_roots(file, allow)
+    reference = map_reference(root.map if root is not None else None, file, roots)
     if reference is None or reference.path is None or not reference.path.is_file():
         # No map, a simulator town, or a file that is not there: each run says so, as it would
         # here, because the worker resolves the name itself.
         return SearchPayload(batch, None, step)
-    road = (str(reference.path), reference.path.read_bytes())
+    road = (
+        str(reference.path),
+        read_input(reference.path, roots=roots, what="map", error=MapError),
+    )
     inputs = tuple(sorted({*batch.inputs, road}))
     return SearchPayload(replace(batch, inputs=inputs), road[0], step)
 

@@ -21,7 +21,7 @@ or `Accelerate_1` with `targetSpeed`, or a position such as `TurnRight_1/destina
 Each value so keyed is written as `$name`, and a `<ParameterDeclaration name=... parameterType=...
 value=...>` is added to the top-level ParameterDeclarations. Values the exporter derives
 (bounding-box centre, the CARLA speed-change duration, the overtake arrival tolerance) stay
-literal.
+literal; DriveDistance's duration of parameters is the expression `${$distance / $speed}` (1.1+).
 
 `support.unsupported_reason(kind, version, profile)` says why a node kind cannot be exported.
 """

@@ -8,12 +8,14 @@ metaclass name in PLANNERS; `support.py` derives the list of mapped kinds from i
 from __future__ import annotations
 
 from collections.abc import Callable
+from dataclasses import replace
 from typing import Any
 
 import scemlmodel as scm
 
+from ..players import meaning
 from .context import Action, Context, Event
-from .entities import performance
+from .entities import performance_of
 from .speeds import speed_dynamics
 from .triggers import Condition, Group, delayed, finished, with_extra
 from .values import number
@@ -74,7 +76,10 @@ def plan_speed(ctx: Context, node: scm.ActionNode, groups: list[Group]) -> Plan:
 
 @planner("DriveDistance")
 def plan_drive_distance(ctx: Context, node: scm.DriveDistance, groups: list[Group]) -> Plan:
-    """A step SpeedAction to the speed; finished once TraveledDistance reaches the distance."""
+    """A step SpeedAction to the speed; finished distance / speed seconds after the activation
+    (`players.meaning.drive_distance_duration`): the speed holds, so the distance is driven
+    from where the node starts. TraveledDistanceCondition would count from the simulation's
+    start, which is wrong once the actor has moved."""
     name = ctx.event_names[node]
     speed = Action(
         ctx.action_name(name),
@@ -86,28 +91,60 @@ def plan_drive_distance(ctx: Context, node: scm.DriveDistance, groups: list[Grou
             "value": "0.0",
         },
     )
-    driven = Condition(
-        f"{name}_driven",
-        "traveled",
-        {"entity": ctx.entity(node.referenceActor), "value": ctx.values.text(node, "distance")},
+    entity = ctx.entity(node.referenceActor)
+    event = Event(name, entity, [speed], groups)
+    if ctx.profile == "carla":
+        # scenario_runner turns a delay into a time-out from the act's start; its DriveDistance
+        # counts from the act's start too (docs/openscenario-mapping.md, profile carla).
+        traveled = {"entity": entity, "value": ctx.values.text(node, "distance")}
+        marker = _finish_marker(
+            ctx, node, "driven", groups, Condition(f"{name}_driven", "traveled", traveled)
+        )
+        return [event, marker], marker.name
+    duration = meaning.drive_distance_duration(
+        ctx.values.raw(node, "distance"), ctx.values.raw(node, "speed")
     )
-    event = Event(name, ctx.entity(node.referenceActor), [speed], groups)
-    done = _finish_marker(ctx, node, "driven", groups, driven)
-    return [event, done], done.name
+    if duration == float("inf"):
+        raise ValueError(f"{node.name}: a DriveDistance at 0 m/s never finishes (SCEML-Y001)")
+    driven = ctx.extra_event(node, "driven")
+    done = Event(
+        driven, entity, [ctx.marker_action(driven, driven)], delayed(groups, _drive_time(ctx, node))
+    )
+    return [event, done], driven
+
+
+def _drive_time(ctx: Context, node: scm.DriveDistance) -> str:
+    """distance / speed as written: a number, or where either is a declared parameter an
+    expression of them, so the file keeps its meaning when the parameter is changed."""
+    distance, speed = ctx.values.text(node, "distance"), ctx.values.text(node, "speed")
+    if not (distance.startswith("$") or speed.startswith("$")):
+        return number(meaning.drive_distance_duration(float(distance), float(speed)))
+    if not ctx.traits.expressions:
+        raise ValueError(
+            f"{node.name}: a DriveDistance finishes distance / speed after it starts, and "
+            "OpenSCENARIO 1.0 has no expressions to write that of parameters; export 1.1 or later"
+        )
+    return f"${{{distance} / {speed}}}"
 
 
 @planner("Follow", "Approach")
 def plan_distance_keeping(ctx: Context, node: scm.ActionNode, groups: list[Group]) -> Plan:
-    """LongitudinalDistanceAction to the target, within the actor's limits; Follow keeps it
-    (continuous) and finishes when the gap is first reached, Approach ends when the gap is reached."""
+    """LongitudinalDistanceAction to the target, within the gap-keeping limits of
+    `players.meaning`; Follow keeps it (continuous) and finishes when the gap is first reached,
+    Approach ends when the gap is held (the player's own end of a non-continuous action)."""
     name = ctx.event_names[node]
     follow = isinstance(node, scm.Follow)
+    limits = meaning.gap_limits(*performance_of(node.referenceActor.eClass.name))
     data = {
         "target": ctx.entity(node.targetActor),
         "distance": ctx.values.text(node, "distance"),
         "continuous": "true" if follow else "false",
         # Without limits esmini does not drive to the gap: it moves the actor there in one step.
-        "limits": performance(node.referenceActor),
+        "limits": {
+            "maxAcceleration": number(limits.acceleration),
+            "maxDeceleration": number(limits.deceleration),
+            "maxSpeed": number(limits.max_speed),
+        },
     }
     event = Event(
         name,
@@ -115,23 +152,30 @@ def plan_distance_keeping(ctx: Context, node: scm.ActionNode, groups: list[Group
         [Action(ctx.action_name(name), "long_distance", data)],
         groups,
     )
-    if not follow:
-        return [event], name
-    # A controller closes in on the gap from above and holds it: "less than the gap" may never
-    # hold, so the gap counts as reached within a slack of max(1 m, 10 %).
+    # A controller closes in on the gap and holds it: "less than the gap" may never hold, so
+    # the gap counts as reached within a slack (Follow: from above; Approach: either side).
     gap = ctx.values.raw(node, "distance")
-    close = Condition(
-        f"{name}_gap_reached",
-        "relative_distance",
-        {
-            "entity": ctx.entity(node.referenceActor),
-            "target": ctx.entity(node.targetActor),
-            "value": number(gap + max(1.0, gap / 10)),
-            "rule": "lessThan",
-            "type": "longitudinal",
-        },
-    )
-    done = _finish_marker(ctx, node, "gap_reached", groups, close)
+    if follow:
+        bounds = [("lessThan", gap + meaning.follow_slack(gap))]
+    else:
+        slack = meaning.APPROACH_REACHED
+        bounds = [("lessThan", gap + slack), ("greaterThan", max(gap - slack, 0.0))]
+    checks = [
+        Condition(
+            f"{name}_gap_reached",
+            "relative_distance",
+            {
+                "entity": ctx.entity(node.referenceActor),
+                "target": ctx.entity(node.targetActor),
+                "value": number(value),
+                "rule": rule,
+                "type": "longitudinal",
+            },
+        )
+        for rule, value in bounds
+    ]
+    done = _finish_marker(ctx, node, "gap_reached", groups, checks[0])
+    done = replace(done, groups=[[*group, *checks[1:]] for group in done.groups])
     return [event, done], done.name
 
 
@@ -169,11 +213,20 @@ def arrived(
 
 @planner("TurnLeft", "TurnRight")
 def plan_turn(ctx: Context, node: scm.RoutedManeuver, groups: list[Group]) -> Plan:
-    """AcquirePositionAction to the destination; finished by an arrival marker, because players
-    complete routing actions as soon as the route is set (SPEC §7)."""
+    """AssignRouteAction from the actor's start to the destination; finished by an arrival
+    marker, because players complete routing actions as soon as the route is set (SPEC §7).
+    Not AcquirePositionAction: esmini runs that in the longitudinal domain and so stops a
+    running speed maneuver of the actor; a route controls no domain (`players.meaning`)."""
     name = ctx.event_names[node]
     destination = ctx.position(node.destination)
-    route = Action(ctx.action_name(name), "acquire", {"position": destination})
+    if ctx.profile == "carla":  # scenario_runner reads no AssignRouteAction
+        route = Action(ctx.action_name(name), "acquire", {"position": destination})
+    else:
+        # Players resolve a route's waypoints when they load the file, so a position relative
+        # to the actor would be where it stands at t = 0: the route starts at its start.
+        start = ctx.position(node.referenceActor.startPosition)
+        data = {"route": ctx.names.claim(f"{name}_route"), "waypoints": [start, destination]}
+        route = Action(ctx.action_name(name), "route", data)
     event = Event(name, ctx.entity(node.referenceActor), [route], groups)
     here = arrived(ctx, node, f"{name}_arrived", destination, ctx.values.text(node, "tolerance"))
     done = _finish_marker(ctx, node, "arrived", groups, here)
@@ -229,7 +282,8 @@ def plan_overtake(ctx: Context, node: scm.Overtake, groups: list[Group]) -> Plan
         "dy": "0.0",
     }
     gap = ctx.values.raw(node, "gap")
-    ahead = arrived(ctx, node, f"{back_name}_ahead", ahead_point, repr(max(1.0, gap / 2)))
+    tolerance = repr(meaning.overtake_back_tolerance(gap))
+    ahead = arrived(ctx, node, f"{back_name}_ahead", ahead_point, tolerance)
     back_groups = [[finished(name, back_name), ahead]]
     other = "right" if side == "left" else "left"
     back = Event(
@@ -313,6 +367,7 @@ def plan_ttc(ctx: Context, node: scm.TimeToCollision, groups: list[Group]) -> Pl
         "value": ctx.values.text(node, "time"),
         "rule": node.rule.name,
     }
+    data["freespace"] = "true" if meaning.TTC_FREESPACE else "false"
     check = Condition(f"{name}_ttc", "ttc", data)
     return _marker(ctx, node, with_extra(groups, check), ctx.entity(node.referenceActor))
 

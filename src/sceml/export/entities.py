@@ -38,7 +38,8 @@ def entity(ctx: Context, actor: scm.Actor) -> dict[str, Any]:
     kind = actor.eClass.name
     length, width, height = (ctx.values.raw(actor, f) for f in ("length", "width", "height"))
     bbox = {
-        "x": number(0.0 if kind == "Pedestrian" else round(length * 0.3, 6)),
+        # The reference point is the box's centre, as SceML positions are (players.meaning).
+        "x": number(0.0),
         "z": number(round(height / 2, 6)),
         "length": ctx.values.text(actor, "length"),
         "width": ctx.values.text(actor, "width"),
@@ -79,12 +80,16 @@ def entity(ctx: Context, actor: scm.Actor) -> dict[str, Any]:
     }
 
 
+def performance_of(kind: str) -> tuple[float, float, float]:
+    """(maxSpeed, maxAcceleration, maxDeceleration) of an actor kind (a metaclass name)."""
+    limits = PERFORMANCE[VEHICLE_CATEGORIES[kind]] if kind in VEHICLE_CATEGORIES else None
+    return limits or PEDESTRIAN_PERFORMANCE
+
+
 def performance(actor: scm.Actor) -> dict[str, str]:
     """The actor's limits as OpenSCENARIO attributes (maxSpeed, maxAcceleration, maxDeceleration):
-    the Vehicle's Performance, and the DynamicConstraints of actions that need limits."""
-    kind = actor.eClass.name
-    limits = PERFORMANCE[VEHICLE_CATEGORIES[kind]] if kind in VEHICLE_CATEGORIES else None
-    max_speed, max_acceleration, max_deceleration = limits or PEDESTRIAN_PERFORMANCE
+    the Vehicle's Performance."""
+    max_speed, max_acceleration, max_deceleration = performance_of(actor.eClass.name)
     return {
         "maxSpeed": number(max_speed),
         "maxAcceleration": number(max_acceleration),

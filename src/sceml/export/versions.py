@@ -34,6 +34,8 @@ class Traits:
     precipitation_intensity: bool
     #: 1.0 requires the Pedestrian `model` attribute.
     pedestrian_model_required: bool
+    #: 1.1 introduced `${...}` expressions in attribute values.
+    expressions: bool = False
 
 
 def traits(version: str) -> Traits:
@@ -55,4 +57,5 @@ def traits(version: str) -> Traits:
         cloud_cover=minor >= 2,
         precipitation_intensity=minor >= 1,
         pedestrian_model_required=minor == 0,
+        expressions=minor >= 1,
     )

@@ -19,6 +19,7 @@ to what.
 from __future__ import annotations
 
 import os
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -31,7 +32,7 @@ from .context import Build
 from .distribution import Distribution, read_distribution
 from .ending import read_stop
 from .entities import read_entities
-from .errors import XoscImportError
+from .errors import BadValue, XoscImportError
 from .init import read_init
 from .logical import apply_distribution
 from .markers import marker_name
@@ -56,19 +57,43 @@ def import_file(
     *,
     map_path: str | Path | None = None,
     distribution: str | Path | None = None,
+    catalog_paths: Sequence[str | Path] = (),
+    allow: Sequence[str | Path] = (),
 ) -> Imported:
     """Read an OpenSCENARIO file into a SceML scenario (nothing is written).
 
     `map_path` names the OpenDRIVE file to use instead of the file's LogicFile. `distribution`
     names a ParameterValueDistribution whose parameters make the scenario logical; when `path`
-    is itself one, the scenario its ScenarioFile names is imported with it.
+    is itself one, the scenario its ScenarioFile names is imported with it. `catalog_paths`
+    are more folders to find catalogs in (esmini's `--path`); files the scenario names are read
+    only inside `io.reading_roots` of it, `allow` and `catalog_paths`.
     """
-    source, varied = _sources(Path(path), None if distribution is None else Path(distribution))
+    search = [Path(folder) for folder in catalog_paths]
+    extra = [*search, *(Path(folder) for folder in allow)]
+    source, varied = _sources(
+        Path(path), None if distribution is None else Path(distribution), extra
+    )
+    roots = io.reading_roots(source.path, extra)
     report = ImportReport(str(source.path), source.version)
-    report.catalog_entries = catalogs.resolve(source)
+    report.catalog_entries = catalogs.resolve(source, search, roots, report)
     resolved = parameters.resolve(source, () if varied is None else varied.specs)
     report.parameters = {k: v for k, v in resolved.top.items() if k != markers.MARKER}
-    build = _start(source, report, map_path)
+    try:
+        return _build(source, report, varied, resolved, map_path, roots)
+    except BadValue as error:
+        raise source.error(str(error), error.element) from None
+
+
+def _build(
+    source: Source,
+    report: ImportReport,
+    varied: Distribution | None,
+    resolved: parameters.Resolved,
+    map_path: str | Path | None,
+    roots: Sequence[Path],
+) -> Imported:
+    """Every stage after reading, catalogs and parameters."""
+    build = _start(source, report, map_path, roots)
     if varied is not None and varied.scenario.resolve() != source.path.resolve():
         report.add(
             "guessed",
@@ -94,14 +119,24 @@ def import_to_file(
     *,
     map_path: str | Path | None = None,
     distribution: str | Path | None = None,
+    catalog_paths: Sequence[str | Path] = (),
+    allow: Sequence[str | Path] = (),
 ) -> Imported:
     """Import `path` and save the scenario as `output` (atomically; map path relative to it)."""
-    imported = import_file(path, map_path=map_path, distribution=distribution)
+    imported = import_file(
+        path,
+        map_path=map_path,
+        distribution=distribution,
+        catalog_paths=catalog_paths,
+        allow=allow,
+    )
     io.save(imported.scenario, output, origin=Path(imported.report.file))
     return imported
 
 
-def _sources(path: Path, distribution: Path | None) -> tuple[Source, Distribution | None]:
+def _sources(
+    path: Path, distribution: Path | None, allow: Sequence[Path]
+) -> tuple[Source, Distribution | None]:
     """The scenario to import and the distribution to apply (either file may be the PVD)."""
     tree, version = load(path)
     if not is_distribution(tree):
@@ -124,6 +159,14 @@ def _sources(path: Path, distribution: Path | None) -> tuple[Source, Distributio
             line=tree.getroot().sourceline,
         )
     varied = read_distribution(path, tree, version)
+    if not _inside(varied.scenario, io.reading_roots(path, allow)):
+        # Its name only: an outside file is neither read nor described.
+        raise XoscImportError(
+            f"the ScenarioFile {varied.scenario} is outside the folders the import may read; "
+            "allow its folder with --allow",
+            file=path,
+            line=varied.scenario_line,
+        )
     if not varied.scenario.is_file():
         raise XoscImportError(
             f"the ScenarioFile {varied.scenario.name!r} does not exist ({varied.scenario})",
@@ -133,7 +176,14 @@ def _sources(path: Path, distribution: Path | None) -> tuple[Source, Distributio
     return read(varied.scenario), varied
 
 
-def _start(source: Source, report: ImportReport, map_path: str | Path | None) -> Build:
+def _inside(path: Path, roots: Sequence[Path]) -> bool:
+    real = path.resolve()
+    return any(real.is_relative_to(root) for root in roots)
+
+
+def _start(
+    source: Source, report: ImportReport, map_path: str | Path | None, roots: Sequence[Path]
+) -> Build:
     header = source.root.find("FileHeader")
     assert header is not None  # the XSD requires it
     logic = source.root.find("RoadNetwork/LogicFile")
@@ -155,14 +205,18 @@ def _start(source: Source, report: ImportReport, map_path: str | Path | None) ->
     for node in (builder.root, builder.end):
         build.name(str(node.name))
     build.marker = marker_name(source.root)
-    build.road_map = _map(build, given)
+    build.road_map = _map(build, given, roots if map_path is None else None)
     if build.from_sceml:
         report.add("mapped", "a SceML export: its marker events are folded back into their nodes")
     return build
 
 
-def _map(build: Build, given: str | None):  # type: ignore[no-untyped-def]
-    """The OpenDRIVE map for turn geometry, or None (the report says so)."""
+def _map(build: Build, given: str | None, roots: Sequence[Path] | None):  # type: ignore[no-untyped-def]
+    """The OpenDRIVE map for turn geometry, or None (the report says so).
+
+    A LogicFile outside `roots` is not opened (the model keeps its path); a `--map` given by
+    the user is read wherever it is.
+    """
     if not given or not given.lower().endswith(".xodr"):
         build.report.add(
             "guessed", f"map {given!r} is no OpenDRIVE file: turns are read from headings"
@@ -171,6 +225,19 @@ def _map(build: Build, given: str | None):  # type: ignore[no-untyped-def]
     from ..maps import MapError, load_map
 
     path = build.source.path.parent / given
+    if roots is not None and not _inside(path, roots):
+        build.report.add(
+            "guessed",
+            f"map {given} is outside the folders the import may read, so it is not opened "
+            "(--allow its folder, or --map): turns are read from headings",
+        )
+        return None
+    if not path.resolve().is_file():
+        # A device or FIFO would never end; a missing map is the validator's to report.
+        build.report.add(
+            "guessed", f"map {path} cannot be read (no regular file): turns are read from headings"
+        )
+        return None
     try:
         return load_map(path)
     except (MapError, OSError) as error:

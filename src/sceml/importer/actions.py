@@ -19,7 +19,8 @@ from . import traced
 from .context import Build, last_name
 from .geometry import classify
 from .opaque import summary
-from .positions import number, position
+from .placing import place
+from .positions import lane_id, number
 
 
 @dataclass
@@ -173,7 +174,7 @@ def _lane_change(
     if relative is None:
         return "a change to an absolute lane has no SceML kind"
     reference = build.actor(relative.get("entityRef"), relative)
-    lanes = int(float(str(relative.get("value"))))
+    lanes = lane_id(relative, "value")
     direction: str | None = "left" if lanes > 0 else "right"
     if reference is not request.actor or abs(lanes) != 1:
         direction = _towards(request.actor, reference, lanes)
@@ -223,7 +224,7 @@ def _towards(actor: scm.Actor, reference: scm.Actor, lanes: int) -> str | None:
 def _acquire(
     build: Build, request: Request, acquire: etree._Element, motion: Motion
 ) -> scm.ActionNode | str:
-    return _routed(build, request, position(acquire), motion)
+    return _routed(build, request, place(build, acquire, initial=False), motion)
 
 
 @_maps("PrivateAction/RoutingAction/AssignRouteAction")
@@ -237,7 +238,7 @@ def _route(
         _guess(
             build, request, f"a route of {len(waypoints)} waypoints read as a route to its last one"
         )
-    return _routed(build, request, position(waypoints[-1]), motion)
+    return _routed(build, request, place(build, waypoints[-1], initial=False), motion)
 
 
 def _routed(
@@ -270,7 +271,7 @@ def _trajectory(
     vertices = polyline.findall("Vertex")
     if vertices and _is_self(vertices[0], request.actor):
         vertices = vertices[1:]
-    points = [position(vertex) for vertex in vertices]
+    points = [place(build, vertex, initial=False) for vertex in vertices]
     if not points or any(point is None for point in points):
         return "a trajectory vertex is not a world or lane position"
     actor = str(request.actor.name)

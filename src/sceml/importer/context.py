@@ -36,6 +36,8 @@ class Build:
     ego: scm.Actor | None = None
     #: The marker parameter/variable of a SceML export (`SceML_marker`), if the file is one.
     marker: str | None = None
+    #: Actor name -> its speed once a gradual Init speed change (a node after the root) is done.
+    init_speeds: dict[str, float] = field(default_factory=dict)
     _taken: set[str] = field(default_factory=set)
 
     @property

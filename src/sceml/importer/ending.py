@@ -40,25 +40,62 @@ def read_stop(build: Build, storyboard: Storyboard) -> None:
         )
     ends = _ends(build, trigger, groups)
     others = [n for n in _sinks(build) if all(n is not e for e in ends)]
-    if groups and others:
-        names = ", ".join(str(n.name) for n in others)
+    if not groups:
+        if limits:
+            # Only a time limit: the run lasts that long even when every branch is done early.
+            ends = [
+                trigger.timed(build.root, min(limits), "stop_time", "TimeElapsed", trigger.actor)
+            ]
         build.report.add(
             "guessed",
-            f"the end also waits for {names} (the StopTrigger does not name them)",
+            "the StopTrigger names no storyboard element: the end waits for every branch"
+            + (f" and {min(limits):g} s" if limits else ""),
+        )
+    elif others:
+        if limits:
+            # With a time limit too, the original runs on to it when the StopTrigger's
+            # elements never finish: the other branches end the run only once it has passed.
+            limit = min(limits)
+            others.append(
+                trigger.timed(build.root, limit, "stop_time", "TimeElapsed", trigger.actor)
+            )
+        ends = _stop_or_rest(build, ends, others)
+        build.report.add(
+            "guessed",
+            "the end comes when the StopTrigger holds, or once "
+            f"{', '.join(str(n.name) for n in others)} (which it does not name) have all "
+            "finished: every SceML branch must reach the end",
             build.where(stop),
         )
-    if not groups:
-        build.report.add(
-            "guessed", "the StopTrigger names no storyboard element: the end waits for every branch"
-        )
-    if build.end.policy is scm.JoinPolicy.joinOne and others:
-        join = build.add(scm.JoinOneFinished(), "stop_any")
-        for end in ends:
-            build.flow(end, join)
-        ends = [join]
-        build.end.policy = scm.JoinPolicy.joinAll
-    for node in [*ends, *others] or [build.root]:
+    for node in [*ends, *([] if groups else others)] or [build.root]:
         build.flow(node, build.end)
+
+
+def _stop_or_rest(
+    build: Build, ends: list[scm.GraphElement], others: list[scm.GraphElement]
+) -> list[scm.GraphElement]:
+    """The end's inputs when the StopTrigger does not name every branch: the stop, or the rest.
+
+    OpenSCENARIO stops when the StopTrigger holds, whatever else is running; waiting for the
+    other branches as well (a join-all) would keep a run going that the original ended.
+    """
+    if len(ends) > 1:
+        kind = (
+            scm.JoinOneFinished
+            if build.end.policy is scm.JoinPolicy.joinOne
+            else scm.JoinAllFinished
+        )
+        stop = build.add(kind(), "stop_holds")
+        for end in ends:
+            build.flow(end, stop)
+        ends = [stop]
+    rest = others[0]
+    if len(others) > 1:
+        rest = build.add(scm.JoinAllFinished(), "branches_done")
+        for other in others:
+            build.flow(other, rest)
+    build.end.policy = scm.JoinPolicy.joinOne
+    return [*ends, rest]
 
 
 def _time_limit(group: etree._Element) -> float | None:

@@ -74,6 +74,8 @@ def _actor(build: Build, item: etree._Element) -> scm.Actor | None:
             )
         model = body.get("model") or body.get("name")
         actor = _make("Pedestrian", name, None if model == "pedestrian" else model)
+    elif body is not None and body.tag == "MiscObject":
+        actor = _misc_object(build, name, body)
     else:
         what = body.tag if body is not None else "nothing"
         build.report.add(
@@ -93,6 +95,24 @@ def _actor(build: Build, item: etree._Element) -> scm.Actor | None:
             build.where(item.find("ObjectController")),
         )
     return actor
+
+
+def _misc_object(build: Build, name: str, body: etree._Element) -> scm.Actor:
+    """A MiscObject (obstacle, pole, barrier...) as a Car of its own size.
+
+    SceML has no kind for objects that are not road users; a Car with the object's bounding
+    box is the actor a player places and draws most like it (it does not move unless told to).
+    The original category stays in the report.
+    """
+    category = str(body.get("miscObjectCategory"))
+    build.report.add(
+        "guessed",
+        f"entity {name!r}: MiscObject of category {category} as a Car of its size (SceML has "
+        "no MiscObject kind)",
+        build.where(body),
+    )
+    model = body.get("name")
+    return _make("Car", name, None if model == category else model)
 
 
 def _make(kind: str, name: str, model: str | None) -> scm.Actor:

@@ -1,9 +1,11 @@
 """A small safe evaluator for OpenSCENARIO `${...}` expressions (1.1+ grammar, used for 1.0 too).
 
 Numbers, `$parameter`s, + - * / %, unary minus, parentheses, the functions of the standard
-(round, floor, ceil, sqrt, pow, sin, cos, tan, asin, acos, atan, sign, abs, max, min) and the
-boolean operators (not, and, or, comparisons) are read by a recursive-descent parser; nothing
-is ever handed to Python's eval.
+(round, floor, ceil, sqrt, pow, sin, cos, tan, asin, acos, atan, sign, abs, max, min), the
+constant `pi` and the boolean operators (not, and, or, comparisons) are read by a
+recursive-descent parser; nothing is ever handed to Python's eval. It is bounded: nesting
+(MAX_DEPTH), length (MAX_LENGTH), and every value a finite double, so a hostile expression is an
+ExpressionError, never a RecursionError or an overflow.
 """
 
 from __future__ import annotations
@@ -48,11 +50,28 @@ _COMPARISONS: dict[str, Callable[[float, float], bool]] = {
 }
 
 
+#: Parentheses and calls nested deeper than this are refused (the parser recurses per level).
+MAX_DEPTH = 100
+#: Longer expressions are refused before they are read.
+MAX_LENGTH = 100_000
+#: Named constants (esmini reads `pi`).
+_CONSTANTS = {"pi": math.pi}
+
+
 class ExpressionError(ValueError):
     """The expression cannot be read or computed; the message says why."""
 
 
+def _finite(value: float) -> float:
+    """`value`, or ExpressionError when it overflowed (OpenSCENARIO numbers are doubles)."""
+    if not math.isfinite(value):
+        raise ExpressionError("the value is too large (beyond a double)")
+    return value
+
+
 def _tokens(text: str) -> list[tuple[str, str]]:
+    if len(text) > MAX_LENGTH:
+        raise ExpressionError(f"the expression is longer than {MAX_LENGTH:,} characters")
     found, position = [], 0
     text = text.rstrip()
     while position < len(text):
@@ -70,6 +89,7 @@ class _Parser:
         self.tokens = _tokens(text)
         self.at = 0
         self.values = values
+        self.depth = 0
 
     def peek(self) -> str | None:
         return self.tokens[self.at][1] if self.at < len(self.tokens) else None
@@ -106,10 +126,12 @@ class _Parser:
         return value
 
     def negation(self) -> float:
-        if self.peek() == "not":
+        flips = 0
+        while self.peek() == "not":  # a loop, not recursion: any number of them
             self.take()
-            return float(not self.negation())
-        return self.comparison()
+            flips += 1
+        value = self.comparison()
+        return value if not flips else float(bool(value) != (flips % 2 == 1))
 
     def comparison(self) -> float:
         value = self.sum()
@@ -123,7 +145,7 @@ class _Parser:
         while self.peek() in ("+", "-"):
             sign = self.take()[1]
             right = self.product()
-            value = value + right if sign == "+" else value - right
+            value = _finite(value + right if sign == "+" else value - right)
         return value
 
     def product(self) -> float:
@@ -133,42 +155,58 @@ class _Parser:
             right = self.unary()
             if op != "*" and right == 0:
                 raise ExpressionError("division by zero")
-            value = value * right if op == "*" else value / right if op == "/" else value % right
+            value = _finite(
+                value * right if op == "*" else value / right if op == "/" else value % right
+            )
         return value
 
     def unary(self) -> float:
-        if self.peek() == "-":
+        signs = 0
+        while self.peek() == "-":  # a loop, not recursion: any number of them
             self.take()
-            return -self.unary()
-        return self.atom()
+            signs += 1
+        value = self.atom()
+        return -value if signs % 2 else value
 
     def atom(self) -> float:
         kind, text = self.take()
         if kind == "number":
-            return float(text)
+            return _finite(float(text))
         if kind == "parameter":
             return number(self.values, text[1:])
         if text == "(":
+            self.nest()
             value = self.disjunction()
             self.take(")")
+            self.depth -= 1
             return value
+        if kind == "name" and text in _CONSTANTS:
+            return _CONSTANTS[text]
         if kind == "name" and text in ("true", "false"):
             return 1.0 if text == "true" else 0.0
         if kind == "name" and text in _FUNCTIONS:
             return self.call(text)
         raise ExpressionError(f"unexpected {text!r}")
 
+    def nest(self) -> None:
+        self.depth += 1
+        if self.depth > MAX_DEPTH:
+            raise ExpressionError(f"parentheses and calls are nested more than {MAX_DEPTH} deep")
+
     def call(self, name: str) -> float:
         self.take("(")
+        self.nest()
         arguments = [self.disjunction()]
         while self.peek() == ",":
             self.take()
             arguments.append(self.disjunction())
         self.take(")")
+        self.depth -= 1
         try:
-            return float(_FUNCTIONS[name](*arguments))
-        except (TypeError, ValueError) as error:
-            raise ExpressionError(f"{name}() cannot take {arguments}: {error}") from None
+            return _finite(float(_FUNCTIONS[name](*arguments)))
+        except (TypeError, ValueError, OverflowError) as error:
+            shown = ", ".join(f"{a:g}" for a in arguments)
+            raise ExpressionError(f"{name}({shown}) cannot be computed: {error}") from None
 
 
 def number(values: Mapping[str, str], name: str) -> float:

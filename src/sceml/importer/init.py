@@ -10,9 +10,11 @@ from lxml import etree
 import scemlmodel as scm
 
 from . import traced
+from .actions import Motion, Request, map_action
 from .context import Build
 from .opaque import opaque_node
-from .positions import number, position
+from .placing import place
+from .positions import number
 
 #: fractionalCloudCover (1.2+) -> cloud state; eight oktas is overcast or, with dim sun, rainy.
 OKTAS = {
@@ -65,7 +67,7 @@ def _private(build: Build, actor: scm.Actor, private: etree._Element) -> bool:
     """Apply a teleport or speed action to the actor; False when it is something else."""
     teleport = private.find("TeleportAction")
     if teleport is not None:
-        start = position(teleport)
+        start = place(build, teleport, initial=True)
         if start is None:
             return False
         actor.startPosition = start
@@ -75,17 +77,45 @@ def _private(build: Build, actor: scm.Actor, private: etree._Element) -> bool:
     target = None if speed is None else speed.find("SpeedActionTarget/AbsoluteTargetSpeed")
     if speed is None or target is None:
         return False
+    dynamics = speed.find("SpeedActionDynamics")
+    if (
+        dynamics is not None
+        and dynamics.get("dynamicsShape") != "step"
+        and number(dynamics, "value", 0.0) != 0  # zero time or distance: a step after all
+    ):
+        return _gradual(build, actor, private, speed)
     actor.initialSpeed = traced.value(number(target, "value"))
     build.report.add("mapped", f"{actor.name}: initial speed", build.where(speed))
-    dynamics = speed.find("SpeedActionDynamics")
-    if dynamics is not None and dynamics.get("dynamicsShape") != "step":
-        build.report.add(
-            "guessed",
-            f"{actor.name}: the Init speed change ({dynamics.get('dynamicsShape')}) taken as the "
-            "initial speed",
-            build.where(speed),
-        )
     return True
+
+
+def _gradual(
+    build: Build, actor: scm.Actor, private: etree._Element, speed: etree._Element
+) -> bool:
+    """A gradual Init speed change: a speed maneuver right after the root, as players run it
+    (the actor starts at the speed it had, and reaches the target at the given rate)."""
+    wrapper = etree.Element("Action", name=f"Init_{actor.name}_speed")
+    wrapper.append(deepcopy(private))
+    name = str(actor.name)
+    before = build.init_speeds.get(name, _speed_of(actor))
+    motion = Motion(speed={name: before})
+    made = map_action(build, Request(wrapper, actor, f"Init_{name}_speed"), motion)
+    if isinstance(made, str):
+        return False
+    build.flow(build.root, made)
+    build.init_speeds[name] = motion.speed[name]
+    build.report.add(
+        "guessed",
+        f"{name}: the Init speed change ({speed.find('SpeedActionDynamics').get('dynamicsShape')}) "
+        f"is {made.name} from the start, from {before:g} m/s (it is not the initial speed)",
+        build.where(speed),
+    )
+    return True
+
+
+def _speed_of(actor: scm.Actor) -> float:
+    held = actor.initialSpeed
+    return float(held.value) if isinstance(held, scm.Value) else 0.0
 
 
 def _environment(build: Build, element: etree._Element | None) -> None:

@@ -3,7 +3,7 @@
 An export (docs/openscenario-mapping.md) declares the string `SceML_marker`; a *marker* event
 only sets it. A node's further events are named `<node>__<suffix>`: `__arrived` (the arrival of
 TurnLeft/TurnRight/Cross/FollowTrajectory: its tolerance), `__driven` (DriveDistance: its
-distance), `__gap_reached` (Follow), `__back` (Overtake: the lane change back and the gap),
+distance, or its duration distance / speed as the delay), `__gap_reached` (Follow), `__back` (Overtake: the lane change back and the gap),
 `__kept` (KeepVelocity, whose own event holds the speed: its duration is the delay). They are folded into the node of `<node>`; and the node's kind is the kind its name states.
 """
 
@@ -88,14 +88,25 @@ def tolerance(extra: etree._Element) -> float | None:
 def drive_distance(
     build: Build, request: Request, driven: etree._Element, motion: Motion
 ) -> scm.ActionNode | None:
-    """A DriveDistance from its step speed action and its `__driven` event."""
+    """A DriveDistance from its step speed action and its `__driven` event: a
+    TraveledDistanceCondition (carla profile), or the activation delayed by distance / speed
+    (`players.meaning.drive_distance_duration`)."""
     speed = request.element.find(".//AbsoluteTargetSpeed")
-    traveled = driven.find(".//TraveledDistanceCondition")
-    if speed is None or traveled is None:
+    if speed is None:
         return None
     value = number(speed, "value")
+    traveled = driven.find(".//TraveledDistanceCondition")
+    if traveled is not None:
+        distance = number(traveled, "value")
+    else:
+        delays = {c.get("delay") for c in driven.iterfind("StartTrigger/ConditionGroup/Condition")}
+        if len(delays) != 1:
+            return None
+        condition = driven.find("StartTrigger/ConditionGroup/Condition")
+        # The export wrote the duration as Python's repr: undo the division's rounding.
+        distance = round(number(condition, "delay") * value, 9)
     motion.speed[str(request.actor.name)] = value
-    return _add(build, request, "DriveDistance", speed=value, distance=number(traveled, "value"))
+    return _add(build, request, "DriveDistance", speed=value, distance=distance)
 
 
 def overtake(

@@ -9,6 +9,9 @@ says so, because the original would have cut the earlier one short.
 
 from __future__ import annotations
 
+import math
+from collections import deque
+
 import scemlmodel as scm
 
 from .. import catalog
@@ -22,34 +25,70 @@ _AXES = {
 
 
 def separate(build: Build) -> None:
-    """Make every pair of same-actor, same-category maneuvers run one after the other."""
-    maneuvers = [n for n in build.scenario.nodes if isinstance(n, scm.Maneuver)]
-    for index, later in enumerate(maneuvers):
-        for earlier in maneuvers[:index]:
-            if _conflict(earlier, later):
+    """Make every pair of same-actor, same-category maneuvers run one after the other.
+
+    The maneuvers of one actor and axis are taken in the graph's topological order (document
+    order between unrelated ones). Once each waits for the one before it, it follows all of
+    them, so each needs at most one new join: the whole pass is near linear in the number of
+    events, where comparing every pair was cubic (issue 26).
+    """
+    order = _topological(build.scenario.nodes)
+    lines: dict[tuple[int, str], list[scm.Maneuver]] = {}
+    for node in sorted(
+        (n for n in build.scenario.nodes if isinstance(n, scm.Maneuver)),
+        key=lambda n: order[id(n)],
+    ):
+        for axis in sorted(_axes(node)):
+            lines.setdefault((id(node.referenceActor), axis), []).append(node)
+    for line in lines.values():
+        for earlier, later in zip(line, line[1:], strict=False):
+            if not _reaches(earlier, later, order):
                 _wait(build, earlier, later)
+                order[id(later.incoming[0].source)] = order[id(later)] - 0.5
 
 
 def _axes(node: scm.Maneuver) -> set[str]:
     return _AXES.get(catalog.category(node) or "", set())
 
 
-def _conflict(earlier: scm.Maneuver, later: scm.Maneuver) -> bool:
-    if earlier.referenceActor is not later.referenceActor or not _axes(earlier) & _axes(later):
-        return False
-    return not _reaches(earlier, later) and not _reaches(later, earlier)
+def _topological(nodes: list[scm.GraphElement]) -> dict[int, float]:
+    """Node id -> its place in a topological order of the flows (Kahn, first in first out)."""
+    waiting = {id(n): sum(1 for f in n.incoming if f.source is not None) for n in nodes}
+    ready = deque(n for n in nodes if waiting[id(n)] == 0)
+    order: dict[int, float] = {}
+    while ready:
+        node = ready.popleft()
+        order[id(node)] = float(len(order))
+        for flow in node.outgoing:
+            target = flow.target
+            if target is None or id(target) not in waiting:
+                continue
+            waiting[id(target)] -= 1
+            if waiting[id(target)] == 0:
+                ready.append(target)
+    for node in nodes:  # a cycle (refused earlier) would leave some: after the rest
+        order.setdefault(id(node), float(len(order)))
+    return order
 
 
-def _reaches(start: scm.GraphElement, goal: scm.GraphElement) -> bool:
-    seen, todo = set(), [start]
+def _reaches(start: scm.GraphElement, goal: scm.GraphElement, order: dict[int, float]) -> bool:
+    """Whether flows lead from `start` to `goal`; nodes after `goal` in `order` are not
+    searched (no path from them leads back to it)."""
+    limit = order.get(id(goal), math.inf)
+    seen, todo = {id(start)}, [start]
     while todo:
         node = todo.pop()
         if node is goal:
             return True
         for flow in node.outgoing:
-            if flow.target is not None and id(flow.target) not in seen:
-                seen.add(id(flow.target))
-                todo.append(flow.target)
+            target = flow.target
+            if (
+                target is not None
+                and id(target) not in seen
+                and order.get(id(target), math.inf) <= limit
+            ):
+                seen.add(id(target))
+                todo.append(target)
     return False
 
 

@@ -93,7 +93,8 @@ def _declare(
     values, origins = dict(scope.values), dict(scope.origins)
     top = element is source.root
     for declaration in declarations.iterchildren("ParameterDeclaration"):
-        name, text = str(declaration.get("name")), str(declaration.get("value", ""))
+        name, text = declared_name(declaration), str(declaration.get("value", ""))
+        declaration.set("name", name)  # the name is no reference, even with its `$`
         alias = _REFERENCE.fullmatch(text)
         origin = origins.get(alias.group(1)) if alias is not None else None
         _substitute(source, declaration, _Scope(values, origins), None)
@@ -139,6 +140,37 @@ def _trace(
             tracing.mark(element, key, origin)
 
 
+def declared_name(declaration: etree._Element) -> str:
+    """A ParameterDeclaration's name; scenariogeneration writes it with a leading `$`, which
+    esmini accepts, so the `$` is dropped."""
+    return str(declaration.get("name", "")).removeprefix("$")
+
+
+def values_at(source: Source, element: etree._Element) -> dict[str, str]:
+    """The parameter values visible at `element`, before the tree is resolved (catalog step).
+
+    Declarations are evaluated from the root down, as `resolve` will do later; an attribute
+    here is only read, never changed.
+    """
+    values: dict[str, str] = {}
+    for holder in [*reversed(list(element.iterancestors())), element]:
+        declarations = holder.find("ParameterDeclarations")
+        for declaration in [] if declarations is None else declarations:
+            if declaration.tag != "ParameterDeclaration":
+                continue
+            text = str(declaration.get("value", ""))
+            if text.startswith("$"):
+                text = _value(source, declaration, "value", text, values)
+            values[declared_name(declaration)] = text
+    return values
+
+
+def value_of(source: Source, element: etree._Element, key: str, values: Mapping[str, str]) -> str:
+    """One attribute's value with `$name` / `${expression}` resolved in `values`."""
+    text = str(element.get(key, ""))
+    return _value(source, element, key, text, values) if text.startswith("$") else text
+
+
 def _value(
     source: Source, element: etree._Element, key: str, text: str, scope: Mapping[str, str]
 ) -> str:
@@ -150,4 +182,7 @@ def _value(
             raise ExpressionError(f"parameter ${name} is not declared")
         return scope[name]
     except ExpressionError as error:
+        if key == "name" and text.startswith("${"):
+            # A name is only a label: esmini keeps an expression it cannot compute as text.
+            return text
         raise source.error(f"<{element.tag} {key}={text!r}>: {error}", element) from None

@@ -2,11 +2,14 @@
 
 from __future__ import annotations
 
+import math
+
 from lxml import etree
 
 import scemlmodel as scm
 
 from . import traced
+from .errors import BadValue
 
 
 def position(holder: etree._Element | None) -> scm.Position | None:
@@ -31,13 +34,25 @@ def position(holder: etree._Element | None) -> scm.Position | None:
         if kind.tag == "LanePosition":
             return scm.LanePosition(
                 roadId=str(kind.get("roadId")),
-                laneId=int(float(str(kind.get("laneId")))),
+                laneId=lane_id(kind),
                 s=_value(kind, "s"),
                 offset=_value(kind, "offset", 0.0),
             )
     except ValueError:
         return None
     return None
+
+
+#: Lane ids are 32-bit integers in OpenSCENARIO (and in the model's EInt).
+_LANE_LIMIT = 2**31 - 1
+
+
+def lane_id(element: etree._Element, key: str = "laneId") -> int:
+    """An integer lane id; BadValue (with the element) for NaN, infinity or beyond 32 bits."""
+    value = number(element, key)
+    if abs(value) > _LANE_LIMIT or value != int(value):
+        raise BadValue(f"<{element.tag} {key}={element.get(key)!r}>: not a lane id", element)
+    return int(value)
 
 
 def _value(element: etree._Element, key: str, default: float | None = None) -> scm.Value:
@@ -54,4 +69,7 @@ def number(element: etree._Element, key: str, default: float | None = None) -> f
         if default is None:
             raise ValueError(key)
         return default
-    return traced.read(element, key, float(text))
+    value = float(text)
+    if not math.isfinite(value):
+        raise BadValue(f"<{element.tag} {key}={text!r}>: not a finite number", element)
+    return traced.read(element, key, value)

@@ -56,7 +56,10 @@ class Storyboard:
     def collect(self) -> None:
         """Index every story element by name; each actor starts at its initial speed."""
         for actor in self.build.actors.values():
-            self.motion.speed[str(actor.name)] = params.concrete(actor, "initialSpeed")
+            name = str(actor.name)
+            self.motion.speed[name] = self.build.init_speeds.get(
+                name, params.concrete(actor, "initialSpeed")
+            )
         storyboard = self.build.source.root.find("Storyboard")
         assert storyboard is not None
         for story in storyboard.iterchildren("Story"):
@@ -79,9 +82,7 @@ class Storyboard:
             actors = self._actors(group)
             for maneuver in group.iterchildren("Maneuver"):
                 for event in maneuver.iterchildren("Event"):
-                    name = str(event.get("name"))
-                    if name in self.events:
-                        raise self.build.source.error(f"two events are named {name!r}", event)
+                    name = self._unique(str(event.get("name")), maneuver, event)
                     self.events[name] = Event(event, name, actors, act_name)
                     for holder in (story, act_name, group.get("name"), maneuver.get("name")):
                         self.holds.setdefault(str(holder), []).append(name)
@@ -94,6 +95,26 @@ class Storyboard:
                             f"event {name!r} may run {count} times; SceML runs each node once",
                             self.build.where(event),
                         )
+
+    def _unique(self, name: str, maneuver: etree._Element, event: etree._Element) -> str:
+        """The event's name, or, when an earlier event has it, `name_in_<maneuver>[_n]`.
+
+        esmini accepts one event name in several maneuvers; a reference by the bare name means
+        the first of them (reported).
+        """
+        if name not in self.events:
+            return name
+        unique, number = f"{name}_in_{maneuver.get('name')}", 1
+        while unique in self.events:  # a catalog maneuver used twice repeats its names
+            number += 1
+            unique = f"{name}_in_{maneuver.get('name')}_{number}"
+        self.build.report.add(
+            "guessed",
+            f"a second event named {name!r} (in maneuver {maneuver.get('name')!r}) is "
+            f"{unique!r}; references by the name mean the first",
+            self.build.where(event),
+        )
+        return unique
 
     def _actors(self, group: etree._Element) -> list[scm.Actor]:
         refs = group.findall("Actors/EntityRef")
@@ -245,12 +266,25 @@ class Storyboard:
         if ref in self.holds and kind in ("maneuver", "maneuverGroup", "act", "story"):
             names = self.holds[ref]
             if not done:
-                return self._started(names[0], state)
+                return self._container_started(kind, self.events[names[0]].act, state)
             return self._all_of(ref, [self.event(n) for n in names])
         raise self.build.source.error(
             f"the condition refers to an unknown {kind} {ref!r} (dangling storyboard reference)",
             state,
         )
+
+    def _container_started(
+        self, kind: str | None, act: str, state: etree._Element
+    ) -> scm.GraphElement:
+        """When a story, act, maneuver group or maneuver is running: its act started (a story
+        at the start). Not its first event's activation: an event of it may wait for this."""
+        self.build.report.add(
+            "mapped",
+            f"'{state.get('state')}' of {kind} {state.get('storyboardElementRef')!r}: when "
+            + ("the scenario starts" if kind == "story" else f"act {act!r} starts"),
+            self.build.where(state),
+        )
+        return self.build.root if kind == "story" else self._act_start(act)
 
     def _started(self, event: str, state: etree._Element) -> scm.GraphElement:
         self.event(event)

@@ -3,8 +3,9 @@
 A trigger is ConditionGroups (OR) of Conditions (AND). In each group a StoryboardElementState
 condition is a flow from that element's node, a SimulationTime condition at 0 a flow from the
 start, a later SimulationTime a TimeElapsed after the root; several of these meet in a
-JoinAllFinished. Every other condition is a condition node chained after them (or an opaque
-one), and a delay is a TimeElapsed. Several groups meet in a JoinOneFinished.
+JoinAllFinished. Every other condition is a condition node after them (or an opaque one); two or
+more are evaluated side by side and meet in a JoinAllFinished (a group, never a chain), and a
+delay is a TimeElapsed. Several groups meet in a JoinOneFinished.
 """
 
 from __future__ import annotations
@@ -128,14 +129,33 @@ class Trigger:
             node = self.build.add(scm.JoinAllFinished(), name)
             for before in after:
                 self.build.flow(before, node)
-        for index, (condition, delay) in enumerate(group.conditions):
-            is_last = index == len(group.conditions) - 1 and shared <= 0
-            name = final if is_last and final else str(condition.get("name") or wanted)
+        if len(group.conditions) == 1:
+            condition, delay = group.conditions[0]
+            name = final if shared <= 0 and final else str(condition.get("name") or wanted)
             node = condition_after(self.build, condition, node, name)
             node = self._delayed(node, delay - shared, name)
+        elif group.conditions:
+            node = self._all_hold(group, node, final if shared <= 0 else None, wanted)
         if shared > 0:
             node = self.timed(node, shared, final or f"{wanted}_delay", self.delay_kind, self.actor)
         return node
+
+    def _all_hold(
+        self, group: Group, start: scm.GraphElement, final: str | None, wanted: str
+    ) -> scm.GraphElement:
+        """Several conditions of one group: evaluated side by side from `start` and met in one
+        JoinAllFinished, so the AND reads as a group, not as a sequence (issue 24). `start` is
+        what the group's state and time conditions wait for (they stay true once reached)."""
+        shared = group.delay
+        ends = []
+        for condition, delay in group.conditions:
+            name = str(condition.get("name") or wanted)
+            made = condition_after(self.build, condition, start, name)
+            ends.append(self._delayed(made, delay - shared, name))
+        join = self.build.add(scm.JoinAllFinished(), final or f"{wanted}_all_hold")
+        for end in _distinct(ends):
+            self.build.flow(end, join)
+        return join
 
     def _delayed(self, node: scm.GraphElement, delay: float, wanted: str) -> scm.GraphElement:
         if delay <= 0:

@@ -49,6 +49,7 @@ import scemlmodel as scm
 from .. import io
 from ..errors import SaveError, SceMLError
 from ..executors import Deferred, Executor, open_executor
+from ..safefiles import read_input
 from .apply import FlatTemplate, copy_scenario, set_level
 from .checks import SampleChecker
 from .manifest import SampleRecord
@@ -242,7 +243,8 @@ def make_payload(config: BatchConfig) -> BatchPayload:
             for root in resource.contents:
                 # Resolving is the point; a broken reference fails in the worker as it would here.
                 list(io.unresolved_references(root))
-    inputs = tuple(sorted((str(path), path.read_bytes()) for path in files))
+    # Read again by the reading rule: the file may have been swapped for a FIFO since it loaded.
+    inputs = tuple(sorted((str(path), read_input(path)) for path in files))
     return BatchPayload(config, inputs)
 
 

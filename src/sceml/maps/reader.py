@@ -9,12 +9,14 @@ from __future__ import annotations
 
 import math
 import os
+from collections.abc import Iterable
 from pathlib import Path
 
 from lxml import etree
 
 from ..errors import LoadError
-from ..safexml import doctype_line, hardened_parser, has_dtd, max_bytes_limit, size_problem
+from ..safefiles import read_input
+from ..safexml import doctype_line, hardened_parser, has_dtd
 from .model import (
     Connection,
     Geometry,
@@ -34,9 +36,15 @@ class MapError(LoadError):
     """The map cannot be used: missing, not OpenDRIVE, or an element SceML cannot read."""
 
 
-def parse_opendrive(path: str | os.PathLike[str]) -> tuple[str, list[Road], list[Junction]]:
-    """The OpenDRIVE version ("1.7"), roads and junctions of the file at `path`."""
-    root = _root(Path(path))
+def parse_opendrive(
+    path: str | os.PathLike[str], roots: Iterable[str | os.PathLike[str]] | None = None
+) -> tuple[str, list[Road], list[Junction]]:
+    """The OpenDRIVE version ("1.7"), roads and junctions of the file at `path`.
+
+    The file is read by the one reading rule (`sceml.safefiles.read_input`): a regular file,
+    below one of `roots` when they are given, within the size limit.
+    """
+    root = _root(Path(path), roots)
     reader = _Reader(str(path))
     header = root.find("header")
     version = "1.?"
@@ -52,13 +60,9 @@ def parse_opendrive(path: str | os.PathLike[str]) -> tuple[str, list[Road], list
     return version, roads, junctions
 
 
-def _root(path: Path) -> etree._Element:
+def _root(path: Path, roots: Iterable[str | os.PathLike[str]] | None) -> etree._Element:
     try:
-        size = path.stat().st_size
-        problem = size_problem(size, max_bytes_limit())
-        if problem:
-            raise MapError(f"cannot read the map: {problem}", file=path)
-        data = path.read_bytes()
+        data = read_input(path, roots=roots, what="map", error=MapError)
     except FileNotFoundError:
         raise MapError("the map file does not exist", file=path) from None
     except IsADirectoryError:

@@ -2,8 +2,11 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
+
+from ..safefiles import reading_roots
 
 
 def is_town_name(map_text: str) -> bool:
@@ -17,17 +20,25 @@ class MapReference:
 
     text: str
     path: Path | None
+    #: The folders the map file may be read from (None: any, for a model that has no file).
+    roots: tuple[Path, ...] | None = None
 
     @property
     def is_town(self) -> bool:
         return self.path is None
 
 
-def map_reference(map_text: str | None, scenario_file: str | Path | None) -> MapReference | None:
+def map_reference(
+    map_text: str | None,
+    scenario_file: str | Path | None,
+    roots: Iterable[str | Path] | None = None,
+) -> MapReference | None:
     """What `map_text` names; a relative path is resolved from the scenario file's folder.
 
     None when no map is named. A relative path of a model that has no file (built in Python) is
-    resolved from the working directory.
+    resolved from the working directory. The map may be read from `roots`, by default the
+    reading rule's folders of the scenario file (`reading_roots`); a model without a file has
+    no such rule.
     """
     text = (map_text or "").strip()
     if not text:
@@ -38,4 +49,7 @@ def map_reference(map_text: str | None, scenario_file: str | Path | None) -> Map
     if not path.is_absolute():
         base = Path(scenario_file).resolve().parent if scenario_file is not None else Path.cwd()
         path = base / path
-    return MapReference(text, path.resolve())
+    if roots is None and scenario_file is not None:
+        roots = reading_roots(scenario_file)
+    allowed = None if roots is None else tuple(Path(root) for root in roots)
+    return MapReference(text, path.resolve(), allowed)

@@ -12,11 +12,13 @@ from __future__ import annotations
 
 import math
 import os
+from collections.abc import Iterable
 from functools import cached_property
 from pathlib import Path
 
 import numpy as np
 
+from ..safefiles import check_inside
 from .model import (
     Junction,
     LaneBand,
@@ -29,7 +31,7 @@ from .model import (
     wrap_angle,
 )
 from .planview import SAMPLE_STEP, ReferenceLine
-from .reader import parse_opendrive
+from .reader import MapError, parse_opendrive
 
 
 class RoadMap:
@@ -230,8 +232,15 @@ def _id_order(road_id: str) -> tuple[int, str]:
 _cache: dict[tuple[str, int, int], RoadMap] = {}
 
 
-def load_map(path: str | os.PathLike[str]) -> RoadMap:
-    """The map in an OpenDRIVE file; read once per process while the file is unchanged."""
+def load_map(
+    path: str | os.PathLike[str], roots: Iterable[str | os.PathLike[str]] | None = None
+) -> RoadMap:
+    """The map in an OpenDRIVE file; read once per process while the file is unchanged.
+
+    When `roots` are given, a file outside them is refused (MapError), cached or not.
+    """
+    if roots is not None:
+        check_inside(path, roots, what="map", error=MapError)
     resolved = Path(path).resolve()
     try:
         stat = resolved.stat()
@@ -240,7 +249,7 @@ def load_map(path: str | os.PathLike[str]) -> RoadMap:
         key = None  # the reader says what is wrong with the path
     if key is not None and key in _cache:
         return _cache[key]
-    version, roads, junctions = parse_opendrive(path)
+    version, roads, junctions = parse_opendrive(path, roots)
     road_map = RoadMap(resolved, version, roads, junctions)
     if key is not None:
         if len(_cache) >= 8:

@@ -365,6 +365,11 @@ def _bind_parameters(
 ) -> list[Copier]:
     """Replace each parameter reference by a copy of the value chosen for it; returns the copiers
     that made those copies, so that each copy can be traced to the value it was made from."""
+    nameless = next((p for p in definition.parameters if not p.name), None)
+    if nameless is not None:  # overrides and references find parameters by name
+        raise FlattenError(
+            f"module {definition.name!r} has a parameter without a name", **location(nameless)
+        )
     overrides = {override.parameter: override.value for override in use.overrides}
     declared = {parameter.name: parameter for parameter in definition.parameters}
     unknown = sorted(set(overrides) - set(declared))

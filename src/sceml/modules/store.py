@@ -16,6 +16,7 @@ import scemlmodel as scm
 
 from .. import io
 from ..errors import SaveError
+from ..safefiles import output_target
 from .errors import ExtractError
 from .extract import RoleSpec, extract
 from .flatten import expand
@@ -52,6 +53,10 @@ def flatten_file(
     """
     path, output = Path(path), Path(output)
     document = io.load_scenario(path, allow=allowed_roots)
+    # Every reference to another file is tried first, a node's referenceActor as much as a
+    # module's definition: each failure is told at its line, none in pyecore's words mid-way.
+    for error in io.broken_references(document):
+        raise error
     flattened = expand(document.root)
     io.save(flattened.scenario, output, origin=path)
     return FlattenReport(output, flattened.expanded, len(flattened.scenario.nodes))
@@ -114,20 +119,21 @@ def save_together(models: Sequence[tuple[EObject, Path]]) -> None:
     created: list[Path] = []
     done = False
     try:
-        for root, target in models:
-            created += io.make_folder(target.parent, target=target)
+        replaced = [output_target(target) for _, target in models]
+        for (root, target), real in zip(models, replaced, strict=True):
+            created += io.make_folder(real.parent, target=target)
             try:
                 handle, name = tempfile.mkstemp(
-                    prefix=f".{target.name}.", suffix=".tmp", dir=target.parent
+                    prefix=f".{real.name}.", suffix=".tmp", dir=real.parent
                 )
             except OSError as error:
                 raise SaveError(f"cannot write: {error.strerror}", file=target) from None
             os.close(handle)
             temporaries.append(Path(name))
             io.save(root, name)
-        for temporary, (_, target) in zip(temporaries, models, strict=True):
+        for temporary, (_, target), real in zip(temporaries, models, replaced, strict=True):
             try:
-                os.replace(temporary, target)
+                os.replace(temporary, real)
             except OSError as error:
                 raise SaveError(f"cannot write: {error.strerror}", file=target) from None
         done = True

@@ -21,6 +21,7 @@ import scemlmodel as scm
 from .. import catalog
 from ..errors import SceMLError
 from ..graph import actors, root_node, topological_order
+from ..io import allowed_roots_of
 from ..maps import PositionError, RoadMap, load_map
 from ..maps.positions import Located, centre, is_concrete, locate, nominal, spread
 from ..maps.reference import map_reference
@@ -162,7 +163,8 @@ def build_scene(scenario: scm.Scenario, scenario_file: str | Path | None) -> Map
     what is wrong with them is validation's job.
     """
     root = root_node(scenario)
-    reference = map_reference(root.map if root is not None else None, scenario_file)
+    roots = allowed_roots_of(scenario)  # as the scenario was loaded: its folders and --allow
+    reference = map_reference(root.map if root is not None else None, scenario_file, roots)
     where = str(scenario_file) if scenario_file is not None else None
     if reference is None:
         raise MapViewError(
@@ -175,7 +177,7 @@ def build_scene(scenario: scm.Scenario, scenario_file: str | Path | None) -> Map
             file=where,
         )
     scene = MapScene(
-        load_map(reference.path),
+        load_map(reference.path, reference.roots),
         scenario_title(scenario),
         str(root.level.name) if root is not None and root.level is not None else "?",
     )

@@ -11,12 +11,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Protocol
 
+from ..players.meaning import GapLimits, gap_acceleration
 from .paths import Path
-
-#: Gap keeping (Follow, Approach): how fast the speed answers a gap error, and its limits.
-GAP_GAIN = 0.6  # 1/s
-GAP_ACCELERATION = 3.0  # m/s2
-GAP_DECELERATION = 6.0  # m/s2
 
 
 @dataclass(frozen=True)
@@ -70,18 +66,25 @@ class Ramp:
 @dataclass(frozen=True)
 class GapKeeping:
     """Drive towards a gap of `distance` m (centre to centre, along the actor's heading) to
-    the `target` actor: its speed, corrected in proportion to the gap error."""
+    the `target` actor, by the players' law (`players.meaning.gap_acceleration`)."""
 
     target: str
     distance: float
+    limits: GapLimits
+    #: Stop driving (hold the speed) once the gap is within this much; None: keep it (Follow).
+    hold_within: float | None = None
 
     def next_speed(self, actor: Actor, others: Mapping[str, Actor], dt: float) -> float:
         lead = others[self.target]
-        gap = actor.gap_to(lead)
-        along = lead.speed * math.cos(lead.heading - actor.heading)
-        wanted = max(along + GAP_GAIN * (gap - self.distance), 0.0)
-        change = min(max(wanted - actor.speed, -GAP_DECELERATION * dt), GAP_ACCELERATION * dt)
-        return actor.speed + change
+        if self.hold_within is not None and abs(actor.gap_to(lead) - self.distance) < (
+            self.hold_within
+        ):
+            actor.control = Hold()
+            return actor.speed
+        acceleration = gap_acceleration(
+            actor.gap_to(lead), self.distance, actor.speed - lead.speed, self.limits
+        )
+        return min(actor.speed + acceleration * dt, self.limits.max_speed)
 
 
 class Actor:
@@ -104,7 +107,6 @@ class Actor:
         self.lateral = lateral
         self.shift: Shift | None = None
         self.speed = speed
-        self.travelled = 0.0
         self.control: SpeedControl = Hold()
         self.x = self.y = self.heading = 0.0
         self.place()
@@ -120,15 +122,28 @@ class Actor:
         self.y = py + offset * math.cos(heading)
         self.heading = heading + math.atan(slope)
 
-    def advance_to(self, speed: float, dt: float) -> None:
-        """Move one step ending at `speed`: the mean speed of the step gives the distance."""
+    def advance_to(self, speed: float, dt: float) -> bool:
+        """Move one step ending at `speed`: the mean speed of the step gives the distance.
+
+        At the end of a road without a link the actor stops, as players stop it; True when
+        it stops there in this step."""
         speed = max(speed, 0.0)
         step = (self.speed + speed) / 2.0 * dt
         self.speed = speed
+        end = self.path.end_of_road
+        if end is not None and self.d >= end - 1e-9:
+            self.speed = 0.0
+            return False
         if step > 0.0:  # standing actors (waiting for their trigger) cost nothing
-            self.d += step
-            self.travelled += step
+            # The speed is along the heading: during a lane change part of it goes sideways.
+            slope = self.shift.slope(self.d) if self.shift is not None else 0.0
+            self.d += step / math.sqrt(1.0 + slope * slope)
+            if end is not None and self.d >= end:
+                self.d, self.speed = end, 0.0
+                self.place()
+                return True
             self.place()
+        return False
 
     def follow(self, path: Path, lateral: float = 0.0) -> None:
         """Go on along a new path that starts where the actor is."""
@@ -140,6 +155,10 @@ class Actor:
         if self.shift is not None:
             self.lateral += self.shift.offset(self.d)
             self.shift = None
+
+    def velocity(self) -> tuple[float, float]:
+        """The velocity (m/s) along the heading."""
+        return self.speed * math.cos(self.heading), self.speed * math.sin(self.heading)
 
     def distance_to(self, x: float, y: float) -> float:
         return math.hypot(self.x - x, self.y - y)

@@ -3,45 +3,45 @@
 One class per kind, registered by metaclass name. `start` is called when the node is activated;
 `done` after every step (and at once) until it returns True. A maneuver *claims* the parts of
 its actor it controls (`speed`, `path`); a later maneuver claiming the same part supersedes it.
-Finishing follows the OpenSCENARIO export (docs/openscenario-mapping.md): speed changes when the
-target speed is reached, routed and trajectory maneuvers on arrival within their tolerance,
-DriveDistance when the distance is driven (counted from the node's start), Follow when the gap
-is reached (it keeps following afterwards), Overtake when the lane change back is done.
+What each kind does and when it finishes is `players.meaning`, which the export also follows:
+speed changes when the target speed is reached, routed and trajectory maneuvers on arrival within
+their tolerance, DriveDistance when the distance is driven from the node's start (after
+distance / speed seconds), Follow when the gap is first reached (it keeps following afterwards),
+Approach when it is held, Overtake when the lane change back is done.
 """
 
 from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from typing import ClassVar
 
 from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
+from ..export.entities import performance_of
 from ..params import concrete
+from ..players import meaning
 from . import lanes
 from .actors import Actor, GapKeeping, Hold, Ramp, Shift
-from .paths import LaneSpot, Path, straight
+from .paths import LaneSpot, Path, joined, straight
 from .world import World
 
 #: A lane change where the map names no lane beside the actor moves it this far.
 DEFAULT_LANE_WIDTH = 3.5  # m
-#: How close the gap of Follow/Approach must come to its distance to count as reached.
-GAP_TOLERANCE = 0.5  # m
 #: A path to a destination off the lanes goes on this far past it, straight.
 _BEYOND = 1.0
 
 
 class Behaviour:
-    """A running maneuver; subclasses set `claims` and implement `start` and `done`."""
-
-    claims: ClassVar[tuple[str, ...]] = ()
+    """A running maneuver; subclasses implement `start` and `done`. `claims` are the parts of
+    the actor it controls (`players.meaning.controls`)."""
 
     def __init__(self, node: EObject, world: World) -> None:
         self.node = node
         self.name = str(node.name)
         self.actor: Actor = world.actor(node.referenceActor, self.name)
+        self.claims = meaning.controls(node.eClass.name)
 
     def start(self, world: World) -> None:
         """Take control of the actor."""
@@ -89,22 +89,21 @@ def step_speed(actor: Actor, speed: float) -> None:
 class SpeedChange(Behaviour):
     """Change the speed linearly at `rate` to `targetSpeed` (Stop: to 0)."""
 
-    claims = ("speed",)
-
     def start(self, world: World) -> None:
         stop = isinstance(self.node, scm.Stop)
         self.target = 0.0 if stop else concrete(self.node, "targetSpeed")
         self.actor.control = Ramp(self.target, concrete(self.node, "rate"))
 
     def done(self, world: World) -> bool:
-        return abs(self.actor.speed - self.target) < 1e-9
+        return abs(self.actor.speed - self.target) < meaning.SPEED_TOLERANCE
 
 
 @kind("KeepVelocity")
 class KeepVelocity(Behaviour):
-    """Nothing changes the speed for `duration` seconds."""
+    """Hold the speed the actor has for `duration` seconds (it ends a running Follow)."""
 
     def start(self, world: World) -> None:
+        self.actor.control = Hold()
         self.until = world.t + concrete(self.node, "duration")
 
     def done(self, world: World) -> bool:
@@ -113,34 +112,36 @@ class KeepVelocity(Behaviour):
 
 @kind("DriveDistance")
 class DriveDistance(Behaviour):
-    """Step to `speed` and drive `distance` metres from the node's start."""
-
-    claims = ("speed",)
+    """Step to `speed` and drive `distance` metres from the node's start: distance / speed s."""
 
     def start(self, world: World) -> None:
-        step_speed(self.actor, concrete(self.node, "speed"))
-        self.until = self.actor.travelled + concrete(self.node, "distance")
+        speed = concrete(self.node, "speed")
+        step_speed(self.actor, speed)
+        duration = meaning.drive_distance_duration(concrete(self.node, "distance"), speed)
+        self.until = world.t + duration
 
     def done(self, world: World) -> bool:
-        return self.actor.travelled >= self.until - 1e-9
+        return world.t >= self.until - 1e-9
 
 
 @kind("Follow", "Approach")
 class GapManeuver(Behaviour):
-    """Close up to `distance` m behind the target; Follow keeps the gap afterwards."""
-
-    claims = ("speed",)
+    """Close up to `distance` m behind the target; Follow keeps the gap afterwards, Approach
+    holds its speed once the gap is held (`players.meaning`)."""
 
     def start(self, world: World) -> None:
         self.lead = world.actor(self.node.targetActor, self.name)
         self.distance = concrete(self.node, "distance")
-        self.actor.control = GapKeeping(self.lead.name, self.distance)
+        limits = meaning.gap_limits(*performance_of(self.actor.kind))
+        self.follow = isinstance(self.node, scm.Follow)
+        hold = None if self.follow else meaning.APPROACH_HOLD
+        self.actor.control = GapKeeping(self.lead.name, self.distance, limits, hold)
 
     def done(self, world: World) -> bool:
-        reached = self.actor.gap_to(self.lead) <= self.distance + GAP_TOLERANCE
-        if reached and isinstance(self.node, scm.Approach):
-            self.actor.control = Hold()
-        return reached
+        gap = self.actor.gap_to(self.lead)
+        if self.follow:
+            return meaning.follow_reached(gap, self.distance)
+        return meaning.approach_reached(gap, self.distance)
 
 
 # --- lateral --------------------------------------------------------------------------------
@@ -180,8 +181,6 @@ class LaneShift:
 class LaneChange(Behaviour):
     """Move into the lane beside, along half a cosine over `distance` m."""
 
-    claims = ("path",)
-
     def start(self, world: World) -> None:
         side = str(self.node.direction.name if self.node.direction is not None else "left")
         self.shift = LaneShift(world, self.actor, side, concrete(self.node, "distance"), self.name)
@@ -196,20 +195,25 @@ class LaneChange(Behaviour):
 class Arrival(Behaviour):
     """A maneuver that finishes when its actor comes within `tolerance` of a point."""
 
-    claims = ("path",)
     goal: tuple[float, float]
     tolerance: float
 
     def done(self, world: World) -> bool:
         return self.actor.distance_to(*self.goal) <= self.tolerance + 1e-9
 
-    def go_straight(self, points: list[tuple[float, float]]) -> None:
-        """Head straight through `points` from where the actor is, and on past the last."""
+    def go_straight(self, world: World, points: list[tuple[float, float]]) -> None:
+        """Head straight through `points` from where the actor is; past the last, on along the
+        lane there (as players go on after a trajectory), or straight on off the lanes."""
         route = [(self.actor.x, self.actor.y), *points]
         (ax, ay), (bx, by) = route[-2], route[-1]
-        length = math.hypot(bx - ax, by - ay) or 1.0
-        route.append((bx + (bx - ax) / length * _BEYOND, by + (by - ay) / length * _BEYOND))
-        self.actor.follow(straight(route))
+        heading = math.atan2(by - ay, bx - ax)
+        onward = lanes.onward(world.road_map, bx, by, heading) if world.road_map else None
+        if onward is None:
+            length = math.hypot(bx - ax, by - ay) or 1.0
+            route.append((bx + (bx - ax) / length * _BEYOND, by + (by - ay) / length * _BEYOND))
+            self.actor.follow(straight(route))
+        else:
+            self.actor.follow(joined(straight(route), onward))
 
 
 @kind("TurnLeft", "TurnRight")
@@ -228,7 +232,7 @@ class Turn(Arrival):
             world.note(
                 f"{self.name}: no {turn} turn from the actor's lane; it drives straight there"
             )
-            self.go_straight([self.goal])
+            self.go_straight(world, [self.goal])
         else:
             self.actor.follow(path, self.actor.lateral)
 
@@ -240,7 +244,7 @@ class Cross(Arrival):
     def start(self, world: World) -> None:
         self.goal = world.point(self.node.destination, f"{self.name}'s destination")
         self.tolerance = concrete(self.node, "tolerance")
-        self.go_straight([self.goal])
+        self.go_straight(world, [self.goal])
 
 
 @kind("FollowTrajectory")
@@ -256,14 +260,12 @@ class FollowTrajectory(Arrival):
             points = [(self.actor.x, self.actor.y)]
         self.goal = points[-1]
         self.tolerance = concrete(self.node, "tolerance")
-        self.go_straight(points)
+        self.go_straight(world, points)
 
 
 @kind("Overtake")
 class Overtake(Behaviour):
     """Out to the `side` lane at `speed`, past the target until `gap` m ahead, then back."""
-
-    claims = ("speed", "path")
 
     def start(self, world: World) -> None:
         self.lead = world.actor(self.node.targetActor, self.name)
@@ -277,7 +279,7 @@ class Overtake(Behaviour):
     def done(self, world: World) -> bool:
         if self.phase == "out" and self.shift.finished(world):
             self.phase = "pass"
-        if self.phase == "pass" and -self.actor.gap_to(self.lead) >= self.gap:
+        if self.phase == "pass" and self._ahead():
             back = "right" if self.side == "left" else "left"
             self.shift = LaneShift(world, self.actor, back, self.distance, self.name)
             self.phase = "back"
@@ -285,3 +287,10 @@ class Overtake(Behaviour):
 
     def release(self, world: World) -> None:
         self.actor.settle_shift()
+
+    def _ahead(self) -> bool:
+        """Near the point `gap` m ahead of the target (`players.meaning`), as the export says."""
+        lead = self.lead
+        x = lead.x + self.gap * math.cos(lead.heading)
+        y = lead.y + self.gap * math.sin(lead.heading)
+        return self.actor.distance_to(x, y) <= meaning.overtake_back_tolerance(self.gap) + 1e-9

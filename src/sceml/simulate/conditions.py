@@ -2,18 +2,19 @@
 
 A condition is evaluated only after its activation, at the activation instant and after every
 step, until it first holds. Distances are between actor reference points (centres), like the
-export's `freespace="false"`.
+export's `freespace="false"`; the time to collision is the players' (`players.meaning`), between
+the boxes.
 """
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 
 from pyecore.ecore import EObject
 
 from ..params import concrete
-from .geometry import time_to_collision_now
+from ..players import meaning
+from .geometry import free_distance_now
 from .world import World
 
 Test = Callable[[World], bool]
@@ -90,9 +91,14 @@ def time_to_collision(node: EObject, world: World) -> Test:
     threshold = concrete(node, "time")
 
     def holds(w: World) -> bool:
-        ttc = time_to_collision_now(actor, other)
-        if math.isinf(ttc):
-            return getattr(node.rule, "name", "lessThan") == "greaterThan"
-        return _compare(node.rule, ttc, threshold, None)
+        ttc = meaning.time_to_collision(
+            free_distance_now(actor, other),
+            actor.velocity(),
+            actor.speed,
+            other.velocity(),
+            other.speed,
+        )
+        # Undefined (touching, not closing in): players hold no rule then.
+        return ttc is not None and _compare(node.rule, ttc, threshold, None)
 
     return holds

@@ -1,12 +1,14 @@
 """The scheduler: SPEC §3 on a concrete scenario, one fixed time step after another.
 
-At t = 0 the root finishes and actors stand at their starts. At each instant every active
-node is checked; a node that finishes activates each successor whose incoming flows are
-satisfied (one predecessor finished for an ordinary node, all for JoinAllFinished and a
-join-all end, one for JoinOneFinished and a join-one end), and a newly activated node is
-checked at once, so zero-time chains (joins, conditions that already hold) settle in the same
-instant. Then all actors take one step, each speed decided from the same state. The run ends
-when the end node finishes or at the maximum duration.
+At t = 0 the root finishes and actors stand at their starts. A node that finishes makes each
+successor whose incoming flows are satisfied (one predecessor finished for an ordinary node,
+all for JoinAllFinished and a join-all end, one for JoinOneFinished and a join-one end) ready;
+a ready node is activated one time step later (`players.meaning.FLOW_DELAY_STEPS`), as players
+evaluate a trigger in the step after the event it waits for completed, and is checked at once.
+Each step begins by activating the nodes due at its end instant (so a maneuver acts in the
+step its node starts, as a player's action does), then all actors move, each speed decided
+from the same state, then every active node is checked. The run ends when the end node
+finishes or at the maximum duration.
 """
 
 from __future__ import annotations
@@ -20,6 +22,7 @@ from pyecore.ecore import EObject
 import scemlmodel as scm
 
 from ..graph import predecessors, successors
+from ..players.meaning import FLOW_DELAY_STEPS
 from .behaviours import Behaviour, behaviour_for
 from .conditions import Test, condition_for
 from .run import END_NODE, MAX_DURATION, NodeRecord
@@ -64,6 +67,8 @@ class Scheduler:
             state.predecessors = [self.states[p] for p in predecessors(node) if p in self.states]
             state.successors = [self.states[s] for s in successors(node) if s in self.states]
         self.active: list[NodeState] = []
+        #: Nodes whose predecessors have finished, with the instant they are activated at.
+        self.ready: list[tuple[float, NodeState]] = []
         self.owners: dict[tuple[str, str], NodeState] = {}
         self.ended = False
 
@@ -71,10 +76,28 @@ class Scheduler:
         """The root nodes finish at t = 0 and what follows them is activated."""
         self._settle([s for s in self.states.values() if isinstance(s.node, scm.RootNode)])
 
+    def activate_due(self) -> None:
+        """Activate the nodes due at the current instant, before the actors move in the step
+        it begins (as players start an event's actions in the step its trigger fires)."""
+        due = [state for when, state in self.ready if when <= self.world.t + 1e-9]
+        self.ready = [(when, state) for when, state in self.ready if when > self.world.t + 1e-9]
+        finished: list[NodeState] = []
+        for state in due:
+            finished.extend(self._activate(state))
+        self._settle(finished)
+
     def check(self) -> None:
         """Check every active node at the current instant and settle what follows."""
-        finished = [state for state in list(self.active) if self._done(state)]
-        self._settle(finished)
+        self._settle([state for state in list(self.active) if self._done(state)])
+
+    def stopped_at_road_end(self, actor: str) -> None:
+        """Note that an actor stopped at the end of its road, on the run and on every maneuver
+        of the actor then running."""
+        text = f"{actor} stopped at the end of its road at {self.world.t:.2f} s (no road on)"
+        self.world.note(text)
+        for state in self.active:
+            if state.actor == actor and isinstance(state.node, scm.Maneuver):
+                state.note = "; ".join(filter(None, [state.note, text]))
 
     def timeline(self) -> tuple[NodeRecord, ...]:
         return tuple(state.record() for state in self.states.values())
@@ -92,8 +115,13 @@ class Scheduler:
                 self.ended = True
                 return
             for successor in state.successors:
-                if successor.started is None and successor.ready():
-                    queue.extend(self._activate(successor))
+                waiting = any(successor is other for _, other in self.ready)
+                if successor.started is None and not waiting and successor.ready():
+                    when = round(self.world.t + FLOW_DELAY_STEPS * self.world.dt, 9)
+                    if FLOW_DELAY_STEPS == 0:
+                        queue.extend(self._activate(successor))
+                    else:
+                        self.ready.append((when, successor))
 
     def _finish(self, state: NodeState) -> None:
         state.finished = self.world.t
@@ -183,10 +211,12 @@ def run_schedule(
     for k in range(1, steps + 1):
         if scheduler.ended:
             return END_NODE
+        world.t = round(k * world.dt, 9)
+        scheduler.activate_due()
         speeds = [actor.control.next_speed(actor, world.actors, world.dt) for actor in actors]
         for actor, speed in zip(actors, speeds, strict=True):
-            actor.advance_to(speed, world.dt)
-        world.t = round(k * world.dt, 9)
+            if actor.advance_to(speed, world.dt):
+                scheduler.stopped_at_road_end(actor.name)
         scheduler.check()
         record()
         if progress is not None and k % PROGRESS_EVERY == 0:

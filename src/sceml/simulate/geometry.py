@@ -161,3 +161,8 @@ def _now(actor: Actor) -> Boxes:
 def time_to_collision_now(a: Actor, b: Actor) -> float:
     """Time to collision of two actors in their current state."""
     return float(time_to_collision(_now(a), _now(b))[0])
+
+
+def free_distance_now(a: Actor, b: Actor) -> float:
+    """The distance between two actors' boxes in their current state (0 while they overlap)."""
+    return float(gap(_now(a), _now(b))[0])

@@ -12,9 +12,9 @@ from weakref import WeakKeyDictionary
 
 import numpy as np
 
-from ..maps import PositionError, RoadMap
+from ..maps import LaneCoordinate, PositionError, RoadMap
 from ..maps.routes import Route, routes_from
-from .paths import LaneSpot, Path
+from .paths import LaneSpot, Path, offset_path
 
 SAMPLE_STEP = 0.5  # m of s between samples of a lane's centre line
 #: How far ahead a lane path is built; the path goes on straight after that.
@@ -76,6 +76,7 @@ def _build_lane_path(road_map: RoadMap, spot: LaneSpot, via: Route | None) -> Pa
     spots: list[LaneSpot | None] = []
     road, lane, s_from, forward = spot.road, spot.lane, spot.s, spot.forward
     travelled = 0.0
+    dead_end = False
     for _ in range(_MAX_ROADS):
         ss, xy = centre_samples(road_map, road, lane)
         s_from = min(max(s_from, float(ss[0])), float(ss[-1]))
@@ -98,9 +99,17 @@ def _build_lane_path(road_map: RoadMap, spot: LaneSpot, via: Route | None) -> Pa
             break
         following = next_lane(road_map, road, lane, forward, via)
         if following is None:
+            dead_end = _ends_here(road_map, road, forward)
             break
         road, lane, forward, s_from = following
-    return Path(np.array(points), spots)
+    return Path(np.array(points), spots, dead_end)
+
+
+def _ends_here(road_map: RoadMap, road_id: str, forward: bool) -> bool:
+    """Whether the road has no link at all at this end: the end of the road, where players
+    stop an actor. (A junction with no way on for this lane is not a dead end.)"""
+    road = road_map.road(road_id)
+    return (road.successor if forward else road.predecessor) is None
 
 
 def next_lane(
@@ -162,3 +171,35 @@ def neighbour(road_map: RoadMap, spot: LaneSpot, side: str) -> tuple[LaneSpot, f
     target = min(beside, key=lambda b: abs(b.centre - current.centre))
     shift = (target.centre - current.centre) * (1.0 if spot.forward else -1.0)
     return LaneSpot(spot.road, target.lane.id, spot.s, spot.forward), shift
+
+
+def lane_under(
+    road_map: RoadMap, x: float, y: float, heading: float
+) -> tuple[LaneCoordinate, bool] | None:
+    """The lane under a world point whose direction (either way along s) is nearest the
+    heading, and whether travel runs along s; None off the lanes.
+
+    As players do (esmini 3.6): an actor on a lane moves along it, forward unless its heading
+    is more than 90 degrees off the lane's; one facing straight across (a pedestrian waiting at
+    a kerb) walks along s.
+    """
+    best: tuple[LaneCoordinate, bool, float] | None = None
+    for coordinate in road_map.world_to_lane(x, y):
+        _, _, along = road_map.reference_line(coordinate.road_id).pose(coordinate.s)
+        relative = math.atan2(math.sin(heading - along), math.cos(heading - along))
+        closeness = abs(math.cos(relative))
+        if best is None or closeness > best[2] + 1e-9:
+            best = (coordinate, abs(relative) <= math.pi / 2 + 1e-9, closeness)
+    return None if best is None else (best[0], best[1])
+
+
+def onward(road_map: RoadMap, x: float, y: float, heading: float) -> Path | None:
+    """The way on from a point along the lane under it, at the point's offset from the lane's
+    centre; None off the lanes."""
+    found = lane_under(road_map, x, y, heading)
+    if found is None:
+        return None
+    coordinate, forward = found
+    spot = LaneSpot(coordinate.road_id, coordinate.lane_id, coordinate.s, forward)
+    lateral = coordinate.offset if forward else -coordinate.offset
+    return offset_path(lane_path(road_map, spot), lateral)

@@ -28,7 +28,12 @@ class LaneSpot:
 class Path:
     """A polyline parametrised by arc length `d` (m), straight beyond its ends."""
 
-    def __init__(self, points: np.ndarray, spots: Sequence[LaneSpot | None] | None = None) -> None:
+    def __init__(
+        self,
+        points: np.ndarray,
+        spots: Sequence[LaneSpot | None] | None = None,
+        dead_end: bool = False,
+    ) -> None:
         points = np.asarray(points, dtype=float)
         keep = np.concatenate(([True], np.hypot(*np.diff(points, axis=0).T) > 1e-9))
         points = points[keep]
@@ -42,6 +47,8 @@ class Path:
         self.length_of = np.hypot(steps[:, 0], steps[:, 1])
         self.d = np.concatenate(([0.0], np.cumsum(self.length_of)))
         self.length = float(self.d[-1])
+        #: Where the road ends without a link (players stop an actor there); None: it goes on.
+        self.end_of_road: float | None = self.length if dead_end else None
         self._d = self.d.tolist()
         self._xy = points.tolist()
         self._headings = np.arctan2(steps[:, 1], steps[:, 0]).tolist()
@@ -88,3 +95,18 @@ def straight(points: Sequence[tuple[float, float]]) -> Path:
 def heading_path(x: float, y: float, heading: float) -> Path:
     """A straight line from a point along a heading: an actor that is on no lane."""
     return Path(np.array([(x, y), (x + math.cos(heading), y + math.sin(heading))]))
+
+
+def offset_path(path: Path, lateral: float) -> Path:
+    """The same path moved `lateral` m to the left of its direction of travel."""
+    if lateral == 0.0:
+        return path
+    headings = np.array(path._headings + path._headings[-1:])
+    shifted = path.points + lateral * np.column_stack([-np.sin(headings), np.cos(headings)])
+    return Path(shifted, path.spots, path.end_of_road is not None)
+
+
+def joined(first: Path, then: Path) -> Path:
+    """`first`, then on along `then` (which starts near where `first` ends)."""
+    points = np.vstack([first.points, then.points])
+    return Path(points, [*first.spots, *then.spots], then.end_of_road is not None)

@@ -11,11 +11,13 @@ import scemlmodel as scm
 
 from ..graph import actors as scenario_actors
 from ..graph import root_node
+from ..io import allowed_roots_of
 from ..maps import RoadMap, load_map
 from ..maps.reference import map_reference
-from ..modules import flatten
+from ..modules.flatten import Flattened, expand
 from ..params import concrete
 from .engine import Scheduler, run_schedule
+from .limits import located_in, refuse_unresolved, refuse_unusable
 from .metrics import pair_metrics
 from .run import ActorInfo, Run
 from .setup import make_actor
@@ -37,8 +39,22 @@ def simulate(
 
     The map is the OpenDRIVE file the root names, relative to `scenario_file`, unless
     `road_map` is given. SimulationError when the scenario is not concrete or cannot be set up.
-    `progress` is called with (steps done, most steps) now and then on long runs.
+    `progress` is called with (steps done, most steps) now and then on long runs. Every
+    SimulationError names the file and, where it can be found, the line of what it is about.
     """
+    try:
+        return _simulate(scenario, scenario_file, step, road_map, progress)
+    except SimulationError as error:
+        raise located_in(error, scenario, scenario_file) from None
+
+
+def _simulate(
+    scenario: scm.Scenario,
+    scenario_file: str | Path | None,
+    step: float,
+    road_map: RoadMap | None,
+    progress: Callable[[int, int], None] | None,
+) -> Run:
     if not step > 0:
         raise SimulationError(f"the time step must be positive, got {step:g} s")
     root = root_node(scenario)
@@ -48,15 +64,21 @@ def simulate(
     if level != "concrete":
         raise SimulationError(
             f"the preview runs concrete scenarios; this one is {level} "
-            "(concretize or sample it first)"
+            "(concretize or sample it first)",
+            element=str(root.name),
         )
-    flat = (
-        flatten(scenario) if any(isinstance(n, scm.ModuleUse) for n in scenario.nodes) else scenario
+    refuse_unresolved(scenario)
+    flattened = (
+        expand(scenario)
+        if any(isinstance(n, scm.ModuleUse) for n in scenario.nodes)
+        else Flattened(scenario)
     )
+    refuse_unusable(flattened, step)  # before anything is allocated by what the values say
+    flat = flattened.scenario
     flat_root = root_node(flat)
     assert flat_root is not None
     if road_map is None:
-        road_map = _road_map(flat_root, scenario_file)
+        road_map = _road_map(flat_root, scenario_file, allowed_roots_of(scenario))
     world = World(road_map, {}, step)
     for actor in scenario_actors(flat):
         world.actors[str(actor.name)] = make_actor(actor, road_map)
@@ -90,8 +112,10 @@ def simulate(
     )
 
 
-def _road_map(root: scm.RootNode, scenario_file: str | Path | None) -> RoadMap | None:
-    reference = map_reference(root.map, scenario_file)
+def _road_map(
+    root: scm.RootNode, scenario_file: str | Path | None, roots: list[Path] | None
+) -> RoadMap | None:
+    reference = map_reference(root.map, scenario_file, roots)
     if reference is None or reference.path is None:
         return None  # no map, or a simulator town: world positions only
-    return load_map(reference.path)
+    return load_map(reference.path, reference.roots)

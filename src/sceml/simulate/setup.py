@@ -2,11 +2,9 @@
 
 from __future__ import annotations
 
-import math
-
 import scemlmodel as scm
 
-from ..maps import LaneCoordinate, PositionError, RoadMap
+from ..maps import PositionError, RoadMap
 from ..params import concrete
 from . import lanes
 from .actors import Actor
@@ -57,31 +55,13 @@ def _in_world(
 ) -> Actor:
     x, y = concrete(position, "x"), concrete(position, "y")
     heading = concrete(position, "h")
-    spot = _lane_under(road_map, x, y, heading) if road_map is not None else None
+    spot = lanes.lane_under(road_map, x, y, heading) if road_map is not None else None
     if spot is None or road_map is None:
         return Actor(*_identity(actor), size, heading_path(x, y, heading), speed)
     coordinate, forward = spot
     lane_spot = LaneSpot(coordinate.road_id, coordinate.lane_id, coordinate.s, forward)
     lateral = coordinate.offset if forward else -coordinate.offset
     return Actor(*_identity(actor), size, lanes.lane_path(road_map, lane_spot), speed, lateral)
-
-
-def _lane_under(
-    road_map: RoadMap, x: float, y: float, heading: float
-) -> tuple[LaneCoordinate, bool] | None:
-    """The lane under a world point whose direction (either way along s) is nearest the heading.
-
-    An actor facing across its lane (a pedestrian waiting at a kerb) stays off the lanes.
-    """
-    best: tuple[LaneCoordinate, bool, float] | None = None
-    for coordinate in road_map.world_to_lane(x, y):
-        _, _, along = road_map.reference_line(coordinate.road_id).pose(coordinate.s)
-        cosine = math.cos(heading - along)
-        if abs(cosine) < math.cos(math.radians(45)):
-            continue
-        if best is None or abs(cosine) > best[2]:
-            best = (coordinate, cosine > 0, abs(cosine))
-    return None if best is None else (best[0], best[1])
 
 
 def _identity(actor: scm.Actor) -> tuple[str, str, bool]:

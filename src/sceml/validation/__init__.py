@@ -14,17 +14,19 @@ from . import (
     opaque,
     parameters,
     plausibility,
+    players,
     readiness,
     simultaneity,
     structure,
 )
-from .engine import INTERNAL_ERROR, is_valid, iter_diagnostics, validate
+from .engine import INTERNAL_ERROR, OLDER_RELEASE, is_valid, iter_diagnostics, validate
 from .limits import DEFAULT_LIMITS, Limits, LimitsError, load_limits
 from .registry import REGISTRY, Registry, Rule, constraint
 
 __all__ = [
     "DEFAULT_LIMITS",
     "INTERNAL_ERROR",
+    "OLDER_RELEASE",
     "REGISTRY",
     "Limits",
     "LimitsError",
@@ -44,6 +46,7 @@ _RULE_MODULES = (
     modules,
     opaque,
     parameters,
+    players,
     plausibility,
     readiness,
     simultaneity,

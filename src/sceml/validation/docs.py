@@ -8,7 +8,7 @@ from __future__ import annotations
 import sys
 
 from . import REGISTRY
-from .engine import INTERNAL_ERROR
+from .engine import INTERNAL_ERROR, OLDER_RELEASE
 from .limits import DEFAULT_LIMITS, LIMIT_KEYS
 from .registry import Registry
 
@@ -19,7 +19,7 @@ INTRO = """\
 the paper's rules 1-5, and what a scenario engineer would expect). Every diagnostic carries its
 rule code, severity, message, file, line and model path. Codes are stable: S structure, A actors,
 P parameters and levels, C simultaneity, L plausibility, M modules, E export readiness, R the
-map.
+map, Y what real players can honour (`sceml.players.meaning`, docs/openscenario-mapping.md).
 
 This file is generated from the rule registry: `python -m sceml.validation.docs >
 docs/validation-rules.md`. A test fails when it is stale.
@@ -57,6 +57,10 @@ docs/validation-rules.md`. A test fails when it is stale.
   junction's connecting road is a left or right turn, more than 150 degrees a U-turn.
 - **Internal errors.** A rule that fails unexpectedly on a malformed model does not stop the run:
   it becomes a diagnostic with code `{internal}` naming the rule, and all other rules still run.
+- **Older metamodel releases.** A file saved with an earlier release of the metamodel (its nsURI
+  names the release) is migrated in memory as it is read (docs/metamodel.md). `validate` says so
+  with a warning, `{older}`, on line 1 of each such file (libraries it loaded included), listing
+  the migration's changes; `--strict` makes it an error. `sceml migrate` rewrites the file.
 """
 
 
@@ -102,7 +106,7 @@ def render(registry: Registry = REGISTRY) -> str:
         "```yaml\nPedestrian:\n  max_speed: 3.0\nFourWheeler:\n  max_deceleration: 9.0\n```\n\n"
     )
     return (
-        INTRO.format(internal=INTERNAL_ERROR)
+        INTRO.format(internal=INTERNAL_ERROR, older=OLDER_RELEASE)
         + "\n## Rules\n\n"
         + rules_table(registry)
         + "\n"

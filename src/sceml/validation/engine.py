@@ -17,6 +17,8 @@ from .limits import Limits
 from .registry import REGISTRY, Registry, Rule
 
 INTERNAL_ERROR = "SCEML-X000"
+#: A file saved with an older metamodel release, migrated as it was read (sceml.migrations).
+OLDER_RELEASE = "SCEML-V001"
 
 
 def iter_diagnostics(

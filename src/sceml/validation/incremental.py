@@ -155,6 +155,11 @@ READS: dict[str, Reads] = {
     "SCEML-R005": Reads(_VALUE, _LEVEL | Aspect.CAST),
     "SCEML-R006": Reads(_VALUE, _ROUTE),
     "SCEML-R007": Reads(_VALUE, _ROUTE),
+    # players.py: the node's speed; the earlier nodes of its actor along the flows (their names
+    # in the message), and for Y003 the actor's initial speed
+    "SCEML-Y001": Reads(_VALUE),
+    "SCEML-Y002": Reads(_SELF | _ACTORS, _SHAPE | Aspect.ROLES),
+    "SCEML-Y003": Reads(_SELF | _ACTORS, _SHAPE | Aspect.ROLES | Aspect.PARAMETERS),
     # readiness.py
     "SCEML-E001": Reads(_SELF, _LEVEL),
     "SCEML-E002": Reads(_SELF, _LEVEL),

@@ -67,7 +67,8 @@ def _scenario_reference(scenario: scm.Scenario, context: Context) -> MapReferenc
     text = (root.map or "").strip()
     if file is None and text and not is_town_name(text) and not Path(text).is_absolute():
         return None
-    return map_reference(root.map, file)
+    roots = context.document.allowed_roots if context.document is not None else None
+    return map_reference(root.map, file, roots)
 
 
 def _loaded(reference: MapReference, context: Context) -> RoadMap | MapError:
@@ -75,7 +76,7 @@ def _loaded(reference: MapReference, context: Context) -> RoadMap | MapError:
         from ..maps.roadmap import load_map  # numpy and pyclothoids only when a map is read
 
         try:
-            return load_map(reference.path)  # type: ignore[arg-type]
+            return load_map(reference.path, reference.roots)  # type: ignore[arg-type]
         except MapError as error:
             return error
 

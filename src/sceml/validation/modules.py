@@ -278,13 +278,16 @@ def binding_actor_declared(binding: scm.RoleBinding, context: Context) -> Iterat
     "SCEML-M016",
     ERROR,
     "ModuleDefinition",
-    "role names and parameter names are unique within a module definition",
+    "roles and parameters of a module definition have names, each unique within it",
 )
 def module_member_names_unique(
     definition: scm.ModuleDefinition, context: Context
 ) -> Iterator[Finding]:
     for what, members in (("roles", definition.roles), ("parameters", definition.parameters)):
-        counts = Counter(str(member.name) for member in members)
+        for member in members:
+            if not member.name:  # bindings and overrides name them: a nameless one is unusable
+                yield member, f"module {definition.name!r} has one of its {what} without a name"
+        counts = Counter(str(member.name) for member in members if member.name)
         for name, count in counts.items():
             if count > 1:
                 yield definition, f"module {definition.name!r} has {count} {what} named {name!r}"

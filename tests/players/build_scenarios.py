@@ -1,20 +1,26 @@
-"""Build the concrete scenarios that exercise every node kind in a player (issue 13).
+"""Build the scenarios that check a player keeps SceML's meaning (issues 13 and 25).
 
-    python scripts/esmini_scenarios.py OUT_DIR
-    python scripts/esmini_check.py OUT_DIR/*.xmi --esmini /path/to/esmini
+    python tests/players/build_scenarios.py [OUT_DIR]     (default: tests/players/scenarios)
 
 Together with the reference examples they cover every maneuver and condition kind, join-one
-nodes and a join-one end node, conditions after conditions, and modules nested three deep with
-joins inside. All positions lie on `maps/intersection.xodr` (docs/map.md for its layout: the
-junction is at the origin, each arm is a straight 100 m road whose s counts away from it):
+nodes and a join-one end node, conditions after conditions, modules nested three deep with
+joins inside, and the combinations whose meaning used to differ between the export, the preview
+and esmini. All positions lie on `maps/intersection.xodr` (docs/map.md: the junction is at the
+origin, each arm a straight 100 m road whose s counts away from it). The committed files must
+equal this script's output (tests/players/test_scenarios.py).
 
-  longitudinal.xmi   east arm: Accelerate, Follow, KeepVelocity, Decelerate, Approach, Stop,
-                     DriveDistance; SpeedCondition -> TimeToCollision -> InVehicleRadius
-  junction.xmi       TurnRight, TurnLeft, LaneChange, Cross, FollowTrajectory, InLocationRadius,
-                     TimeElapsed; a JoinOneFinished and a JoinAllFinished
-  join-one-end.xmi   Overtake; the end node waits for the first of three branches
-  nested.xmi         a library of its own (library/esmini-library.xmi): Outer uses Middle uses
-                     Inner, with a JoinOneFinished inside Middle, used twice
+  longitudinal.xmi        east arm: Accelerate, Follow, KeepVelocity, Decelerate, Approach, Stop,
+                          DriveDistance; SpeedCondition -> TimeToCollision -> InVehicleRadius
+  junction.xmi            TurnRight, TurnLeft, LaneChange, Cross, FollowTrajectory,
+                          InLocationRadius, TimeElapsed; a JoinOneFinished and a JoinAllFinished
+  join-one-end.xmi        Overtake; the end node waits for the first of three branches
+  nested.xmi              library/players-library.xmi: Outer uses Middle uses Inner (three deep),
+                          with a JoinOneFinished inside Middle, used twice
+  drive-after-moving.xmi  a DriveDistance that starts after the actor has driven for 3 s
+  turn-while-speeding.xmi a TurnRight while an Accelerate of the same actor runs
+  follow-in-turn.xmi      a Follow of a car that turns, while the follower turns too
+  join-one-race.xmi       two cars race; a JoinOneFinished of their arrivals ends it
+  parallel.xmi            two actors, each with a lateral and a longitudinal maneuver at once
 """
 
 from __future__ import annotations
@@ -28,7 +34,9 @@ import scemlmodel as scm
 from sceml import io
 from sceml.build import LibraryBuilder, ScenarioBuilder, lane, world
 
-MAP = Path(__file__).resolve().parent.parent / "maps" / "intersection.xodr"
+HERE = Path(__file__).resolve().parent
+MAP = HERE.parent.parent / "maps" / "intersection.xodr"
+OUT = HERE / "scenarios"
 DATE = "2026-01-01T00:00:00"
 NORTH, EAST, SOUTH, WEST = "1", "2", "3", "4"
 
@@ -149,9 +157,84 @@ def build_join_one_end(map_text: str) -> scm.Scenario:
     return b.scenario
 
 
+def build_drive_after_moving(map_text: str) -> scm.Scenario:
+    """Issue 25, 1: 20 m driven from where the node starts, after 3 s at 8 m/s."""
+    b = new_scenario("DriveAfterMoving", map_text, "The ego drives 3 s, then 20 m more at 8 m/s.")
+    ego = b.actor("Car", "ego", ego=True, start=lane(EAST, -1, 5.0), speed=8.0)
+    b.chain(
+        b.root,
+        b.add("KeepVelocity", ego, duration=3.0),
+        b.add("DriveDistance", ego, distance=20.0, speed=8.0),
+        b.add("Stop", ego, rate=4.0),
+        b.end,
+    )
+    return b.scenario
+
+
+def build_turn_while_speeding(map_text: str) -> scm.Scenario:
+    """Issue 25, 2: a right turn while the same actor still accelerates."""
+    b = new_scenario("TurnWhileSpeeding", map_text, "The ego speeds up while it turns right.")
+    ego = b.actor("Car", "ego", ego=True, start=lane(SOUTH, 1, 25.0), speed=3.0)
+    faster = b.add("Accelerate", ego, targetSpeed=9.0, rate=1.0)
+    turn = b.add("TurnRight", ego, destination=world(44.0, -1.75), tolerance=3.0)
+    b.chain(b.root, faster)
+    b.chain(b.root, turn)
+    b.chain(b.join_all(faster, turn), b.end)
+    return b.scenario
+
+
+def build_follow_in_turn(map_text: str) -> scm.Scenario:
+    """Issue 25, 2: the ego follows a car through a right turn, turning itself."""
+    b = new_scenario("FollowInTurn", map_text, "The ego follows a car that turns right.")
+    ego = b.actor("Car", "ego", ego=True, start=lane(SOUTH, 1, 40.0), speed=6.0)
+    lead = b.actor("Car", "lead", start=lane(SOUTH, 1, 20.0), speed=6.0)
+    b.chain(
+        b.root,
+        b.add("TurnRight", lead, destination=world(54.0, -1.75), tolerance=3.0),
+        b.add("Stop", lead, rate=2.0),
+        b.end,
+    )
+    follow = b.add("Follow", ego, target=lead, distance=15.0)
+    turn = b.add("TurnRight", ego, destination=world(34.0, -1.75), tolerance=3.0)
+    b.chain(b.root, follow)
+    b.chain(b.root, turn)
+    b.chain(b.join_all(follow, turn), b.end)
+    return b.scenario
+
+
+def build_join_one_race(map_text: str) -> scm.Scenario:
+    """Two cars race along parallel arms; the first arrival ends the scenario."""
+    b = new_scenario("JoinOneRace", map_text, "Two cars race; the first to arrive ends it.")
+    ego = b.actor("Car", "ego", ego=True, start=lane(EAST, -1, 5.0), speed=0.0)
+    rival = b.actor("Car", "rival", start=lane(WEST, -1, 5.0), speed=0.0)
+    ego_there = b.add("InLocationRadius", ego, position=lane(EAST, -1, 60.0), radius=2.0)
+    rival_there = b.add("InLocationRadius", rival, position=lane(WEST, -1, 60.0), radius=2.0)
+    b.chain(b.root, b.add("Accelerate", ego, targetSpeed=10.0, rate=3.0), ego_there)
+    b.chain(b.root, b.add("DriveDistance", rival, distance=70.0, speed=9.0), rival_there)
+    b.chain(b.join_one(ego_there, rival_there), b.end)
+    return b.scenario
+
+
+def build_parallel(map_text: str) -> scm.Scenario:
+    """Two actors, each changing lane while its speed changes."""
+    b = new_scenario("Parallel", map_text, "Two cars each change lane while changing speed.")
+    ego = b.actor("Car", "ego", ego=True, start=lane(EAST, -1, 5.0), speed=6.0)
+    other = b.actor("Car", "other", start=lane(WEST, -1, 5.0), speed=8.0)
+    moves = [
+        b.add("LaneChange", ego, direction="left", distance=30.0),
+        b.add("Accelerate", ego, targetSpeed=10.0, rate=2.0),
+        b.add("LaneChange", other, direction="left", distance=25.0),
+        b.add("Decelerate", other, targetSpeed=4.0, rate=2.0),
+    ]
+    for move in moves:
+        b.chain(b.root, move)
+    b.chain(b.join_all(*moves), b.end)
+    return b.scenario
+
+
 def build_library() -> scm.Library:
     """Inner in Middle in Outer, each with a role `driver` and a parameter passed down."""
-    library = LibraryBuilder("esmini checks", "Modules nested three deep, with joins inside.")
+    library = LibraryBuilder("player checks", "Modules nested three deep, with joins inside.")
     inner = library.module("Inner", "Wait, then wait for a speed.")
     driver = inner.role("driver", "FourWheeler")
     inner.chain(
@@ -200,14 +283,20 @@ def build_nested(map_text: str, library: scm.Library) -> scm.Scenario:
 
 def build_all(out: Path) -> list[Path]:
     """Write every scenario (and the library they use) under `out`."""
-    map_text = Path(os.path.relpath(MAP, out.resolve())).as_posix()
+    # Relative to the committed folder, so that a build elsewhere (the test's) is the same bytes.
+    map_text = Path(os.path.relpath(MAP, OUT)).as_posix()
     library = build_library()
-    written = [io.save(library, out / "library" / "esmini-library.xmi")]
+    written = [io.save(library, out / "library" / "players-library.xmi")]
     scenarios = {
         "longitudinal.xmi": build_longitudinal(map_text),
         "junction.xmi": build_junction(map_text),
         "join-one-end.xmi": build_join_one_end(map_text),
         "nested.xmi": build_nested(map_text, library),
+        "drive-after-moving.xmi": build_drive_after_moving(map_text),
+        "turn-while-speeding.xmi": build_turn_while_speeding(map_text),
+        "follow-in-turn.xmi": build_follow_in_turn(map_text),
+        "join-one-race.xmi": build_join_one_race(map_text),
+        "parallel.xmi": build_parallel(map_text),
     }
     for name, scenario in scenarios.items():
         written.append(io.save(scenario, out / name))
@@ -217,7 +306,7 @@ def build_all(out: Path) -> list[Path]:
 def main(argv: list[str] | None = None) -> None:
     """Command-line entry point."""
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0] if __doc__ else None)
-    parser.add_argument("out", type=Path, help="folder to write the scenarios into")
+    parser.add_argument("out", type=Path, nargs="?", default=OUT, help="folder to write into")
     for path in build_all(parser.parse_args(argv).out):
         print(path)
 

@@ -1,0 +1,199 @@
+"""Positions SceML has no class for, computed as the Lane or World position they stand for.
+
+SceML 1.0 knows WorldPosition and LanePosition. A RoadPosition is the lane position of its
+(s, t) on the map; in Init, where every entity's place is known, a RelativeLanePosition,
+RelativeRoadPosition, RelativeWorldPosition or RelativeObjectPosition is the position it names
+relative to an entity already placed. The relative meaning is lost (reported as guessed), the
+start is not: a concrete scenario needs one for every actor. Later in the story the entity has
+moved, so there these stay unresolved (None) and the caller keeps the element opaque.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from lxml import etree
+
+import scemlmodel as scm
+
+from ..maps.model import PositionError, WorldPose
+from . import traced
+from .context import Build, last_name
+from .positions import number, position
+
+#: Position kinds that name an entity, readable only where that entity's place is known.
+RELATIVE = frozenset(
+    {
+        "RelativeLanePosition",
+        "RelativeRoadPosition",
+        "RelativeWorldPosition",
+        "RelativeObjectPosition",
+    }
+)
+
+
+@dataclass(frozen=True)
+class _Lane:
+    """Where an entity stands on the map: road, lane, s, offset and its world pose."""
+
+    road: str
+    lane: int
+    s: float
+    offset: float
+    pose: WorldPose
+
+
+def place(build: Build, holder: etree._Element | None, *, initial: bool) -> scm.Position | None:
+    """The SceML position of a `<Position>` (or its holder); None when it cannot be computed.
+
+    `initial`: read in Init, where relative positions can be resolved.
+    """
+    plain = position(holder)
+    if isinstance(plain, scm.LanePosition) and build.road_map is not None:
+        return _in_its_lane(build, plain, holder)
+    if plain is not None or holder is None:
+        return plain
+    element = holder if holder.tag == "Position" else holder.find("Position")
+    kind = None if element is None else next((c for c in element if isinstance(c.tag, str)), None)
+    if kind is None or build.road_map is None and kind.tag != "RelativeWorldPosition":
+        return None
+    if kind.tag in RELATIVE and not initial:
+        return None
+    try:
+        made = _compute(build, kind)
+    except (PositionError, ValueError, KeyError, ZeroDivisionError):
+        return None
+    if made is not None:
+        build.report.add(
+            "guessed",
+            f"<{kind.tag}> computed as the {made.eClass.name} {_text(made)} it stands for at "
+            "the start (SceML has no such position; the relative meaning is not kept)",
+            build.where(kind),
+        )
+    return made
+
+
+def _in_its_lane(
+    build: Build, given: scm.LanePosition, holder: etree._Element | None
+) -> scm.LanePosition:
+    """A lane position whose offset reaches into another lane, as that lane's position (the
+    same point: players place it there, SceML's map rules want the lane it lies in)."""
+    assert build.road_map is not None
+    offset = float(given.offset.value) if given.offset is not None else 0.0
+    try:
+        band = build.road_map.band(str(given.roadId), int(given.laneId), float(given.s.value))
+        if abs(offset) <= band.width / 2 + 1e-6:
+            return given
+        moved = _on_road(build, str(given.roadId), float(given.s.value), band.centre + offset)
+    except (PositionError, ValueError):
+        return given
+    if moved is None or isinstance(given.s.value, traced.Traced):
+        return given  # off the road, or a distributed s: left as written
+    where = None if holder is None else holder.find(".//LanePosition")
+    build.report.add(
+        "guessed",
+        f"lane {given.laneId} with offset {offset:g} m lies in lane {moved.laneId}: "
+        f"read as {_text(moved)}",
+        None if where is None else build.where(where),
+    )
+    return moved
+
+
+def _compute(build: Build, kind: etree._Element) -> scm.Position | None:
+    tag = kind.tag
+    if tag == "RoadPosition":
+        return _on_road(build, str(kind.get("roadId")), number(kind, "s"), number(kind, "t"))
+    if tag not in RELATIVE:
+        return None
+    anchor = _anchor(build, kind)
+    if anchor is None:
+        return None
+    if tag == "RelativeLanePosition":
+        ds = number(kind, "ds", 0.0) if kind.get("ds") else number(kind, "dsLane", 0.0)
+        lane = _lane_after(anchor.lane, int(number(kind, "dLane")))
+        return scm.LanePosition(
+            roadId=anchor.road,
+            laneId=lane,
+            s=scm.Value(value=anchor.s + ds),
+            offset=scm.Value(value=number(kind, "offset", 0.0)),
+        )
+    if tag == "RelativeRoadPosition":
+        assert build.road_map is not None
+        t = build.road_map.band(anchor.road, anchor.lane, anchor.s).centre + anchor.offset
+        return _on_road(build, anchor.road, anchor.s + number(kind, "ds"), t + number(kind, "dt"))
+    dx, dy = number(kind, "dx"), number(kind, "dy")
+    h = anchor.pose.heading
+    if tag == "RelativeObjectPosition":
+        dx, dy = dx * math.cos(h) - dy * math.sin(h), dx * math.sin(h) + dy * math.cos(h)
+    return scm.WorldPosition(
+        x=scm.Value(value=anchor.pose.x + dx),
+        y=scm.Value(value=anchor.pose.y + dy),
+        z=scm.Value(value=0.0),
+        h=_heading(kind, h),
+    )
+
+
+def _on_road(build: Build, road_id: str, s: float, t: float) -> scm.LanePosition | None:
+    """The lane position of a road coordinate: the lane whose band holds t at s."""
+    assert build.road_map is not None
+    road = build.road_map.road(road_id)
+    for band in build.road_map.bands(road, s):
+        low, high = sorted((band.inner, band.outer))
+        if band.lane.id != 0 and band.width > 0 and low - 1e-9 <= t <= high + 1e-9:
+            return scm.LanePosition(
+                roadId=road.id,
+                laneId=band.lane.id,
+                s=scm.Value(value=s),
+                offset=scm.Value(value=t - band.centre),
+            )
+    return None
+
+
+def _lane_after(lane: int, delta: int) -> int:
+    """`lane` moved by `delta` lanes, skipping the reference line's lane 0."""
+    moved = lane + delta
+    if lane < 0 <= moved or moved <= 0 < lane:
+        moved += 1 if delta > 0 else -1
+    return moved
+
+
+def _anchor(build: Build, kind: etree._Element) -> _Lane | None:
+    """Where the entity a relative position names starts (it must be placed already)."""
+    actor = build.actors.get(last_name(str(kind.get("entityRef"))))
+    start = None if actor is None else actor.startPosition
+    road_map = build.road_map
+    if isinstance(start, scm.LanePosition) and road_map is not None:
+        s, offset = float(start.s.value), float(start.offset.value) if start.offset else 0.0
+        pose = road_map.lane_to_world(str(start.roadId), int(start.laneId), s, offset)
+        return _Lane(str(start.roadId), int(start.laneId), s, offset, pose)
+    if isinstance(start, scm.WorldPosition):
+        x, y = float(start.x.value), float(start.y.value)
+        heading = float(start.h.value) if start.h is not None else 0.0
+        found = [] if road_map is None else road_map.world_to_lane(x, y)
+        if not found:
+            if kind.tag in ("RelativeWorldPosition", "RelativeObjectPosition"):
+                return _Lane("", 0, 0.0, 0.0, WorldPose(x, y, heading))
+            return None
+        lane = found[0]
+        return _Lane(lane.road_id, lane.lane_id, lane.s, lane.offset, WorldPose(x, y, heading))
+    return None
+
+
+def _heading(kind: etree._Element, entity: float) -> scm.Value | None:
+    """The heading an Orientation gives (relative ones to the entity's), else the entity's."""
+    orientation = kind.find("Orientation")
+    if orientation is None or orientation.get("h") is None:
+        return scm.Value(value=entity)
+    h = number(orientation, "h")
+    return scm.Value(value=h if orientation.get("type") == "absolute" else entity + h)
+
+
+def _text(made: scm.Position) -> str:
+    if isinstance(made, scm.LanePosition):
+        offset = made.offset.value if made.offset is not None else 0.0
+        return (
+            f"(road {made.roadId}, lane {made.laneId}, s {made.s.value:.2f}, offset {offset:.2f})"
+        )
+    assert isinstance(made, scm.WorldPosition)
+    return f"(x {made.x.value:.2f}, y {made.y.value:.2f})"

@@ -1,0 +1,96 @@
+"""What real players can honour: combinations whose meaning no OpenSCENARIO encoding keeps.
+
+The meaning of each maneuver is `sceml.players.meaning`; the export writes it so that players
+(esmini 3.6) do it. Where no encoding does, these rules say so with a code, never a silent
+change of meaning (issue 25).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from pyecore.ecore import EObject
+
+import scemlmodel as scm
+
+from ..diagnostics import Severity
+from ..graph import reachable
+from ..params import is_single_value
+from .context import Context
+from .registry import Finding, constraint
+
+_ROUTED = ("TurnLeft", "TurnRight", "Cross", "FollowTrajectory")
+_SOURCE = "issue 25 (players.meaning)"
+
+
+def _single(value: scm.ParameterValue | None) -> float | None:
+    if value is None or not is_single_value(value):
+        return None
+    number = getattr(value, "value", None)
+    return float(number) if number is not None else None
+
+
+def _earlier_of_same_actor(node: scm.ActionNode) -> Iterator[scm.ActionNode]:
+    """The nodes of the node's actor that come before it on some path from the root."""
+    actor = node.referenceActor
+    for before in reachable([node], backwards=True) - {node}:
+        if isinstance(before, scm.ActionNode) and before.referenceActor is actor:
+            yield before
+
+
+@constraint(
+    "SCEML-Y001",
+    Severity.ERROR,
+    "DriveDistance",
+    "a DriveDistance drives faster than 0 m/s: players finish it distance / speed seconds after "
+    "it starts, which never comes at 0 m/s (use Stop, or a condition, to wait)",
+    source=_SOURCE,
+    through_modules=True,
+)
+def drive_distance_moves(node: scm.DriveDistance, context: Context) -> Iterator[Finding]:
+    if _single(node.speed) == 0.0:
+        yield node, f"{node.name!r} drives at 0 m/s: its distance is never driven"
+
+
+@constraint(
+    "SCEML-Y002",
+    Severity.WARNING,
+    ("TurnLeft", "TurnRight"),
+    "a turn comes before every other routed or trajectory maneuver of its actor: the exported "
+    "route starts at the actor's start position (players resolve a route's waypoints when they "
+    "load the file), so after an earlier turn, Cross or FollowTrajectory the actor may no "
+    "longer be on it; use FollowTrajectory through the junction instead",
+    source=_SOURCE,
+    through_modules=True,
+)
+def turn_starts_from_the_start(node: scm.RoutedManeuver, context: Context) -> Iterator[Finding]:
+    earlier = sorted(
+        str(before.name) for before in _earlier_of_same_actor(node) if before.eClass.name in _ROUTED
+    )
+    if earlier:
+        yield (
+            node,
+            f"{node.name!r} comes after {', '.join(map(repr, earlier))} of the same actor: "
+            "players route it from the actor's start position",
+        )
+
+
+@constraint(
+    "SCEML-Y003",
+    Severity.WARNING,
+    "DriveDistance",
+    "for the carla profile, a DriveDistance's actor has not moved before it: scenario_runner "
+    "counts the distance from the act's start, so what was driven before counts too",
+    source=_SOURCE,
+)
+def carla_drive_distance_from_rest(node: scm.DriveDistance, context: Context) -> Iterator[Finding]:
+    if context.osc_profile != "carla":
+        return
+    actor = node.referenceActor
+    moving = isinstance(actor, scm.Actor) and (_single(actor.initialSpeed) or 0.0) > 0.0
+    moved_by: list[EObject] = [
+        before for before in _earlier_of_same_actor(node) if isinstance(before, scm.Maneuver)
+    ]
+    if moving or moved_by:
+        why = "starts moving" if moving else f"moves in {moved_by[0].name!r} first"
+        yield node, f"{node.name!r}: its actor {why}; scenario_runner counts that distance too"
