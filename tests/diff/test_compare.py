@@ -10,7 +10,7 @@ from pathlib import Path
 from diff.conftest import actor, node
 
 import scemlmodel as scm
-from sceml import params
+from sceml import io, params
 from sceml.diff import compare_files
 from sceml.diff.words import describe
 
@@ -145,3 +145,17 @@ def test_a_missing_side_lists_everything_as_added_or_removed(uis2: Path) -> None
     # UIS2: 3 actors, 8 nodes (root, end, 5 action nodes, one module use), 9 flows.
     assert sum(c.action == "added" for c in added) == len(added) == 3 + 8 + 9
     assert {c.action for c in removed} == {"removed"} and len(removed) == 20
+
+
+def test_a_file_of_an_older_metamodel_release_is_compared_after_migration(
+    examples_copy: Path,
+) -> None:
+    kept = Path(__file__).resolve().parents[2] / "metamodel/history/1.0/examples"
+    old = examples_copy / "uis2-release-1.0.xmi"
+    old.write_bytes((kept / "uis2-logical.xmi").read_bytes())
+    assert "metamodel/1.0" in old.read_text()
+    current = io.load_scenario(old).root  # migrated in memory
+    node(current, "TurnLeft_1").tolerance = params.value(5.0)
+    new = io.save(current, examples_copy / "uis2-current.xmi")
+    assert "metamodel/1.0" not in new.read_text()
+    assert lines(old, new) == ["~ TurnLeft_1.tolerance: 3 -> 5 m"]
