@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
+from editor.servers import Server, kill_all
 
 from sceml.editor import EditorSession, SessionOptions
 
@@ -31,3 +33,11 @@ def uis1(open_example) -> EditorSession:
 def uis2(open_example) -> EditorSession:
     """A session on a copy of UIS2 (concrete), which uses CrossingManeuver."""
     return open_example("uis2-concrete.xmi")
+
+
+@pytest.fixture
+def servers() -> Iterator[list[Server]]:
+    """Real `sceml edit` processes a test starts with `start(servers, path)`; killed after it."""
+    started: list[Server] = []
+    yield started
+    kill_all(started)

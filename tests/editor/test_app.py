@@ -84,19 +84,19 @@ def test_save_writes_a_file_that_loads_back_equal_and_valid(
     assert not [d for d in found if d.severity is Severity.ERROR]
 
 
-def test_export_writes_xsd_valid_openscenario(client: TestClient, tmp_path: Path) -> None:
-    target = tmp_path / "uis1.xosc"
+def test_export_writes_xsd_valid_openscenario(client: TestClient, examples_copy: Path) -> None:
+    target = examples_copy / "uis1.xosc"
     answer = client.post("/api/export", json={"version": "1.2", "path": str(target)})
     assert answer.status_code == 200 and answer.json() == {"path": str(target), "version": "1.2"}
     assert schema.validate_tree(schema.parse_file(target), "1.2") == []
 
 
-def test_a_refused_export_is_422_with_diagnostics(examples_copy: Path, tmp_path: Path) -> None:
+def test_a_refused_export_is_422_with_diagnostics(examples_copy: Path) -> None:
     client = client_for(examples_copy / "uis1-logical.xmi")
-    answer = client.post("/api/export", json={"path": str(tmp_path / "x.xosc")})
+    answer = client.post("/api/export", json={"path": str(examples_copy / "x.xosc")})
     assert answer.status_code == 422
     assert answer.json()["diagnostics"] and answer.json()["error"]
-    assert not (tmp_path / "x.xosc").exists()
+    assert not (examples_copy / "x.xosc").exists()
 
 
 def test_open_with_unsaved_changes_is_409_unless_discarded(

@@ -12,6 +12,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from sceml.editor import EditorSession, OperationError
+from sceml.editor.view import NodeCache
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 KINDS = ["Accelerate", "Stop", "LaneChange", "TimeElapsed", "JoinAllFinished", "Cross"]
@@ -99,3 +100,40 @@ def test_undo_all_and_redo_all_give_the_same_bytes(data: st.DataObject, requests
         for _ in range(steps):
             session.redo()
         assert saved_bytes(session) == after
+
+
+def fresh_view(session: EditorSession) -> dict[str, Any]:
+    """The view listed from scratch, every node anew (what the node cache must equal)."""
+    kept = session._cache
+    session._cache = NodeCache()
+    try:
+        return session.view()
+    finally:
+        session._cache = kept
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(data=st.data(), requests=st.integers(1, 8))
+def test_the_view_after_any_edit_equals_one_listed_from_scratch(
+    data: st.DataObject, requests: int
+) -> None:
+    with tempfile.TemporaryDirectory() as folder:
+        shutil.copytree(EXAMPLES, Path(folder) / "examples", ignore=shutil.ignore_patterns("*.py"))
+        session = EditorSession()
+        view = session.open(Path(folder) / "examples" / "uis2-concrete.xmi")
+        for _ in range(requests):
+            move = data.draw(st.sampled_from(["ops", "ops", "rename actor", "undo", "redo"]))
+            try:
+                if move == "undo":
+                    view = session.undo()
+                elif move == "redo":
+                    view = session.redo()
+                elif move == "rename actor" and view["actors"]:
+                    actor = data.draw(st.sampled_from(view["actors"]))["id"]
+                    rename = {"op": "set_actor", "actor": actor, "field": "name", "value": "x9"}
+                    view = session.apply([rename])
+                else:
+                    view = session.apply([draw_op(data, view)])
+            except OperationError:
+                view = session.view()
+            assert view["nodes"] == fresh_view(session)["nodes"]

@@ -87,9 +87,10 @@ def test_palette_groups_and_libraries(uis2: EditorSession) -> None:
     modules = [i["module"] for i in palette[5]["items"]]
     assert "CrossingManeuver" in modules and palette[5]["items"][0]["kind"] == "ModuleUse"
     crossing = next(i for i in palette[5]["items"] if i["module"] == "CrossingManeuver")
+    # UIS2's actors: ego and car are Cars (FourWheelers), pedestrian a Pedestrian.
     assert crossing["roles"] == [
-        {"role": "crosser", "allowedKinds": ["TwoWheeler", "Pedestrian"]},
-        {"role": "trigger", "allowedKinds": ["FourWheeler"]},
+        {"role": "crosser", "allowedKinds": ["TwoWheeler", "Pedestrian"], "actors": ["pedestrian"]},
+        {"role": "trigger", "allowedKinds": ["FourWheeler"], "actors": ["ego", "car"]},
     ]
 
 

@@ -14,6 +14,7 @@ from pathlib import Path
 
 import pytest
 from browser import CHROMIUM, CHROMIUM_ARGS
+from editor.servers import Server, kill_all
 
 SCEML = Path(sys.executable).parent / "sceml"
 URL = re.compile(r"http://127\.0\.0\.1:\d+/")
@@ -85,6 +86,24 @@ def page(browser: object) -> Iterator[object]:
     page.set_default_timeout(10_000)
     errors: list[str] = []
     page.on("pageerror", lambda error: errors.append(str(error)))
+    # The page must work under its own Content-Security-Policy (a refusal is logged, not thrown);
+    # a refused frame is what test_a_framed_page_cannot_act wants.
+    page.on(
+        "console",
+        lambda message: (
+            "Content Security Policy" in message.text
+            and not message.text.startswith("Framing ")
+            and errors.append(message.text)
+        ),
+    )
     yield page
     context.close()
     assert errors == [], f"errors in the page: {errors}"
+
+
+@pytest.fixture
+def servers() -> Iterator[list[Server]]:
+    """Real `sceml edit` processes a test starts with `start(servers, path)`; killed after it."""
+    started: list[Server] = []
+    yield started
+    kill_all(started)

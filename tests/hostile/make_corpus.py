@@ -561,9 +561,39 @@ def _config_cases() -> list[Case]:
     ]
 
 
+def _recording_cases() -> list[Case]:
+    """Recorded drives (`sceml extract`) that cannot be used."""
+    header = b"time,actor,x,y,heading,speed\n"
+    return [
+        Case(
+            "recording_invalid_utf8.csv",
+            header + b"0,ego\xff,1,2,0,0\n",
+            "extract",
+            2,
+            "not valid UTF-8",
+        ),
+        Case(
+            "recording_bad_number.csv",
+            header + b"0,ego,1,2,0,0\n0.1,ego,1e999,2,0,0\n",
+            "extract",
+            2,
+            "x is not finite",
+            3,
+        ),
+        Case(
+            "recording_unknown_format.csv",
+            b"when,who,where\n1,2,3\n",
+            "extract",
+            2,
+            "cannot tell the recording's format",
+            1,
+        ),
+    ]
+
+
 def cases() -> list[Case]:
     """Every case of the corpus, in MANIFEST order."""
-    return _xml_cases() + _config_cases()
+    return _xml_cases() + _config_cases() + _recording_cases()
 
 
 def manifest(all_cases: list[Case]) -> str:

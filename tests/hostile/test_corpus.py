@@ -48,6 +48,14 @@ ENTRY_POINTS: dict[str, Callable[[Path, Path], list[str]]] = {
     "import": lambda file, out: ["import", str(file), "-o", str(out / "imported.xmi")],
     "migrate": lambda file, out: ["migrate", str(file), "-o", str(out / "migrated.xmi")],
     "check-run": lambda file, out: ["check-run", str(file), "--log", str(PLAYER_LOG)],
+    "extract": lambda file, out: [
+        "extract",
+        str(file),
+        "-o",
+        str(out / "extracted.xmi"),
+        "--map",
+        str(EXAMPLES.parent / "maps" / "intersection.xodr"),
+    ],
     "diff": lambda file, out: ["diff", str(EXAMPLES / "uis1-concrete.xmi"), str(file)],
     "merge": lambda file, out: [
         "merge",

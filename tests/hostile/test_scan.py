@@ -24,6 +24,8 @@ XOSC = HERE.parent / "export" / "golden" / "uis1-1.3-generic.xosc"
 CONCRETE, LOGICAL = EXAMPLES / "uis1-concrete.xmi", EXAMPLES / "uis1-logical.xmi"
 #: A recorded esmini log of UIS2 at 1.0, for `check-run`.
 PLAYER_LOG = HERE.parent / "players" / "data" / "uis2-concrete-1.0.log.txt"
+RECORDING = HERE.parent / "extract" / "data" / "uis1-esmini.csv"
+MAP = EXAMPLES.parent / "maps" / "intersection.xodr"
 
 #: Each command with good arguments: (input file, arguments after it, given the output folder).
 COMMANDS: dict[str, tuple[Path, Callable[[Path], list[str]]]] = {
@@ -37,6 +39,7 @@ COMMANDS: dict[str, tuple[Path, Callable[[Path], list[str]]]] = {
     "check-xosc": (XOSC, lambda out: ["--no-quality-checker", "-o", str(out / "report.txt")]),
     "import": (XOSC, lambda out: ["-o", str(out / "i.xmi")]),
     "check-run": (EXAMPLES / "uis2-concrete.xmi", lambda out: ["--log", str(PLAYER_LOG)]),
+    "extract": (RECORDING, lambda out: ["-o", str(out / "e.xmi"), "--map", str(MAP)]),
     "concretize": (
         LOGICAL,
         lambda out: [

@@ -71,6 +71,14 @@ WRITERS: dict[str, Callable[[Path], list[str]]] = {
         "-o",
         str(out / "a.xmi"),
     ],
+    "extract": lambda out: [
+        "extract",
+        str(Path(__file__).resolve().parents[1] / "extract/data/uis1-esmini.csv"),
+        "--map",
+        str(EXAMPLES.parent / "maps" / "intersection.xodr"),
+        "-o",
+        str(out / "a.xmi"),
+    ],
     "check-xosc": lambda out: [
         "check-xosc",
         "--no-quality-checker",

@@ -5,9 +5,10 @@ import { useCallback, useEffect, useMemo, useRef, useState } from "react";
 import { api, ApiError } from "./api";
 import { Diagram } from "./canvas/Diagram";
 import { ExportDialog, ExtractDialog, OpenDialog, UseModuleDialog, type ExportResult } from "./dialogs/dialogs";
+import { RecoveryDialog } from "./dialogs/RecoveryDialog";
 import { pasteOffset } from "./lib/clipboard";
 import type { Direction } from "./lib/layout";
-import { Palette } from "./panels/Palette";
+import { Palette, PALETTE_SEARCH_ID } from "./panels/Palette";
 import { Problems } from "./panels/Problems";
 import { Properties } from "./panels/Properties";
 import { Toolbar } from "./panels/Toolbar";
@@ -26,6 +27,7 @@ type DialogState =
   | null;
 
 const DIRECTION_KEY = "sceml-layout-direction";
+const BACK_KEY = "sceml-back-to";
 
 function storedDirection(): Direction {
   return localStorage.getItem(DIRECTION_KEY) === "RIGHT" ? "RIGHT" : "DOWN";
@@ -48,6 +50,8 @@ export function Editor() {
   const [dialog, setDialog] = useState<DialogState>(null);
   const [clipboard, setClipboard] = useState<{ count: number; pastes: number }>({ count: 0, pastes: 0 });
   const canvas = useRef<HTMLDivElement>(null);
+  // The recovery offer the user put off with Escape (it stays on the server until answered).
+  const [recoveryLater, setRecoveryLater] = useState<string | null>(null);
 
   const editable = view !== null && !view.readOnly;
   const selectedNodes = useMemo(() => diagram.nodes.filter((node) => node.selected), [diagram.nodes]);
@@ -58,6 +62,19 @@ export function Editor() {
   useEffect(() => {
     document.title = view ? `${view.dirty ? "• " : ""}SceML — ${view.document.name}` : "SceML";
   }, [view]);
+  // Text typed into a field without Enter is committed when the page goes away (reload, close):
+  // blurring commits it, and the request is sent with keepalive, so it reaches the server.
+  useEffect(() => {
+    const commitFocused = () => {
+      if (document.activeElement instanceof HTMLInputElement) document.activeElement.blur();
+    };
+    window.addEventListener("beforeunload", commitFocused);
+    window.addEventListener("pagehide", commitFocused);
+    return () => {
+      window.removeEventListener("beforeunload", commitFocused);
+      window.removeEventListener("pagehide", commitFocused);
+    };
+  }, []);
   useEffect(() => {
     if (!view?.dirty) return;
     const warn = (event: BeforeUnloadEvent) => {
@@ -71,12 +88,17 @@ export function Editor() {
   // The first layout of a document fits the view.
   const fittedFor = useRef<string | null>(null);
   const laidOut = diagram.laidOut;
+  // So does the layout after expanding or collapsing a module use.
+  const fitNext = useRef(false);
   useEffect(() => {
     if (!laidOut) return;
     const document = `${laidOut.document.path}#${laidOut.document.module ?? ""}`;
-    if (fittedFor.current === document) return;
+    if (fittedFor.current === document && !fitNext.current) return;
+    // The first fit of a document is immediate (nothing to follow yet); a re-fit glides.
+    const duration = fittedFor.current === document ? 200 : 0;
     fittedFor.current = document;
-    requestAnimationFrame(() => void flow.fitView({ padding: 0.06, maxZoom: 1.25 }));
+    fitNext.current = false;
+    requestAnimationFrame(() => void flow.fitView({ padding: 0.06, maxZoom: 1.25, duration }));
   }, [laidOut, flow]);
 
   /** Where every top-level node is drawn now. */
@@ -215,6 +237,19 @@ export function Editor() {
     [diagram, direction, editable, server],
   );
 
+  // Expanding or collapsing a use changes what takes room: lay the diagram out again (one
+  // undoable "Arrange" step when positions are saved; ELK places unsaved ones anyway) and fit.
+  const expandedOf = useRef<{ document: string; uses: string } | null>(null);
+  useEffect(() => {
+    if (!view) return;
+    const now = { document: `${view.document.path}#${view.document.module ?? ""}`, uses: [...expanded].sort().join(",") };
+    const before = expandedOf.current;
+    expandedOf.current = now;
+    if (!before || before.document !== now.document || before.uses === now.uses) return;
+    fitNext.current = true;
+    if (editable && view.nodes.some((node) => node.parent === null && node.position !== null)) void arrange();
+  }, [view, expanded, editable, arrange]);
+
   const changeDirection = useCallback(
     (to: Direction) => {
       localStorage.setItem(DIRECTION_KEY, to);
@@ -226,6 +261,32 @@ export function Editor() {
   );
 
   const fit = useCallback(() => void flow.fitView({ padding: 0.06, maxZoom: 1.25, duration: 200 }), [flow]);
+  // Connecting by keyboard: C on the selected source, then C on the selected target.
+  const [connectFrom, setConnectFrom] = useState<{ id: string; name: string } | null>(null);
+  const connecting = useCallback(
+    (id: string, end: "source" | "target") => {
+      if (!editable) return;
+      const name = view?.nodes.find((item) => item.id === id)?.name ?? id;
+      if (connectFrom === null) {
+        if (end === "source") setConnectFrom({ id, name });
+        return;
+      }
+      if (id !== connectFrom.id) void edit([{ op: "connect", source: connectFrom.id, target: id }], "Connect");
+      setConnectFrom(null);
+    },
+    [editable, view, connectFrom, edit],
+  );
+  // One function for the whole session: the nodes' context must not change with every view.
+  const latestConnecting = useRef(connecting);
+  useEffect(() => {
+    latestConnecting.current = connecting;
+  }, [connecting]);
+  const keyConnect = useCallback((id: string, end: "source" | "target") => latestConnecting.current(id, end), []);
+  const connectSelected = useCallback(() => {
+    const only = selectedNodes.length === 1 ? selectedNodes[0] : undefined;
+    if (only && only.connectable !== false) keyConnect(only.id, connectFrom === null ? "source" : "target");
+  }, [selectedNodes, keyConnect, connectFrom]);
+
   const undo = useCallback(() => void (editable && view?.undo && server.run(api.undo)), [editable, view, server]);
   const redo = useCallback(() => void (editable && view?.redo && server.run(api.redo)), [editable, view, server]);
   const save = useCallback(() => {
@@ -268,9 +329,20 @@ export function Editor() {
     [server],
   );
 
+  // "Back to scenario" after Open definition: where the user came from, kept per tab.
+  const [cameFrom, setCameFrom] = useState<{ path: string; name: string } | null>(() => {
+    const kept = sessionStorage.getItem(BACK_KEY);
+    return kept ? (JSON.parse(kept) as { path: string; name: string }) : null;
+  });
+  useEffect(() => {
+    if (cameFrom) sessionStorage.setItem(BACK_KEY, JSON.stringify(cameFrom));
+    else sessionStorage.removeItem(BACK_KEY);
+  }, [cameFrom]);
+
   // Opening another file with unsaved changes is refused (409): offer to save them first.
   const openDefinition = useCallback(
-    (node: ViewNode) =>
+    (node: ViewNode) => {
+      if (view && view.document.kind === "scenario") setCameFrom({ path: view.document.path, name: view.document.name });
       void server.run(async () => {
         try {
           return await api.openDefinition(node.id);
@@ -280,8 +352,9 @@ export function Editor() {
           await api.save();
           return api.openDefinition(node.id);
         }
-      }),
-    [server],
+      });
+    },
+    [server, view],
   );
 
   useShortcuts({
@@ -293,8 +366,13 @@ export function Editor() {
     cut: () => void cut(),
     selectAll: () => setSelection(new Set(diagram.nodes.filter((node) => node.selectable !== false).map((node) => node.id))),
     save,
-    clearSelection: () => setSelection(new Set()),
+    clearSelection: () => {
+      setConnectFrom(null);
+      setSelection(new Set());
+    },
     fit,
+    connect: connectSelected,
+    search: () => document.getElementById(PALETTE_SEARCH_ID)?.focus(),
   });
 
   const single = selectedNodes.length === 1 && selectedNodes[0] ? selectedNodes[0].data.node : null;
@@ -303,6 +381,7 @@ export function Editor() {
     <div className={`editor${view?.readOnly ? " read-only" : ""}`}>
       <Toolbar
         view={view}
+        back={view?.document.kind === "module" && cameFrom ? { name: cameFrom.name, go: () => void open(cameFrom.path, "") } : null}
         direction={direction}
         hasSelection={ownSelection.length > 0 || selectedEdges.length > 0}
         canPaste={clipboard.count > 0}
@@ -337,6 +416,8 @@ export function Editor() {
             state={diagram}
             direction={direction}
             toggleExpanded={toggleExpanded}
+            connectFrom={connectFrom}
+            keyConnect={keyConnect}
             onConnect={(source, target) => void edit([{ op: "connect", source, target }], "Connect")}
             onMoved={(positions) => void edit([{ op: "move", positions }], "Move")}
             onDropItem={addItem}
@@ -345,11 +426,20 @@ export function Editor() {
         {view && <Properties view={view} node={single} selectionCount={selectedNodes.length} send={send} openDefinition={openDefinition} />}
       </div>
       {view && <Problems diagnostics={view.diagnostics} onShow={showProblem} />}
+      {view?.recovery && editable && recoveryLater !== view.recovery.path && (
+        <RecoveryDialog
+          recovery={view.recovery}
+          documentName={view.document.name}
+          onAnswer={(restore) => void server.run(() => api.recovery(restore))}
+          onLater={() => setRecoveryLater(view.recovery?.path ?? null)}
+        />
+      )}
       {dialog?.type === "open" && <OpenDialog view={view} onOpen={(path, module) => void open(path, module)} onCancel={() => setDialog(null)} />}
       {dialog?.type === "export" && view && <ExportDialog view={view} onExport={exportXosc} onCancel={() => setDialog(null)} />}
       {dialog?.type === "extract" && (
         <ExtractDialog
           count={ownSelection.length}
+          libraries={[...new Set(view?.palette.flatMap((group) => group.items.map((item) => item.library ?? "")).filter(Boolean))]}
           onCancel={() => setDialog(null)}
           onExtract={(name, library) => {
             setDialog(null);

@@ -14,13 +14,36 @@ export class ApiError extends Error {
   }
 }
 
+const TAB_KEY = "sceml-tab";
+/** Browsers allow 64 KiB of keepalive bodies in flight; larger requests are ordinary ones. */
+const KEEPALIVE_LIMIT = 32_000;
+
+function newTabId(): string {
+  return typeof crypto.randomUUID === "function" ? crypto.randomUUID() : `t${Date.now()}-${Math.random().toString(36).slice(2)}`;
+}
+
+/** This tab's name for the server, so Undo undoes this tab's edits. It survives a reload of the
+ * tab (sessionStorage is per tab), so Undo still works after one. */
+export const TAB_ID: string = (() => {
+  const kept = sessionStorage.getItem(TAB_KEY);
+  if (kept) return kept;
+  const made = newTabId();
+  sessionStorage.setItem(TAB_KEY, made);
+  return made;
+})();
+
 async function call<T>(method: "GET" | "POST", path: string, body?: unknown): Promise<T> {
   let response: Response;
   try {
+    const headers: Record<string, string> = { "X-SceML-Tab": TAB_ID };
+    if (body !== undefined) headers["Content-Type"] = "application/json";
+    const json = body === undefined ? undefined : JSON.stringify(body);
     response = await fetch(path, {
       method,
-      headers: body === undefined ? undefined : { "Content-Type": "application/json" },
-      body: body === undefined ? undefined : JSON.stringify(body),
+      headers,
+      body: json,
+      // A small request outlives the page: the edit a reload or a closed tab commits arrives.
+      keepalive: json !== undefined && json.length < KEEPALIVE_LIMIT,
     });
   } catch {
     throw new ApiError("The editor's server cannot be reached. Is `sceml edit` still running?", 0);
@@ -57,4 +80,11 @@ export const api = {
   open: (path: string, discard: boolean, module?: string) =>
     call<View>("POST", "/api/open", { path, discard, ...(module ? { module } : {}) }),
   openDefinition: (node: string) => call<View>("POST", "/api/open-definition", { node }),
+  recovery: (restore: boolean) => call<View>("POST", "/api/recovery", { restore }),
 };
+
+/** A change event of the server's stream: the view's new version and the tab that made it. */
+export interface ChangeEvent {
+  version: number;
+  tab: string;
+}

@@ -126,7 +126,8 @@ export interface PaletteItem {
   module: string | null;
   library: string | null;
   /** Roles of a module item, for the "Use <module>" dialog (optional, see the protocol). */
-  roles?: { role: string; allowedKinds: string[] }[];
+  /** Each role, the kinds it accepts, and the actors (or outer roles) that fit it. */
+  roles?: { role: string; allowedKinds: string[]; actors?: string[] }[];
 }
 
 export interface PaletteGroup {
@@ -174,6 +175,8 @@ export interface View {
   palette: PaletteGroup[];
   style: Style;
   choices: Record<string, string[]>;
+  /** A recovery copy an earlier run left (after a crash or kill), offered until answered. */
+  recovery: { path: string; written: string } | null;
 }
 
 export type Op = { op: string } & Record<string, unknown>;

@@ -20,6 +20,7 @@ COMMANDS = {
     "export": "export:export",
     "check-xosc": "check_xosc:check_xosc",
     "import": "import_:import_command",
+    "extract": "extract:extract_command",
     "concretize": "concretize:concretize",
     "promote": "promote:promote",
     "sample": "sample:sample",

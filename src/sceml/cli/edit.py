@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 from pathlib import Path
 
 import click
@@ -37,6 +38,15 @@ from .common import SceMLCommand
 @click.option(
     "--module", default=None, metavar="NAME", help="For a library FILE: the module to edit."
 )
+@click.option(
+    "--allow",
+    "allow",
+    multiple=True,
+    type=click.Path(file_okay=False, path_type=Path),
+    help="Another folder the editor may open, save and export into (and module libraries "
+    "may be read from); repeatable. Always allowed: FILE's folder and its project root (the "
+    "nearest folder above with .git, .hg, .svn or .sceml-root), with their subfolders.",
+)
 def edit(
     file: Path | None,
     port: int | None,
@@ -45,11 +55,17 @@ def edit(
     level: str,
     libraries: tuple[Path, ...],
     module: str | None,
+    allow: tuple[Path, ...],
 ) -> None:
     """Edit FILE, a scenario (.xmi), in the browser; a missing FILE starts a new scenario.
 
-    The server runs on 127.0.0.1 until Ctrl-C. Unsaved changes are then kept in a recovery
-    copy beside the file (.NAME.recovered.xmi), whose path is printed.
+    The server runs on 127.0.0.1 until Ctrl-C, `kill` or a closed terminal. Unsaved changes
+    are kept in a recovery copy beside the file (.NAME.recovered.xmi) after every edit and
+    when the server stops; its path is printed. If the server was killed, the next `sceml edit FILE`
+    offers to restore that copy.
+
+    Files are opened, saved and exported only inside FILE's folder, its project root and the
+    --allow folders.
     """
     from ..editor import EditorSession, SessionOptions
     from ..editor.server import serve
@@ -61,9 +77,17 @@ def edit(
             raise click.UsageError(f"{target} does not exist: there is nothing to review")
         if not target.resolve().parent.is_dir():
             raise click.UsageError(f"cannot create {target}: folder {target.parent} does not exist")
-    options = SessionOptions(read_only=read_only, level=level, libraries=list(libraries))
+    options = SessionOptions(
+        read_only=read_only, level=level, libraries=list(libraries), allow=list(allow)
+    )
     session = EditorSession(options)
     session.open(target, module=module)
+    if session.recovery_offer is not None:
+        click.echo(
+            f"unsaved changes of an earlier run are in {session.recovery_offer}; "
+            "the page offers to restore them",
+            err=True,
+        )
     result = serve(
         session,
         port=port,
@@ -71,4 +95,6 @@ def edit(
         announce=lambda url: click.echo(f"SceML editor: {url} (Ctrl-C to stop)"),
     )
     if result.recovered is not None:
-        click.echo(f"unsaved changes were written to {result.recovered}", err=True)
+        # After a SIGHUP the terminal may be gone: the copy is written either way.
+        with contextlib.suppress(OSError):
+            click.echo(f"unsaved changes were written to {result.recovered}", err=True)

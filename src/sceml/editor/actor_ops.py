@@ -9,8 +9,9 @@ import scemlmodel as scm
 from ..modules import naming
 from ..modules.library import definition_named
 from ..modules.resolve import resolved_definition
+from ..render.labels import loaded_definition
 from ..traversal import attributes, containments
-from .context import EditContext, argument, referrers, require
+from .context import EditContext, argument, check_text, referrers, require
 from .errors import OperationError
 from .fields import actor_kind_names
 from .node_ops import adopt, attribute_value, place
@@ -38,7 +39,9 @@ def add_actor(ctx: EditContext, op: dict[str, Any]) -> None:
     cls = _kind(argument(op, "kind"))
     taken = {str(actor.name) for actor in root.actors}
     name = op.get("name") or naming.numbered(cls.__name__.lower(), taken)
-    require(isinstance(name, str) and name not in taken, f"an actor is already named {name!r}")
+    require(isinstance(name, str), "an actor's name must be text")
+    check_text("name", name)
+    require(name not in taken, f"an actor is already named {name!r}")
     actor = cls(name=name)
     ctx.rec.insert(root, "actors", actor)
     ctx.ids.of(actor, "a")
@@ -112,6 +115,10 @@ def add_module_use(ctx: EditContext, op: dict[str, Any]) -> None:
         definition = definition_named(library, str(argument(op, "module")))
     except Exception as error:
         raise OperationError(str(getattr(error, "message", error))) from None
+    require(
+        not _uses_itself(ctx.graph, definition),
+        f"{definition.name} cannot be used inside its own definition",
+    )
     bindings, overrides = op.get("bindings") or {}, op.get("overrides") or {}
     require(isinstance(bindings, dict) and isinstance(overrides, dict), "bad bindings/overrides")
     roles = [str(role.name) for role in definition.roles]
@@ -131,6 +138,25 @@ def add_module_use(ctx: EditContext, op: dict[str, Any]) -> None:
     adopt(ctx, use)
     if op.get("position") is not None:
         place(ctx, use, op["position"])
+
+
+def _uses_itself(graph: scm.Graph, definition: scm.ModuleDefinition) -> bool:
+    """Whether using `definition` in `graph` would make a module use itself (through others)."""
+    if not isinstance(graph, scm.ModuleDefinition):
+        return False
+    pending, seen = [definition], set()
+    while pending:
+        current = pending.pop()
+        if current is graph:
+            return True
+        if id(current) in seen:
+            continue
+        seen.add(id(current))
+        for node in current.nodes:
+            inner = loaded_definition(node) if isinstance(node, scm.ModuleUse) else None
+            if inner is not None:
+                pending.append(inner)
+    return False
 
 
 def _use(ctx: EditContext, op: dict[str, Any]) -> tuple[scm.ModuleUse, scm.ModuleDefinition]:

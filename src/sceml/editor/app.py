@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 import threading
 from collections.abc import Callable
 from importlib import resources
@@ -13,12 +14,23 @@ from starlette.concurrency import run_in_threadpool
 from starlette.middleware import Middleware
 from starlette.middleware.trustedhost import TrustedHostMiddleware
 from starlette.requests import Request
-from starlette.responses import FileResponse, HTMLResponse, JSONResponse, Response
+from starlette.responses import (
+    FileResponse,
+    HTMLResponse,
+    JSONResponse,
+    Response,
+    StreamingResponse,
+)
 from starlette.routing import Mount, Route
 from starlette.staticfiles import StaticFiles
 
 from ..errors import SceMLError
-from .errors import EditorError, ExportRefused
+from .bodies import BadBody, parse_object, read_limited
+from .commands import ANY_TAB
+from .errors import EditorError, ExportRefused, OperationError
+from .headers import SecurityHeaders
+from .journal import Journal
+from .live import Broadcaster
 from .session import EditorSession
 
 #: The host names the editor answers to; it listens on 127.0.0.1 only.
@@ -50,29 +62,42 @@ def _error(message: str, status: int, **extra: Any) -> JSONResponse:
     return JSONResponse({"error": message, **extra}, status_code=status)
 
 
+#: The header a page names itself with, so each tab undoes its own edits.
+TAB_HEADER = "x-sceml-tab"
+_TAB = re.compile(r"[A-Za-z0-9_-]{1,64}")
+
+
+def _tab(request: Request) -> str:
+    tab = request.headers.get(TAB_HEADER, ANY_TAB)
+    if tab != ANY_TAB and not _TAB.fullmatch(tab):
+        raise BadBody(f"the {TAB_HEADER} header must be 1 to 64 letters, digits, - or _")
+    return tab
+
+
+Action = Callable[[dict[str, Any], str], Any]
+
+
 class Api:
     """The protocol's endpoints; the lock keeps one request at a time on the session."""
 
     def __init__(self, session: EditorSession) -> None:
         self.session = session
         self.lock = threading.Lock()
+        self.live = Broadcaster()
+        self.journal = Journal(lambda: self._locked(lambda body, tab: session.recover(), {}, ""))
 
-    async def call(self, request: Request, action: Callable[[dict[str, Any]], Any]) -> Response:
+    async def call(self, request: Request, action: Action) -> Response:
         """Read the JSON body, run `action` under the lock, answer JSON or a protocol error."""
-        body: dict[str, Any] = {}
         if request.method == "POST" and not _same_origin(request):
             # Any web page the user visits could post to 127.0.0.1; only this page may edit.
             return _error("a request from another site was refused", 403)
-        if request.method == "POST":
-            raw = await request.body()
-            try:
-                body = (await request.json()) if raw.strip() else {}
-            except ValueError:
-                return _error("the request body is not JSON", 400)
-            if not isinstance(body, dict):
-                return _error("the request body must be a JSON object", 400)
         try:
-            result = await run_in_threadpool(self._locked, action, body)
+            tab = _tab(request)
+            body: dict[str, Any] = {}
+            if request.method == "POST":
+                raw = await read_limited(request.stream(), request.headers.get("content-length"))
+                body = parse_object(raw)
+            result = await run_in_threadpool(self._locked, action, body, tab)
         except ExportRefused as error:
             return _error(error.message, error.status, diagnostics=error.diagnostics)
         except EditorError as error:
@@ -80,49 +105,81 @@ class Api:
         except SceMLError as error:
             # A file that cannot be read or written: the user's input, not a server fault.
             return _error(str(error), 400)
+        except OSError as error:
+            # A path the system refuses (too long, a device that cannot be read, no rights).
+            return _error(f"the file cannot be used: {error.strerror or error}", 400)
+        if request.method == "POST":
+            self.journal.changed()
+            self.live.publish({"version": self.session.version, "tab": tab})
         return JSONResponse(result)
 
-    def _locked(self, action: Callable[[dict[str, Any]], Any], body: dict[str, Any]) -> Any:
+    def _locked(self, action: Action, body: dict[str, Any], tab: str) -> Any:
         with self.lock:
-            return action(body)
+            return action(body, tab)
+
+    async def events(self, request: Request) -> Response:
+        """The stream of change events every open page listens to."""
+        first = {"version": self.session.version}
+        return StreamingResponse(
+            self.live.stream(first),
+            media_type="text/event-stream",
+            headers={"Cache-Control": "no-store"},
+        )
 
     def routes(self) -> list[Route]:
         """The /api routes."""
         s = self.session
 
-        def export(body: dict[str, Any]) -> dict[str, Any]:
-            version = str(body.get("version") or "1.3")
-            path = s.export(version, str(body.get("profile") or "generic"), body.get("path"))
+        def export(body: dict[str, Any], tab: str) -> dict[str, Any]:
+            version = body.get("version") or "1.3"
+            path = s.export(version, body.get("profile") or "generic", body.get("path"))
             return {"path": str(path), "version": version}
 
-        def open_file(body: dict[str, Any]) -> dict[str, Any]:
-            if not isinstance(body.get("path"), str) or not body["path"]:
-                raise EditorError("'path' must name a file")
-            return s.open(
-                body["path"], module=body.get("module"), discard=bool(body.get("discard"))
-            )
+        def open_file(body: dict[str, Any], tab: str) -> dict[str, Any]:
+            return s.open(body.get("path"), module=_module(body), discard=_flag(body, "discard"))
 
-        table: dict[str, tuple[str, Callable[[dict[str, Any]], Any]]] = {
-            "/api/view": ("GET", lambda body: s.view()),
-            "/api/ops": ("POST", lambda body: s.apply(body.get("ops"), body.get("label"))),
-            "/api/undo": ("POST", lambda body: s.undo()),
-            "/api/redo": ("POST", lambda body: s.redo()),
-            "/api/copy": ("POST", lambda body: {"copied": s.copy(body.get("nodes"))}),
-            "/api/save": ("POST", lambda body: s.save(body.get("path"))),
+        table: dict[str, tuple[str, Action]] = {
+            "/api/view": ("GET", lambda body, tab: s.view(tab=tab)),
+            "/api/ops": (
+                "POST",
+                lambda body, tab: s.apply(body.get("ops"), body.get("label"), tab),
+            ),
+            "/api/undo": ("POST", lambda body, tab: s.undo(tab)),
+            "/api/redo": ("POST", lambda body, tab: s.redo(tab)),
+            "/api/copy": ("POST", lambda body, tab: {"copied": s.copy(body.get("nodes"), tab)}),
+            "/api/save": ("POST", lambda body, tab: s.save(body.get("path"))),
             "/api/export": ("POST", export),
             "/api/open": ("POST", open_file),
             "/api/open-definition": (
                 "POST",
-                lambda body: s.open_definition(body.get("node"), discard=bool(body.get("discard"))),
+                lambda body, tab: s.open_definition(
+                    body.get("node"), discard=_flag(body, "discard")
+                ),
             ),
+            "/api/recovery": ("POST", lambda body, tab: s.resolve_recovery(body.get("restore"))),
         }
-        return [self._route(path, method, action) for path, (method, action) in table.items()]
+        routes = [self._route(path, method, action) for path, (method, action) in table.items()]
+        return [*routes, Route("/api/events", self.events)]
 
-    def _route(self, path: str, method: str, action: Callable[[dict[str, Any]], Any]) -> Route:
+    def _route(self, path: str, method: str, action: Action) -> Route:
         async def endpoint(request: Request) -> Response:
             return await self.call(request, action)
 
         return Route(path, endpoint, methods=[method])
+
+
+def _flag(body: dict[str, Any], key: str) -> bool:
+    value = body.get(key, False)
+    if not isinstance(value, bool):
+        raise OperationError(f"'{key}' must be true or false")
+    return value
+
+
+def _module(body: dict[str, Any]) -> str | None:
+    module = body.get("module")
+    if module is not None and not isinstance(module, str):
+        raise OperationError("'module' must be the name of a module")
+    return module
 
 
 async def index(request: Request) -> Response:
@@ -134,13 +191,19 @@ async def index(request: Request) -> Response:
 
 
 def create_app(session: EditorSession) -> Starlette:
-    """The editor's web application over an opened session."""
+    """The editor's web application over an opened session.
+
+    `app.state.api` is the Api: its `journal` and `live` are stopped by the server at exit.
+    """
     assets = StaticFiles(directory=static_folder() / "assets", check_dir=False)
+    api = Api(session)
     routes = [
         Route("/", index),
-        *Api(session).routes(),
+        *api.routes(),
         Mount("/assets", app=assets, name="assets"),
     ]
     # Only names of this machine: a DNS-rebinding page gets its own host name refused.
     local = Middleware(TrustedHostMiddleware, allowed_hosts=LOCAL_HOSTS)
-    return Starlette(routes=routes, middleware=[local])
+    app = Starlette(routes=routes, middleware=[Middleware(SecurityHeaders), local])
+    app.state.api = api
+    return app

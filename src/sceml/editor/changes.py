@@ -12,6 +12,7 @@ request can be rolled back. Two pyecore 0.15.2 habits are handled here, once:
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -76,6 +77,24 @@ class _Remove:
         return Change(self.owner, self.feature, self.item, None)
 
 
+@dataclass
+class _Outside:
+    """A change outside the edited model (a module written into its library file)."""
+
+    owner: EObject
+    apply: Callable[[], None]
+    revert: Callable[[], None]
+
+    def do(self) -> None:
+        self.apply()
+
+    def undo(self) -> None:
+        self.revert()
+
+    def described(self) -> Change:
+        return Change(self.owner, "modules", None, None)
+
+
 def _assign(owner: EObject, feature: str, value: Any, is_set: bool) -> None:
     if isinstance(owner, scm.Flow) and feature in _FLOW_ENDS:
         # Clearing first updates the old end's opposite list, which a plain reassignment does not.
@@ -87,7 +106,7 @@ def _assign(owner: EObject, feature: str, value: Any, is_set: bool) -> None:
         owner._isset.pop(owner.eClass.findEStructuralFeature(feature), None)
 
 
-Step = _Set | _Insert | _Remove
+Step = _Set | _Insert | _Remove | _Outside
 
 
 @dataclass
@@ -114,6 +133,20 @@ class _Ordered:
             values = {key: held[key] for key in keys}
             held.clear()
             held.update(values)
+
+
+@dataclass
+class Footprint:
+    """Ids of what a step touched: (object, feature) pairs it set, objects it set on or pointed
+    to, and objects it added or removed."""
+
+    features: set[tuple[int, str]]
+    touched: set[int]
+    lives: set[int]
+
+
+def _is_object(value: object) -> bool:
+    return isinstance(value, EObject)
 
 
 class Recorder:
@@ -149,6 +182,17 @@ class Recorder:
         index = list(owner.eGet(feature)).index(item)
         self._apply(_Remove(owner, feature, item, index))
 
+    def outside(
+        self, owner: EObject, apply: Callable[[], None], revert: Callable[[], None]
+    ) -> None:
+        """Run `apply` (a change of another file, owned by `owner`) now; undo runs `revert`."""
+        self._apply(_Outside(owner, apply, revert))
+
+    @property
+    def reaches_outside(self) -> bool:
+        """Whether these changes include one outside the model (validate everything again)."""
+        return any(isinstance(step.change, _Outside) for step in self.steps)
+
     def detach(self, obj: EObject) -> None:
         """Take an object out of its container, if it has one."""
         container, feature = obj.eContainer(), obj.eContainmentFeature()
@@ -168,6 +212,38 @@ class Recorder:
         """Apply every recorded change again, first first."""
         for step in self.steps:
             step.do()
+
+    def footprint(self) -> Footprint:
+        """What the recorded steps touch, to tell whether another step's undo can pass them."""
+        found = Footprint(set(), set(), set())
+        for step in self.steps:
+            change = step.change
+            if isinstance(change, _Outside):
+                found.lives.add(id(change.owner))
+            elif isinstance(change, _Set):
+                found.features.add((id(change.owner), change.feature))
+                found.touched.add(id(change.owner))
+                found.touched.update(id(v) for v in (change.old, change.new) if _is_object(v))
+            else:
+                # Insertions and removals in one list commute (undo removes the very item, or
+                # puts it back near its index); what matters is the item coming and going.
+                found.lives.add(id(change.item))
+        return found
+
+    def overlaps(self, other: Recorder) -> bool:
+        """Whether undoing these changes would disturb `other`'s (made after them), or back."""
+        mine, theirs = self.footprint(), other.footprint()
+        return bool(
+            mine.features & theirs.features
+            or mine.lives & (theirs.lives | theirs.touched)
+            or theirs.lives & mine.touched
+        )
+
+    def removed(self, obj: object) -> bool:
+        """Whether these changes took `obj` out of a list it was in."""
+        return any(
+            isinstance(step.change, _Remove) and step.change.item is obj for step in self.steps
+        )
 
     def changes(self) -> list[Change]:
         """What the recorded steps change, for incremental validation; undo and redo change the

@@ -38,6 +38,8 @@ class EditContext:
     clipboard: Clipboard
     rec: Recorder = field(default_factory=Recorder)
     created: list[str] = field(default_factory=list)
+    #: Why a known object is no longer in the model ("was deleted in another tab"), if known.
+    why_gone: Callable[[EObject], str | None] = lambda obj: None
 
     @property
     def root(self) -> scm.RootNode | None:
@@ -51,13 +53,26 @@ class EditContext:
             return found
         if isinstance(identifier, str) and "/" in identifier:
             raise OperationError(f"node {identifier} is inside a module use and cannot be edited")
+        self._gone(found)
         raise OperationError(f"unknown node {identifier!r}")
+
+    def _gone(self, found: EObject | None) -> None:
+        """OperationError naming a node, flow or actor the model held once but holds no more."""
+        if found is None:
+            return
+        name = getattr(found, "name", None)
+        if isinstance(found, scm.Flow):
+            ends = (getattr(found.source, "name", "?"), getattr(found.target, "name", "?"))
+            name = f"{ends[0]} -> {ends[1]}"
+        reason = self.why_gone(found) or "was deleted, or its addition undone"
+        raise OperationError(f"'{name}' {reason}")
 
     def flow(self, identifier: object) -> scm.Flow:
         """The graph's flow with this id."""
         found = self.ids.find(identifier)
         if isinstance(found, scm.Flow) and found.eContainer() is self.graph:
             return found
+        self._gone(found)
         raise OperationError(f"unknown edge {identifier!r}")
 
     def actor(self, identifier: object) -> scm.Actor:
@@ -68,6 +83,7 @@ class EditContext:
             return found
         if root is None:
             raise OperationError("a module's roles are edited in its library, not here")
+        self._gone(found)
         raise OperationError(f"unknown actor {identifier!r}")
 
     def participants(self) -> dict[str, scm.Participant]:
@@ -109,6 +125,24 @@ def referrers(graph: EObject, target: EObject) -> Iterator[tuple[EObject, str]]:
         for feature in cross_references(obj.eClass):
             if not feature.many and obj.eGet(feature) is target:
                 yield obj, str(feature.name)
+
+
+#: The longest name of a node, actor, scenario or module: names are shown in boxes and written
+#: into OpenSCENARIO names, and a longer one is a mistake (a paste into the wrong field).
+MAX_NAME_LENGTH = 200
+#: The longest other text (a description, a map path, a simulator model).
+MAX_TEXT_LENGTH = 10_000
+#: Attributes that are names, held to MAX_NAME_LENGTH.
+NAME_FEATURES = frozenset({"name", "scenarioName"})
+
+
+def check_text(feature: str, value: str) -> None:
+    """OperationError if `value` is longer than a `feature` may be."""
+    limit = MAX_NAME_LENGTH if feature in NAME_FEATURES else MAX_TEXT_LENGTH
+    require(
+        len(value) <= limit,
+        f"{feature} may be at most {limit:,} characters long, not {len(value):,}",
+    )
 
 
 def require(condition: bool, message: str) -> None:

@@ -1,7 +1,7 @@
 """The extract_module operation: selected nodes become a library module, used in their place.
 
 The module is built by `sceml.modules.extract` on a copy of the scenario and written to its
-library at once (another file, so undo leaves it there). The live scenario is then changed
+library at once; undo puts the library file back as it was (and redo writes it again). The live scenario is then changed
 through the recorder like any other edit, so undo gives back the very same nodes and flows.
 """
 
@@ -17,7 +17,7 @@ from .. import io
 from ..copying import Copier
 from ..errors import SceMLError
 from ..modules.extract import extract, find_region
-from .context import EditContext, argument, require
+from .context import EditContext, argument, check_text, require
 from .errors import OperationError
 from .node_ops import detach_flow
 
@@ -25,16 +25,40 @@ from .node_ops import detach_flow
 def extract_module(ctx: EditContext, op: dict[str, Any]) -> None:
     """Move the selected nodes into a new module of a library file and use it instead."""
     require(isinstance(ctx.graph, scm.Scenario), "modules are extracted from a scenario")
-    nodes = [ctx.node(i) for i in argument(op, "nodes") or []]
-    name, library_text = str(argument(op, "name")), str(argument(op, "library"))
+    chosen, name, library_text = (argument(op, key) for key in ("nodes", "name", "library"))
+    require(isinstance(chosen, list), "'nodes' must be a list of node ids")
+    require(isinstance(name, str) and name.strip() != "", "the module needs a name")
+    require(isinstance(library_text, str) and library_text != "", "'library' must name a file")
+    check_text("name", name)
+    nodes = [ctx.node(i) for i in chosen]
     library, path = ctx.find_library(library_text, True)
+    previous = path.read_bytes() if path.is_file() else None
     try:
         region = find_region(ctx.graph, nodes)
         built = _build_module(ctx.graph, nodes, name, library)
-        io.save(library, path)
     except SceMLError as error:
         _forget(library, name)
         raise OperationError(error.message) from None
+    definition = built[2]
+
+    def write() -> None:
+        if definition not in library.modules:
+            library.modules.append(definition)
+        try:
+            io.save(library, path)
+        except SceMLError as error:
+            _forget(library, name)
+            raise OperationError(error.message) from None
+
+    def unwrite() -> None:
+        # Undo puts the library file back as it was: without the module, or not there at all.
+        _forget(library, name)
+        if previous is None:
+            path.unlink(missing_ok=True)
+        else:
+            io.write_atomically(path, previous)
+
+    ctx.rec.outside(library, write, unwrite)
     _replace(ctx, region.nodes, region.source, region.targets, built)
 
 

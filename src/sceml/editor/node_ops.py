@@ -11,7 +11,7 @@ import scemlmodel as scm
 
 from .. import catalog
 from ..modules import naming
-from .context import EditContext, argument, require
+from .context import EditContext, argument, check_text, require
 from .errors import OperationError
 from .fields import type_name
 from .values import position_from_json, value_from_json
@@ -163,6 +163,8 @@ def attribute_value(feature: EAttribute, value: object) -> object:
         require(isinstance(value, bool), f"{feature.name} must be true or false")
         return value
     require(value is None or isinstance(value, str), f"{feature.name} must be text")
+    if isinstance(value, str):
+        check_text(str(feature.name), value)
     return value or None
 
 

@@ -50,12 +50,12 @@ def apply(ctx: EditContext, op: object) -> None:
     OPERATIONS[name](ctx, op)
 
 
-def label_of(ops: list[dict[str, Any]]) -> str:
+def label_of(ops: list[Any]) -> str:
     """An undo label for a request without one: `Add Accelerate`, `Delete`, `Move`, ..."""
-    if not ops:
-        return "Edit"
+    if not ops or not isinstance(ops[0], dict) or ops[0].get("op") not in OPERATIONS:
+        return "Edit"  # a request the first op of which is refused, so no step is made
     first = ops[0]
-    name = str(first.get("op", "edit"))
+    name = str(first["op"])
     words = name.replace("_", " ").capitalize()
     if name == "add_node" and first.get("kind"):
         words = f"Add {first['kind']}"

@@ -11,6 +11,7 @@ import scemlmodel as scm
 from .. import catalog
 from ..render import style
 from ..schema import SUPPORTED_VERSIONS
+from ..validation.context import is_kind
 from .fields import actor_kind_names, enum_options
 from .node_ops import JOIN_KINDS
 
@@ -48,25 +49,56 @@ def node_groups() -> tuple[dict[str, Any], ...]:
     return tuple(groups)
 
 
-def library_group(library: scm.Library, shown_path: str) -> dict[str, Any]:
-    """The modules of one library, each item naming the library as ops name it."""
+def library_group(
+    library: scm.Library,
+    shown_path: str,
+    participants: dict[str, scm.Participant],
+    editing: scm.ModuleDefinition | None = None,
+) -> dict[str, Any]:
+    """The modules of one library, each item naming the library as ops name it.
+
+    The module being edited is left out: a module cannot be used inside itself.
+    """
     return {
         "group": f"library:{shown_path}",
         "label": str(library.name or Path(shown_path).name),
         "look": "module",
         "items": [
-            {**_item("ModuleUse", str(d.name), shown_path), "roles": _roles(d)}
+            {**_item("ModuleUse", str(d.name), shown_path), "roles": _roles(d, participants)}
             for d in library.modules
+            if d is not editing
         ],
     }
 
 
-def _roles(definition: scm.ModuleDefinition) -> list[dict[str, Any]]:
-    """What the "Use <module>" dialog binds: each role and the actor kinds it accepts."""
+def allowed_kinds(role: scm.ActorRole) -> list[str]:
+    """The actor kinds a role accepts (empty: any)."""
+    return [str(k.kind.name) for k in role.allowedKinds if k.kind is not None]
+
+
+def fitting(role: scm.ActorRole, participants: dict[str, scm.Participant]) -> list[str]:
+    """The names of the actors (or outer roles) a role may be bound to, as SCEML-M004 judges."""
+    allowed = allowed_kinds(role)
+    names = []
+    for name, participant in participants.items():
+        if isinstance(participant, scm.ActorRole):
+            kinds = allowed_kinds(participant) or ["Actor"]
+        else:
+            kinds = [participant.eClass.name]
+        if not allowed or all(any(is_kind(kind, a) for a in allowed) for kind in kinds):
+            names.append(name)
+    return names
+
+
+def _roles(
+    definition: scm.ModuleDefinition, participants: dict[str, scm.Participant]
+) -> list[dict[str, Any]]:
+    """What the "Use <module>" dialog binds: each role, the kinds it accepts, who fits it."""
     return [
         {
             "role": str(role.name),
-            "allowedKinds": [str(k.kind.name) for k in role.allowedKinds if k.kind is not None],
+            "allowedKinds": allowed_kinds(role),
+            "actors": fitting(role, participants),
         }
         for role in definition.roles
     ]

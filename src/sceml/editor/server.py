@@ -4,16 +4,20 @@ from __future__ import annotations
 
 import contextlib
 import errno
+import signal
 import socket
+import threading
 import webbrowser
-from collections.abc import Callable
+from collections.abc import Callable, Generator
 from dataclasses import dataclass
 from pathlib import Path
+from types import FrameType
 
 import uvicorn
 
 from ..errors import ArgumentError
 from .app import create_app
+from .live import Broadcaster
 from .session import EditorSession
 
 HOST = "127.0.0.1"
@@ -39,12 +43,52 @@ def listening_socket(port: int | None) -> socket.socket:
     return sock
 
 
+#: The signals that stop the editor cleanly, each writing the recovery copy: Ctrl-C, a service
+#: manager's or `kill`'s SIGTERM, and the SIGHUP of a closed terminal.
+STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)
+
+
 @dataclass
 class ServeResult:
-    """How a run ended: the URL it served and the recovery copy written, if any."""
+    """How a run ended: the URL it served, the recovery copy written, and the stopping signal."""
 
     url: str
     recovered: Path | None
+    signal: int | None = None
+
+
+class EditorServer(uvicorn.Server):
+    """uvicorn's server, stopped cleanly by STOP_SIGNALS and ending the pages' event streams.
+
+    uvicorn re-raises a SIGTERM after its graceful shutdown, which would end the process before
+    the recovery copy is written; here every stop signal just ends `run`, and `serve` writes it.
+    """
+
+    def __init__(self, config: uvicorn.Config, live: Broadcaster) -> None:
+        super().__init__(config)
+        self.live = live
+        self.stopped_by: int | None = None
+
+    @contextlib.contextmanager
+    def capture_signals(self) -> Generator[None, None, None]:
+        if threading.current_thread() is not threading.main_thread():
+            yield
+            return
+        previous = {sig: signal.signal(sig, self.handle_exit) for sig in STOP_SIGNALS}
+        try:
+            yield
+        finally:
+            for sig, handler in previous.items():
+                signal.signal(sig, handler)
+
+    def handle_exit(self, sig: int, frame: FrameType | None) -> None:
+        self.stopped_by = self.stopped_by or sig
+        super().handle_exit(sig, frame)
+
+    async def shutdown(self, sockets: list[socket.socket] | None = None) -> None:
+        # Open event streams never end by themselves; uvicorn would wait for them.
+        self.live.close()
+        await super().shutdown(sockets)
 
 
 def serve(
@@ -54,15 +98,22 @@ def serve(
     open_browser: bool = True,
     announce: Callable[[str], None] = lambda url: None,
 ) -> ServeResult:
-    """Serve `session` until Ctrl-C; unsaved changes are then written to a recovery copy."""
+    """Serve `session` until a stop signal; unsaved changes are then in the recovery copy."""
     sock = listening_socket(port)
     url = f"http://{HOST}:{sock.getsockname()[1]}/"
-    config = uvicorn.Config(create_app(session), log_level="warning")
-    server = uvicorn.Server(config)
+    app = create_app(session)
+    api = app.state.api
+    config = uvicorn.Config(app, log_level="warning", timeout_graceful_shutdown=5)
+    server = EditorServer(config, api.live)
     announce(url)
     if open_browser:
         webbrowser.open(url)
-    # uvicorn handles the first Ctrl-C itself; a second one would land here.
-    with contextlib.suppress(KeyboardInterrupt), sock:
-        server.run(sockets=[sock])
-    return ServeResult(url, session.recover())
+    try:
+        # A second Ctrl-C forces uvicorn out; it may land here.
+        with contextlib.suppress(KeyboardInterrupt), sock:
+            server.run(sockets=[sock])
+    finally:
+        api.journal.stop()
+    with api.lock:
+        recovered = session.recover()
+    return ServeResult(url, recovered, server.stopped_by)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from datetime import datetime
 from pathlib import Path
 from typing import Any
 
@@ -24,10 +25,11 @@ from ..validation.incremental import IncrementalValidator
 from . import operations, palette, view
 from .changes import Recorder
 from .clipboard import copy_nodes
-from .commands import CommandStack, Step
+from .commands import ANY_TAB, CommandStack, Step
 from .context import Clipboard, EditContext
 from .errors import ConflictError, ExportRefused, OperationError, ReadOnlyError
 from .ids import Ids
+from .paths import inside_allowed, path_text
 
 
 @dataclass
@@ -37,6 +39,8 @@ class SessionOptions:
     read_only: bool = False
     level: str = "functional"
     libraries: list[Path] = field(default_factory=list)
+    #: Folders the editor may also read and write (`--allow`), beyond `io.reading_roots`.
+    allow: list[Path] = field(default_factory=list)
 
 
 class EditorSession:
@@ -52,7 +56,13 @@ class EditorSession:
         self.ids = Ids()
         self.clipboard = Clipboard()
         self._listing = view.Listing()
+        self._cache = view.NodeCache()
         self.validator: IncrementalValidator | None = None
+        #: The folders files may be opened from and written to, fixed by the first file opened
+        #: (the one named when the server started), so no request can widen them.
+        self.roots: list[Path] | None = None
+        #: A recovery copy left by an earlier run, offered until the user restores or drops it.
+        self.recovery_offer: Path | None = None
 
     # Opening -------------------------------------------------------------------------------
 
@@ -63,22 +73,48 @@ class EditorSession:
         return self.document.path
 
     def open(
-        self, path: str | Path, *, module: str | None = None, discard: bool = True
+        self, named: str | Path | object, *, module: str | None = None, discard: bool = True
     ) -> dict[str, Any]:
-        """Open a scenario (a missing file: a new one) or one module of a library."""
+        """Open a scenario (a missing file: a new one) or one module of a library.
+
+        The first file opened (the one named on the command line) fixes the allowed folders;
+        any later one must lie in them.
+        """
+        if self.roots is None:
+            path = Path(path_text(named, "the file")).resolve()
+            self.roots = self._allowed_folders(path)
+        else:
+            path = self.allowed(named, "'path'")
         if self.document is not None and self.stack.dirty and not discard:
             raise ConflictError("there are unsaved changes; save them or open with discard")
-        path = Path(path).resolve()
-        document = io.load(path) if path.exists() else self._new_scenario(path)
+        document = (
+            io.load(path, allowed_roots=self.roots) if path.exists() else self._new_scenario(path)
+        )
+        self._adopt(document, module)
+        self.recovery_offer = self._earlier_recovery()
+        return self.view()
+
+    def _adopt(self, document: io.Document, module: str | None) -> None:
+        """Edit `document` (one module of it, for a library) from a fresh history."""
         graph: scm.Graph = document.root
         if isinstance(document.root, scm.Library):
             graph = self._definition(document.root, module)
             module = str(graph.name)
         self.document, self.graph, self.module = document, graph, module
         self.stack, self.ids, self._listing = CommandStack(), Ids(), view.Listing()
+        self._cache = view.NodeCache()
         self.validator = IncrementalValidator(document.root, document=document)
         self.version += 1
-        return self.view()
+
+    def _allowed_folders(self, path: Path) -> list[Path]:
+        # A library named with --library is the user's explicit choice, like --allow.
+        extra = [*self.options.allow, *(Path(p).resolve().parent for p in self.options.libraries)]
+        return io.reading_roots(path, extra)
+
+    def allowed(self, path: object, what: str) -> Path:
+        """The absolute path a request names, if it lies in the allowed folders."""
+        assert self.roots is not None and self.document is not None, "no file is open"
+        return inside_allowed(path, what, self.path.parent, self.roots)
 
     def _definition(self, library: scm.Library, module: str | None) -> scm.ModuleDefinition:
         if module is None:
@@ -98,7 +134,7 @@ class EditorSession:
         # two unconnected nodes that automatic layout would pack side by side.
         builder.root.diagramPosition = scm.DiagramPosition(x=0.0, y=0.0)
         builder.end.diagramPosition = scm.DiagramPosition(x=70.0, y=480.0)
-        resource_set = io.new_resource_set(io.reading_roots(path))
+        resource_set = io.new_resource_set(self.roots)
         resource = resource_set.create_resource(URI(str(path)))
         resource.append(builder.scenario)
         return io.Document(path, builder.scenario, resource, resource_set)
@@ -112,16 +148,31 @@ class EditorSession:
         library = Path(definition.eResource.uri.normalize())
         return self.open(library, module=str(definition.name), discard=discard)
 
-    def _context(self) -> EditContext:
+    def _context(self, tab: str = ANY_TAB) -> EditContext:
         """What an operation works on: the edited graph, its ids, libraries and clipboard."""
-        return EditContext(self.graph, self.ids, self.find_library, self.clipboard)
+        return EditContext(
+            self.graph,
+            self.ids,
+            self.find_library,
+            self.clipboard,
+            why_gone=lambda obj: self._why_gone(obj, tab),
+        )
+
+    def _why_gone(self, obj: object, tab: str) -> str | None:
+        """How `obj` left the model, in the words of the tab that asks about it."""
+        step = self.stack.removal_of(obj)
+        if step is not None:
+            if step.tab != tab:
+                return "was deleted in another tab"
+            return f"was deleted by '{step.label}'"
+        return None
 
     # Libraries -----------------------------------------------------------------------------
 
     def find_library(self, text: str, create: bool = False) -> tuple[scm.Library, Path]:
         """A library file named relative to the edited file; with `create`, a new one if missing."""
         assert self.document is not None
-        path = (self.path.parent / text).resolve()
+        path = self.allowed(text, "'library'")
         if path.exists():
             try:
                 loaded = io.load_library(path, resource_set=self.document.resource_set)
@@ -155,7 +206,10 @@ class EditorSession:
                 library, _ = self.find_library(str(path))
             except OperationError:
                 continue  # an unreadable library is left out of the palette, not fatal
-            groups.append(palette.library_group(library, view.relative(path, self.path.parent)))
+            shown = view.relative(path, self.path.parent)
+            participants = self._context().participants()
+            editing = self.graph if isinstance(self.graph, scm.ModuleDefinition) else None
+            groups.append(palette.library_group(library, shown, participants, editing))
         return groups
 
     # The view ------------------------------------------------------------------------------
@@ -180,10 +234,10 @@ class EditorSession:
             return found
         return [d for d in found if _inside(d.element, self.graph)]
 
-    def view(self, created: list[str] | None = None) -> dict[str, Any]:
+    def view(self, created: list[str] | None = None, tab: str = ANY_TAB) -> dict[str, Any]:
         """The whole view of the protocol, re-validated."""
         assert self.document is not None, "no file is open"
-        listing = view.Lister(self.ids, self.path.parent).graph(self.graph)
+        listing = view.Lister(self.ids, self.path.parent, self._cache).graph(self.graph)
         self._listing = listing
         found = view.problems(self.diagnostics(), listing, self.ids)
         answer: dict[str, Any] = {
@@ -191,8 +245,9 @@ class EditorSession:
             "document": self._document_info(),
             "readOnly": self.options.read_only,
             "dirty": self.stack.dirty,
-            "undo": self.stack.undo_label,
-            "redo": self.stack.redo_label,
+            "undo": self.stack.undo_label_for(tab),
+            "redo": self.stack.redo_label_for(tab),
+            "recovery": self._recovery_info(),
             "level": self.level,
             "valueTypes": palette.value_types(self.level, self.module is not None),
             "nodes": listing.nodes,
@@ -224,12 +279,14 @@ class EditorSession:
         if self.options.read_only:
             raise ReadOnlyError("the editor is read-only: changes are not allowed")
 
-    def apply(self, ops: object, label: str | None = None) -> dict[str, Any]:
+    def apply(self, ops: object, label: object = None, tab: str = ANY_TAB) -> dict[str, Any]:
         """Apply operations as one undo step (none stays applied if one fails)."""
         self._writable()
         if not isinstance(ops, list):
             raise OperationError("'ops' must be a list of operations")
-        ctx = self._context()
+        if label is not None and (not isinstance(label, str) or len(label) > 200):
+            raise OperationError("'label' must be a text of at most 200 characters")
+        ctx = self._context(tab)
         recorders: list[Recorder] = []
 
         def edit(recorder: Recorder) -> None:
@@ -239,43 +296,48 @@ class EditorSession:
                 operations.apply(ctx, op)
 
         try:
-            self.stack.run(label or operations.label_of(ops), edit)
+            self.stack.run(label or operations.label_of(ops), edit, tab)
         finally:
             # A refused request was rolled back: what it touched is noted all the same.
             self._changed(recorders, ops)
         self.version += 1
-        return self.view(created=ctx.created)
+        return self.view(created=ctx.created, tab=tab)
 
     def _changed(self, recorders: list[Recorder], ops: list[Any]) -> None:
         """Tell the validator what a request changed (all of it, if an op reached outside)."""
         assert self.validator is not None
         for recorder in recorders:
             self.validator.note(recorder.changes())
+            self._cache.forget(recorder.changes(), self.graph)
         if any(isinstance(op, dict) and op.get("op") in operations.OUTSIDE for op in ops):
             self.validator.forget()
+            self._cache.forget_all()
 
-    def undo(self) -> dict[str, Any]:
-        """Revert the last step."""
-        return self._history(self.stack.undo)
+    def undo(self, tab: str = ANY_TAB) -> dict[str, Any]:
+        """Revert `tab`'s last step (the last step of all, without a tab)."""
+        return self._history(self.stack.undo, tab)
 
-    def redo(self) -> dict[str, Any]:
-        """Apply the last undone step again."""
-        return self._history(self.stack.redo)
+    def redo(self, tab: str = ANY_TAB) -> dict[str, Any]:
+        """Apply `tab`'s last undone step again."""
+        return self._history(self.stack.redo, tab)
 
-    def _history(self, move: Callable[[], Step | None]) -> dict[str, Any]:
+    def _history(self, move: Callable[[str], Step | None], tab: str) -> dict[str, Any]:
         self._writable()
-        step = move()
+        step = move(tab)
         if step is not None:
             assert self.validator is not None
             self.validator.note(step.recorder.changes())
+            self._cache.forget(step.recorder.changes(), self.graph)
+            if step.recorder.reaches_outside:
+                self.validator.forget()
             self.version += 1
-        return self.view()
+        return self.view(tab=tab)
 
-    def copy(self, node_ids: object) -> int:
+    def copy(self, node_ids: object, tab: str = ANY_TAB) -> int:
         """Keep deep copies of these nodes and the flows among them for `paste`."""
         if not isinstance(node_ids, list):
             raise OperationError("'nodes' must be a list of node ids")
-        ctx = self._context()
+        ctx = self._context(tab)
         self.clipboard = copy_nodes(self.graph, [ctx.node(i) for i in node_ids])
         return len(self.clipboard.nodes)
 
@@ -285,11 +347,12 @@ class EditorSession:
         """Save atomically, in place or to `path` (a scenario elsewhere is then edited there)."""
         self._writable()
         assert self.document is not None
-        target = Path(path).resolve() if path else self.path
+        target = self.path if path is None else self.allowed(path, "'path'")
         io.save(self.document.root, target)
         # Saving may rewrite references and the file's path: validate the whole model again.
         assert self.validator is not None
         self.validator.forget()
+        self._cache.forget_all()
         if target != self.path:
             if target.parent != self.path.parent:
                 # Relative references (map, libraries) were rewritten for the new folder: read
@@ -307,7 +370,9 @@ class EditorSession:
         """Export the scenario to OpenSCENARIO; a refusal is an ExportRefused with diagnostics."""
         if not isinstance(self.graph, scm.Scenario):
             raise OperationError("only a scenario can be exported, not a module")
-        target = Path(path).resolve() if path else self.path.with_suffix(".xosc")
+        _check_choice(version, "'version'")
+        _check_choice(profile, "'profile'")
+        target = self.path.with_suffix(".xosc") if path is None else self.allowed(path, "'path'")
         try:
             return export_to_file(
                 self.graph, target, version=version, profile=profile, source_path=self.path
@@ -318,13 +383,74 @@ class EditorSession:
         except InvalidOutputError as error:
             raise ExportRefused(error.message, []) from None
 
+    # Recovery ------------------------------------------------------------------------------
+
+    @property
+    def recovery_path(self) -> Path:
+        """Where unsaved changes are kept: `.NAME.recovered.xmi` beside the file."""
+        return self.path.with_name(f".{self.path.stem}.recovered{self.path.suffix or '.xmi'}")
+
     def recover(self) -> Path | None:
-        """If there are unsaved changes, write them beside the file; the copy's path, else None."""
-        if self.document is None or not self.stack.dirty:
+        """Bring the recovery copy up to date: the unsaved model, or none when all is saved.
+
+        Answers the copy's path when it holds unsaved changes. Called after every change (the
+        journal, so a crash loses at most the change being written) and when the server stops.
+        A copy from an earlier run stays untouched until the user restores or drops it.
+        """
+        if self.document is None or self.options.read_only:
             return None
-        target = self.path.with_name(f".{self.path.stem}.recovered{self.path.suffix or '.xmi'}")
+        if not self.stack.dirty:
+            if self.recovery_offer is None:
+                self.recovery_path.unlink(missing_ok=True)
+            return None
+        target = self.recovery_path
         io.save(self.document.root, target)
+        if self.recovery_offer == target:
+            self.recovery_offer = None  # the user went on editing: the old copy is replaced
         return target
+
+    def _earlier_recovery(self) -> Path | None:
+        copy = self.recovery_path
+        if self.options.read_only or not copy.is_file():
+            return None
+        if self.path.is_file() and copy.stat().st_mtime < self.path.stat().st_mtime:
+            return None  # the file was saved after the copy was written: the copy is stale
+        return copy
+
+    def _recovery_info(self) -> dict[str, Any] | None:
+        if self.recovery_offer is None:
+            return None
+        written = datetime.fromtimestamp(self.recovery_offer.stat().st_mtime)
+        return {"path": str(self.recovery_offer), "written": written.isoformat(timespec="seconds")}
+
+    def resolve_recovery(self, restore: object) -> dict[str, Any]:
+        """Restore the offered recovery copy (`restore` true) or delete it (false)."""
+        self._writable()
+        if not isinstance(restore, bool):
+            raise OperationError("'restore' must be true or false")
+        offer = self.recovery_offer
+        if offer is None:
+            raise OperationError("there is no recovery copy to restore or drop")
+        self.recovery_offer = None
+        if not restore:
+            offer.unlink(missing_ok=True)
+            self.version += 1
+            return self.view()
+        assert self.document is not None
+        original, module = self.path, self.module
+        document = io.load(offer, allowed_roots=self.roots)
+        # The copy lies beside the file, so its relative references mean the same there.
+        document.path = original
+        document.resource.uri = URI(str(original))
+        self._adopt(document, module)
+        self.stack.mark_unsaved()
+        return self.view()
+
+
+def _check_choice(value: object, what: str) -> None:
+    # The exporter names the versions and profiles it knows; a non-text value is refused here.
+    if not isinstance(value, str) or len(value) > 40:
+        raise OperationError(f"{what} must be a short text, not {value!r:.40}")
 
 
 def _inside(element: object, container: object) -> bool:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -13,6 +14,7 @@ import scemlmodel as scm
 
 from .. import catalog
 from ..diagnostics import Diagnostic
+from ..modules import naming
 from ..render.flow import inner_scope
 from ..render.labels import (
     Scope,
@@ -22,6 +24,7 @@ from ..render.labels import (
     scenario_title,
     use_lines,
 )
+from ..validation.edits import Change
 from .fields import actor_fields, node_fields, root_fields
 from .ids import Ids
 from .values import value_to_json
@@ -127,19 +130,69 @@ def _name(obj: EObject | None) -> str | None:
     return None if obj is None else str(obj.name)
 
 
+class NodeCache:
+    """What each top-level node lists (its entry, a use's internals), kept until a change
+    touches that node, so that a view after one edit lists one node anew, not all of them.
+
+    A node's entry depends on the node and what it contains, on the actors it names (their
+    names and kinds, held by the root) and on module definitions (other files). A change inside
+    a node forgets that node; a change to the graph's lists forgets the nodes added or removed;
+    a change anywhere else (the root and its actors, another file) forgets everything.
+    """
+
+    def __init__(self) -> None:
+        self._fragments: dict[EObject, Listing] = {}
+
+    def get(self, node: EObject) -> Listing | None:
+        """What `node` listed last, if nothing touched it since."""
+        return self._fragments.get(node)
+
+    def keep(self, node: EObject, fragment: Listing) -> None:
+        """Remember what `node` listed."""
+        self._fragments[node] = fragment
+
+    def forget_all(self) -> None:
+        """Forget every node (opened, saved, or changed outside what the changes show)."""
+        self._fragments.clear()
+
+    def forget(self, changes: Iterable[Change], graph: EObject) -> None:
+        """Forget the nodes `changes` touched (or all, for a change outside any one node)."""
+        for change in changes:
+            if change.owner is graph:
+                for item in (change.old, change.new):
+                    self._fragments.pop(item, None)
+                continue
+            top = _top_level(change.owner, graph)
+            if top is None or isinstance(top, scm.RootNode):
+                self._fragments.clear()
+                return
+            self._fragments.pop(top, None)
+
+
+def _top_level(obj: EObject, graph: EObject) -> EObject | None:
+    """The node of `graph` that contains `obj` (or is it), or None."""
+    current: EObject | None = obj
+    while current is not None:
+        container = current.eContainer()
+        if container is graph:
+            return current
+        current = container
+    return None
+
+
 class Lister:
     """Lists a graph's nodes and edges, and the insides of its module uses, read-only."""
 
-    def __init__(self, ids: Ids, folder: Path) -> None:
+    def __init__(self, ids: Ids, folder: Path, cache: NodeCache | None = None) -> None:
         self.ids = ids
         self.folder = folder
         self.listing = Listing()
+        self.cache = cache
 
     def graph(self, graph: scm.Graph) -> Listing:
         """Every node and flow of the edited graph, module internals after their use."""
         for node in graph.nodes:
-            node_id = self.ids.of(node, "n")
-            self.node(node, node_id, Scope(), None)
+            self._top_level_node(node)
         for flow in graph.flows:
             if flow.source is not None and flow.target is not None:
                 self.edge(
@@ -149,14 +202,40 @@ class Lister:
                 )
         return self.listing
 
-    def node(self, node: EObject, node_id: str, scope: Scope, parent: str | None) -> None:
-        """One node; a module use also lists its definition's nodes under its id."""
+    def _top_level_node(self, node: EObject) -> None:
+        fragment = self.cache.get(node) if self.cache is not None else None
+        if fragment is None:
+            whole, self.listing = self.listing, Listing()
+            self.node(node, self.ids.of(node, "n"), Scope(), None)
+            whole, fragment = self.listing, whole
+            self.listing = fragment
+            if self.cache is not None:
+                self.cache.keep(node, whole)
+            fragment = whole
+        # Entries are copied: problems are marked on them per view.
+        self.listing.nodes += [dict(entry) for entry in fragment.nodes]
+        self.listing.edges += fragment.edges
+        for obj, listed in fragment.shown.items():
+            self.listing.shown.setdefault(obj, listed)
+        for definition, use in fragment.uses_of.items():
+            self.listing.uses_of.setdefault(definition, use)
+
+    def node(
+        self, node: EObject, node_id: str, scope: Scope, parent: str | None, within: str = ""
+    ) -> None:
+        """One node; a module use also lists its definition's nodes under its id.
+
+        `within` is the name of the expanded use that shows the node: its name is scoped by it
+        (`CrossingManeuver_1.Accelerate_1`, as flatten names copies), so that two boxes on the
+        canvas never share a label.
+        """
         title, lines = title_and_lines(node, scope)
+        own = str(node.name or "")
         entry: dict[str, Any] = {
             "id": node_id,
             "kind": node.eClass.name,
             "look": look(node),
-            "name": str(node.name or ""),
+            "name": naming.scoped(within, own) if within and own else own,
             "title": title,
             "lines": lines,
             "position": _position(node),
@@ -170,13 +249,13 @@ class Lister:
         self.listing.shown.setdefault(node, node_id)
         if isinstance(node, scm.ModuleUse):
             entry["module"] = module_info(node, self.folder)
-            self.inside(node, node_id, scope)
+            self.inside(node, node_id, scope, entry["name"])
 
     def edge(self, edge_id: str, source: str, target: str) -> None:
         """One edge between listed nodes."""
         self.listing.edges.append({"id": edge_id, "source": source, "target": target})
 
-    def inside(self, use: scm.ModuleUse, use_id: str, scope: Scope) -> None:
+    def inside(self, use: scm.ModuleUse, use_id: str, scope: Scope, shown_name: str) -> None:
         """A use's definition: its nodes as `<use>/<index>` (ports `<use>/in`, `/out`)."""
         definition = loaded_definition(use)
         if definition is None or any(definition is seen for seen in scope.chain):
@@ -186,7 +265,7 @@ class Lister:
         local: dict[EObject, str] = {}
         for index, node in enumerate(definition.nodes):
             local[node] = f"{use_id}/{_PORT_IDS.get(node.eClass.name, index)}"
-            self.node(node, local[node], inner, use_id)
+            self.node(node, local[node], inner, use_id, shown_name)
         for index, flow in enumerate(definition.flows):
             if flow.source in local and flow.target in local:
                 self.edge(f"{use_id}/f{index}", local[flow.source], local[flow.target])

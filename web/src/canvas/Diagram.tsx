@@ -1,7 +1,7 @@
 // The canvas: React Flow with the notation's nodes, connect by dragging, drop from the palette.
 
 import { Background, Controls, MiniMap, ReactFlow, type Connection } from "@xyflow/react";
-import { useMemo, type DragEvent } from "react";
+import { useCallback, useEffect, useMemo, useRef, type DragEvent } from "react";
 import { useReactFlow } from "@xyflow/react";
 import type { Direction } from "../lib/layout";
 import { resolveLook } from "../lib/looks";
@@ -17,17 +17,28 @@ interface Props {
   state: DiagramState;
   direction: Direction;
   toggleExpanded: (id: string) => void;
+  connectFrom: { id: string; name: string } | null;
+  keyConnect: (id: string, end: "source" | "target") => void;
   onConnect: (source: string, target: string) => void;
   onMoved: (positions: Record<string, XY>) => void;
   onDropItem: (item: PaletteItem, at: XY) => void;
 }
 
-export function Diagram({ view, state, direction, toggleExpanded, onConnect, onMoved, onDropItem }: Props) {
+export function Diagram({ view, state, direction, toggleExpanded, connectFrom, keyConnect, onConnect, onMoved, onDropItem }: Props) {
   const flow = useReactFlow();
   const readOnly = view?.readOnly ?? true;
+  // Every view brings a new (equal) style object; a new context value would redraw every node.
+  const styleText = JSON.stringify(view?.style ?? null);
+  const style = useMemo(() => (JSON.parse(styleText) as View["style"] | null) ?? undefined, [styleText]);
+  // The toggle changes with every view (it reads the view's nodes); the nodes get a stable one.
+  const latestToggle = useRef(toggleExpanded);
+  useEffect(() => {
+    latestToggle.current = toggleExpanded;
+  }, [toggleExpanded]);
+  const toggle = useCallback((id: string) => latestToggle.current(id), []);
   const context = useMemo(
-    () => ({ style: view?.style, direction, readOnly, toggleExpanded }),
-    [view?.style, direction, readOnly, toggleExpanded],
+    () => ({ style, direction, readOnly, toggleExpanded: toggle, connectFrom, keyConnect }),
+    [style, direction, readOnly, toggle, connectFrom, keyConnect],
   );
 
   const onDrop = (event: DragEvent) => {
@@ -67,7 +78,8 @@ export function Diagram({ view, state, direction, toggleExpanded, onConnect, onM
           multiSelectionKeyCode={["Shift", "Meta", "Control"]}
           selectionOnDrag={false}
           panOnDrag
-          minZoom={0.1}
+          minZoom={0.02}
+          onlyRenderVisibleElements
           maxZoom={2.5}
           connectionRadius={30}
           proOptions={{ hideAttribution: true }}
@@ -77,6 +89,9 @@ export function Diagram({ view, state, direction, toggleExpanded, onConnect, onM
           <MiniMap<DiagramNode> pannable zoomable style={{ width: 170, height: 120 }} nodeColor={minimapColour} nodeStrokeColor="#37474f" nodeStrokeWidth={2} />
           <Controls showInteractive={false} showFitView={false} />
         </ReactFlow>
+        <div className="connect-hint" aria-live="polite">
+          {connectFrom ? `Connecting from ${connectFrom.name}: select the target and press C (or Enter on its in-handle); Escape cancels.` : ""}
+        </div>
       </div>
     </DiagramContext.Provider>
   );

@@ -9,6 +9,10 @@ export interface DiagramContextValue {
   direction: Direction;
   readOnly: boolean;
   toggleExpanded: (id: string) => void;
+  /** The node a keyboard connection starts from, while one is being made. */
+  connectFrom: { id: string; name: string } | null;
+  /** Start (from a source) or end (at a target) a keyboard connection at a node. */
+  keyConnect: (id: string, end: "source" | "target") => void;
 }
 
 export const DiagramContext = createContext<DiagramContextValue>({
@@ -16,6 +20,8 @@ export const DiagramContext = createContext<DiagramContextValue>({
   direction: "DOWN",
   readOnly: true,
   toggleExpanded: () => undefined,
+  connectFrom: null,
+  keyConnect: () => undefined,
 });
 
 export const useDiagram = () => useContext(DiagramContext);

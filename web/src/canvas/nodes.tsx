@@ -34,7 +34,7 @@ export function ActionNode({ data, selected }: Props) {
         borderStyle: look.dashed ? "dashed" : "solid",
       }}
     >
-      <Handles connectable={!readOnly && !data.node.readOnly} />
+      <Handles connectable={!readOnly && !data.node.readOnly} name={data.node.name} />
       <div className="node-title">{data.node.title}</div>
       <TextLines lines={nameAndLines(data.node)} />
       <ProblemBadge node={data.node} />
@@ -50,7 +50,7 @@ export function RootNode({ data, selected }: Props) {
       className={`sceml-box sceml-root${selected ? " selected" : ""}`}
       style={{ background: look.fill, borderColor: look.border, color: look.text, borderRadius: 14 }}
     >
-      <Handles connectable={!readOnly && !data.node.readOnly} />
+      <Handles connectable={!readOnly && !data.node.readOnly} name={data.node.name} />
       <div className="node-title">{data.node.title}</div>
       <TextLines lines={data.node.lines} />
       <ProblemBadge node={data.node} />
@@ -69,7 +69,7 @@ export function JoinNode({ data, selected }: Props) {
       <span className="join-symbol" style={{ color: look.text }}>
         {symbol}
       </span>
-      <Handles connectable={!readOnly && !data.node.readOnly} />
+      <Handles connectable={!readOnly && !data.node.readOnly} name={data.node.name} />
       <ProblemBadge node={data.node} />
     </div>
   );
@@ -84,7 +84,7 @@ export function EndNode({ data, selected }: Props) {
       <div className="end-inner" style={{ background: look.fill, color: "#ffffff" }}>
         {one ? `End ${symbolOf(style, "joinOne", "?")}` : "End"}
       </div>
-      <Handles connectable={!readOnly && !data.node.readOnly} />
+      <Handles connectable={!readOnly && !data.node.readOnly} name={data.node.name} />
       <ProblemBadge node={data.node} />
     </div>
   );
@@ -134,7 +134,7 @@ export function ModuleNode({ data, selected }: Props) {
       className={`sceml-module${broken ? " broken" : ""}${selected ? " selected" : ""}`}
       style={{ background: look.fill, borderColor: look.border, color: look.text }}
     >
-      <Handles connectable={!readOnly && !data.node.readOnly} />
+      <Handles connectable={!readOnly && !data.node.readOnly} name={data.node.name} />
       <div className="module-inner" style={{ borderColor: look.border }}>
         <div className="node-title">{data.node.title}</div>
         <div className="node-subtitle">module</div>

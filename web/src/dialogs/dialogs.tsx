@@ -86,14 +86,50 @@ export function ExportDialog({
   );
 }
 
-export function ExtractDialog({ count, onExtract, onCancel }: { count: number; onExtract: (name: string, library: string) => void; onCancel: () => void }) {
+export function ExtractDialog({
+  count,
+  libraries,
+  onExtract,
+  onCancel,
+}: {
+  count: number;
+  /** The libraries the palette offers, as ops name them: suggestions, never a default. */
+  libraries: string[];
+  onExtract: (name: string, library: string) => void;
+  onCancel: () => void;
+}) {
   const [name, setName] = useState("");
-  const [library, setLibrary] = useState("library/sceml-library.xmi");
+  const [library, setLibrary] = useState("");
+  const [missing, setMissing] = useState<string | null>(null);
+  const confirm = () => {
+    if (!name.trim()) return setMissing("Name the new module.");
+    if (!library.trim()) return setMissing("Choose the library file the module is written into.");
+    onExtract(name.trim(), library.trim());
+  };
   return (
-    <Dialog title="Extract module" confirm="Extract module" onConfirm={() => name.trim() && library.trim() && onExtract(name.trim(), library.trim())} onCancel={onCancel}>
-      <p className="hint">The {count} selected nodes become a module, replaced here by a use of it.</p>
+    <Dialog title="Extract module" confirm="Extract module" onConfirm={confirm} onCancel={onCancel}>
+      <p className="hint">
+        The {count} selected nodes become a module, replaced here by a use of it. The module is written into the library
+        file at once; Undo takes it out again.
+      </p>
       <Field label="Module name">{(id) => <input id={id} value={name} onChange={(e) => setName(e.target.value)} />}</Field>
-      <Field label="Library">{(id) => <input id={id} value={library} onChange={(e) => setLibrary(e.target.value)} size={40} />}</Field>
+      <Field label="Library">
+        {(id) => (
+          <>
+            <input id={id} value={library} list={`${id}-known`} placeholder="library/my-modules.xmi" onChange={(e) => setLibrary(e.target.value)} size={40} />
+            <datalist id={`${id}-known`}>
+              {libraries.map((known) => (
+                <option key={known} value={known} />
+              ))}
+            </datalist>
+          </>
+        )}
+      </Field>
+      {missing && (
+        <p className="problem-text" role="alert">
+          {missing}
+        </p>
+      )}
     </Dialog>
   );
 }
@@ -110,7 +146,13 @@ export function UseModuleDialog({
   onCancel: () => void;
 }) {
   const roles = item.roles ?? [];
-  const [bindings, setBindings] = useState<Record<string, string>>({});
+  // Only the actors that fit a role are offered (the server judges the kinds); a role that only
+  // one actor fits is bound to it from the start.
+  const fitting = (role: (typeof roles)[number]) => role.actors ?? view.actors.map((actor) => actor.name);
+  const [bindings, setBindings] = useState<Record<string, string>>(() =>
+    Object.fromEntries(roles.flatMap((role) => (fitting(role).length === 1 ? [[role.role, fitting(role)[0] ?? ""]] : []))),
+  );
+  const kindOf = new Map(view.actors.map((actor) => [actor.name, actor.kind ?? actor.allowedKinds?.join(" | ") ?? "?"]));
   const chosen = () => Object.fromEntries(Object.entries(bindings).filter(([, actor]) => actor !== ""));
   return (
     <Dialog title={`Use ${item.module ?? item.label}`} confirm="Add" onConfirm={() => onAdd(chosen())} onCancel={onCancel}>
@@ -121,9 +163,9 @@ export function UseModuleDialog({
           {(id) => (
             <select id={id} value={bindings[role.role] ?? ""} onChange={(e) => setBindings({ ...bindings, [role.role]: e.target.value })}>
               <option value="">(none)</option>
-              {view.actors.map((actor) => (
-                <option key={actor.id} value={actor.name}>
-                  {actor.name} ({actor.kind ?? "?"})
+              {fitting(role).map((name) => (
+                <option key={name} value={name}>
+                  {name} ({kindOf.get(name) ?? "?"})
                 </option>
               ))}
             </select>

@@ -47,7 +47,13 @@ interface Level {
  * Lay out the nodes directly inside `parent` (null: the top level). Expanded frames are laid out
  * first, inside out, so that each is one box of known size at its own level.
  */
-async function layoutLevel(shown: Shown, parent: string | null, direction: Direction, measures: Measures): Promise<Level> {
+async function layoutLevel(
+  shown: Shown,
+  parent: string | null,
+  direction: Direction,
+  measures: Measures,
+  keepSaved = false,
+): Promise<Level> {
   const nodes = new Map(shown.nodes.map((node) => [node.id, node]));
   const members = shown.nodes.filter((node) => (parent === null ? node.parent === null || !nodes.has(node.parent) : node.parent === parent));
   const memberIds = new Set(members.map((node) => node.id));
@@ -86,8 +92,11 @@ async function layoutLevel(shown: Shown, parent: string | null, direction: Direc
     seen.add(`${source}>${target}`);
     edges.push({ id: edge.id, sources: [source], targets: [target] });
   }
+  // Every node already has its place (saved in the model): ELK would only be overruled. This
+  // is the common case after the first edit, and ELK is most of a large graph's redraw.
+  const placed = keepSaved && members.every((node) => node.position !== null);
   const graph: ElkNode = { id: parent ?? "__root__", layoutOptions: options(direction), children, edges };
-  const result = await elk.layout(graph);
+  const result = placed ? { children: [], width: 0, height: 0 } : await elk.layout(graph);
   for (const child of result.children ?? []) {
     positions.set(child.id, { x: Math.round(child.x ?? 0), y: Math.round(child.y ?? 0) });
   }
@@ -102,6 +111,34 @@ async function layoutLevel(shown: Shown, parent: string | null, direction: Direc
   return { positions, sizes, width: result.width ?? 0, height: result.height ?? 0 };
 }
 
+/** How much wider a box may grow (a longer number) and keep its place: less than ELK's spacing
+ * between nodes, so it cannot reach its neighbour. */
+const WIDTH_SLACK = 24;
+
+/** What the layout depends on besides sizes: the direction, what is drawn where, the edges. */
+export function structureKey(shown: Shown, direction: Direction): string {
+  const nodes = shown.nodes.map((node) => {
+    const where = node.parent === null && node.position ? `${node.position.x},${node.position.y}` : "";
+    return `${node.id}<${node.parent ?? ""}@${where}${shown.frames.has(node.id) ? "F" : ""}`;
+  });
+  const edges = shown.edges.map((edge) => `${edge.source}>${edge.target}`);
+  return `${direction}|${nodes.join(";")}|${edges.join(";")}`;
+}
+
+/** `layout` (made for the same structure) with every box measured again, or null when a box
+ * changed its height or grew too much to keep its place: then ELK must lay out again. */
+export function remeasured(layout: Layout, shown: Shown, measures: Measures): Layout | null {
+  const sizes = new Map(layout.sizes);
+  for (const node of shown.nodes) {
+    if (shown.frames.has(node.id)) continue;
+    const before = layout.sizes.get(node.id);
+    const now = measures.size(node);
+    if (!before || before.height !== now.height || now.width > before.width + WIDTH_SLACK) return null;
+    sizes.set(node.id, now);
+  }
+  return { positions: layout.positions, sizes };
+}
+
 /** Lay out what is shown; saved positions of top-level nodes win unless `ignoreSaved`. */
 export async function layoutGraph(
   shown: Shown,
@@ -109,7 +146,7 @@ export async function layoutGraph(
   measures: Measures,
   ignoreSaved = false,
 ): Promise<Layout> {
-  const level = await layoutLevel(shown, null, direction, measures);
+  const level = await layoutLevel(shown, null, direction, measures, !ignoreSaved);
   if (!ignoreSaved) {
     for (const node of shown.nodes) {
       if (node.parent === null && node.position) level.positions.set(node.id, node.position);

@@ -75,6 +75,36 @@ export function parseNumber(text: string | undefined): number | null {
   return Number.isFinite(value) ? value : null;
 }
 
+/** Why a typed number cannot be used ("fast" is not a number; 1e400 is too large), or null
+ * when it can (an empty text is a missing number, not a wrong one). */
+export function numberProblem(text: string | undefined): string | null {
+  const trimmed = (text ?? "").trim().replace(/^(-?\d+),(\d+)$/, "$1.$2");
+  if (trimmed === "") return null;
+  const value = Number(trimmed);
+  if (Number.isNaN(value)) return `“${trimmed}” is not a number`;
+  if (!Number.isFinite(value)) return `${trimmed} is too large: numbers go up to about 1.8e308`;
+  return null;
+}
+
+/** Why a coordinate's text (a number or a compact distribution, see formatParam) cannot be
+ * used, or null. */
+export function paramTextProblem(text: string | undefined): string | null {
+  const trimmed = (text ?? "").trim();
+  if (trimmed === "" || parseParam(trimmed) !== undefined) return null;
+  // A number too large for a double is named as such; anything else gets the forms it may take.
+  if (Math.abs(Number(trimmed)) === Infinity) return numberProblem(trimmed);
+  return `“${trimmed}” is neither a number nor a value like [5, 10], U(5, 10), N(8, 1) or {5, 8}`;
+}
+
+/** Why a typed list of numbers cannot be used: the first item's problem, or null. */
+export function numberListProblem(text: string | undefined): string | null {
+  for (const item of (text ?? "").split(/[,;\s]+/)) {
+    const problem = numberProblem(item);
+    if (problem) return problem;
+  }
+  return null;
+}
+
 /** A comma- or space-separated list of numbers, or null when any item is not a number. */
 export function parseNumberList(text: string | undefined): number[] | null {
   const items = (text ?? "").split(/[,;\s]+/).filter((item) => item !== "");

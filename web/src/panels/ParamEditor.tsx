@@ -1,7 +1,7 @@
 // A parameter: its kind (limited to the level's value types, or unset) and one input per number.
 
 import { useState } from "react";
-import { draftOf, isParamType, kmhText, PARAM_INPUTS, switchKind, valueOfDraft, type Draft } from "../lib/values";
+import { draftOf, isParamType, kmhText, numberListProblem, numberProblem, PARAM_INPUTS, switchKind, valueOfDraft, type Draft } from "../lib/values";
 import { sameJson } from "../lib/same";
 import type { ParamValue } from "../types";
 import { CommitInput, LabelledSelect } from "./inputs";
@@ -44,6 +44,12 @@ export function ParamEditor({ label, value, valueTypes, unit, defaultValue, kmh,
   // An unset parameter still shows the inputs of the first kind: typing a number sets it.
   const shownType = draft.type === "unset" ? (kinds[0] ?? "value") : draft.type;
   const inputs = PARAM_INPUTS[shownType];
+  const problemOf = (name: string): string | null => {
+    const text = draft.inputs[name];
+    if (name === "parameter") return null;
+    return name === "values" || name === "weights" ? numberListProblem(text) : numberProblem(text);
+  };
+  const anyProblem = inputs.some((input) => problemOf(input.name) !== null);
   return (
     <fieldset className="param">
       <legend>
@@ -67,6 +73,7 @@ export function ParamEditor({ label, value, valueTypes, unit, defaultValue, kmh,
           inputMode={input.name === "parameter" ? "text" : "decimal"}
           placeholder={input.name === "value" || input.name === "mean" ? hint || unit || undefined : input.required ? (unit ?? undefined) : "optional"}
           invalid={complete === undefined && input.required && !(draft.inputs[input.name] ?? "").trim()}
+          problem={problemOf(input.name)}
           onCommit={(text) => {
             const next = { type: shownType, inputs: { ...draft.inputs, [input.name]: text } };
             const empty = Object.values(next.inputs).every((item) => item.trim() === "");
@@ -75,7 +82,8 @@ export function ParamEditor({ label, value, valueTypes, unit, defaultValue, kmh,
         />
       ))}
       {kmh && complete ? <div className="hint kmh">= {kmhText(complete)}</div> : null}
-      {complete === undefined && draft.type !== "unset" ? <div className="hint incomplete">Fill in the required numbers to send it.</div> : null}
+      {complete === undefined && draft.type !== "unset" && !anyProblem ? <div className="hint incomplete">Fill in the required numbers to send it.</div> : null}
+      {anyProblem ? <div className="hint incomplete">Not sent: the canvas keeps the value before.</div> : null}
     </fieldset>
   );
 }

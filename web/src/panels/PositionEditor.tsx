@@ -4,6 +4,7 @@
 import { useState } from "react";
 import { POSITION_INPUTS, positionDraft, positionOfDraft, type PositionDraft, type PositionType } from "../lib/positions";
 import { sameJson } from "../lib/same";
+import { numberProblem, paramTextProblem } from "../lib/values";
 import type { Position } from "../types";
 import { CommitInput, LabelledSelect } from "./inputs";
 
@@ -14,6 +15,17 @@ interface Props {
   onCommit: (value: Position | null) => void;
   /** Offer "none" (a required position still may be unset while editing). */
   allowNone?: boolean;
+}
+
+/** Why a coordinate's text cannot be used: the road is any text, the lane a whole number. */
+function coordinateProblem(key: string, text: string | undefined): string | null {
+  if (key === "roadId") return null;
+  if (key === "laneId") {
+    const trimmed = (text ?? "").trim();
+    if (trimmed === "") return null;
+    return numberProblem(trimmed) ?? (Number.isInteger(Number(trimmed)) ? null : `a lane is a whole number, not ${trimmed}`);
+  }
+  return paramTextProblem(text);
 }
 
 export function PositionEditor({ label, value, disabled, onCommit, allowNone = true }: Props) {
@@ -53,6 +65,7 @@ export function PositionEditor({ label, value, disabled, onCommit, allowNone = t
               inputMode={input.key === "roadId" ? "text" : "decimal"}
               placeholder={input.required ? undefined : "optional"}
               invalid={result === undefined && input.required && !(draft.inputs[input.key] ?? "").trim()}
+              problem={coordinateProblem(input.key, draft.inputs[input.key])}
               onCommit={(text) => update({ ...draft, inputs: { ...draft.inputs, [input.key]: text } })}
             />
           ))}

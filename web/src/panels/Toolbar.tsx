@@ -20,6 +20,8 @@ export interface ToolbarActions {
 
 interface Props {
   view: View | null;
+  /** After "Open definition": the scenario to go back to. */
+  back?: { name: string; go: () => void } | null;
   direction: Direction;
   hasSelection: boolean;
   canPaste: boolean;
@@ -34,7 +36,7 @@ function Button({ label, onClick, disabled, title }: { label: string; onClick: (
   );
 }
 
-export function Toolbar({ view, direction, hasSelection, canPaste, actions }: Props) {
+export function Toolbar({ view, back, direction, hasSelection, canPaste, actions }: Props) {
   const editable = view !== null && !view.readOnly;
   const summary = view?.summary;
   return (
@@ -44,6 +46,11 @@ export function Toolbar({ view, direction, hasSelection, canPaste, actions }: Pr
         {view ? (view.document.module ? `${view.document.name} — ${view.document.module}` : view.document.name) : ""}
         {view?.readOnly ? " (read-only)" : ""}
       </span>
+      {back && (
+        <div className="toolbar-group">
+          <Button label="Back to scenario" onClick={back.go} title={`Back to ${back.name}`} />
+        </div>
+      )}
       <div className="toolbar-group">
         <Button label="Open" onClick={actions.open} />
         <Button label="Save" onClick={actions.save} disabled={!editable} title="Save (Ctrl+S)" />

@@ -11,11 +11,14 @@ interface CommitInputProps {
   inputMode?: "decimal" | "numeric" | "text";
   className?: string;
   invalid?: boolean;
+  /** Why the text cannot be used; shown under the input and announced with it. */
+  problem?: string | null;
 }
 
 /** A text input with its own label; commits on blur or Enter, reverts on Escape. */
-export function CommitInput({ label, value, onCommit, disabled, placeholder, inputMode, className, invalid }: CommitInputProps) {
+export function CommitInput({ label, value, onCommit, disabled, placeholder, inputMode, className, invalid, problem }: CommitInputProps) {
   const id = useId();
+  const problemId = `${id}-problem`;
   const [text, setText] = useState(value);
   const [focused, setFocused] = useState(false);
   // What the model holds as far as this input knows: the server's value, or what it last sent
@@ -46,7 +49,9 @@ export function CommitInput({ label, value, onCommit, disabled, placeholder, inp
         readOnly={disabled}
         placeholder={placeholder}
         inputMode={inputMode}
-        aria-invalid={invalid || undefined}
+        aria-invalid={invalid || Boolean(problem) || undefined}
+        aria-errormessage={problem ? problemId : undefined}
+        aria-describedby={problem ? problemId : undefined}
         onChange={(event) => setText(event.target.value)}
         onFocus={() => setFocused(true)}
         onBlur={() => {
@@ -58,6 +63,11 @@ export function CommitInput({ label, value, onCommit, disabled, placeholder, inp
           if (event.key === "Escape") setText(value);
         }}
       />
+      {problem ? (
+        <div id={problemId} className="problem-text">
+          {problem}
+        </div>
+      ) : null}
     </div>
   );
 }

@@ -1,7 +1,7 @@
 // The view the server sent last, and the calls that replace it. Refusals become a message.
 
 import { useCallback, useEffect, useRef, useState } from "react";
-import { api, ApiError } from "../api";
+import { api, ApiError, TAB_ID, type ChangeEvent } from "../api";
 import type { Op, View } from "../types";
 
 export interface Server {
@@ -50,6 +50,26 @@ export function useServer(): Server {
 
   useEffect(() => {
     void run(api.view);
+  }, [run]);
+
+  // Live for every tab: another tab's change (or a server that came back) fetches the view.
+  const version = useRef(-1);
+  useEffect(() => {
+    version.current = view?.version ?? -1;
+  }, [view]);
+  useEffect(() => {
+    const events = new EventSource("/api/events");
+    const refresh = () => void run(api.view);
+    events.addEventListener("change", (event) => {
+      const change = JSON.parse((event as MessageEvent<string>).data) as ChangeEvent;
+      if (change.tab !== TAB_ID) refresh();
+    });
+    // The first event of every connection: after a reconnect, catch up on what was missed.
+    events.addEventListener("hello", (event) => {
+      const hello = JSON.parse((event as MessageEvent<string>).data) as { version: number };
+      if (version.current !== -1 && hello.version !== version.current) refresh();
+    });
+    return () => events.close();
   }, [run]);
 
   return { view, error, clearError: () => setError(null), run, ops, report, enqueue };

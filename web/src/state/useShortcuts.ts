@@ -13,6 +13,10 @@ export interface Shortcuts {
   save: () => void;
   clearSelection: () => void;
   fit: () => void;
+  /** C: start a connection at the selected node, or end it there. */
+  connect: () => void;
+  /** /: search the palette. */
+  search: () => void;
 }
 
 function typing(target: EventTarget | null): boolean {
@@ -33,6 +37,8 @@ export function shortcutOf(event: Pick<KeyboardEvent, "key" | "ctrlKey" | "metaK
   if (event.key === "Delete" || event.key === "Backspace") return "remove";
   if (event.key === "Escape") return "clearSelection";
   if (key === "f" && !event.shiftKey) return "fit";
+  if (key === "c" && !event.shiftKey) return "connect";
+  if (event.key === "/") return "search";
   return null;
 }
 

@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { draftOf, formatParam, parseParam, switchKind, valueOfDraft } from "../values";
+import { draftOf, formatParam, numberListProblem, numberProblem, paramTextProblem, parseParam, switchKind, valueOfDraft } from "../values";
 import type { ParamValue } from "../../types";
 
 const samples: ParamValue[] = [
@@ -13,6 +13,29 @@ const samples: ParamValue[] = [
   { type: "discrete", values: [5, 8], weights: null },
   { type: "ref", parameter: "speed" },
 ];
+
+describe("number problems", () => {
+  it("names text that is not a number and numbers beyond a double", () => {
+    expect(numberProblem("fast")).toBe("“fast” is not a number");
+    expect(numberProblem("1e400")).toBe("1e400 is too large: numbers go up to about 1.8e308");
+    expect(numberProblem("-1e400")).toBe("-1e400 is too large: numbers go up to about 1.8e308");
+    expect(numberListProblem("5, 8, slow")).toBe("“slow” is not a number");
+  });
+
+  it("explains coordinate text that is neither a number nor a distribution", () => {
+    expect(paramTextProblem("1e400")).toBe("1e400 is too large: numbers go up to about 1.8e308");
+    expect(paramTextProblem("far")).toBe("“far” is neither a number nor a value like [5, 10], U(5, 10), N(8, 1) or {5, 8}");
+    expect(paramTextProblem("U(1, 2)")).toBeNull();
+    expect(paramTextProblem("34")).toBeNull();
+  });
+
+  it("accepts numbers, a decimal comma and the empty text", () => {
+    expect(numberProblem("8.5")).toBeNull();
+    expect(numberProblem("8,5")).toBeNull();
+    expect(numberProblem(" ")).toBeNull();
+    expect(numberListProblem("5, 8")).toBeNull();
+  });
+});
 
 describe("parameter drafts", () => {
   it.each(samples)("round-trips %j through the inputs", (value) => {

@@ -1,0 +1,97 @@
+"""Benchmark: the closed loop of `sceml extract` over sampled UIS1 and UIS2 scenarios (issue 30).
+
+Each sample of examples/uis1-logical.xmi and uis2-logical.xmi (random, seed 7) is run in the
+preview; its recording is extracted, as recorded (20 Hz) and with Gaussian position noise of
+0.1 m at 10 Hz; the extracted scenario is run again. Printed per scenario and recording: how
+many extractions show the same maneuvers per actor in the same order (`maneuvers`), the same
+waits too (`all`), how many replay within 1 m (and within 1 m or, for an actor whose speed
+jumped faster than its kind allows, the bound `closedloop.allowed_error` gives), the replay
+error's median and 95th percentile,
+and the time per extraction beside one preview run of the original (the anchor, measured in
+this run). Under noise, speed changes below 1 m/s are not compared (closedloop.signature).
+
+    .venv/bin/python benchmarks/extract_closed_loop.py [--n 200]
+"""
+
+from __future__ import annotations
+
+import argparse
+import time
+from pathlib import Path
+
+import numpy as np
+
+from sceml import io
+from sceml.extract import extract
+from sceml.extract.closedloop import recording_of, replays_closely, signature
+from sceml.levels.apply import FlatTemplate
+from sceml.levels.sampling import design, plan_for
+from sceml.levels.space import parameter_space
+from sceml.maps import load_map
+from sceml.simulate import simulate
+
+REPO = Path(__file__).resolve().parents[1]
+CASES = {"clean, 20 Hz": {}, "noise 0.1 m, 10 Hz": {"noise": 0.1, "every": 2}}
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--n", type=int, default=200, help="samples per logical scenario")
+    options = parser.parse_args()
+    road_map = load_map(REPO / "maps" / "intersection.xodr")
+    for name in ("uis1-logical.xmi", "uis2-logical.xmi"):
+        path = REPO / "examples" / name
+        logical = io.load_scenario(path).root
+        space = parameter_space(logical)
+        template = FlatTemplate(logical, space.paths)
+        tallies = {
+            case: {
+                "maneuvers": 0,
+                "all": 0,
+                "within 1 m": 0,
+                "within bound": 0,
+                "errors": [],
+                "time": 0.0,
+            }
+            for case in CASES
+        }
+        anchor = 0.0
+        rows = design(space, plan_for(space, "random", options.n, 7))
+        for index, row in enumerate(rows):
+            scenario = template.fill(list(row))
+            started = time.perf_counter()
+            run = simulate(scenario, path, road_map=road_map)
+            anchor += time.perf_counter() - started
+            for case, noise in CASES.items():
+                min_change = 1.0 if noise else None
+                expected = signature(scenario, run, min_change=min_change)
+                started = time.perf_counter()
+                found = extract(
+                    recording_of(run, seed=index, **noise),  # type: ignore[arg-type]
+                    road_map,
+                    map_reference="../maps/intersection.xodr",
+                )
+                tally = tallies[case]
+                tally["time"] += time.perf_counter() - started  # type: ignore[operator]
+                assert found.replay is not None
+                shown = signature(found.scenario, found.replay.run, min_change=min_change)
+                tally["maneuvers"] += shown.maneuvers == expected.maneuvers  # type: ignore[operator]
+                tally["all"] += shown == expected  # type: ignore[operator]
+                tally["within 1 m"] += found.replay.largest < 1.0  # type: ignore[operator]
+                tally["within bound"] += replays_closely(found)  # type: ignore[operator]
+                tally["errors"].append(found.replay.largest)  # type: ignore[union-attr]
+        n = len(rows)
+        print(f"{name}: {n} samples; one preview run of the original: {anchor / n * 1000:.1f} ms")
+        for case, tally in tallies.items():
+            errors = np.array(tally["errors"])
+            print(
+                f"  {case}: maneuvers {tally['maneuvers']}/{n}, all {tally['all']}/{n}, "
+                f"within 1 m {tally['within 1 m']}/{n} (or a speed step's bound: "
+                f"{tally['within bound']}/{n}); replay error median "
+                f"{np.median(errors):.2f} m, 95th percentile {np.percentile(errors, 95):.2f} m; "
+                f"{float(tally['time']) / n * 1000:.0f} ms per extraction (with its replay)"  # type: ignore[arg-type]
+            )
+
+
+if __name__ == "__main__":
+    main()

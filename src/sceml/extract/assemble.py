@@ -1,0 +1,156 @@
+"""Events and explanations made into a SceML graph, one branch (or a few) per actor.
+
+Each actor's maneuvers follow each other in the order they started. A maneuver is chained to
+the node of the actor that finished last before it had to start; when it started noticeably
+later, the explanation (`sync.explain`) goes between them as a condition node. A turn or a
+crossing is followed by its arrival check (InLocationRadius at its destination), which is how
+the export knows it has finished (SPEC §7). When every node of the actor is still running at
+a maneuver's start (a lane change during a speed change), the maneuver gets a branch of its
+own from the root, with its wait in front.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, cast
+
+import scemlmodel as scm
+
+from ..build import ScenarioBuilder, world
+from ..params import value
+from .events import Event
+from .motion import Motion
+from .sync import Explanation, explain
+from .thresholds import Thresholds
+
+
+@dataclass(frozen=True)
+class Inferred:
+    """A condition the extraction put before a maneuver, and why."""
+
+    node: str
+    maneuver: str
+    actor: str
+    start: float
+    explanation: Explanation
+
+
+@dataclass
+class _Tail:
+    node: scm.GraphElement
+    finish: float
+
+
+def add_actor_graph(
+    builder: ScenarioBuilder,
+    actor: scm.Actor,
+    events: list[Event],
+    motions: dict[str, Motion],
+    actors: dict[str, scm.Actor],
+    ego: str | None,
+    thresholds: Thresholds,
+) -> list[Inferred]:
+    """Add one actor's maneuvers (with their waits) from the root to the end node."""
+    name = str(actor.name)
+    own = motions[name]
+    begin = _Tail(builder.root, float(own.times[0]))
+    tails = [begin]
+    inferred: list[Inferred] = []
+    for event in sorted(events, key=lambda e: e.start):
+        tail = _tail_for(event, tails, begin, thresholds)
+        node = builder.add(event.kind, actor, **_node_parameters(event.parameters, event))
+        if not event.flexible and event.start - tail.finish > _least_wait(event, thresholds):
+            driving = own.at(own.speed, event.start) > thresholds.standing_speed
+            driving = driving and not _speed_changing(events, tail.finish, event.start)
+            why = explain(name, event.start, tail.finish, motions, ego, thresholds, driving=driving)
+            condition = _condition(builder, why, actors)
+            builder.chain(tail.node, condition, node)
+            inferred.append(Inferred(str(condition.name), str(node.name), name, event.start, why))
+        else:
+            builder.flow(tail.node, node)
+        tails.append(_Tail(_arrival(builder, actor, node, event), max(event.finish, event.start)))
+    for tail in tails:
+        if tail.node is not builder.root:
+            builder.flow(tail.node, builder.end)
+    return inferred
+
+
+def _tail_for(event: Event, tails: list[_Tail], begin: _Tail, thresholds: Thresholds) -> _Tail:
+    """The node a maneuver follows: the actor's node that finished last before it started.
+
+    A turn or a walk may start later than it shows, so it follows the latest node in any case;
+    any other maneuver that started while all the actor's nodes ran gets a branch of its own.
+    """
+    slack = max(thresholds.sync_tolerance, _least_wait(event, thresholds))
+    ready = [t for t in tails if t.finish <= event.start + slack]
+    if not ready and not event.flexible:
+        return _Tail(begin.node, begin.finish)
+    tail = max(ready or tails, key=lambda t: t.finish)
+    tails.remove(tail)
+    return tail
+
+
+def _arrival(
+    builder: ScenarioBuilder, actor: scm.Actor, node: scm.ActionNode, event: Event
+) -> scm.GraphElement:
+    """After a turn or crossing, the check that it arrived; the node itself otherwise."""
+    if event.destination is None:
+        return node
+    arrived = builder.add(
+        "InLocationRadius",
+        actor,
+        position=_place(event.destination),
+        radius=event.parameters.get("tolerance", 2.0),
+    )
+    builder.flow(node, arrived)
+    return arrived
+
+
+def _least_wait(event: Event, thresholds: Thresholds) -> float:
+    """The shortest gap that needs a wait: a crossing's start (its bend, judged only once the
+    actor is under way) is known only to within the smoothing window, the others to within
+    `min_wait`."""
+    if event.kind == "Cross":
+        return max(thresholds.min_wait, thresholds.smoothing_window)
+    return thresholds.min_wait
+
+
+def _speed_changing(events: list[Event], begin: float, end: float) -> bool:
+    """Whether a speed change of the actor runs during [begin, end] (KeepVelocity would stop it)."""
+    return any(e.longitudinal and e.start < end and e.finish > begin for e in events)
+
+
+def _position(point: tuple[float, float, float]) -> scm.WorldPosition:
+    x, y, h = point
+    return world(round(x, 3), round(y, 3), h=round(h, 4))
+
+
+def _place(point: tuple[float, float, float]) -> scm.WorldPosition:
+    """A place a condition waits for: no heading, which a circle about it does not have (and a
+    heading against the lane's traffic, of an actor overtaking, would be flagged)."""
+    x, y, _ = point
+    return scm.WorldPosition(x=value(round(x, 3)), y=value(round(y, 3)))
+
+
+def _node_parameters(parameters: dict[str, object], event: Event | None = None) -> dict[str, Any]:
+    """Parameters as the builder takes them: points (x, y, heading) become world positions
+    (a condition's `position` a place without heading)."""
+    made: dict[str, Any] = {}
+    for key, item in parameters.items():
+        if isinstance(item, tuple):
+            point = cast(tuple[float, float, float], item)
+            made[key] = _place(point) if key == "position" else _position(point)
+        else:
+            made[key] = item
+    if event is not None and event.destination is not None:
+        made["destination"] = _position(event.destination)
+    return made
+
+
+def _condition(
+    builder: ScenarioBuilder, why: Explanation, actors: dict[str, scm.Actor]
+) -> scm.ActionNode:
+    target = actors[why.target] if why.target else None
+    return builder.add(
+        why.kind, actors[why.actor], target=target, **_node_parameters(why.parameters)
+    )

@@ -1,0 +1,39 @@
+"""What an actor did, as timed events: speed changes and path changes, before they are nodes."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+#: Event kinds that change the speed; the others change the path.
+LONGITUDINAL = ("Accelerate", "Decelerate", "Stop")
+
+
+@dataclass
+class Event:
+    """A maneuver seen in a recording.
+
+    `start` is when the motion began to change, `end` when the change was complete. A
+    `flexible` event (a turn; a crossing without a visible change of heading) may be activated
+    any time up to `start`: the actor follows its lane until the junction (or walks on) anyway.
+    `finish` is when the maneuver node will finish in a replay (a turn or crossing: on arrival
+    within its tolerance), which is what the next node of the actor waits for.
+    """
+
+    kind: str
+    actor: str
+    start: float
+    end: float
+    parameters: dict[str, object] = field(default_factory=dict)
+    flexible: bool = False
+    finish: float = 0.0
+    #: Where a turn or crossing ends (x, y, heading), for its arrival check.
+    destination: tuple[float, float, float] | None = None
+    #: The speed (m/s) before a speed change.
+    from_speed: float | None = None
+    #: How far (rad) the heading turned, for a path change.
+    turned: float = 0.0
+
+    @property
+    def longitudinal(self) -> bool:
+        """Whether the event changes the speed (the others change the path)."""
+        return self.kind in LONGITUDINAL

@@ -1,0 +1,222 @@
+"""Speed changes: where a smoothed speed profile ramps, fitted as linear ramps between plateaus.
+
+Accelerate, Decelerate and Stop each change the speed linearly at a rate to a target, so the
+profile is piecewise linear. The ramps are found where the acceleration exceeds a threshold,
+then each one's start and end are refined by least squares against the profile around it.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import NDArray
+from scipy.signal import savgol_filter
+
+from .events import Event
+from .motion import Array, Motion
+from .thresholds import Thresholds
+
+
+def speed_events(motion: Motion, thresholds: Thresholds) -> list[Event]:
+    """The actor's speed changes as Accelerate, Decelerate and Stop events, in time order."""
+    step = motion.step
+    window = max(5, int(round(thresholds.smoothing_window / step)) | 1)
+    acceleration = savgol_filter(
+        motion.speed, min(window, len(motion.speed) // 2 * 2 - 1), 2, deriv=1, delta=step
+    )
+    changing = np.abs(acceleration) > thresholds.accel_threshold
+    spans = _runs(changing, gap=max(1, int(0.5 / step)))
+    events = []
+    bounds = [0, *[k for span in spans for k in span], len(motion.times) - 1]
+    # The plateaus either side weigh in up to this many samples: enough to pin v0 and v1.
+    margin = int(3.0 / step)
+    edge = len(motion.times) - max(1, int(thresholds.smoothing_window / step))
+    for i, (a, b) in enumerate(spans):
+        if a >= edge:
+            continue  # a change that shows only in the smoothing's last window: its edge
+        b = min(b, edge)
+        before, after = max(bounds[2 * i], a - margin), min(bounds[2 * i + 3], b + margin)
+        fitted = _fit_ramp(
+            motion.times,
+            motion.along,
+            before,
+            a,
+            b,
+            after,
+            step,
+            # Only a ramp of an actor already moving is taken back to the start: a standing
+            # actor's start is an event of its own, whose time a condition may explain.
+            thresholds.smoothing_window if motion.moving[0] else 0.0,
+        )
+        if fitted is None:
+            continue
+        t1, t2, v0, v1 = fitted
+        if t1 < thresholds.min_wait:
+            t1 = float(motion.times[0])  # a change from the first moments: from the start
+        if abs(v1 - v0) < thresholds.min_speed_change:
+            continue
+        if v1 < v0 and t1 <= motion.times[0] and not motion.moving[0]:
+            continue  # slowing down from the start of an actor that stands: the filter's edge
+        events.append(_event(motion.name, t1, t2, v0, v1, thresholds))
+    return events
+
+
+def _event(actor: str, t1: float, t2: float, v0: float, v1: float, thresholds: Thresholds) -> Event:
+    rate = round(abs(v1 - v0) / max(t2 - t1, 1e-3), 2)
+    if v1 < thresholds.standing_speed:
+        return Event("Stop", actor, t1, t2, {"rate": rate}, finish=t2, from_speed=v0)
+    kind = "Accelerate" if v1 > v0 else "Decelerate"
+    parameters: dict[str, object] = {"targetSpeed": round(v1, 2), "rate": rate}
+    return Event(kind, actor, t1, t2, parameters, finish=t2, from_speed=v0)
+
+
+def _runs(mask: NDArray[np.bool_], gap: int) -> list[tuple[int, int]]:
+    """Index spans [a, b] where mask holds, joining runs apart by at most `gap` samples.
+
+    Runs are joined whatever their sign: a short dip between two changes (a corner cut by the
+    smoothing) is one change, which the fit then measures.
+    """
+    spans: list[tuple[int, int]] = []
+    k, n = 0, len(mask)
+    while k < n:
+        if not mask[k]:
+            k += 1
+            continue
+        a = k
+        while k < n and mask[k]:
+            k += 1
+        b = k - 1
+        if spans and a - spans[-1][1] <= gap:
+            spans[-1] = (spans[-1][0], b)
+        else:
+            spans.append((a, b))
+    return spans
+
+
+def _fit_ramp(
+    times: Array,
+    along: Array,
+    before: int,
+    a: int,
+    b: int,
+    after: int,
+    step: float,
+    anchor: float,
+) -> tuple[float, float, float, float] | None:
+    """Least-squares fit of the distance driven over [before, after]: speed v0 until t1, a
+    linear change to v1 at t2, then v1.
+
+    For fixed t1 and t2 the distance is linear in (s0, v0, v1), so each candidate pair is one
+    small linear least-squares problem (solved together, by their normal equations); the pairs
+    are searched at a quarter of the sample step around the run [a, b] where the smoothed speed
+    was seen to change. Fitting the distance rather than the smoothed speed keeps the smoothing
+    from stretching short ramps.
+    """
+    window = times[before : after + 1]
+    values = along[before : after + 1]
+    if len(window) < 4:
+        return None
+    reach = (max(b - a, 4) + 6) * step
+    starts = np.arange(max(times[before], times[a] - reach), min(times[a] + reach, times[b]), step)
+    ends = np.arange(max(times[a], times[b] - reach), min(times[b] + reach, times[after]), step)
+    coarse = _best_ramp(window, values, starts, ends)
+    if coarse is None:
+        return None
+    fine = np.arange(-step, step + 1e-9, step / 4)
+    refined = _best_ramp(window, values, coarse[0] + fine, coarse[1] + fine)
+    t1, t2, v0, v1, error = refined or coarse
+    variance = error / max(len(window) - 5, 1)
+    if _steady_error(window, values) - error <= _SIGNIFICANT * variance:
+        return None  # a steady speed explains the distance as well, within the noise
+    if before == 0 and t1 - times[0] <= anchor:
+        # At the start of a noisy recording a ramp that began with it is easily fitted late,
+        # with a short plateau that follows the noise. It is taken from the start when that
+        # fits as well as noise allows: within a few times the noise's variance, which the
+        # free fit's residual estimates (as in a likelihood-ratio test for one parameter more).
+        anchored = _best_ramp(window, values, np.array([times[0]]), coarse[1] + fine)
+        if anchored is not None and anchored[4] - error <= 6 * variance:
+            t1, t2, v0, v1, error = anchored
+    return t1, t2, max(v0, 0.0), max(v1, 0.0)
+
+
+#: How many times the noise's variance a ramp must explain beyond a steady speed to count
+#: (a likelihood-ratio test for its three parameters more, at a small chance of noise passing).
+_SIGNIFICANT = 20.0
+
+
+def _steady_error(window: Array, values: Array) -> float:
+    """The squared error of the best steady speed (a straight line) through the distances."""
+    design = np.column_stack([np.ones_like(window), window - window[0]])
+    solution, *_ = np.linalg.lstsq(design, values, rcond=None)
+    return float(((design @ solution - values) ** 2).sum())
+
+
+def _best_ramp(
+    window: Array, values: Array, starts: Array, ends: Array
+) -> tuple[float, float, float, float, float] | None:
+    """The (t1, t2, v0, v1, squared error) of the candidate pairs that fits `values` best."""
+    t1, t2 = (grid.ravel() for grid in np.meshgrid(starts, ends, indexing="ij"))
+    keep = (t2 > t1 + 1e-9) & (t1 >= window[0]) & (t2 <= window[-1])
+    t1, t2 = t1[keep], t2[keep]
+    if not len(t1):
+        return None
+    ramp = _ramp_integral(window[None, :], t1[:, None], t2[:, None])
+    base = np.broadcast_to(window - window[0], ramp.shape)
+    design = np.stack([np.ones_like(ramp), base - ramp, ramp], axis=2)
+    normal = np.einsum("pni,pnj->pij", design, design)
+    right = np.einsum("pni,n->pi", design, values)
+    solution = np.linalg.solve(normal + 1e-9 * np.eye(3), right[..., None])[..., 0]
+    fitted = np.einsum("pni,pi->pn", design, solution)
+    errors = ((fitted - values) ** 2).sum(axis=1)
+    best = int(np.argmin(errors))
+    return (
+        float(t1[best]),
+        float(t2[best]),
+        float(solution[best, 1]),
+        float(solution[best, 2]),
+        float(errors[best]),
+    )
+
+
+def _ramp_integral(t: Array, t1: Array, t2: Array) -> Array:
+    """The integral from t[..., 0] to each t of w(u) = clip((u - t1) / (t2 - t1), 0, 1)."""
+
+    def primitive(u: Array) -> Array:
+        inside = np.clip(u, t1, t2) - t1
+        return inside**2 / (2 * (t2 - t1)) + np.maximum(u - t2, 0.0)
+
+    return primitive(t) - primitive(t[..., :1])
+
+
+def within_limits(
+    events: list[Event], kind: str, acceleration: float | None, deceleration: float | None
+) -> list[str]:
+    """Slow down ramps steeper than the actor kind's plausibility limits (SCEML-L002); returns
+    a note for each.
+
+    A speed that jumps (a player's step change) becomes a ramp at the limit with the same
+    midpoint, so the actor covers the same distance by the ramp's end; in between it is off
+    by up to (speed change)² / (8 × limit).
+    """
+    notes = []
+    for event in events:
+        if not event.longitudinal or event.from_speed is None:
+            continue
+        rate = float(str(event.parameters["rate"]))
+        speeding_up = event.kind == "Accelerate"
+        limit = acceleration if speeding_up else deceleration
+        if limit is None or rate <= limit:
+            continue
+        middle = (event.start + event.end) / 2
+        half = abs(_target(event) - event.from_speed) / limit / 2
+        event.start, event.end = max(middle - half, 0.0), middle + half
+        event.finish = event.end
+        event.parameters["rate"] = float(limit)
+        notes.append(
+            f"{event.actor}: the {event.kind} at {middle:.2f} s ran at {rate:g} m/s², above the "
+            f"{kind} limit of {limit:g} m/s²; it is extracted at the limit"
+        )
+    return notes
+
+
+def _target(event: Event) -> float:
+    return float(str(event.parameters.get("targetSpeed", 0.0)))

@@ -1,0 +1,158 @@
+"""A track made smooth: uniform samples, smoothed positions, speed, heading and arc length."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+from scipy.signal import savgol_filter
+
+from ..errors import LoadError
+from .recording import Track
+from .thresholds import Thresholds
+
+Array = NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class Motion:
+    """One actor's motion on a uniform clock: smoothed x, y (m), speed (m/s), heading (rad,
+    unwrapped; held while standing) and arc length driven (m)."""
+
+    name: str
+    times: Array
+    x: Array
+    y: Array
+    speed: Array
+    moving: NDArray[np.bool_]
+    heading: Array
+    turn_rate: Array
+    arc: Array
+    along: Array
+
+    @property
+    def step(self) -> float:
+        """The time between samples (s)."""
+        return float(self.times[1] - self.times[0])
+
+    def index(self, t: float) -> int:
+        """The sample at or just after time t (clamped to the track)."""
+        return int(np.clip(np.searchsorted(self.times, t - 1e-9), 0, len(self.times) - 1))
+
+    def at(self, values: Array, t: float) -> float:
+        """A series interpolated at time t."""
+        return float(np.interp(t, self.times, values))
+
+    def position(self, t: float) -> tuple[float, float]:
+        """The smoothed (x, y) at time t."""
+        return self.at(self.x, t), self.at(self.y, t)
+
+
+def sample_step(track: Track) -> float:
+    """The recording's own step: the median time between samples."""
+    return float(np.median(np.diff(track.times)))
+
+
+def smooth(track: Track, thresholds: Thresholds, step: float | None = None) -> Motion:
+    """Resample a track to a uniform clock and smooth it (Savitzky-Golay, quadratic).
+
+    The speed is the smoothed derivative of the positions; a speed column in the recording is
+    not used, so every format (and noisy positions) is treated alike.
+    """
+    if len(track.times) < 5:
+        raise LoadError(f"{track.name!r} has {len(track.times)} samples; at least 5 are needed")
+    step = step or sample_step(track)
+    times = np.arange(track.times[0], track.times[-1] + step / 2, step)
+    x = np.interp(times, track.times, track.x)
+    y = np.interp(times, track.times, track.y)
+    window = max(5, int(round(thresholds.smoothing_window / step)) | 1)
+    window = min(window, len(times) - (1 - len(times) % 2))
+    # Cubic rather than quadratic: a quadratic cuts the corners of tight turns, which shows as
+    # a false dip of the speed in every turn.
+    xs = savgol_filter(x, window, 3, mode="interp")
+    ys = savgol_filter(y, window, 3, mode="interp")
+    vx = savgol_filter(x, window, 3, deriv=1, delta=step, mode="interp")
+    vy = savgol_filter(y, window, 3, deriv=1, delta=step, mode="interp")
+    speed = np.hypot(vx, vy)
+    moving = _moving(xs, ys, window // 2, step, thresholds.standing_speed)
+    heading = _heading(track, times, xs, ys, moving, window // 2)
+    turn_rate = savgol_filter(heading, window, 2, deriv=1, delta=step, mode="interp")
+    lengths = np.hypot(np.diff(xs), np.diff(ys))
+    # Standing still, the smoothed noise would add up to a distance never driven.
+    lengths[~(moving[1:] | moving[:-1])] = 0.0
+    arc = np.concatenate([[0.0], np.cumsum(lengths)])
+    along = _along(x, y, xs, ys, arc, heading, thresholds.standing_speed, speed)
+    return Motion(track.name, times, xs, ys, speed, moving, heading, turn_rate, arc, along)
+
+
+def _shifted(values: Array, by: int) -> Array:
+    """values[k + by], held at the ends."""
+    if by >= 0:
+        return np.concatenate([values[by:], np.repeat(values[-1], by)])
+    return np.concatenate([np.repeat(values[0], -by), values[:by]])
+
+
+def _moving(x: Array, y: Array, half: int, step: float, standing: float) -> NDArray[np.bool_]:
+    """Where the actor moves: the chord across the window is longer than standing would give.
+
+    The smoothed derivative would do on clean data, but on noisy data a standing actor's
+    derivative jitters past any small threshold; the chord averages over the whole window.
+    """
+    chord = np.hypot(_shifted(x, half) - _shifted(x, -half), _shifted(y, half) - _shifted(y, -half))
+    return np.asarray(chord > standing * 2 * half * step)
+
+
+def _heading(
+    track: Track, times: Array, x: Array, y: Array, moving: NDArray[np.bool_], half: int
+) -> Array:
+    """The direction of motion where the actor moves; held over standing stretches.
+
+    It is the direction of the chord across the smoothing window, not of the smoothed
+    velocity: a cubic filter rings around a sudden start, and its velocity briefly points
+    backwards. Before the first motion the recorded heading (if any) is used, else the first
+    direction of motion.
+    """
+    raw = np.arctan2(_shifted(y, half) - _shifted(y, -half), _shifted(x, half) - _shifted(x, -half))
+    if not moving.any():
+        if track.heading is not None:
+            return np.interp(times, track.times, track.heading)
+        return np.zeros_like(times)
+    first = int(np.argmax(moving))
+    held = raw.copy()
+    for k in range(len(times)):
+        if not moving[k]:
+            held[k] = held[k - 1] if k > first else raw[first]
+    heading = np.unwrap(held)
+    if track.heading is not None and first > 0:
+        recorded = float(np.interp(times[0], track.times, track.heading))
+        heading[:first] = recorded + np.round((heading[first] - recorded) / (2 * np.pi)) * 2 * np.pi
+    return heading
+
+
+#: Below this spread (m) of the raw positions about the smoothed path a recording is clean.
+_CLEAN = 0.02
+
+
+def _along(
+    x: Array,
+    y: Array,
+    xs: Array,
+    ys: Array,
+    arc: Array,
+    heading: Array,
+    standing: float,
+    speed: Array,
+) -> Array:
+    """Each raw sample's distance along the path.
+
+    A clean recording (a player's log) gives it exactly as the summed lengths of its own steps,
+    corners and all. A noisy one would add its noise to those lengths, so there each raw point
+    is placed along the smoothed path instead: the smoothed arc plus its offset along the
+    heading, which cuts tight corners by a few centimetres.
+    """
+    if float(np.sqrt(np.mean((x - xs) ** 2 + (y - ys) ** 2))) < _CLEAN:
+        lengths = np.hypot(np.diff(x), np.diff(y))
+        lengths[(speed[1:] + speed[:-1]) / 2 <= standing / 10] = 0.0
+        return np.concatenate([[0.0], np.cumsum(lengths)])
+    return arc + (x - xs) * np.cos(heading) + (y - ys) * np.sin(heading)

@@ -1,0 +1,143 @@
+"""Closed loop: scenarios run in the preview, recorded, extracted, and run again.
+
+The extraction must show the same maneuvers per actor in the same order and the same waits
+(condition kind and actors, before the same maneuver) as the original (`closedloop.signature`
+says what a run shows), and its replay must stay within 1 m of the recording; a speed that
+jumps (DriveDistance) is extracted at the actor kind's acceleration limit, which costs up to
+(speed change)² / (8 × limit) while it ramps.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from functools import cache
+from pathlib import Path
+
+import pytest
+from conftest import EXAMPLES, REPO
+
+import scemlmodel as scm
+from sceml import io
+from sceml.diagnostics import Severity
+from sceml.extract import Extraction, extract
+from sceml.extract.closedloop import allowed_error, recording_of, replays_closely, signature
+from sceml.levels.apply import FlatTemplate
+from sceml.levels.sampling import design, plan_for
+from sceml.levels.space import parameter_space
+from sceml.maps import RoadMap, load_map
+from sceml.simulate import Run, simulate
+from sceml.validation import validate
+
+MAP_REFERENCE = "../maps/intersection.xodr"
+
+
+@cache
+def road_map() -> RoadMap:
+    return load_map(REPO / "maps" / "intersection.xodr")
+
+
+def original(path: Path) -> tuple[scm.Scenario, Run]:
+    scenario = io.load_scenario(path).root
+    return scenario, simulate(scenario, path, road_map=road_map())
+
+
+def extracted(run: Run, *, noise: float = 0.0, every: int = 1, seed: int = 0) -> Extraction:
+    recording = recording_of(run, noise=noise, every=every, seed=seed)
+    return extract(recording, road_map(), map_reference=MAP_REFERENCE)
+
+
+def assert_replays_closely(found: Extraction) -> None:
+    assert found.replay is not None
+    for fit in found.replay.actors:
+        assert fit.largest < allowed_error(found, fit.name), (fit, found.notes)
+
+
+@pytest.mark.parametrize("name", ["uis1-concrete.xmi", "uis2-concrete.xmi"])
+def test_each_intersection_example_comes_back_with_its_maneuvers_and_waits(name: str) -> None:
+    scenario, run = original(EXAMPLES / name)
+    found = extracted(run)
+    assert signature(found.scenario, found.replay.run) == signature(scenario, run)  # type: ignore[union-attr]
+    assert_replays_closely(found)
+
+
+def test_uis1_gives_back_the_trigger_radius_and_a_clean_scenario(tmp_path: Path) -> None:
+    _, run = original(EXAMPLES / "uis1-concrete.xmi")
+    found = extracted(run)
+    (why,) = found.inferred
+    assert (why.actor, why.explanation.kind, why.explanation.target) == (
+        "bike",
+        "InVehicleRadius",
+        "ego",
+    )
+    assert why.explanation.parameters == {"radius": 12.0}  # examples/build_examples.py: 12 m
+    (tmp_path / "maps").mkdir()
+    (tmp_path / "maps" / "intersection.xodr").write_bytes(
+        (REPO / "maps" / "intersection.xodr").read_bytes()
+    )
+    saved = io.save(found.scenario, tmp_path / "out" / "uis1.xmi")
+    document = io.load_scenario(saved, allow=[tmp_path / "maps"])
+    problems = [
+        d for d in validate(document.root, document=document) if d.severity >= Severity.WARNING
+    ]
+    assert problems == [], [str(p) for p in problems]
+
+
+def test_overtaking_comes_back_with_its_lane_changes() -> None:
+    # Its waits are a time to collision and a time; a recording shows an approach instead, so
+    # only the maneuvers are compared (docs/extract.md, "What a recording cannot tell").
+    scenario, run = original(EXAMPLES / "overtaking-concrete.xmi")
+    found = extracted(run)
+    assert (
+        signature(found.scenario, found.replay.run).maneuvers == signature(scenario, run).maneuvers
+    )  # type: ignore[union-attr]
+    assert_replays_closely(found)
+
+
+def samples(name: str, n: int, seed: int) -> Iterator[tuple[int, scm.Scenario, Run]]:
+    """Each sample with its run; the template is filled in place, so use one before the next."""
+    path = EXAMPLES / name
+    logical = io.load_scenario(path).root
+    space = parameter_space(logical)
+    template = FlatTemplate(logical, space.paths)
+    for index, row in enumerate(design(space, plan_for(space, "random", n, seed))):
+        scenario = template.fill(list(row))
+        yield index, scenario, simulate(scenario, path, road_map=road_map())
+
+
+@pytest.mark.parametrize(("name", "n"), [("uis1-logical.xmi", 16), ("uis2-logical.xmi", 8)])
+def test_sampled_scenarios_come_back_with_their_maneuvers_and_waits(name: str, n: int) -> None:
+    for index, scenario, run in samples(name, n, seed=7):
+        expected = signature(scenario, run)
+        found = extracted(run)
+        assert signature(found.scenario, found.replay.run) == expected, index  # type: ignore[union-attr]
+        assert_replays_closely(found)
+
+
+def noisy_runs(run: Run, seeds: int) -> Iterator[Extraction]:
+    """Extractions of a run recorded at 10 Hz with 0.1 m of Gaussian position noise."""
+    for seed in range(seeds):
+        yield extracted(run, noise=0.1, every=2, seed=seed)
+
+
+def test_noisy_recordings_of_uis1_mostly_come_back_whole() -> None:
+    # Under noise a speed change below 1 m/s may be seen or missed by chance: not compared.
+    # The figures over 200 samples are in docs/extract.md; this guards them on 8 fixed seeds.
+    scenario, run = original(EXAMPLES / "uis1-concrete.xmi")
+    expected = signature(scenario, run, min_change=1.0)
+    whole = [
+        signature(found.scenario, found.replay.run, min_change=1.0) == expected  # type: ignore[union-attr]
+        and replays_closely(found)
+        for found in noisy_runs(run, 8)
+    ]
+    assert sum(whole) >= 6, whole
+
+
+def test_noisy_recordings_keep_the_maneuvers_of_uis2_and_overtaking() -> None:
+    for name in ("uis2-concrete.xmi", "overtaking-concrete.xmi"):
+        scenario, run = original(EXAMPLES / name)
+        expected = signature(scenario, run, min_change=1.0).maneuvers
+        same = [
+            signature(found.scenario, found.replay.run, min_change=1.0).maneuvers == expected  # type: ignore[union-attr]
+            for found in noisy_runs(run, 8)
+        ]
+        assert sum(same) >= 6, (name, same)

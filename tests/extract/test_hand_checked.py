@@ -1,0 +1,106 @@
+"""Extraction from recordings made by hand (closed-form motions on an empty plane), with the
+expected maneuvers, parameters and conditions worked out on paper."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import scemlmodel as scm
+from sceml.diagnostics import Severity
+from sceml.extract import Recording, Track, extract
+from sceml.validation import validate
+
+STEP = 0.05
+
+
+def times(duration: float) -> np.ndarray:
+    return np.round(np.arange(0.0, duration + STEP / 2, STEP), 6)
+
+
+def ramp_distance(t: np.ndarray, v0: float, t1: float, t2: float, v1: float) -> np.ndarray:
+    """Distance driven from 0 at speed v0, then a linear change to v1 between t1 and t2."""
+    rate = (v1 - v0) / (t2 - t1)
+    inside = np.clip(t, t1, t2) - t1
+    return v0 * np.minimum(t, t1) + v0 * inside + rate * inside**2 / 2 + v1 * np.maximum(t - t2, 0)
+
+
+def straight(
+    name: str, t: np.ndarray, x0: float, y0: float, heading: float, s: np.ndarray
+) -> Track:
+    return Track(
+        name, t, x0 + s * math.cos(heading), y0 + s * math.sin(heading), np.full(t.shape, heading)
+    )
+
+
+def test_a_speed_change_is_one_accelerate_with_its_target_rate_and_start() -> None:
+    # 5 m/s until t = 1 s, then +2 m/s² until 9 m/s at t = 3 s.
+    t = times(8.0)
+    car = straight("ego", t, 0.0, 0.0, 0.0, ramp_distance(t, 5.0, 1.0, 3.0, 9.0))
+    found = extract(Recording((car,), "by hand"), check_replay=True)
+    (actor,) = found.actors
+    assert actor.initial_speed == pytest.approx(5.0, abs=0.02)
+    (event,) = actor.maneuvers
+    assert event.kind == "Accelerate"
+    assert event.start == pytest.approx(1.0, abs=0.05) and event.end == pytest.approx(3.0, abs=0.05)
+    assert event.parameters["targetSpeed"] == pytest.approx(9.0, abs=0.02)
+    assert event.parameters["rate"] == pytest.approx(2.0, abs=0.05)
+    # It waited 1 s with nobody else there: a time, kept while driving as KeepVelocity.
+    (wait,) = found.inferred
+    assert wait.explanation.kind == "KeepVelocity" and wait.explanation.confidence == "low"
+    assert wait.explanation.parameters["duration"] == pytest.approx(1.0, abs=0.05)
+    assert found.replay is not None and found.replay.largest < 0.1
+
+
+def test_braking_to_a_standstill_is_a_stop() -> None:
+    # 10 m/s, braking at 4 m/s² from t = 2 s: standing at t = 4.5 s.
+    t = times(7.0)
+    car = straight("ego", t, 0.0, 0.0, 0.0, ramp_distance(t, 10.0, 2.0, 4.5, 0.0))
+    (actor,) = extract(Recording((car,), "by hand"), check_replay=False).actors
+    (event,) = actor.maneuvers
+    assert event.kind == "Stop" and event.parameters["rate"] == pytest.approx(4.0, abs=0.1)
+    assert event.start == pytest.approx(2.0, abs=0.05)
+
+
+def test_a_start_when_another_actor_comes_close_is_an_in_vehicle_radius() -> None:
+    # The ego drives along y = 0 at 10 m/s from x = 0; a pedestrian waits at (60, -5) and walks
+    # north (+1.5 m/s² to 1.5 m/s) once the ego is 15 m away: (60 - 10 t)² + 5² = 15², so at
+    # t = 6 - sqrt(200) / 10 = 4.586 s.
+    t = times(9.0)
+    start = 6.0 - math.sqrt(200.0) / 10.0
+    ego = straight("ego", t, 0.0, 0.0, 0.0, 10.0 * t)
+    walker = straight(
+        "walker", t, 60.0, -5.0, math.pi / 2, ramp_distance(t, 0.0, start, start + 1.0, 1.5)
+    )
+    # No OpenDRIVE file: a simulator town's name stands for the map, and positions are world ones.
+    found = extract(Recording((ego, walker), "by hand"), map_reference="Town01")
+    kinds = {a.name: (a.kind, [e.kind for e in a.maneuvers]) for a in found.actors}
+    assert kinds == {"ego": ("Car", []), "walker": ("Pedestrian", ["Accelerate", "Cross"])}
+    (why,) = found.inferred
+    assert (why.actor, why.explanation.kind, why.explanation.target) == (
+        "walker",
+        "InVehicleRadius",
+        "ego",
+    )
+    assert why.explanation.parameters == {"radius": 15.0}
+    assert why.explanation.fires == pytest.approx(start, abs=STEP)
+    assert why.explanation.confidence == "medium"  # the ego reaching a place would do as well
+    assert found.replay is not None and found.replay.largest < 0.3
+    errors = [d for d in validate(found.scenario) if d.severity >= Severity.ERROR]
+    assert errors == []
+
+
+def test_a_start_nothing_explains_is_a_time() -> None:
+    # A car 200 m away starts at t = 3 s; the ego, far off, explains nothing.
+    t = times(6.0)
+    ego = straight("ego", t, 0.0, 0.0, 0.0, 10.0 * t)
+    car = straight("car", t, 0.0, 200.0, math.pi, ramp_distance(t, 0.0, 3.0, 5.0, 8.0))
+    found = extract(Recording((ego, car), "by hand"))
+    (why,) = found.inferred
+    assert why.explanation.kind == "TimeElapsed" and why.explanation.confidence == "low"
+    assert why.explanation.parameters == {"duration": pytest.approx(3.0, abs=0.05)}
+    graph = found.scenario
+    waits = [n for n in graph.nodes if isinstance(n, scm.TimeElapsed)]
+    assert [str(n.referenceActor.name) for n in waits] == ["car"]
