@@ -46,6 +46,8 @@ READERS = {
         "explore",
         "migrate",
         "check-run",
+        "diff",
+        "merge",
     ),
     "xosc": ("check-xosc", "import"),
     "config": ("limits", "ranges"),

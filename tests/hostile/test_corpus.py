@@ -56,6 +56,14 @@ ENTRY_POINTS: dict[str, Callable[[Path, Path], list[str]]] = {
         "--map",
         str(EXAMPLES.parent / "maps" / "intersection.xodr"),
     ],
+    "diff": lambda file, out: ["diff", str(EXAMPLES / "uis1-concrete.xmi"), str(file)],
+    "merge": lambda file, out: [
+        "merge",
+        str(file),
+        *(str(EXAMPLES / "uis1-concrete.xmi"),) * 2,
+        "-o",
+        str(out / "merged.xmi"),
+    ],
     "limits": lambda file, out: [
         "validate",
         "--limits",
@@ -121,12 +129,13 @@ def test_corpus_matches_its_generator() -> None:
 def test_every_entry_point_is_known_and_used() -> None:
     used = {entry for _, entry, *_ in RUNS}
     assert used == set(ENTRY_POINTS)
-    # Each command that reads a file the user names is in the table (dev tools excepted, and
-    # `edit`, which serves the file until stopped: tests/editor runs it on broken files).
+    # Each command that reads a file the user names is in the table (dev tools excepted,
+    # `edit`, which serves the file until stopped: tests/editor runs it on broken files, and
+    # `git-setup`, which reads no model: tests/diff/test_git.py).
     commands = {
         arguments[0] for arguments in (f(Path("f"), Path("o")) for f in ENTRY_POINTS.values())
     }
-    assert commands == set(cli_commands()) - {"dev", "edit"}
+    assert commands == set(cli_commands()) - {"dev", "edit", "git-setup"}
 
 
 @pytest.mark.parametrize(

@@ -62,6 +62,8 @@ COMMANDS: dict[str, tuple[Path, Callable[[Path], list[str]]]] = {
         ],
     ),
     "explore": (LOGICAL, lambda out: ["--budget", "2", "--top", "1", "-o", str(out / "x")]),
+    "diff": (CONCRETE, lambda out: [str(LOGICAL), "-o", str(out / "d.txt")]),
+    "merge": (CONCRETE, lambda out: [str(CONCRETE), str(CONCRETE), "-o", str(out / "m.xmi")]),
     "module list": (EXAMPLES / "library" / "sceml-library.xmi", lambda out: []),
     "module show": (EXAMPLES / "library" / "sceml-library.xmi", lambda out: ["CrossingManeuver"]),
     "module extract": (
@@ -118,13 +120,15 @@ def files(folder: Path) -> list[Path]:
 
 
 def test_every_command_is_scanned() -> None:
-    # `edit` is scanned by test_edit_refuses_bad_input_before_serving.
+    # `edit` is scanned by test_edit_refuses_bad_input_before_serving; `git-setup` reads no
+    # input file (tests/diff/test_git.py runs it).
     assert set(COMMANDS) == set(_leaf_commands()) - {
         "dev generate",
         "dev check-release",
         "dev release",
         "dev class-diagram",
         "edit",
+        "git-setup",
     }
 
 

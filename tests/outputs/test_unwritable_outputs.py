@@ -63,6 +63,8 @@ WRITERS: dict[str, Callable[[Path], list[str]]] = {
     "simulate": lambda out: ["simulate", str(UIS1), "-o", str(out / "run.html")],
     "explore": lambda out: ["explore", str(LOGICAL), "--budget", "2", "--top", "1", "-o", str(out)],
     "validate": lambda out: ["validate", str(UIS1), "-o", str(out / "report.txt")],
+    "diff": lambda out: ["diff", str(UIS1), str(LOGICAL), "-o", str(out / "d.txt")],
+    "merge": lambda out: ["merge", str(UIS1), str(UIS1), str(UIS1), "-o", str(out / "m.xmi")],
     "import": lambda out: [
         "import",
         str(Path(__file__).resolve().parents[1] / "export/golden/uis1-1.3-generic.xosc"),
@@ -103,8 +105,9 @@ def _check(arguments: list[str], tmp_path: Path, before: list[Path], reason: str
 
 def test_every_writing_command_is_listed() -> None:
     writers = {name.split()[0] for name in WRITERS}
-    # check-run only reads (a model, a player's log and trace) and prints its verdict.
-    assert writers == set(commands()) - {"info", "dev", "edit", "check-run"}
+    # check-run only reads (a model, a player's log and trace) and prints its verdict;
+    # git-setup writes .gitattributes in the repository (tests/diff/test_git.py).
+    assert writers == set(commands()) - {"info", "dev", "edit", "check-run", "git-setup"}
 
 
 @pytest.mark.parametrize("command", sorted(WRITERS))

@@ -33,6 +33,9 @@ COMMANDS = {
     "migrate": "migrate:migrate",
     "dev": "dev:dev",
     "edit": "edit:edit",
+    "diff": "diff:diff",
+    "merge": "merge:merge",
+    "git-setup": "git_setup:git_setup",
 }
 
 

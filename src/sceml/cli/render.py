@@ -84,6 +84,15 @@ def output_format(path: Path) -> str:
     help="Refuse (exit 1, nothing written) a flow or behavior-tree diagram with more boxes than "
     "N: Graphviz needs about 3 s for 5,000 and runs out of memory near 50,000.",
 )
+@click.option(
+    "--diff",
+    "old",
+    type=click.Path(exists=True, dir_okay=False, path_type=Path),
+    default=None,
+    metavar="OLD",
+    help="Mark what changed since scenario OLD (flow view): added, changed and removed nodes "
+    "and flows, by colour and by sign, with a legend (as `sceml diff --format html`).",
+)
 @allow_option
 def render(
     file: Path,
@@ -94,6 +103,7 @@ def render(
     module: str | None,
     extent: str,
     max_nodes: int,
+    old: Path | None,
     allow: tuple[Path, ...],
 ) -> None:
     """Draw FILE, a scenario or a module library (.xmi), as a diagram.
@@ -104,6 +114,10 @@ def render(
     file that cannot be read exits 2 and writes nothing.
     """
     fmt = output_format(output)
+    if old is not None:
+        _render_diff(old, file, output, fmt, view)
+        click.echo(f"wrote {output}")
+        return
     document = load(file, allow=allow)
     _refuse_broken_actors(document)
     if view == "map":
@@ -153,6 +167,16 @@ def _render_diagram(
     except ModuleChoiceError as error:  # exit 2, at the file's model (the library or scenario)
         error.file, error.line = str(document.path), document.line_of(document.root)
         raise
+
+
+def _render_diff(old: Path, new: Path, output: Path, fmt: str, view: str) -> None:
+    """The new flow diagram with the changes since `old` marked (sceml.diff.picture)."""
+    if view != "flow":
+        raise click.UsageError("--diff draws the flow view")
+    from ..diff import compare_files
+    from ..diff.picture import diff_picture
+
+    write_atomically(output, diff_picture(compare_files(old, new), fmt))
 
 
 def _render_map(document: Document, output: Path, fmt: str, extent: str) -> None:

@@ -8,6 +8,7 @@ how the HTML report links diagnostics to nodes.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Literal
 
@@ -32,6 +33,9 @@ from .labels import (
 )
 
 Modules = Literal["collapsed", "expanded"]
+
+#: Extra Graphviz attributes for the boxes and arrows of some model objects.
+Marks = Mapping[EObject, Mapping[str, str]]
 
 
 class RenderError(SceMLError):
@@ -90,9 +94,14 @@ def flow_diagram(
     *,
     modules: Modules = "collapsed",
     legend: bool = False,
+    marks: Marks | None = None,
 ) -> Diagram:
-    """Draw a scenario, a module definition on its own (framed, with its ports) or a whole library."""
-    drawer = _FlowDrawer(modules)
+    """Draw a scenario, a module definition on its own (framed, with its ports) or a whole library.
+
+    `marks` adds Graphviz attributes to the boxes and arrows of some objects (what `sceml diff`
+    marks as added or changed); style words are added to the box's own, not put in their place.
+    """
+    drawer = _FlowDrawer(modules, marks or {})
     if isinstance(root, scm.Library):
         for definition in root.modules:
             drawer.draw_definition(definition)
@@ -108,8 +117,9 @@ def flow_diagram(
 class _FlowDrawer:
     """Walks graphs and module uses, adding nodes, flows and clusters to one Graphviz graph."""
 
-    def __init__(self, modules: Modules) -> None:
+    def __init__(self, modules: Modules, marks: Marks) -> None:
         self.modules = modules
+        self.marks = marks
         self.diagram = Diagram(new_digraph("sceml"))
         # Where flows attach to a drawn node: an expanded use is entered at its in-port and
         # left at its out-port.
@@ -157,6 +167,7 @@ class _FlowDrawer:
             one = node.policy is not None and node.policy.name == "joinOne"
             attributes["label"] = "End ?" if one else "End"
         attributes.setdefault("label", str(node.name or node.eClass.name))
+        _mark(attributes, self.marks.get(node))
         target.node(element_id, **attributes)
         self.diagram.remember(node, element_id)
         self.entry[element_id] = self.exit[element_id] = element_id
@@ -170,7 +181,9 @@ class _FlowDrawer:
         if source is None or sink is None:
             return
         element_id = dom_id(flow, scope.prefix)
-        target.edge(source, sink, id=element_id, **{"class": "sceml-flow"})
+        attributes = {"class": "sceml-flow"}
+        _mark(attributes, self.marks.get(flow))
+        target.edge(source, sink, id=element_id, **attributes)
         self.diagram.remember(flow, element_id)
 
     def draw_use(self, use: scm.ModuleUse, target: graphviz.Digraph, scope: Scope) -> None:
@@ -214,6 +227,7 @@ class _FlowDrawer:
         attributes["label"] = style.html_label(
             name, use_lines(use, scope), subtitle=problem or "module"
         )
+        _mark(attributes, self.marks.get(use))
         target.node(element_id, **attributes)
         self.diagram.remember(use, element_id)
         self.entry[element_id] = self.exit[element_id] = element_id
@@ -232,6 +246,14 @@ class _FlowDrawer:
             cluster.attr(label=label, id=element_id, **style.CLUSTER_ATTRIBUTES)
             self.draw_graph(definition, cluster, scope)
         self.diagram.remember(definition, element_id)
+
+
+def _mark(attributes: dict[str, str], mark: Mapping[str, str] | None) -> None:
+    """Add a mark's attributes; its style words and class go beside the element's own."""
+    for key, value in (mark or {}).items():
+        joiner = {"style": ",", "class": " "}.get(key)
+        held = attributes.get(key)
+        attributes[key] = f"{held}{joiner}{value}" if joiner and held else value
 
 
 def _ports(definition: scm.ModuleDefinition) -> tuple[scm.InPort | None, scm.OutPort | None]:
