@@ -49,3 +49,13 @@ def test_the_checked_versions_come_from_the_one_versions_list() -> None:
         tuple(v for v in schema.SUPPORTED_VERSIONS if v not in ("1.0", "1.1"))
         == qualitychecker.CHECKED_VERSIONS
     )
+
+
+def test_the_quality_checker_is_not_run_on_files_above_the_limit() -> None:
+    # ASAM's bundle took 144 s on a 20 MB file (issue 26): above the limit it is left out, said.
+    export = Path(__file__).parents[1] / "export" / "golden" / "uis1-1.3-generic.xosc"
+    assert check_file(export).diagnostics == []  # the checker ran and found nothing
+    limited = check_file(export, quality_max_bytes=100)
+    [skipped] = limited.diagnostics
+    assert (skipped.severity, skipped.code) == (Severity.INFO, "XOSC-QC-SKIPPED")
+    assert "Quality Checker was not run" in skipped.message and "--quality-max-mb" in skipped.message
