@@ -58,4 +58,6 @@ def test_the_quality_checker_is_not_run_on_files_above_the_limit() -> None:
     limited = check_file(export, quality_max_bytes=100)
     [skipped] = limited.diagnostics
     assert (skipped.severity, skipped.code) == (Severity.INFO, "XOSC-QC-SKIPPED")
-    assert "Quality Checker was not run" in skipped.message and "--quality-max-mb" in skipped.message
+    assert (
+        "Quality Checker was not run" in skipped.message and "--quality-max-mb" in skipped.message
+    )

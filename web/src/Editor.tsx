@@ -9,6 +9,7 @@ import { RecoveryDialog } from "./dialogs/RecoveryDialog";
 import { pasteOffset } from "./lib/clipboard";
 import type { Direction } from "./lib/layout";
 import { Palette, PALETTE_SEARCH_ID } from "./panels/Palette";
+import { Changes } from "./panels/Changes";
 import { Problems } from "./panels/Problems";
 import { Properties } from "./panels/Properties";
 import { Toolbar } from "./panels/Toolbar";
@@ -397,6 +398,7 @@ export function Editor() {
           arrange: () => void arrange(),
           fit,
           extract: () => setDialog({ type: "extract" }),
+          compare: () => void server.run(() => api.compare(!view?.comparison)),
           setDirection: changeDirection,
         }}
       />
@@ -437,6 +439,7 @@ export function Editor() {
         {view && <Properties view={view} node={single} selectionCount={selectedNodes.length} send={send} openDefinition={openDefinition} />}
       </div>
       {view && <Problems diagnostics={view.diagnostics} onShow={showProblem} />}
+      {view?.comparison && <Changes comparison={view.comparison} />}
       {view?.recovery && editable && recoveryLater !== view.recovery.path && (
         <RecoveryDialog
           recovery={view.recovery}

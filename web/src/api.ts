@@ -81,6 +81,7 @@ export const api = {
     call<View>("POST", "/api/open", { path, discard, ...(module ? { module } : {}) }),
   openDefinition: (node: string) => call<View>("POST", "/api/open-definition", { node }),
   recovery: (restore: boolean) => call<View>("POST", "/api/recovery", { restore }),
+  compare: (on: boolean) => call<View>("POST", "/api/compare", { on }),
 };
 
 /** A change event of the server's stream: the view's new version and the tab that made it. */

@@ -93,6 +93,8 @@ export interface ViewNode {
   problems: number;
   fields: Field[];
   module?: ModuleInfo;
+  /** While comparing with the saved file: what happened to this node since (`sceml diff`). */
+  mark?: "added" | "changed";
 }
 
 export interface ViewEdge {
@@ -159,8 +161,17 @@ export interface DocumentInfo {
   olderRelease?: { saved: string; current: string };
 }
 
+/** The comparison of the open scenario with its saved file, in `sceml diff`'s words. */
+export interface Comparison {
+  against: string;
+  saved: boolean;
+  changes: string[];
+  removed: string[];
+}
+
 export interface View {
   version: number;
+  comparison?: Comparison;
   document: DocumentInfo;
   readOnly: boolean;
   dirty: boolean;

@@ -71,7 +71,7 @@ def marked_graph(diff: Diff, *, legend: bool = True) -> graphviz.Digraph:
     """The new version's flow diagram with the changes marked, removed things as ghosts."""
     scenario = diff.new.root
     marks: dict[EObject, dict[str, str]] = {}
-    for name, action in _node_actions(diff.changes).items():
+    for name, action in node_actions(diff.changes).items():
         element = diff.new.nodes.get(name)
         if element is not None:
             marks[element.obj] = _node_attributes(MARKS_BY_ACTION[action])
@@ -89,7 +89,7 @@ def marked_graph(diff: Diff, *, legend: bool = True) -> graphviz.Digraph:
     return graph
 
 
-def _node_actions(changes: list[Change]) -> dict[str, str]:
+def node_actions(changes: list[Change]) -> dict[str, str]:
     """Each node's strongest change: added, else changed (or renamed); removed ones apart."""
     found: dict[str, str] = {}
     for change in changes:

@@ -157,6 +157,7 @@ class Api:
                 ),
             ),
             "/api/recovery": ("POST", lambda body, tab: s.resolve_recovery(body.get("restore"))),
+            "/api/compare": ("POST", lambda body, tab: s.compare(_flag(body, "on"))),
         }
         routes = [self._route(path, method, action) for path, (method, action) in table.items()]
         return [*routes, Route("/api/events", self.events)]

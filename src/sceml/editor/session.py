@@ -26,6 +26,7 @@ from . import operations, palette, view
 from .changes import Recorder
 from .clipboard import copy_nodes
 from .commands import ANY_TAB, CommandStack, Step
+from .comparing import SavedComparison
 from .context import Clipboard, EditContext
 from .errors import ConflictError, ExportRefused, OperationError, ReadOnlyError
 from .ids import Ids
@@ -63,6 +64,8 @@ class EditorSession:
         self.roots: list[Path] | None = None
         #: A recovery copy left by an earlier run, offered until the user restores or drops it.
         self.recovery_offer: Path | None = None
+        #: While the user compares with the saved file: marks and changes in every view.
+        self.comparison: SavedComparison | None = None
 
     # Opening -------------------------------------------------------------------------------
 
@@ -101,6 +104,7 @@ class EditorSession:
             graph = self._definition(document.root, module)
             module = str(graph.name)
         self.document, self.graph, self.module = document, graph, module
+        self.comparison = None
         self.stack, self.ids, self._listing = CommandStack(), Ids(), view.Listing()
         self._cache = view.NodeCache()
         self.validator = IncrementalValidator(document.root, document=document)
@@ -240,6 +244,7 @@ class EditorSession:
         listing = view.Lister(self.ids, self.path.parent, self._cache).graph(self.graph)
         self._listing = listing
         found = view.problems(self.diagnostics(), listing, self.ids)
+        compared = self._compared(listing.nodes)
         answer: dict[str, Any] = {
             "version": self.version,
             "document": self._document_info(),
@@ -259,9 +264,29 @@ class EditorSession:
             "style": style_data(),
             "choices": palette.choices(),
         }
+        if compared is not None:
+            answer["comparison"] = compared
         if created is not None:
             answer["created"] = created
         return answer
+
+    def compare(self, on: bool) -> dict[str, Any]:
+        """Start or stop comparing the scenario with its saved file (`sceml diff`'s terms)."""
+        if on and self.module is not None:
+            raise OperationError("comparing with the saved file works on scenarios, not modules")
+        self.comparison = SavedComparison(self.path, self.roots) if on else None
+        return self.view()
+
+    def _compared(self, nodes: list[dict[str, Any]]) -> dict[str, Any] | None:
+        if self.comparison is None:
+            return None
+        assert self.document is not None
+        marks, report = self.comparison.compare(self.document.root, self.ids)
+        for entry in nodes:  # entries are this view's own copies
+            mark = marks.get(entry["id"])
+            if mark is not None:
+                entry["mark"] = mark
+        return report
 
     def _document_info(self) -> dict[str, Any]:
         info: dict[str, Any] = {
@@ -370,6 +395,8 @@ class EditorSession:
             self.document.resource.uri = URI(str(target))
             self.document.path = target
         self.stack.mark_saved()
+        if self.comparison is not None:  # compare with the file just written
+            self.comparison = SavedComparison(self.path, self.roots)
         self.version += 1
         return self.view()
 

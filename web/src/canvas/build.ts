@@ -51,7 +51,7 @@ export function flowNodes(
       ariaLabel: node.name,
       domAttributes,
       zIndex: expanded ? -1 : undefined,
-      className: node.severity ? `has-problems severity-${node.severity}` : undefined,
+      className: [node.severity ? `has-problems severity-${node.severity}` : "", node.mark ? `diff-${node.mark}` : ""].filter(Boolean).join(" ") || undefined,
     };
   });
 }

@@ -15,6 +15,7 @@ export interface ToolbarActions {
   arrange: () => void;
   fit: () => void;
   extract: () => void;
+  compare: () => void;
   setDirection: (direction: Direction) => void;
 }
 
@@ -55,6 +56,15 @@ export function Toolbar({ view, back, direction, hasSelection, canPaste, actions
         <Button label="Open" onClick={actions.open} />
         <Button label="Save" onClick={actions.save} disabled={!editable} title="Save (Ctrl+S)" />
         <Button label="Export" onClick={actions.exportXosc} disabled={!view} />
+        <button
+          type="button"
+          onClick={actions.compare}
+          disabled={!view || view.document.kind !== "scenario"}
+          aria-pressed={Boolean(view?.comparison)}
+          title="Mark what changed since the file was saved, as sceml diff does"
+        >
+          {view?.comparison ? "Stop comparing" : "Compare with saved"}
+        </button>
       </div>
       <div className="toolbar-group">
         <Button label="Undo" onClick={actions.undo} disabled={!editable || !view.undo} title={view?.undo ? `Undo ${view.undo} (Ctrl+Z)` : "Undo (Ctrl+Z)"} />
