@@ -368,6 +368,30 @@ class LanePosition(Position):
             self.offset = offset
 
 
+class RoadPosition(Position):
+    """A point in road coordinates: s along the road's reference line, t across it (positive to the left), as OpenSCENARIO's RoadPosition. h, when given, is the heading relative to the road's direction at s."""
+    roadId = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    s = EReference(ordered=True, unique=True, containment=True, derived=False)
+    t = EReference(ordered=True, unique=True, containment=True, derived=False)
+    h = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, roadId=None, s=None, t=None, h=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if roadId is not None:
+            self.roadId = roadId
+
+        if s is not None:
+            self.s = s
+
+        if t is not None:
+            self.t = t
+
+        if h is not None:
+            self.h = h
+
+
 class Value(ParameterValue):
 
     value = EAttribute(eType=EDouble, unique=True, derived=False, changeable=True)

@@ -210,11 +210,30 @@ def lane(position: scm.Position) -> tuple[str, int, float, float]:
     )
 
 
-def test_a_road_position_is_the_lane_position_of_its_t(tmp_path: Path) -> None:
-    start, told = start_of(tmp_path, '<RoadPosition roadId="1" s="120" t="-5.5"/>')
-    # t = -5.5 lies in lane -2 (-3.5 .. -7), whose centre is -5.25.
-    assert lane(start) == ("1", -2, 120.0, -0.25)
-    assert told and "<RoadPosition>" in told[0]
+def test_a_road_position_stays_a_road_position(tmp_path: Path) -> None:
+    start, told = start_of(
+        tmp_path,
+        '<RoadPosition roadId="1" s="120" t="-5.5"><Orientation type="relative" h="0.25"/>'
+        "</RoadPosition>",
+    )
+    assert isinstance(start, scm.RoadPosition)
+    assert (start.roadId, start.s.value, start.t.value, start.h.value) == ("1", 120.0, -5.5, 0.25)
+    assert not told  # nothing computed: the road coordinate is kept as written
+
+
+def test_a_relative_position_reads_a_road_position_start(tmp_path: Path) -> None:
+    path = scenario(
+        tmp_path,
+        entities=f'<ScenarioObject name="Ego">{CAR}</ScenarioObject>'
+        f'<ScenarioObject name="Other">{CAR}</ScenarioObject>',
+        init=LANE_START.format(name="Ego", position='<RoadPosition roadId="1" s="50" t="-5.5"/>')
+        + LANE_START.format(
+            name="Other", position='<RelativeLanePosition entityRef="Ego" dLane="1" ds="10"/>'
+        ),
+    )
+    # Ego's t = -5.5 lies in lane -2 (-3.5 .. -7); one lane to the left is -1.
+    start = actor(import_file(path).scenario, "Other").startPosition
+    assert lane(start) == ("1", -1, 60.0, 0.0)
 
 
 @pytest.mark.parametrize(

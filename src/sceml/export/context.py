@@ -70,6 +70,14 @@ class Context:
                 "s": text(position, "s"),
                 "offset": text(position, "offset"),
             }
+        if isinstance(position, scm.RoadPosition):
+            return {
+                "kind": "road",
+                "roadId": str(position.roadId),
+                "s": text(position, "s"),
+                "t": text(position, "t"),
+                "h": None if position.h is None else text(position, "h"),
+            }
         return {
             "kind": "world",
             "x": text(position, "x"),

@@ -1,4 +1,4 @@
-"""Position elements to SceML positions: WorldPosition and LanePosition; None for the others."""
+"""Position elements to SceML positions: World, Lane and Road positions; None for the others."""
 
 from __future__ import annotations
 
@@ -38,9 +38,30 @@ def position(holder: etree._Element | None) -> scm.Position | None:
                 s=_value(kind, "s"),
                 offset=_value(kind, "offset", 0.0),
             )
+        if kind.tag == "RoadPosition":
+            return scm.RoadPosition(
+                roadId=str(kind.get("roadId")),
+                s=_value(kind, "s"),
+                t=_value(kind, "t", 0.0),
+                h=_road_heading(kind),
+            )
     except ValueError:
         return None
     return None
+
+
+def _road_heading(kind: etree._Element) -> scm.Value | None:
+    """A RoadPosition's Orientation h (relative to the road, the default type); None when absent.
+
+    An absolute orientation has no place in the model's road-relative h: ValueError keeps the
+    element for the caller's fallback.
+    """
+    orientation = kind.find("Orientation")
+    if orientation is None or orientation.get("h") is None:
+        return None
+    if orientation.get("type", "relative") != "relative":
+        raise ValueError("absolute orientation")
+    return _value(orientation, "h")
 
 
 #: Lane ids are 32-bit integers in OpenSCENARIO (and in the model's EInt).
