@@ -40,6 +40,19 @@ def lane(
     )
 
 
+def road(
+    road_id: str | int, s: ParameterInput, t: ParameterInput = 0.0, h: ParameterInput | None = None
+) -> scm.RoadPosition:
+    """A road position: distance along the road's reference line, lateral t (m, positive to the
+    left) and, when given, the heading relative to the road (rad)."""
+    return scm.RoadPosition(
+        roadId=str(road_id),
+        s=as_parameter(s),
+        t=as_parameter(t),
+        h=None if h is None else as_parameter(h),
+    )
+
+
 def _kind_class(kind: str | type, base: str) -> type:
     name = catalog.class_name(kind)
     cls = getattr(scm, name, None)

@@ -90,6 +90,7 @@ VIEWS: dict[str, tuple[str, ...]] = {
         "Position",
         "WorldPosition",
         "LanePosition",
+        "RoadPosition",
         "Environment",
     ),
     "values": (

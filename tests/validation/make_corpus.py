@@ -18,7 +18,7 @@ from lxml import etree
 
 import scemlmodel as scm
 from sceml import io
-from sceml.build import LibraryBuilder, ScenarioBuilder, lane, world
+from sceml.build import LibraryBuilder, ScenarioBuilder, lane, road, world
 from sceml.params import discrete, normal, span, uniform
 
 HERE = Path(__file__).resolve().parent / "corpus"
@@ -745,6 +745,11 @@ on_map("r003-offset-outside-lane", "SCEML-R003")(_start(lane(1, -1, 20.0, offset
 on_map("r003-logical-s-range-beyond-road", "SCEML-R003", level="logical")(
     _start(lane(1, -1, span(20.0, 120.0)))
 )
+on_map("r008-unknown-road", "SCEML-R008")(_start(road(99, 10.0, -1.75)))
+on_map("r008-s-beyond-road", "SCEML-R008")(_start(road(1, 150.0, -1.75)))
+on_map("r008-t-off-road", "SCEML-R008")(_start(road(1, 20.0, -30.0)))
+# A road position in a driving lane, with a heading relative to the road: clean.
+on_map("r008-road-position-on-lane", "")(_start(road(1, 20.0, -1.75, h=0.1)))
 on_map("r004-car-on-sidewalk", "SCEML-R004")(_start(lane(1, -2, 10.0)))
 on_map("r004-car-off-road", "SCEML-R004")(_start(world(30.0, 30.0, h=0.0)))
 # A pedestrian may stand on the roadway (it crosses it): clean.

@@ -147,6 +147,12 @@ def position_to_json(position: scm.Position | None) -> dict[str, Any] | None:
             "s": value_to_json(position.s),
             "offset": value_to_json(position.offset),
         }
+    if isinstance(position, scm.RoadPosition):
+        return {
+            "type": "road",
+            "roadId": position.roadId,
+            **{key: value_to_json(position.eGet(key)) for key in ("s", "t", "h")},
+        }
     return None
 
 
@@ -171,10 +177,17 @@ def position_from_json(
         for key in ("x", "y", "z", "h"):
             position.eSet(key, coordinate(key, required=key in ("x", "y")))
         return position
-    if kind == "lane":
+    if kind in ("lane", "road"):
         road, lane_id = data.get("roadId"), data.get("laneId")
         if not isinstance(road, str | int) or isinstance(road, bool) or str(road) == "":
             raise OperationError(f"'roadId' must be a road id, not {road!r}")
+        if kind == "road":
+            return scm.RoadPosition(
+                roadId=str(road),
+                s=coordinate("s", required=True),
+                t=coordinate("t", required=False),
+                h=coordinate("h", required=False),
+            )
         if isinstance(lane_id, bool) or not isinstance(lane_id, int):
             raise OperationError(f"'laneId' must be a whole number, not {lane_id!r}")
         return scm.LanePosition(
@@ -183,4 +196,4 @@ def position_from_json(
             s=coordinate("s", required=True),
             offset=coordinate("offset", required=False),
         )
-    raise OperationError(f"unknown position type {kind!r}; use 'world' or 'lane'")
+    raise OperationError(f"unknown position type {kind!r}; use 'world', 'lane' or 'road'")

@@ -10,8 +10,8 @@ skipped until a use gives it one (rules run on the flattened scenario for that).
 from __future__ import annotations
 
 import itertools
-from dataclasses import dataclass
 from collections.abc import Callable
+from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from pyecore.ecore import EObject

@@ -26,7 +26,9 @@ def road_to_lane(road_map: RoadMap, road_id: str, s: float, t: float) -> LaneCoo
     """
     road = road_map.road(road_id)
     if not -1e-6 <= s <= road.length + 1e-6:
-        raise PositionError(f"s={s:g} m is outside road {road.id!r}, which is {road.length:g} m long")
+        raise PositionError(
+            f"s={s:g} m is outside road {road.id!r}, which is {road.length:g} m long"
+        )
     bands = road_map.bands(road, s)
     for band in bands:
         low, high = sorted((band.inner, band.outer))

@@ -120,7 +120,8 @@ def describe_value(value: scm.ParameterValue | None, unit: str, scope: Scope) ->
 
 
 def describe_position(position: EObject | None, scope: Scope) -> str:
-    """`(x, y) m, h 1.57 rad` for world positions, `road 3 lane 1 s 30 m` for lane positions."""
+    """`(x, y) m, h 1.57 rad` for world positions, `road 3 lane 1 s 30 m` for lane positions,
+    `road 3 s 30 m t -1.75 m` for road positions."""
     if isinstance(position, scm.WorldPosition):
         x = describe_value(position.x, "", scope)
         y = describe_value(position.y, "", scope)
@@ -132,6 +133,14 @@ def describe_position(position: EObject | None, scope: Scope) -> str:
         text = f"road {position.roadId} lane {position.laneId} s {describe_value(position.s, 'm', scope)}"
         if position.offset is not None and not _is_zero(_resolve(position.offset, scope)):
             text += f" offset {describe_value(position.offset, 'm', scope)}"
+        return text
+    if isinstance(position, scm.RoadPosition):
+        text = f"road {position.roadId} s {describe_value(position.s, 'm', scope)}"
+        text += (
+            f" t {describe_value(position.t, 'm', scope)}" if position.t is not None else " t 0 m"
+        )
+        if position.h is not None:
+            text += f", h {describe_value(position.h, 'rad', scope)}"
         return text
     return "(none)" if position is None else position.eClass.name
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 import scemlmodel as scm
 
 from ..maps import PositionError, RoadMap
+from ..maps.resolve import road_pose, road_to_lane
 from ..params import concrete
 from . import lanes
 from .actors import Actor
@@ -23,6 +24,8 @@ def make_actor(actor: scm.Actor, road_map: RoadMap | None) -> Actor:
             return _on_lane(actor, position, road_map, size, speed)
         if isinstance(position, scm.WorldPosition):
             return _in_world(actor, position, road_map, size, speed)
+        if isinstance(position, scm.RoadPosition):
+            return _on_road(actor, position, road_map, size, speed)
     except (PositionError, ValueError) as error:
         raise SimulationError(f"{name}'s start position: {error}", element=name) from None
     raise SimulationError(f"{name} has no start position", element=name)
@@ -62,6 +65,36 @@ def _in_world(
     lane_spot = LaneSpot(coordinate.road_id, coordinate.lane_id, coordinate.s, forward)
     lateral = coordinate.offset if forward else -coordinate.offset
     return Actor(*_identity(actor), size, lanes.lane_path(road_map, lane_spot), speed, lateral)
+
+
+def _on_road(
+    actor: scm.Actor,
+    position: scm.RoadPosition,
+    road_map: RoadMap | None,
+    size: tuple[float, float],
+    speed: float,
+) -> Actor:
+    """A road coordinate is the lane position it lies in (maps/resolve.py); a heading given
+    relative to the road places the actor as at that world pose."""
+    if road_map is None:
+        raise SimulationError(
+            f"{actor.name} starts on a road, which needs an OpenDRIVE map", element=str(actor.name)
+        )
+    road_id, s, t = str(position.roadId), concrete(position, "s"), concrete(position, "t")
+    if position.h is not None:
+        pose = road_pose(road_map, road_id, s, t, concrete(position, "h"))
+        world = scm.WorldPosition(
+            x=scm.Value(value=pose.x), y=scm.Value(value=pose.y), h=scm.Value(value=pose.heading)
+        )
+        return _in_world(actor, world, road_map, size, speed)
+    lane = road_to_lane(road_map, road_id, s, t)
+    in_lane = scm.LanePosition(
+        roadId=lane.road_id,
+        laneId=lane.lane_id,
+        s=scm.Value(value=s),
+        offset=scm.Value(value=lane.offset),
+    )
+    return _on_lane(actor, in_lane, road_map, size, speed)
 
 
 def _identity(actor: scm.Actor) -> tuple[str, str, bool]:

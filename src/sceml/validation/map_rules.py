@@ -29,8 +29,8 @@ from ..maps import (
     wrap_angle,
 )
 from ..maps.positions import Located, centre, locate, spread
-from ..maps.resolve import road_to_lane
 from ..maps.reference import MapReference, is_town_name, map_reference
+from ..maps.resolve import road_to_lane
 from ..maps.routes import routes_from
 from .context import Context, is_kind, performer
 from .registry import Finding, constraint
