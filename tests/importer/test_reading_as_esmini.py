@@ -221,6 +221,19 @@ def test_a_road_position_stays_a_road_position(tmp_path: Path) -> None:
     assert not told  # nothing computed: the road coordinate is kept as written
 
 
+def test_a_road_position_with_an_absolute_heading_keeps_it_relative_to_the_road(
+    tmp_path: Path,
+) -> None:
+    # Road 1 runs along x (heading 0): an absolute 0.3 is 0.3 relative to the road.
+    start, _ = start_of(
+        tmp_path,
+        '<RoadPosition roadId="1" s="120" t="-5.5"><Orientation type="absolute" h="0.3"/>'
+        "</RoadPosition>",
+    )
+    assert isinstance(start, scm.RoadPosition)
+    assert (start.s.value, start.t.value, start.h.value) == (120.0, -5.5, pytest.approx(0.3))
+
+
 def test_a_relative_position_reads_a_road_position_start(tmp_path: Path) -> None:
     path = scenario(
         tmp_path,

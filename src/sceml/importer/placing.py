@@ -17,7 +17,7 @@ from lxml import etree
 
 import scemlmodel as scm
 
-from ..maps.model import PositionError, WorldPose
+from ..maps.model import PositionError, WorldPose, wrap_angle
 from ..maps.resolve import road_to_lane
 from . import traced
 from .context import Build, last_name
@@ -59,6 +59,8 @@ def place(build: Build, holder: etree._Element | None, *, initial: bool) -> scm.
     kind = None if element is None else next((c for c in element if isinstance(c.tag, str)), None)
     if kind is None or build.road_map is None and kind.tag != "RelativeWorldPosition":
         return None
+    if kind.tag == "RoadPosition":
+        return _turned_to_the_road(build, kind)
     if kind.tag in RELATIVE and not initial:
         return None
     try:
@@ -73,6 +75,25 @@ def place(build: Build, holder: etree._Element | None, *, initial: bool) -> scm.
             build.where(kind),
         )
     return made
+
+
+def _turned_to_the_road(build: Build, kind: etree._Element) -> scm.RoadPosition | None:
+    """A RoadPosition with an absolute Orientation: the same heading relative to the road at s
+    (the model's h), exact, as the road's direction at s is fixed."""
+    assert build.road_map is not None
+    orientation = kind.find("Orientation")
+    try:
+        s, t = number(kind, "s"), number(kind, "t", 0.0)
+        _, _, along = build.road_map.reference_line(str(kind.get("roadId"))).pose(s)
+        h = number(orientation, "h") if orientation is not None else 0.0
+    except (PositionError, ValueError):
+        return None
+    return scm.RoadPosition(
+        roadId=str(kind.get("roadId")),
+        s=traced.value(s),
+        t=traced.value(t),
+        h=scm.Value(value=wrap_angle(h - along)),
+    )
 
 
 def _in_its_lane(
