@@ -91,6 +91,10 @@ VIEWS: dict[str, tuple[str, ...]] = {
         "WorldPosition",
         "LanePosition",
         "RoadPosition",
+        "RelativeLanePosition",
+        "RelativeRoadPosition",
+        "RelativeObjectPosition",
+        "RelativeWorldPosition",
         "Environment",
     ),
     "values": (

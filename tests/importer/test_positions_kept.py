@@ -1,5 +1,6 @@
-"""Positions keep their OpenSCENARIO kind: a RoadPosition imports as a RoadPosition and exports
-back as the same RoadPosition at every version, in Init and as a destination."""
+"""Positions keep their OpenSCENARIO kind: Road and the four relative positions import as the
+same kind and export back as the same element at every version, in Init, as a destination and
+in a condition."""
 
 from __future__ import annotations
 
@@ -15,6 +16,13 @@ from sceml.importer import import_file, import_to_file
 
 FILES = Path(__file__).resolve().parent / "files"
 VERSIONS = ("1.0", "1.1", "1.2", "1.3")
+KEPT = (
+    "RoadPosition",
+    "RelativeLanePosition",
+    "RelativeRoadPosition",
+    "RelativeObjectPosition",
+    "RelativeWorldPosition",
+)
 
 
 def positions(path: Path) -> list[tuple[str, str, tuple[tuple[str, str], ...]]]:
@@ -22,7 +30,9 @@ def positions(path: Path) -> list[tuple[str, str, tuple[tuple[str, str], ...]]]:
     (the Private's or ManeuverGroup's entity), its kind and its attributes (numbers as floats,
     orientation included), sorted."""
     found = []
-    for element in etree.parse(str(path)).iter("RoadPosition"):
+    for element in etree.parse(str(path)).iter(*KEPT):
+        if _own_start(element):
+            continue
         owner = next(
             (a for a in element.iterancestors() if a.tag in ("Private", "ManeuverGroup")), None
         )
@@ -34,6 +44,18 @@ def positions(path: Path) -> list[tuple[str, str, tuple[tuple[str, str], ...]]]:
     return sorted(found)
 
 
+def _own_start(element: etree._Element) -> bool:
+    """The first vertex of a Cross's polyline: the actor where it is (SceML's export writes it)."""
+    parent = element.getparent()
+    return (
+        parent is not None
+        and parent.getparent() is not None
+        and parent.getparent().tag == "Vertex"
+        and element.get("dx") == element.get("dy") == "0.0"
+        and element.get("dz") is None
+    )
+
+
 def _entity(owner: etree._Element | None) -> str:
     if owner is None:
         return ""
@@ -43,7 +65,7 @@ def _entity(owner: etree._Element | None) -> str:
 
 def _number(key: str, text: str) -> str:
     """Numbers compared as numbers (`50` is `50.0`); ids and types as written."""
-    return text if key in ("roadId", "type") else repr(float(text))
+    return text if key in ("roadId", "type", "entityRef") else repr(float(text))
 
 
 def test_road_positions_import_as_road_positions() -> None:
@@ -82,3 +104,38 @@ def test_road_positions_export_back_as_they_were(version: str, tmp_path: Path) -
             ("t", "-1.75"),
         ),
     ) in again
+
+
+def test_relative_positions_import_naming_their_entity() -> None:
+    imported = import_file(FILES / "relative-positions.xosc")
+    actors = {a.name: a for a in imported.scenario.nodes[0].actors}
+    lead, side, behind = (actors[n].startPosition for n in ("Lead", "Side", "Behind"))
+    assert isinstance(lead, scm.RelativeLanePosition) and lead.entity is actors["Ego"]
+    assert (lead.dLane, lead.ds.value, lead.offset.value) == (1, 30.0, 0.25)
+    assert isinstance(side, scm.RelativeRoadPosition)
+    assert (side.ds.value, side.dt.value) == (-10.0, -3.5)
+    assert isinstance(behind, scm.RelativeObjectPosition) and behind.h.value == 0.0
+    drive = next(n for n in imported.scenario.nodes if n.name == "DriveThere")
+    assert isinstance(drive.destination, scm.RelativeWorldPosition)
+    assert drive.destination.entity is actors["Lead"]
+    near = next(n for n in imported.scenario.nodes if n.name == "NearLead")
+    assert isinstance(near.position, scm.RelativeObjectPosition)
+    assert (near.position.dx.value, near.position.dy.value) == (-40.0, -3.5)
+    assert imported.report.counts()["opaque"] == 0
+
+
+@pytest.mark.parametrize("version", VERSIONS)
+def test_relative_positions_export_back_as_they_were(version: str, tmp_path: Path) -> None:
+    model = tmp_path / "relative-positions.xmi"
+    import_to_file(FILES / "relative-positions.xosc", model)
+    exported = tmp_path / "relative-positions.xosc"
+    export_to_file(io.load(model).root, exported, version=version, source_path=model)
+    assert schema.validate_file(exported, version) == []
+    original, again = positions(FILES / "relative-positions.xosc"), positions(exported)
+    # The export writes dz="0" where the original left it to its default, and each destination
+    # twice (the action and the condition that waits for the arrival).
+    written = {
+        (who, tag, tuple(a for a in attributes if a != ("dz", "0.0")))
+        for who, tag, attributes in again
+    }
+    assert sorted(written) == original

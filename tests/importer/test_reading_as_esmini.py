@@ -19,6 +19,8 @@ import scemlmodel as scm
 from sceml import io
 from sceml.cli import cli
 from sceml.importer import XoscImportError, import_file
+from sceml.maps import load_map
+from sceml.maps.resolve import start_poses
 
 FILES = Path(__file__).resolve().parent / "files"
 
@@ -234,6 +236,78 @@ def test_a_road_position_with_an_absolute_heading_keeps_it_relative_to_the_road(
     assert (start.s.value, start.t.value, start.h.value) == (120.0, -5.5, pytest.approx(0.3))
 
 
+def where(tmp_path: Path, position: str) -> tuple[scm.Position, tuple[float, float, float]]:
+    """The start of the second car, and the world pose it resolves to among the starts."""
+    path = scenario(
+        tmp_path,
+        entities=f'<ScenarioObject name="Ego">{CAR}</ScenarioObject>'
+        f'<ScenarioObject name="Other">{CAR}</ScenarioObject>',
+        init=LANE_START.format(name="Ego", position=EGO_START)
+        + LANE_START.format(name="Other", position=position),
+    )
+    actors = import_file(path).scenario.nodes[0].actors
+    poses = start_poses(actors, load_map(FILES / "highway.xodr"))
+    other = next(a for a in actors if a.name == "Other")
+    pose = poses[other]
+    return other.startPosition, (round(pose.x, 6), round(pose.y, 6), round(pose.heading, 6))
+
+
+@pytest.mark.parametrize(
+    ("relative", "kind", "expected"),
+    [
+        # Ego is in lane -2 at s = 50: one lane to the left is -1 (centre -1.75), 20 m behind
+        # is s = 30, 0.5 m left of the centre.
+        (
+            '<RelativeLanePosition entityRef="Ego" dLane="1" ds="-20" offset="0.5"/>',
+            "RelativeLanePosition",
+            (30.0, -1.25, 0.0),
+        ),
+        # Three lanes to the left crosses the reference line: -2, -1, (no 0), 1, 2 (centre
+        # 5.25), whose traffic runs against s.
+        (
+            '<RelativeLanePosition entityRef="Ego" dLane="3" ds="0"/>',
+            "RelativeLanePosition",
+            (50.0, 5.25, 3.141593),
+        ),
+        # Ego's t is -5.25; 3.5 m further left is -1.75, the centre of lane -1.
+        (
+            '<RelativeRoadPosition entityRef="Ego" ds="15" dt="3.5"/>',
+            "RelativeRoadPosition",
+            (65.0, -1.75, 0.0),
+        ),
+        # Ego stands at (50, -5.25) heading along x: 10 ahead, 2 left, turned by 0.5.
+        (
+            '<RelativeObjectPosition entityRef="Ego" dx="10" dy="2"><Orientation type="relative" '
+            'h="0.5"/></RelativeObjectPosition>',
+            "RelativeObjectPosition",
+            (60.0, -3.25, 0.5),
+        ),
+        (
+            '<RelativeWorldPosition entityRef="Ego" dx="-3" dy="4"/>',
+            "RelativeWorldPosition",
+            (47.0, -1.25, 0.0),
+        ),
+    ],
+)
+def test_relative_positions_are_kept_and_resolve_from_the_entity(
+    tmp_path: Path, relative: str, kind: str, expected: tuple[float, float, float]
+) -> None:
+    start, pose = where(tmp_path, relative)
+    assert start.eClass.name == kind
+    assert start.entity.name == "Ego"
+    assert pose == pytest.approx(expected)
+
+
+def test_a_relative_lane_position_measured_along_the_lane_is_computed(tmp_path: Path) -> None:
+    # dsLane (1.1+) is measured along the lane, SceML's ds along the road: computed as the lane
+    # position it stands for at the start, and reported.
+    start, told = start_of(
+        tmp_path, '<RelativeLanePosition entityRef="Ego" dLane="1" dsLane="-20" offset="0.5"/>'
+    )
+    assert lane(start) == ("1", -1, 30.0, 0.5)
+    assert told
+
+
 def test_a_relative_position_reads_a_road_position_start(tmp_path: Path) -> None:
     path = scenario(
         tmp_path,
@@ -244,45 +318,11 @@ def test_a_relative_position_reads_a_road_position_start(tmp_path: Path) -> None
             name="Other", position='<RelativeLanePosition entityRef="Ego" dLane="1" ds="10"/>'
         ),
     )
-    # Ego's t = -5.5 lies in lane -2 (-3.5 .. -7); one lane to the left is -1.
-    start = actor(import_file(path).scenario, "Other").startPosition
-    assert lane(start) == ("1", -1, 60.0, 0.0)
-
-
-@pytest.mark.parametrize(
-    ("relative", "expected"),
-    [
-        # Ego is in lane -2 at s = 50: one lane to the left is -1, 20 m behind is s = 30.
-        (
-            '<RelativeLanePosition entityRef="Ego" dLane="1" ds="-20" offset="0.5"/>',
-            ("1", -1, 30.0, 0.5),
-        ),
-        # Three lanes to the left crosses the reference line: -2, -1, (no 0), 1, 2.
-        ('<RelativeLanePosition entityRef="Ego" dLane="3" ds="0"/>', ("1", 2, 50.0, 0.0)),
-        # Ego's t is -5.25; 3.5 m further left is -1.75, the centre of lane -1.
-        ('<RelativeRoadPosition entityRef="Ego" ds="15" dt="3.5"/>', ("1", -1, 65.0, 0.0)),
-    ],
-)
-def test_relative_lane_and_road_positions_in_init(
-    tmp_path: Path, relative: str, expected: tuple[str, int, float, float]
-) -> None:
-    start, told = start_of(tmp_path, relative)
-    assert lane(start) == expected
-    assert told
-
-
-def test_relative_object_and_world_positions_in_init(tmp_path: Path) -> None:
-    # Ego stands at (50, -5.25) heading along x (0 rad).
-    start, _ = start_of(
-        tmp_path,
-        '<RelativeObjectPosition entityRef="Ego" dx="10" dy="2"><Orientation type="relative" '
-        'h="0.5"/></RelativeObjectPosition>',
-    )
-    assert isinstance(start, scm.WorldPosition)
-    assert (round(start.x.value, 6), round(start.y.value, 6), start.h.value) == (60.0, -3.25, 0.5)
-    start, _ = start_of(tmp_path, '<RelativeWorldPosition entityRef="Ego" dx="-3" dy="4"/>')
-    assert isinstance(start, scm.WorldPosition)
-    assert (round(start.x.value, 6), round(start.y.value, 6)) == (47.0, -1.25)
+    # Ego's t = -5.5 lies in lane -2 (-3.5 .. -7); one lane to the left is -1 (centre -1.75).
+    actors = import_file(path).scenario.nodes[0].actors
+    poses = start_poses(actors, load_map(FILES / "highway.xodr"))
+    pose = poses[next(a for a in actors if a.name == "Other")]
+    assert (pose.x, pose.y) == pytest.approx((60.0, -1.75))
 
 
 # --- storyboard --------------------------------------------------------------------------

@@ -1,7 +1,8 @@
 """Positions SceML has no class for, computed as the Lane or World position they stand for.
 
-SceML knows WorldPosition, LanePosition and RoadPosition. In Init, where every entity's place
-is known, a RelativeLanePosition,
+SceML knows World, Lane, Road and the four relative positions (positions.py). What those do
+not hold (a dsLane, an absolute Orientation) is computed here: in Init, where every entity's
+place is known, a RelativeLanePosition,
 RelativeRoadPosition, RelativeWorldPosition or RelativeObjectPosition is the position it names
 relative to an entity already placed. The relative meaning is lost (reported as guessed), the
 start is not: a concrete scenario needs one for every actor. Later in the story the entity has
@@ -50,7 +51,7 @@ def place(build: Build, holder: etree._Element | None, *, initial: bool) -> scm.
 
     `initial`: read in Init, where relative positions can be resolved.
     """
-    plain = position(holder)
+    plain = position(holder, build.actors)
     if isinstance(plain, scm.LanePosition) and build.road_map is not None:
         return _in_its_lane(build, plain, holder)
     if plain is not None or holder is None:

@@ -142,7 +142,33 @@ def describe_position(position: EObject | None, scope: Scope) -> str:
         if position.h is not None:
             text += f", h {describe_value(position.h, 'rad', scope)}"
         return text
+    if position is not None and position.eClass.name in _RELATIVE_WORDS:
+        return _describe_relative(position, scope)
     return "(none)" if position is None else position.eClass.name
+
+
+#: The offsets each relative position shows, in order.
+_RELATIVE_WORDS = {
+    "RelativeLanePosition": ("ds", "offset"),
+    "RelativeRoadPosition": ("ds", "dt"),
+    "RelativeObjectPosition": ("dx", "dy", "dz", "h"),
+    "RelativeWorldPosition": ("dx", "dy", "dz"),
+}
+
+
+def _describe_relative(position: EObject, scope: Scope) -> str:
+    """`from ego: lane +1, ds 30 m` (only what is set and not zero), as it reads on a box."""
+    parts = []
+    if position.eClass.name == "RelativeLanePosition":
+        parts.append(f"lane {int(position.dLane or 0):+d}")
+    for feature in _RELATIVE_WORDS[position.eClass.name]:
+        held = position.eGet(feature)
+        if held is not None and not _is_zero(_resolve(held, scope)):
+            unit = "rad" if feature == "h" else "m"
+            parts.append(f"{feature} {describe_value(held, unit, scope)}")
+    frame = "in world axes " if position.eClass.name == "RelativeWorldPosition" else ""
+    entity = getattr(position.entity, "name", None) or "?"
+    return f"{frame}from {entity}: " + (", ".join(parts) if parts else "its own place")
 
 
 def _is_zero(value: scm.ParameterValue | None) -> bool:

@@ -2,10 +2,14 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+
+from pyecore.ecore import EObject
+
 import scemlmodel as scm
 
-from ..maps import PositionError, RoadMap
-from ..maps.resolve import road_pose, road_to_lane
+from ..maps import PositionError, RoadMap, WorldPose
+from ..maps.resolve import is_relative, resolve, road_pose, road_to_lane
 from ..params import concrete
 from . import lanes
 from .actors import Actor
@@ -13,8 +17,13 @@ from .paths import LaneSpot, heading_path
 from .world import SimulationError
 
 
-def make_actor(actor: scm.Actor, road_map: RoadMap | None) -> Actor:
-    """An actor at its start position with its initial speed, following its lane if on one."""
+def make_actor(
+    actor: scm.Actor, road_map: RoadMap | None, starts: Mapping[EObject, WorldPose] | None = None
+) -> Actor:
+    """An actor at its start position with its initial speed, following its lane if on one.
+
+    `starts`: where the actors start (maps.resolve.start_poses), for a start relative to one.
+    """
     name = str(actor.name)
     size = (concrete(actor, "length"), concrete(actor, "width"))
     speed = concrete(actor, "initialSpeed")
@@ -26,6 +35,16 @@ def make_actor(actor: scm.Actor, road_map: RoadMap | None) -> Actor:
             return _in_world(actor, position, road_map, size, speed)
         if isinstance(position, scm.RoadPosition):
             return _on_road(actor, position, road_map, size, speed)
+        if is_relative(position):
+            pose = resolve(position, road_map, starts or {})
+            if pose is None:
+                other = getattr(position.entity, "name", None)
+                raise SimulationError(
+                    f"{name}'s start is relative to {other!r}, whose start is not known "
+                    "(no such actor, a start off the map, or starts relative to each other)",
+                    element=name,
+                )
+            return _in_world(actor, _world(pose), road_map, size, speed)
     except (PositionError, ValueError) as error:
         raise SimulationError(f"{name}'s start position: {error}", element=name) from None
     raise SimulationError(f"{name} has no start position", element=name)
@@ -83,10 +102,7 @@ def _on_road(
     road_id, s, t = str(position.roadId), concrete(position, "s"), concrete(position, "t")
     if position.h is not None:
         pose = road_pose(road_map, road_id, s, t, concrete(position, "h"))
-        world = scm.WorldPosition(
-            x=scm.Value(value=pose.x), y=scm.Value(value=pose.y), h=scm.Value(value=pose.heading)
-        )
-        return _in_world(actor, world, road_map, size, speed)
+        return _in_world(actor, _world(pose), road_map, size, speed)
     lane = road_to_lane(road_map, road_id, s, t)
     in_lane = scm.LanePosition(
         roadId=lane.road_id,
@@ -95,6 +111,12 @@ def _on_road(
         offset=scm.Value(value=lane.offset),
     )
     return _on_lane(actor, in_lane, road_map, size, speed)
+
+
+def _world(pose: WorldPose) -> scm.WorldPosition:
+    return scm.WorldPosition(
+        x=scm.Value(value=pose.x), y=scm.Value(value=pose.y), h=scm.Value(value=pose.heading)
+    )
 
 
 def _identity(actor: scm.Actor) -> tuple[str, str, bool]:
