@@ -138,7 +138,8 @@ def _on_road(position: scm.RoadPosition, road_map: RoadMap, numbers: Spread) -> 
         return []
     road = str(position.roadId)
     points = []
-    for s, t, h in itertools.product(ss, ts, hs or [None]):
+    headings: list[float | None] = list(hs) if hs else [None]
+    for s, t, h in itertools.product(ss, ts, headings):
         lane = road_to_lane(road_map, road, s, t)
         pose = road_pose(road_map, road, s, t, h)
         points.append(Located(pose.x, pose.y, pose.heading, (road, lane.lane_id, s, lane.offset)))

@@ -158,8 +158,8 @@ def relative_position_has_an_anchor(position: EObject, context: Context) -> Iter
             yield position, f"start positions relative to each other in a cycle: {names}"
             return
         chain.append(current)
-        start = getattr(current, "startPosition", None)
-        if not is_relative(start) or start.entity is None:
+        start: EObject | None = getattr(current, "startPosition", None)
+        if start is None or not is_relative(start) or start.entity is None:
             return
         current = start.entity
 
@@ -167,4 +167,6 @@ def relative_position_has_an_anchor(position: EObject, context: Context) -> Iter
 def _owner(holder: EObject | None) -> str:
     if isinstance(holder, scm.Actor):
         return f"the start of actor {label(holder)}"
-    return repr(str(getattr(holder, "name", None) or getattr(holder, "eClass", type(holder)).name))
+    if holder is None:
+        return "nothing"
+    return repr(str(getattr(holder, "name", None) or holder.eClass.name))
