@@ -83,13 +83,13 @@ class Located:
 
 def is_concrete(position: EObject) -> bool:
     """Whether every coordinate of a position is a single value (or unset with a default)."""
-    names = {
-        "WorldPosition": ("x", "y", "h"),
-        "RoadPosition": ("s", "t", "h"),
-    }.get(position.eClass.name, ("s", "offset"))
     return all(
-        getattr(position, name) is None or isinstance(getattr(position, name), scm.Value)
-        for name in names
+        held is None or isinstance(held, scm.Value)
+        for held in (
+            position.eGet(feature)
+            for feature in position.eClass.eAllStructuralFeatures()
+            if getattr(feature, "containment", False)
+        )
     )
 
 
