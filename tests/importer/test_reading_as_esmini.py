@@ -325,6 +325,36 @@ def test_a_relative_position_reads_a_road_position_start(tmp_path: Path) -> None
     assert (pose.x, pose.y) == pytest.approx((60.0, -1.75))
 
 
+@pytest.mark.parametrize(("d_lane", "direction"), [(1, "left"), (-1, "right")])
+def test_a_change_into_the_lane_of_an_actor_placed_relative_reads_where_it_starts(
+    tmp_path: Path, d_lane: int, direction: str
+) -> None:
+    change = (
+        '<Maneuver name="M"><Event name="Change" priority="overwrite"><Action name="ChangeAction">'
+        "<PrivateAction><LateralAction><LaneChangeAction><LaneChangeActionDynamics "
+        'dynamicsShape="sinusoidal" value="3" dynamicsDimension="time"/><LaneChangeTarget>'
+        '<RelativeTargetLane entityRef="Other" value="0"/></LaneChangeTarget></LaneChangeAction>'
+        "</LateralAction></PrivateAction></Action><StartTrigger><ConditionGroup>"
+        f'<Condition name="When" delay="0" conditionEdge="none"><ByValueCondition>{AT_START}'
+        "</ByValueCondition></Condition></ConditionGroup></StartTrigger></Event></Maneuver>"
+    )
+    path = scenario(
+        tmp_path,
+        entities=f'<ScenarioObject name="Ego">{CAR}</ScenarioObject>'
+        f'<ScenarioObject name="Other">{CAR}</ScenarioObject>',
+        # Ego's t = -5.5 is in lane -2; Other starts a lane to the left (-1) or right (-3).
+        init=LANE_START.format(name="Ego", position='<RoadPosition roadId="1" s="50" t="-5.5"/>')
+        + LANE_START.format(
+            name="Other",
+            position=f'<RelativeLanePosition entityRef="Ego" dLane="{d_lane}" ds="20"/>',
+        ),
+        maneuvers=change,
+    )
+    node = next(n for n in import_file(path).scenario.nodes if n.name == "Change")
+    assert node.eClass.name == "LaneChange"
+    assert node.direction.name == direction
+
+
 # --- storyboard --------------------------------------------------------------------------
 
 
