@@ -779,6 +779,15 @@ def _relative_starts(entities: str) -> Callable[[ScenarioBuilder, scm.Actor], No
 
 
 on_map("a008-relative-start-clean", "")(_relative_starts("ego"))
+
+
+def _beside_ego(b: ScenarioBuilder, ego: scm.Actor) -> None:
+    """Car `other` starts one lane right of ego's lane -1 on road 1: lane -2, a sidewalk."""
+    other = b.actor("Car", "other", start=relative_lane(ego, -1, 10.0))
+    b.chain(b.root, b.add("Accelerate", other, targetSpeed=1.0), b.end)
+
+
+on_map("r004-relative-start-on-sidewalk", "SCEML-R004")(_beside_ego)
 on_map("a008-start-relative-to-itself", "SCEML-A008")(_relative_starts("itself"))
 on_map("a008-starts-relative-in-a-cycle", "SCEML-A008 SCEML-A008")(_relative_starts("cycle"))
 on_map("a008-relative-start-names-nobody", "SCEML-A008")(_relative_starts("nobody"))

@@ -30,7 +30,7 @@ from ..maps import (
 )
 from ..maps.positions import Located, centre, locate, spread
 from ..maps.reference import MapReference, is_town_name, map_reference
-from ..maps.resolve import road_to_lane
+from ..maps.resolve import RELATIVE_KINDS, is_relative, road_to_lane, start_poses
 from ..maps.routes import routes_from
 from .context import Context, is_kind, performer
 from .registry import Finding, constraint
@@ -219,7 +219,7 @@ def road_position_exists(position: scm.RoadPosition, context: Context) -> Iterat
 @constraint(
     "SCEML-R004",
     ERROR,
-    ("WorldPosition", "LanePosition", "RoadPosition"),
+    ("WorldPosition", "LanePosition", "RoadPosition", *RELATIVE_KINDS),
     "a position lies on a lane that fits its actor: driving lanes for vehicles; the roadway, "
     "sidewalks and bike lanes for bicycles and pedestrians",
     source=_SOURCE,
@@ -233,7 +233,7 @@ def position_fits_actor(position: EObject, context: Context) -> Iterator[Finding
     usable, needs = _usable_lanes(actor)
     what = _what(position)
     try:
-        points = locate(position, road_map)
+        points = _relative_start(position, road_map, context) or locate(position, road_map)
     except PositionError:
         return  # SCEML-R003 or R008 says what is wrong with the position
     for point in points:
@@ -267,6 +267,18 @@ def position_fits_actor(position: EObject, context: Context) -> Iterator[Finding
                 ),
             )
             return
+
+
+def _relative_start(position: EObject, road_map: RoadMap, context: Context) -> list[Located]:
+    """A relative start where the other starts put it (maps.resolve, as players read Init); []
+    for any other position (a relative destination or condition moves with its entity)."""
+    actor = position.eContainer()
+    if not is_relative(position) or not isinstance(actor, scm.Actor):
+        return []
+    root = actor.eContainer()
+    starts = context.memo(("start poses", root), lambda: start_poses(root.actors, road_map))
+    pose = starts.get(actor)
+    return [] if pose is None else [Located(pose.x, pose.y, pose.heading)]
 
 
 def _nearest(road_map: RoadMap, point: Located) -> str:
