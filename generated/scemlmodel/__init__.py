@@ -1,13 +1,13 @@
 
 from .scemlmodel import getEClassifier, eClassifiers
 from .scemlmodel import name, nsURI, nsPrefix, eClass
-from .scemlmodel import AbstractionLevel, JoinPolicy, LaneChangeDirection, ComparisonRule, CloudState, PrecipitationType, ActorKind, NamedElement, Graph, Scenario, Library, Flow, GraphElement, DiagramPosition, RootNode, EndNode, ModuleElement, ActionNode, Maneuver, LongitudinalManeuver, LateralManeuver, CompositeManeuver, Condition, Accelerate, Decelerate, Stop, KeepVelocity, DriveDistance, Follow, Approach, LaneChange, RoutedManeuver, TurnLeft, TurnRight, Cross, FollowTrajectory, Overtake, InLocationRadius, InVehicleRadius, TimeElapsed, SpeedCondition, TimeToCollision, OpaqueAction, JoiningPolicy, JoinAllFinished, JoinOneFinished, ModuleDefinition, InPort, OutPort, ModuleUse, RoleBinding, ParameterOverride, ModuleParameter, Participant, ActorRole, AllowedKind, Actor, Pedestrian, TwoWheeler, Bicycle, Motorcycle, FourWheeler, Car, Van, Truck, Bus, Position, WorldPosition, LanePosition, Environment, ParameterValue, Value, Range, Distribution, UniformDistribution, NormalDistribution, DiscreteDistribution, WeightedValue, ParameterRef
+from .scemlmodel import AbstractionLevel, JoinPolicy, LaneChangeDirection, ComparisonRule, CloudState, PrecipitationType, ActorKind, NamedElement, Graph, Scenario, Library, Flow, GraphElement, DiagramPosition, RootNode, EndNode, ModuleElement, ActionNode, Maneuver, LongitudinalManeuver, LateralManeuver, CompositeManeuver, Condition, Accelerate, Decelerate, Stop, KeepVelocity, DriveDistance, Follow, Approach, LaneChange, RoutedManeuver, TurnLeft, TurnRight, Cross, FollowTrajectory, Overtake, InLocationRadius, InVehicleRadius, TimeElapsed, SpeedCondition, TimeToCollision, OpaqueAction, JoiningPolicy, JoinAllFinished, JoinOneFinished, ModuleDefinition, InPort, OutPort, ModuleUse, RoleBinding, ParameterOverride, ModuleParameter, Participant, ActorRole, AllowedKind, Actor, Pedestrian, TwoWheeler, Bicycle, Motorcycle, FourWheeler, Car, Van, Truck, Bus, Position, WorldPosition, LanePosition, RoadPosition, RelativeLanePosition, RelativeRoadPosition, RelativeObjectPosition, RelativeWorldPosition, Environment, ParameterValue, Value, Range, Distribution, UniformDistribution, NormalDistribution, DiscreteDistribution, WeightedValue, ParameterRef
 
 
 from . import scemlmodel
 
-__all__ = ['AbstractionLevel', 'JoinPolicy', 'LaneChangeDirection', 'ComparisonRule', 'CloudState', 'PrecipitationType', 'ActorKind', 'NamedElement', 'Graph', 'Scenario', 'Library', 'Flow', 'GraphElement', 'DiagramPosition', 'RootNode', 'EndNode', 'ModuleElement', 'ActionNode', 'Maneuver', 'LongitudinalManeuver', 'LateralManeuver', 'CompositeManeuver', 'Condition', 'Accelerate', 'Decelerate', 'Stop', 'KeepVelocity', 'DriveDistance', 'Follow', 'Approach', 'LaneChange', 'RoutedManeuver', 'TurnLeft', 'TurnRight', 'Cross', 'FollowTrajectory', 'Overtake', 'InLocationRadius', 'InVehicleRadius',
-           'TimeElapsed', 'SpeedCondition', 'TimeToCollision', 'OpaqueAction', 'JoiningPolicy', 'JoinAllFinished', 'JoinOneFinished', 'ModuleDefinition', 'InPort', 'OutPort', 'ModuleUse', 'RoleBinding', 'ParameterOverride', 'ModuleParameter', 'Participant', 'ActorRole', 'AllowedKind', 'Actor', 'Pedestrian', 'TwoWheeler', 'Bicycle', 'Motorcycle', 'FourWheeler', 'Car', 'Van', 'Truck', 'Bus', 'Position', 'WorldPosition', 'LanePosition', 'Environment', 'ParameterValue', 'Value', 'Range', 'Distribution', 'UniformDistribution', 'NormalDistribution', 'DiscreteDistribution', 'WeightedValue', 'ParameterRef']
+__all__ = ['AbstractionLevel', 'JoinPolicy', 'LaneChangeDirection', 'ComparisonRule', 'CloudState', 'PrecipitationType', 'ActorKind', 'NamedElement', 'Graph', 'Scenario', 'Library', 'Flow', 'GraphElement', 'DiagramPosition', 'RootNode', 'EndNode', 'ModuleElement', 'ActionNode', 'Maneuver', 'LongitudinalManeuver', 'LateralManeuver', 'CompositeManeuver', 'Condition', 'Accelerate', 'Decelerate', 'Stop', 'KeepVelocity', 'DriveDistance', 'Follow', 'Approach', 'LaneChange', 'RoutedManeuver', 'TurnLeft', 'TurnRight', 'Cross', 'FollowTrajectory', 'Overtake', 'InLocationRadius', 'InVehicleRadius', 'TimeElapsed', 'SpeedCondition', 'TimeToCollision',
+           'OpaqueAction', 'JoiningPolicy', 'JoinAllFinished', 'JoinOneFinished', 'ModuleDefinition', 'InPort', 'OutPort', 'ModuleUse', 'RoleBinding', 'ParameterOverride', 'ModuleParameter', 'Participant', 'ActorRole', 'AllowedKind', 'Actor', 'Pedestrian', 'TwoWheeler', 'Bicycle', 'Motorcycle', 'FourWheeler', 'Car', 'Van', 'Truck', 'Bus', 'Position', 'WorldPosition', 'LanePosition', 'RoadPosition', 'RelativeLanePosition', 'RelativeRoadPosition', 'RelativeObjectPosition', 'RelativeWorldPosition', 'Environment', 'ParameterValue', 'Value', 'Range', 'Distribution', 'UniformDistribution', 'NormalDistribution', 'DiscreteDistribution', 'WeightedValue', 'ParameterRef']
 
 eSubpackages = []
 eSuperPackage = None
@@ -67,6 +67,24 @@ WorldPosition.z.eType = ParameterValue
 WorldPosition.h.eType = ParameterValue
 LanePosition.s.eType = ParameterValue
 LanePosition.offset.eType = ParameterValue
+RoadPosition.s.eType = ParameterValue
+RoadPosition.t.eType = ParameterValue
+RoadPosition.h.eType = ParameterValue
+RelativeLanePosition.entity.eType = Participant
+RelativeLanePosition.ds.eType = ParameterValue
+RelativeLanePosition.offset.eType = ParameterValue
+RelativeRoadPosition.entity.eType = Participant
+RelativeRoadPosition.ds.eType = ParameterValue
+RelativeRoadPosition.dt.eType = ParameterValue
+RelativeObjectPosition.entity.eType = Participant
+RelativeObjectPosition.dx.eType = ParameterValue
+RelativeObjectPosition.dy.eType = ParameterValue
+RelativeObjectPosition.dz.eType = ParameterValue
+RelativeObjectPosition.h.eType = ParameterValue
+RelativeWorldPosition.entity.eType = Participant
+RelativeWorldPosition.dx.eType = ParameterValue
+RelativeWorldPosition.dy.eType = ParameterValue
+RelativeWorldPosition.dz.eType = ParameterValue
 Environment.precipitationIntensity.eType = ParameterValue
 Environment.fogVisualRange.eType = ParameterValue
 DiscreteDistribution.options.eType = WeightedValue

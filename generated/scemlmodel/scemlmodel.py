@@ -368,6 +368,126 @@ class LanePosition(Position):
             self.offset = offset
 
 
+class RoadPosition(Position):
+    """A point in road coordinates: s along the road's reference line, t across it (positive to the left), as OpenSCENARIO's RoadPosition. h, when given, is the heading relative to the road's direction at s."""
+    roadId = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    s = EReference(ordered=True, unique=True, containment=True, derived=False)
+    t = EReference(ordered=True, unique=True, containment=True, derived=False)
+    h = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, roadId=None, s=None, t=None, h=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if roadId is not None:
+            self.roadId = roadId
+
+        if s is not None:
+            self.s = s
+
+        if t is not None:
+            self.t = t
+
+        if h is not None:
+            self.h = h
+
+
+class RelativeLanePosition(Position):
+    """dLane lanes across (positive to the left, lane 0 skipped) and ds along the road from the entity's lane, offset from that lane's centre, relative to where the entity is when the position is used (Init: its start; a destination: when the maneuver starts; a condition: each time it is evaluated), as OpenSCENARIO's RelativeLanePosition."""
+    dLane = EAttribute(eType=EInt, unique=True, derived=False, changeable=True, default_value=0)
+    entity = EReference(ordered=True, unique=True, containment=False, derived=False)
+    ds = EReference(ordered=True, unique=True, containment=True, derived=False)
+    offset = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, entity=None, dLane=None, ds=None, offset=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if dLane is not None:
+            self.dLane = dLane
+
+        if entity is not None:
+            self.entity = entity
+
+        if ds is not None:
+            self.ds = ds
+
+        if offset is not None:
+            self.offset = offset
+
+
+class RelativeRoadPosition(Position):
+    """ds along and dt across the road (positive to the left) from the entity's road coordinate, relative to where the entity is when the position is used (Init: its start; a destination: when the maneuver starts; a condition: each time it is evaluated), as OpenSCENARIO's RelativeRoadPosition."""
+    entity = EReference(ordered=True, unique=True, containment=False, derived=False)
+    ds = EReference(ordered=True, unique=True, containment=True, derived=False)
+    dt = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, entity=None, ds=None, dt=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if entity is not None:
+            self.entity = entity
+
+        if ds is not None:
+            self.ds = ds
+
+        if dt is not None:
+            self.dt = dt
+
+
+class RelativeObjectPosition(Position):
+    """dx ahead, dy to the left and dz above the entity, in its own frame; h, when given, the heading relative to the entity's; relative to where the entity is when the position is used (Init: its start; a destination: when the maneuver starts; a condition: each time it is evaluated), as OpenSCENARIO's RelativeObjectPosition."""
+    entity = EReference(ordered=True, unique=True, containment=False, derived=False)
+    dx = EReference(ordered=True, unique=True, containment=True, derived=False)
+    dy = EReference(ordered=True, unique=True, containment=True, derived=False)
+    dz = EReference(ordered=True, unique=True, containment=True, derived=False)
+    h = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, entity=None, dx=None, dy=None, dz=None, h=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if entity is not None:
+            self.entity = entity
+
+        if dx is not None:
+            self.dx = dx
+
+        if dy is not None:
+            self.dy = dy
+
+        if dz is not None:
+            self.dz = dz
+
+        if h is not None:
+            self.h = h
+
+
+class RelativeWorldPosition(Position):
+    """dx, dy, dz in world axes from the entity, heading the entity's, relative to where the entity is when the position is used (Init: its start; a destination: when the maneuver starts; a condition: each time it is evaluated), as OpenSCENARIO's RelativeWorldPosition."""
+    entity = EReference(ordered=True, unique=True, containment=False, derived=False)
+    dx = EReference(ordered=True, unique=True, containment=True, derived=False)
+    dy = EReference(ordered=True, unique=True, containment=True, derived=False)
+    dz = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, entity=None, dx=None, dy=None, dz=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if entity is not None:
+            self.entity = entity
+
+        if dx is not None:
+            self.dx = dx
+
+        if dy is not None:
+            self.dy = dy
+
+        if dz is not None:
+            self.dz = dz
+
+
 class Value(ParameterValue):
 
     value = EAttribute(eType=EDouble, unique=True, derived=False, changeable=True)

@@ -40,6 +40,68 @@ def lane(
     )
 
 
+def road(
+    road_id: str | int, s: ParameterInput, t: ParameterInput = 0.0, h: ParameterInput | None = None
+) -> scm.RoadPosition:
+    """A road position: distance along the road's reference line, lateral t (m, positive to the
+    left) and, when given, the heading relative to the road (rad)."""
+    return scm.RoadPosition(
+        roadId=str(road_id),
+        s=as_parameter(s),
+        t=as_parameter(t),
+        h=None if h is None else as_parameter(h),
+    )
+
+
+def relative_lane(
+    entity: scm.Participant | None,
+    d_lane: int = 0,
+    ds: ParameterInput = 0.0,
+    offset: ParameterInput = 0.0,
+) -> scm.RelativeLanePosition:
+    """d_lane lanes left (negative: right) of the entity's lane, ds on along the road, offset
+    from that lane's centre, from where the entity is when the position is used."""
+    return scm.RelativeLanePosition(
+        entity=entity, dLane=int(d_lane), ds=as_parameter(ds), offset=as_parameter(offset)
+    )
+
+
+def relative_road(
+    entity: scm.Participant | None, ds: ParameterInput = 0.0, dt: ParameterInput = 0.0
+) -> scm.RelativeRoadPosition:
+    """ds along and dt across the road (m, positive to the left) from the entity."""
+    return scm.RelativeRoadPosition(entity=entity, ds=as_parameter(ds), dt=as_parameter(dt))
+
+
+def relative_object(
+    entity: scm.Participant | None,
+    dx: ParameterInput = 0.0,
+    dy: ParameterInput = 0.0,
+    dz: ParameterInput = 0.0,
+    h: ParameterInput | None = None,
+) -> scm.RelativeObjectPosition:
+    """dx ahead, dy left, dz above the entity in its own frame; h turns from its heading."""
+    return scm.RelativeObjectPosition(
+        entity=entity,
+        dx=as_parameter(dx),
+        dy=as_parameter(dy),
+        dz=as_parameter(dz),
+        h=None if h is None else as_parameter(h),
+    )
+
+
+def relative_world(
+    entity: scm.Participant | None,
+    dx: ParameterInput = 0.0,
+    dy: ParameterInput = 0.0,
+    dz: ParameterInput = 0.0,
+) -> scm.RelativeWorldPosition:
+    """dx, dy, dz in world axes from the entity (heading the entity's)."""
+    return scm.RelativeWorldPosition(
+        entity=entity, dx=as_parameter(dx), dy=as_parameter(dy), dz=as_parameter(dz)
+    )
+
+
 def _kind_class(kind: str | type, base: str) -> type:
     name = catalog.class_name(kind)
     cls = getattr(scm, name, None)

@@ -40,6 +40,8 @@ class ParameterSpec:
 
     `sign` is `positive` (above zero), `nonNegative` (zero or above) or None (any number);
     `limit` names the actor limit that bounds it (a key of the limits file, e.g. `max_speed`).
+    `optional` (annotation `optional="true"`): unset has a meaning of its own, so no level
+    requires it (a road position's h: unset follows the lane).
     """
 
     name: str
@@ -48,11 +50,12 @@ class ParameterSpec:
     per_actor_default: bool = False
     sign: str | None = None
     limit: str | None = None
+    optional: bool = False
 
     @property
     def required(self) -> bool:
         """A parameter without a language default must be given at the logical and concrete levels."""
-        return self.default is None and not self.per_actor_default
+        return self.default is None and not self.per_actor_default and not self.optional
 
 
 @dataclass(frozen=True)
@@ -230,6 +233,7 @@ def _parameters(name: str) -> tuple[ParameterSpec, ...]:
                 per_actor,
                 details.get("sign"),
                 details.get("limit"),
+                details.get("optional") == "true",
             )
         )
     return tuple(specs)

@@ -90,6 +90,11 @@ VIEWS: dict[str, tuple[str, ...]] = {
         "Position",
         "WorldPosition",
         "LanePosition",
+        "RoadPosition",
+        "RelativeLanePosition",
+        "RelativeRoadPosition",
+        "RelativeObjectPosition",
+        "RelativeWorldPosition",
         "Environment",
     ),
     "values": (

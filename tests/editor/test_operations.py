@@ -181,6 +181,58 @@ def test_set_environment_parameter_creates_nothing_needless(uis1: EditorSession)
     assert field(node(after, root), "environment.fogVisualRange")["value"]["value"] == 500.0
 
 
+def test_set_a_road_position(uis1: EditorSession) -> None:
+    cross = node_id(uis1.view(), "Cross_1")
+    road = {
+        "type": "road",
+        "roadId": "3",
+        "s": {"type": "value", "value": 12.0},
+        "t": {"type": "value", "value": -1.75},
+        "h": None,
+    }
+    after = roundtrip(
+        uis1, [{"op": "set_position", "node": cross, "field": "destination", "value": road}]
+    )
+    assert field(node(after, cross), "destination")["value"] == road
+    with pytest.raises(OperationError, match="needs 's'"):
+        uis1.apply(
+            [
+                {
+                    "op": "set_position",
+                    "node": cross,
+                    "field": "destination",
+                    "value": {**road, "s": None},
+                }
+            ]
+        )
+
+
+def test_set_a_relative_position_naming_an_actor(uis1: EditorSession) -> None:
+    cross = node_id(uis1.view(), "Cross_1")
+    ahead = {
+        "type": "relativeLane",
+        "entity": "ego",
+        "dLane": 1,
+        "ds": {"type": "value", "value": 20.0},
+        "offset": None,
+    }
+    after = roundtrip(
+        uis1, [{"op": "set_position", "node": cross, "field": "destination", "value": ahead}]
+    )
+    assert field(node(after, cross), "destination")["value"] == ahead
+    with pytest.raises(OperationError, match="'nobody' is none of"):
+        uis1.apply(
+            [
+                {
+                    "op": "set_position",
+                    "node": cross,
+                    "field": "destination",
+                    "value": {**ahead, "entity": "nobody"},
+                }
+            ]
+        )
+
+
 def test_set_position_and_waypoints(uis1: EditorSession) -> None:
     view = uis1.view()
     cross = node_id(view, "Cross_1")

@@ -26,3 +26,36 @@ def test_emf_reads_and_writes_an_imported_scenario_with_opaque_nodes(
     assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
     original, from_emf = io.load(source / "alks.xmi"), io.load(out / "alks.xmi")
     assert differences(original.root, from_emf.root) == []
+
+
+def test_emf_reads_and_writes_an_imported_scenario_with_road_positions(
+    emf: Harness, tmp_path: Path
+) -> None:
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    import_to_file(FILES / "road-positions.xosc", source / "road.xmi")
+    assert (source / "road.xmi").read_text().count('xsi:type="scemlmodel:RoadPosition"') == 3
+    result = emf.run("roundtrip", ECORE, source, out, Path("road.xmi"))
+    assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+    original, from_emf = io.load(source / "road.xmi"), io.load(out / "road.xmi")
+    assert differences(original.root, from_emf.root) == []
+    lead = next(a for a in from_emf.root.nodes[0].actors if a.name == "Lead")
+    assert lead.startPosition.h.value == 0.05
+
+
+def test_emf_reads_and_writes_relative_positions_naming_their_actors(
+    emf: Harness, tmp_path: Path
+) -> None:
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    import_to_file(FILES / "relative-positions.xosc", source / "relative.xmi")
+    result = emf.run("roundtrip", ECORE, source, out, Path("relative.xmi"))
+    assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+    original, from_emf = io.load(source / "relative.xmi"), io.load(out / "relative.xmi")
+    assert differences(original.root, from_emf.root) == []
+    actors = {a.name: a for a in from_emf.root.nodes[0].actors}
+    lead = actors["Lead"].startPosition
+    assert lead.eClass.name == "RelativeLanePosition" and lead.entity is actors["Ego"]
+    assert (lead.dLane, lead.ds.value) == (1, 30.0)

@@ -19,6 +19,8 @@ import scemlmodel as scm
 from sceml import io
 from sceml.cli import cli
 from sceml.importer import XoscImportError, import_file
+from sceml.maps import load_map
+from sceml.maps.resolve import start_poses
 
 FILES = Path(__file__).resolve().parent / "files"
 
@@ -210,47 +212,147 @@ def lane(position: scm.Position) -> tuple[str, int, float, float]:
     )
 
 
-def test_a_road_position_is_the_lane_position_of_its_t(tmp_path: Path) -> None:
-    start, told = start_of(tmp_path, '<RoadPosition roadId="1" s="120" t="-5.5"/>')
-    # t = -5.5 lies in lane -2 (-3.5 .. -7), whose centre is -5.25.
-    assert lane(start) == ("1", -2, 120.0, -0.25)
-    assert told and "<RoadPosition>" in told[0]
+def test_a_road_position_stays_a_road_position(tmp_path: Path) -> None:
+    start, told = start_of(
+        tmp_path,
+        '<RoadPosition roadId="1" s="120" t="-5.5"><Orientation type="relative" h="0.25"/>'
+        "</RoadPosition>",
+    )
+    assert isinstance(start, scm.RoadPosition)
+    assert (start.roadId, start.s.value, start.t.value, start.h.value) == ("1", 120.0, -5.5, 0.25)
+    assert not told  # nothing computed: the road coordinate is kept as written
+
+
+def test_a_road_position_with_an_absolute_heading_keeps_it_relative_to_the_road(
+    tmp_path: Path,
+) -> None:
+    # Road 1 runs along x (heading 0): an absolute 0.3 is 0.3 relative to the road.
+    start, _ = start_of(
+        tmp_path,
+        '<RoadPosition roadId="1" s="120" t="-5.5"><Orientation type="absolute" h="0.3"/>'
+        "</RoadPosition>",
+    )
+    assert isinstance(start, scm.RoadPosition)
+    assert (start.s.value, start.t.value, start.h.value) == (120.0, -5.5, pytest.approx(0.3))
+
+
+def where(tmp_path: Path, position: str) -> tuple[scm.Position, tuple[float, float, float]]:
+    """The start of the second car, and the world pose it resolves to among the starts."""
+    path = scenario(
+        tmp_path,
+        entities=f'<ScenarioObject name="Ego">{CAR}</ScenarioObject>'
+        f'<ScenarioObject name="Other">{CAR}</ScenarioObject>',
+        init=LANE_START.format(name="Ego", position=EGO_START)
+        + LANE_START.format(name="Other", position=position),
+    )
+    actors = import_file(path).scenario.nodes[0].actors
+    poses = start_poses(actors, load_map(FILES / "highway.xodr"))
+    other = next(a for a in actors if a.name == "Other")
+    pose = poses[other]
+    return other.startPosition, (round(pose.x, 6), round(pose.y, 6), round(pose.heading, 6))
 
 
 @pytest.mark.parametrize(
-    ("relative", "expected"),
+    ("relative", "kind", "expected"),
     [
-        # Ego is in lane -2 at s = 50: one lane to the left is -1, 20 m behind is s = 30.
+        # Ego is in lane -2 at s = 50: one lane to the left is -1 (centre -1.75), 20 m behind
+        # is s = 30, 0.5 m left of the centre.
         (
             '<RelativeLanePosition entityRef="Ego" dLane="1" ds="-20" offset="0.5"/>',
-            ("1", -1, 30.0, 0.5),
+            "RelativeLanePosition",
+            (30.0, -1.25, 0.0),
         ),
-        # Three lanes to the left crosses the reference line: -2, -1, (no 0), 1, 2.
-        ('<RelativeLanePosition entityRef="Ego" dLane="3" ds="0"/>', ("1", 2, 50.0, 0.0)),
+        # Three lanes to the left crosses the reference line: -2, -1, (no 0), 1, 2 (centre
+        # 5.25), whose traffic runs against s.
+        (
+            '<RelativeLanePosition entityRef="Ego" dLane="3" ds="0"/>',
+            "RelativeLanePosition",
+            (50.0, 5.25, 3.141593),
+        ),
         # Ego's t is -5.25; 3.5 m further left is -1.75, the centre of lane -1.
-        ('<RelativeRoadPosition entityRef="Ego" ds="15" dt="3.5"/>', ("1", -1, 65.0, 0.0)),
+        (
+            '<RelativeRoadPosition entityRef="Ego" ds="15" dt="3.5"/>',
+            "RelativeRoadPosition",
+            (65.0, -1.75, 0.0),
+        ),
+        # Ego stands at (50, -5.25) heading along x: 10 ahead, 2 left, turned by 0.5.
+        (
+            '<RelativeObjectPosition entityRef="Ego" dx="10" dy="2"><Orientation type="relative" '
+            'h="0.5"/></RelativeObjectPosition>',
+            "RelativeObjectPosition",
+            (60.0, -3.25, 0.5),
+        ),
+        (
+            '<RelativeWorldPosition entityRef="Ego" dx="-3" dy="4"/>',
+            "RelativeWorldPosition",
+            (47.0, -1.25, 0.0),
+        ),
     ],
 )
-def test_relative_lane_and_road_positions_in_init(
-    tmp_path: Path, relative: str, expected: tuple[str, int, float, float]
+def test_relative_positions_are_kept_and_resolve_from_the_entity(
+    tmp_path: Path, relative: str, kind: str, expected: tuple[float, float, float]
 ) -> None:
-    start, told = start_of(tmp_path, relative)
-    assert lane(start) == expected
+    start, pose = where(tmp_path, relative)
+    assert start.eClass.name == kind
+    assert start.entity.name == "Ego"
+    assert pose == pytest.approx(expected)
+
+
+def test_a_relative_lane_position_measured_along_the_lane_is_computed(tmp_path: Path) -> None:
+    # dsLane (1.1+) is measured along the lane, SceML's ds along the road: computed as the lane
+    # position it stands for at the start, and reported.
+    start, told = start_of(
+        tmp_path, '<RelativeLanePosition entityRef="Ego" dLane="1" dsLane="-20" offset="0.5"/>'
+    )
+    assert lane(start) == ("1", -1, 30.0, 0.5)
     assert told
 
 
-def test_relative_object_and_world_positions_in_init(tmp_path: Path) -> None:
-    # Ego stands at (50, -5.25) heading along x (0 rad).
-    start, _ = start_of(
+def test_a_relative_position_reads_a_road_position_start(tmp_path: Path) -> None:
+    path = scenario(
         tmp_path,
-        '<RelativeObjectPosition entityRef="Ego" dx="10" dy="2"><Orientation type="relative" '
-        'h="0.5"/></RelativeObjectPosition>',
+        entities=f'<ScenarioObject name="Ego">{CAR}</ScenarioObject>'
+        f'<ScenarioObject name="Other">{CAR}</ScenarioObject>',
+        init=LANE_START.format(name="Ego", position='<RoadPosition roadId="1" s="50" t="-5.5"/>')
+        + LANE_START.format(
+            name="Other", position='<RelativeLanePosition entityRef="Ego" dLane="1" ds="10"/>'
+        ),
     )
-    assert isinstance(start, scm.WorldPosition)
-    assert (round(start.x.value, 6), round(start.y.value, 6), start.h.value) == (60.0, -3.25, 0.5)
-    start, _ = start_of(tmp_path, '<RelativeWorldPosition entityRef="Ego" dx="-3" dy="4"/>')
-    assert isinstance(start, scm.WorldPosition)
-    assert (round(start.x.value, 6), round(start.y.value, 6)) == (47.0, -1.25)
+    # Ego's t = -5.5 lies in lane -2 (-3.5 .. -7); one lane to the left is -1 (centre -1.75).
+    actors = import_file(path).scenario.nodes[0].actors
+    poses = start_poses(actors, load_map(FILES / "highway.xodr"))
+    pose = poses[next(a for a in actors if a.name == "Other")]
+    assert (pose.x, pose.y) == pytest.approx((60.0, -1.75))
+
+
+@pytest.mark.parametrize(("d_lane", "direction"), [(1, "left"), (-1, "right")])
+def test_a_change_into_the_lane_of_an_actor_placed_relative_reads_where_it_starts(
+    tmp_path: Path, d_lane: int, direction: str
+) -> None:
+    change = (
+        '<Maneuver name="M"><Event name="Change" priority="overwrite"><Action name="ChangeAction">'
+        "<PrivateAction><LateralAction><LaneChangeAction><LaneChangeActionDynamics "
+        'dynamicsShape="sinusoidal" value="3" dynamicsDimension="time"/><LaneChangeTarget>'
+        '<RelativeTargetLane entityRef="Other" value="0"/></LaneChangeTarget></LaneChangeAction>'
+        "</LateralAction></PrivateAction></Action><StartTrigger><ConditionGroup>"
+        f'<Condition name="When" delay="0" conditionEdge="none"><ByValueCondition>{AT_START}'
+        "</ByValueCondition></Condition></ConditionGroup></StartTrigger></Event></Maneuver>"
+    )
+    path = scenario(
+        tmp_path,
+        entities=f'<ScenarioObject name="Ego">{CAR}</ScenarioObject>'
+        f'<ScenarioObject name="Other">{CAR}</ScenarioObject>',
+        # Ego's t = -5.5 is in lane -2; Other starts a lane to the left (-1) or right (-3).
+        init=LANE_START.format(name="Ego", position='<RoadPosition roadId="1" s="50" t="-5.5"/>')
+        + LANE_START.format(
+            name="Other",
+            position=f'<RelativeLanePosition entityRef="Ego" dLane="{d_lane}" ds="20"/>',
+        ),
+        maneuvers=change,
+    )
+    node = next(n for n in import_file(path).scenario.nodes if n.name == "Change")
+    assert node.eClass.name == "LaneChange"
+    assert node.direction.name == direction
 
 
 # --- storyboard --------------------------------------------------------------------------

@@ -11,7 +11,15 @@ from pyecore.resources import URI
 
 import scemlmodel as scm
 from sceml import io
-from sceml.build import GraphBuilder, LibraryBuilder, ScenarioBuilder, actor_named, world
+from sceml.build import (
+    GraphBuilder,
+    LibraryBuilder,
+    ScenarioBuilder,
+    actor_named,
+    relative_lane,
+    relative_object,
+    world,
+)
 from sceml.compare import differences
 from sceml.graph import end_node, predecessors, root_node
 from sceml.modules import FlattenError, depth, expand, flatten, list_definitions
@@ -337,3 +345,30 @@ def test_a_module_passing_activation_straight_through_keeps_the_flow(tmp_path: P
     by_name = {n.name: n for n in flat.nodes}
     assert set(by_name) == {"Root", "End", "Stop_1"}
     assert predecessors(by_name["Stop_1"]) == [by_name["Root"]]
+
+
+def test_a_relative_position_naming_a_role_names_the_bound_actor_once_flattened(
+    tmp_path: Path,
+) -> None:
+    lib = LibraryBuilder("Relative")
+    module = lib.module("PullAhead")
+    mover, leader = module.role("mover", "Car"), module.role("leader", "Car")
+    ahead = relative_lane(leader, 0, 30.0)
+    drive = module.add("Cross", mover, destination=ahead)
+    near = module.add(
+        "InLocationRadius", mover, position=relative_object(leader, 10.0, 0.0, h=0.1), radius=2.0
+    )
+    module.chain(module.in_port, drive, near, module.out_port)
+    library_file = io.save(lib.library, tmp_path / "lib.xmi")
+    definition = io.load(library_file).root.modules[0]
+    b = ScenarioBuilder("Uses", map="../maps/intersection.xodr", level="concrete")
+    ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0))
+    car = b.actor("Car", "car", start=world(10.0, 0.0))
+    use = b.use(definition, {"mover": ego, "leader": car})
+    b.chain(b.root, use, b.end)
+    flat = {n.name: n for n in flatten(b.scenario).nodes}
+    destination = flat[f"{use.name}.{drive.name}"].destination
+    position = flat[f"{use.name}.{near.name}"].position
+    assert destination.entity.name == "car" and isinstance(destination.entity, scm.Actor)
+    assert (destination.dLane, destination.ds.value) == (0, 30.0)
+    assert position.entity.name == "car" and position.h.value == 0.1

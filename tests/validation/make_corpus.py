@@ -18,7 +18,15 @@ from lxml import etree
 
 import scemlmodel as scm
 from sceml import io
-from sceml.build import LibraryBuilder, ScenarioBuilder, lane, world
+from sceml.build import (
+    LibraryBuilder,
+    ScenarioBuilder,
+    lane,
+    relative_lane,
+    relative_object,
+    road,
+    world,
+)
 from sceml.params import discrete, normal, span, uniform
 
 HERE = Path(__file__).resolve().parent / "corpus"
@@ -745,7 +753,44 @@ on_map("r003-offset-outside-lane", "SCEML-R003")(_start(lane(1, -1, 20.0, offset
 on_map("r003-logical-s-range-beyond-road", "SCEML-R003", level="logical")(
     _start(lane(1, -1, span(20.0, 120.0)))
 )
+on_map("r008-unknown-road", "SCEML-R008")(_start(road(99, 10.0, -1.75)))
+on_map("r008-s-beyond-road", "SCEML-R008")(_start(road(1, 150.0, -1.75)))
+on_map("r008-t-off-road", "SCEML-R008")(_start(road(1, 20.0, -30.0)))
+# A road position in a driving lane, with a heading relative to the road: clean.
+on_map("r008-road-position-on-lane", "")(_start(road(1, 20.0, -1.75, h=0.1)))
 on_map("r004-car-on-sidewalk", "SCEML-R004")(_start(lane(1, -2, 10.0)))
+
+
+def _relative_starts(entities: str) -> Callable[[ScenarioBuilder, scm.Actor], None]:
+    """Car `other` starts 20 m ahead of `ego` (clean), of itself, of a third car that starts
+    relative to it (a cycle), or of nobody."""
+
+    def add(b: ScenarioBuilder, ego: scm.Actor) -> None:
+        other = b.actor("Car", "other", start=lane(1, -1, 40.0))
+        if entities == "cycle":
+            third = b.actor("Car", "third", start=relative_object(other, -20.0))
+            other.startPosition = relative_object(third, -20.0)
+        else:
+            named = {"ego": ego, "itself": other, "nobody": None}[entities]
+            other.startPosition = relative_lane(named, 0, 20.0)
+        b.chain(b.root, b.add("Accelerate", other, targetSpeed=1.0), b.end)
+
+    return add
+
+
+on_map("a008-relative-start-clean", "")(_relative_starts("ego"))
+
+
+def _beside_ego(b: ScenarioBuilder, ego: scm.Actor) -> None:
+    """Car `other` starts one lane right of ego's lane -1 on road 1: lane -2, a sidewalk."""
+    other = b.actor("Car", "other", start=relative_lane(ego, -1, 10.0))
+    b.chain(b.root, b.add("Accelerate", other, targetSpeed=1.0), b.end)
+
+
+on_map("r004-relative-start-on-sidewalk", "SCEML-R004")(_beside_ego)
+on_map("a008-start-relative-to-itself", "SCEML-A008")(_relative_starts("itself"))
+on_map("a008-starts-relative-in-a-cycle", "SCEML-A008 SCEML-A008")(_relative_starts("cycle"))
+on_map("a008-relative-start-names-nobody", "SCEML-A008")(_relative_starts("nobody"))
 on_map("r004-car-off-road", "SCEML-R004")(_start(world(30.0, 30.0, h=0.0)))
 # A pedestrian may stand on the roadway (it crosses it): clean.
 on_map("r004-pedestrian-on-roadway", "")(_start(lane(1, -1, 30.0), kind="Pedestrian"))

@@ -105,7 +105,9 @@ def set_actor_parameter(ctx: EditContext, op: dict[str, Any]) -> None:
 def set_actor_position(ctx: EditContext, op: dict[str, Any]) -> None:
     """Set (or unset) an actor's start position."""
     actor = ctx.actor(argument(op, "actor"))
-    ctx.rec.set(actor, "startPosition", position_from_json(op.get("value")))
+    ctx.rec.set(
+        actor, "startPosition", position_from_json(op.get("value"), participants=ctx.participants())
+    )
 
 
 def add_module_use(ctx: EditContext, op: dict[str, Any]) -> None:

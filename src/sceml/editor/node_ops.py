@@ -190,7 +190,9 @@ def set_position(ctx: EditContext, op: dict[str, Any]) -> None:
     feature = _feature(node, name, node)
     if type_name(feature) != "Position" or feature.many:
         raise OperationError(f"{name!r} of a {node.eClass.name} is not a position")
-    ctx.rec.set(node, name, position_from_json(op.get("value"), ctx.parameter_lookup))
+    ctx.rec.set(
+        node, name, position_from_json(op.get("value"), ctx.parameter_lookup, ctx.participants())
+    )
 
 
 def set_waypoints(ctx: EditContext, op: dict[str, Any]) -> None:
@@ -199,7 +201,7 @@ def set_waypoints(ctx: EditContext, op: dict[str, Any]) -> None:
     given = argument(op, "value")
     require(node.eClass.findEStructuralFeature("waypoints") is not None, "no waypoints here")
     require(isinstance(given, list), "'value' must be a list of positions")
-    made = [position_from_json(item, ctx.parameter_lookup) for item in given]
+    made = [position_from_json(item, ctx.parameter_lookup, ctx.participants()) for item in given]
     require(all(p is not None for p in made), "a waypoint cannot be empty")
     for old in list(node.waypoints):
         ctx.rec.remove(node, "waypoints", old)

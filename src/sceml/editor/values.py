@@ -147,13 +147,50 @@ def position_to_json(position: scm.Position | None) -> dict[str, Any] | None:
             "s": value_to_json(position.s),
             "offset": value_to_json(position.offset),
         }
+    if isinstance(position, scm.RoadPosition):
+        return {
+            "type": "road",
+            "roadId": position.roadId,
+            **{key: value_to_json(position.eGet(key)) for key in ("s", "t", "h")},
+        }
+    kind = None if position is None else RELATIVE_TYPES.get(position.eClass.name)
+    if kind is not None:
+        assert position is not None
+        lane = {"dLane": int(position.dLane or 0)} if kind == "relativeLane" else {}
+        return {
+            "type": kind,
+            "entity": getattr(position.entity, "name", None),
+            **lane,
+            **{key: value_to_json(position.eGet(key)) for key in _OFFSETS[kind]},
+        }
     return None
 
 
+#: The protocol's type of each relative position, and the offsets it carries (none required).
+RELATIVE_TYPES = {
+    "RelativeLanePosition": "relativeLane",
+    "RelativeRoadPosition": "relativeRoad",
+    "RelativeObjectPosition": "relativeObject",
+    "RelativeWorldPosition": "relativeWorld",
+}
+_OFFSETS = {
+    "relativeLane": ("ds", "offset"),
+    "relativeRoad": ("ds", "dt"),
+    "relativeObject": ("dx", "dy", "dz", "h"),
+    "relativeWorld": ("dx", "dy", "dz"),
+}
+
+
 def position_from_json(
-    data: object, find_parameter: ParameterLookup | None = None
+    data: object,
+    find_parameter: ParameterLookup | None = None,
+    participants: Mapping[str, scm.Participant] | None = None,
 ) -> scm.Position | None:
-    """A new model position from the protocol's Position; None stays None (unset)."""
+    """A new model position from the protocol's Position; None stays None (unset).
+
+    `participants` by name: what a relative position may name as its entity (the scenario's
+    actors, or the module's roles).
+    """
     if data is None:
         return None
     if not isinstance(data, Mapping):
@@ -171,10 +208,17 @@ def position_from_json(
         for key in ("x", "y", "z", "h"):
             position.eSet(key, coordinate(key, required=key in ("x", "y")))
         return position
-    if kind == "lane":
+    if kind in ("lane", "road"):
         road, lane_id = data.get("roadId"), data.get("laneId")
         if not isinstance(road, str | int) or isinstance(road, bool) or str(road) == "":
             raise OperationError(f"'roadId' must be a road id, not {road!r}")
+        if kind == "road":
+            return scm.RoadPosition(
+                roadId=str(road),
+                s=coordinate("s", required=True),
+                t=coordinate("t", required=False),
+                h=coordinate("h", required=False),
+            )
         if isinstance(lane_id, bool) or not isinstance(lane_id, int):
             raise OperationError(f"'laneId' must be a whole number, not {lane_id!r}")
         return scm.LanePosition(
@@ -183,4 +227,31 @@ def position_from_json(
             s=coordinate("s", required=True),
             offset=coordinate("offset", required=False),
         )
-    raise OperationError(f"unknown position type {kind!r}; use 'world' or 'lane'")
+    if kind in _OFFSETS:
+        return _relative_from_json(data, str(kind), coordinate, participants or {})
+    known = ", ".join(repr(k) for k in ("world", "lane", "road", *_OFFSETS))
+    raise OperationError(f"unknown position type {kind!r}; use one of {known}")
+
+
+def _relative_from_json(
+    data: Mapping[str, Any],
+    kind: str,
+    coordinate: Callable[..., scm.ParameterValue | None],
+    participants: Mapping[str, scm.Participant],
+) -> scm.Position:
+    entity = participants.get(str(data.get("entity")))
+    if entity is None:
+        names = ", ".join(sorted(participants)) or "none"
+        raise OperationError(
+            f"a {kind} position names its entity: {data.get('entity')!r} is none of {names}"
+        )
+    cls = next(getattr(scm, name) for name, type_ in RELATIVE_TYPES.items() if type_ == kind)
+    position: scm.Position = cls(entity=entity)
+    if kind == "relativeLane":
+        lanes = data.get("dLane", 0)
+        if isinstance(lanes, bool) or not isinstance(lanes, int):
+            raise OperationError(f"'dLane' must be a whole number, not {lanes!r}")
+        position.dLane = lanes
+    for key in _OFFSETS[kind]:
+        position.eSet(key, coordinate(key, required=False))
+    return position

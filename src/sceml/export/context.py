@@ -9,6 +9,7 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
+from ..maps.resolve import is_relative
 from .names import SEPARATOR, NameTable, sanitize
 from .triggers import Group
 from .values import Values
@@ -70,12 +71,45 @@ class Context:
                 "s": text(position, "s"),
                 "offset": text(position, "offset"),
             }
+        if isinstance(position, scm.RoadPosition):
+            return {
+                "kind": "road",
+                "roadId": str(position.roadId),
+                "s": text(position, "s"),
+                "t": text(position, "t"),
+                "h": None if position.h is None else text(position, "h"),
+            }
+        if is_relative(position):
+            return self._relative(position)
         return {
             "kind": "world",
             "x": text(position, "x"),
             "y": text(position, "y"),
             "z": text(position, "z"),
             "h": text(position, "h"),
+        }
+
+    def _relative(self, position: scm.Position) -> dict[str, Any]:
+        """A relative position names its entity's ScenarioObject; every offset is written, h
+        (RelativeObjectPosition) only when set, as a relative Orientation."""
+        text = self.values.text
+        kind = position.eClass.name
+        features = {
+            "RelativeLanePosition": ("ds", "offset"),
+            "RelativeRoadPosition": ("ds", "dt"),
+            "RelativeObjectPosition": ("dx", "dy", "dz"),
+            "RelativeWorldPosition": ("dx", "dy", "dz"),
+        }[kind]
+        attributes = {name: text(position, name) for name in features}
+        if kind == "RelativeLanePosition":
+            attributes = {"dLane": str(int(position.dLane or 0)), **attributes}
+        h = getattr(position, "h", None)
+        return {
+            "kind": "relative",
+            "tag": kind,
+            "entity": self.entity(position.entity),
+            "attributes": attributes,
+            "h": None if h is None else text(position, "h"),
         }
 
     def marker_action(self, event: str, value: str) -> Action:

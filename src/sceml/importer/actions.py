@@ -15,6 +15,7 @@ from lxml import etree
 import scemlmodel as scm
 
 from .. import catalog
+from ..maps.resolve import is_relative, resolve, start_poses
 from . import traced
 from .context import Build, last_name
 from .geometry import classify
@@ -177,7 +178,7 @@ def _lane_change(
     lanes = lane_id(relative, "value")
     direction: str | None = "left" if lanes > 0 else "right"
     if reference is not request.actor or abs(lanes) != 1:
-        direction = _towards(request.actor, reference, lanes)
+        direction = _towards(build, request.actor, reference, lanes)
         if direction is None:
             return "a change by more than one lane, or to another actor's lane, has no SceML kind"
         _guess(
@@ -201,23 +202,46 @@ def _lane_change(
     return node
 
 
-def _towards(actor: scm.Actor, reference: scm.Actor, lanes: int) -> str | None:
+def _towards(build: Build, actor: scm.Actor, reference: scm.Actor, lanes: int) -> str | None:
     """left/right for a change into another actor's lane, from both start lanes on one road."""
-    mine, theirs = actor.startPosition, reference.startPosition
-    if (
-        lanes != 0
-        or not isinstance(mine, scm.LanePosition)
-        or not isinstance(theirs, scm.LanePosition)
-    ):
+    if lanes != 0:
         return None
-    if (
-        mine.roadId != theirs.roadId
-        or mine.laneId * theirs.laneId <= 0
-        or mine.laneId == theirs.laneId
-    ):
+    mine, theirs = _start_lane(build, actor), _start_lane(build, reference)
+    if mine is None or theirs is None:
+        return None
+    if mine[0] != theirs[0] or mine[1] * theirs[1] <= 0 or mine[1] == theirs[1]:
         return None
     # Lanes are numbered outwards from the centre line on both sides; the centre is on the left.
-    return "left" if abs(theirs.laneId) < abs(mine.laneId) else "right"
+    return "left" if abs(theirs[1]) < abs(mine[1]) else "right"
+
+
+def _at_the_start(build: Build, position: scm.Position | None) -> scm.Position | None:
+    """A relative position as the world pose it names among the starts: enough to tell a turn
+    from a crossing (the model keeps the relative position itself)."""
+    if not is_relative(position):
+        return position
+    try:
+        pose = resolve(position, build.road_map, start_poses(build.actors.values(), build.road_map))
+    except ValueError:
+        return None
+    if pose is None:
+        return None
+    return scm.WorldPosition(
+        x=scm.Value(value=pose.x), y=scm.Value(value=pose.y), h=scm.Value(value=pose.heading)
+    )
+
+
+def _start_lane(build: Build, actor: scm.Actor) -> tuple[str, int] | None:
+    """The road and lane an actor starts in: as written, or where its road or relative start
+    lies on the map (the starts of the others placed first, as in Init)."""
+    start = actor.startPosition
+    if isinstance(start, scm.LanePosition):
+        return str(start.roadId), int(start.laneId)
+    if build.road_map is None:
+        return None
+    pose = start_poses(build.actors.values(), build.road_map).get(actor)
+    found = [] if pose is None else build.road_map.world_to_lane(pose.x, pose.y)
+    return (found[0].road_id, found[0].lane_id) if found else None
 
 
 @_maps("PrivateAction/RoutingAction/AcquirePositionAction")
@@ -248,7 +272,7 @@ def _routed(
         return "the destination is not a world or lane position"
     actor = str(request.actor.name)
     start = motion.place.get(actor, request.actor.startPosition)
-    turn = classify(start, destination, build.road_map)
+    turn = classify(_at_the_start(build, start), _at_the_start(build, destination), build.road_map)
     kind = turn.kind
     if request.hint in ("TurnLeft", "TurnRight", "Cross"):
         kind = request.hint

@@ -1,7 +1,8 @@
 """Positions SceML has no class for, computed as the Lane or World position they stand for.
 
-SceML 1.0 knows WorldPosition and LanePosition. A RoadPosition is the lane position of its
-(s, t) on the map; in Init, where every entity's place is known, a RelativeLanePosition,
+SceML knows World, Lane, Road and the four relative positions (positions.py). What those do
+not hold (a dsLane, an absolute Orientation) is computed here: in Init, where every entity's
+place is known, a RelativeLanePosition,
 RelativeRoadPosition, RelativeWorldPosition or RelativeObjectPosition is the position it names
 relative to an entity already placed. The relative meaning is lost (reported as guessed), the
 start is not: a concrete scenario needs one for every actor. Later in the story the entity has
@@ -17,7 +18,8 @@ from lxml import etree
 
 import scemlmodel as scm
 
-from ..maps.model import PositionError, WorldPose
+from ..maps.model import PositionError, WorldPose, wrap_angle
+from ..maps.resolve import road_to_lane
 from . import traced
 from .context import Build, last_name
 from .positions import number, position
@@ -49,7 +51,7 @@ def place(build: Build, holder: etree._Element | None, *, initial: bool) -> scm.
 
     `initial`: read in Init, where relative positions can be resolved.
     """
-    plain = position(holder)
+    plain = position(holder, build.actors)
     if isinstance(plain, scm.LanePosition) and build.road_map is not None:
         return _in_its_lane(build, plain, holder)
     if plain is not None or holder is None:
@@ -58,6 +60,8 @@ def place(build: Build, holder: etree._Element | None, *, initial: bool) -> scm.
     kind = None if element is None else next((c for c in element if isinstance(c.tag, str)), None)
     if kind is None or build.road_map is None and kind.tag != "RelativeWorldPosition":
         return None
+    if kind.tag == "RoadPosition":
+        return _turned_to_the_road(build, kind)
     if kind.tag in RELATIVE and not initial:
         return None
     try:
@@ -72,6 +76,25 @@ def place(build: Build, holder: etree._Element | None, *, initial: bool) -> scm.
             build.where(kind),
         )
     return made
+
+
+def _turned_to_the_road(build: Build, kind: etree._Element) -> scm.RoadPosition | None:
+    """A RoadPosition with an absolute Orientation: the same heading relative to the road at s
+    (the model's h), exact, as the road's direction at s is fixed."""
+    assert build.road_map is not None
+    orientation = kind.find("Orientation")
+    try:
+        s, t = number(kind, "s"), number(kind, "t", 0.0)
+        _, _, along = build.road_map.reference_line(str(kind.get("roadId"))).pose(s)
+        h = number(orientation, "h") if orientation is not None else 0.0
+    except (PositionError, ValueError):
+        return None
+    return scm.RoadPosition(
+        roadId=str(kind.get("roadId")),
+        s=traced.value(s),
+        t=traced.value(t),
+        h=scm.Value(value=wrap_angle(h - along)),
+    )
 
 
 def _in_its_lane(
@@ -102,8 +125,6 @@ def _in_its_lane(
 
 def _compute(build: Build, kind: etree._Element) -> scm.Position | None:
     tag = kind.tag
-    if tag == "RoadPosition":
-        return _on_road(build, str(kind.get("roadId")), number(kind, "s"), number(kind, "t"))
     if tag not in RELATIVE:
         return None
     anchor = _anchor(build, kind)
@@ -137,17 +158,20 @@ def _compute(build: Build, kind: etree._Element) -> scm.Position | None:
 def _on_road(build: Build, road_id: str, s: float, t: float) -> scm.LanePosition | None:
     """The lane position of a road coordinate: the lane whose band holds t at s."""
     assert build.road_map is not None
-    road = build.road_map.road(road_id)
-    for band in build.road_map.bands(road, s):
-        low, high = sorted((band.inner, band.outer))
-        if band.lane.id != 0 and band.width > 0 and low - 1e-9 <= t <= high + 1e-9:
-            return scm.LanePosition(
-                roadId=road.id,
-                laneId=band.lane.id,
-                s=scm.Value(value=s),
-                offset=scm.Value(value=t - band.centre),
-            )
-    return None
+    try:
+        lane = road_to_lane(build.road_map, road_id, s, t)
+    except PositionError:
+        return None
+    return scm.LanePosition(
+        roadId=lane.road_id,
+        laneId=lane.lane_id,
+        s=scm.Value(value=s),
+        offset=scm.Value(value=lane.offset),
+    )
+
+
+def _t(position: scm.RoadPosition) -> float:
+    return float(position.t.value) if position.t is not None else 0.0
 
 
 def _lane_after(lane: int, delta: int) -> int:
@@ -163,6 +187,8 @@ def _anchor(build: Build, kind: etree._Element) -> _Lane | None:
     actor = build.actors.get(last_name(str(kind.get("entityRef"))))
     start = None if actor is None else actor.startPosition
     road_map = build.road_map
+    if isinstance(start, scm.RoadPosition) and road_map is not None:
+        start = _on_road(build, str(start.roadId), float(start.s.value), _t(start))
     if isinstance(start, scm.LanePosition) and road_map is not None:
         s, offset = float(start.s.value), float(start.offset.value) if start.offset else 0.0
         pose = road_map.lane_to_world(str(start.roadId), int(start.laneId), s, offset)

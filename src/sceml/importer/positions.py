@@ -1,19 +1,27 @@
-"""Position elements to SceML positions: WorldPosition and LanePosition; None for the others."""
+"""Position elements to SceML positions: World, Lane, Road and the four relative positions (these
+when the entity they name is an actor); None for the others."""
 
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 
 from lxml import etree
 
 import scemlmodel as scm
 
 from . import traced
+from .context import last_name
 from .errors import BadValue
 
 
-def position(holder: etree._Element | None) -> scm.Position | None:
-    """The SceML position of a `<Position>` element (or of the element holding one)."""
+def position(
+    holder: etree._Element | None, actors: Mapping[str, scm.Actor] | None = None
+) -> scm.Position | None:
+    """The SceML position of a `<Position>` element (or of the element holding one).
+
+    `actors` by name: the entities a relative position may name (without, none maps).
+    """
     if holder is None:
         return None
     if holder.tag != "Position":
@@ -38,10 +46,76 @@ def position(holder: etree._Element | None) -> scm.Position | None:
                 s=_value(kind, "s"),
                 offset=_value(kind, "offset", 0.0),
             )
+        if kind.tag == "RoadPosition":
+            return scm.RoadPosition(
+                roadId=str(kind.get("roadId")),
+                s=_value(kind, "s"),
+                t=_value(kind, "t", 0.0),
+                h=_road_heading(kind),
+            )
+        if kind.tag in _RELATIVE and actors is not None:
+            return _relative(kind, actors)
     except ValueError:
         return None
     return None
 
+
+def _road_heading(kind: etree._Element) -> scm.Value | None:
+    """A RoadPosition's Orientation h (relative to the road, the default type); None when absent.
+
+    An absolute orientation has no place in the model's road-relative h: ValueError keeps the
+    element for the caller's fallback.
+    """
+    orientation = kind.find("Orientation")
+    if orientation is None or orientation.get("h") is None:
+        return None
+    if orientation.get("type", "relative") != "relative":
+        raise ValueError("absolute orientation")
+    return _value(orientation, "h")
+
+
+def _relative(kind: etree._Element, actors: Mapping[str, scm.Actor]) -> scm.Position | None:
+    entity = actors.get(last_name(str(kind.get("entityRef"))))
+    if entity is None:
+        return None
+    if kind.tag == "RelativeLanePosition":
+        if kind.get("ds") is None and kind.get("dsLane") is not None:
+            raise ValueError("dsLane")  # measured along the lane: SceML's ds is along the road
+        return scm.RelativeLanePosition(
+            entity=entity,
+            dLane=lane_id(kind, "dLane"),
+            ds=_value(kind, "ds", 0.0),
+            offset=_value(kind, "offset", 0.0),
+        )
+    if kind.tag == "RelativeRoadPosition":
+        return scm.RelativeRoadPosition(entity=entity, ds=_value(kind, "ds"), dt=_value(kind, "dt"))
+    orientation = kind.find("Orientation")
+    turned = orientation is not None and orientation.get("h") is not None
+    if turned and orientation.get("type", "relative") != "relative":
+        raise ValueError("absolute orientation")  # SceML's h is relative to the entity
+    if kind.tag == "RelativeObjectPosition":
+        return scm.RelativeObjectPosition(
+            entity=entity,
+            dx=_value(kind, "dx"),
+            dy=_value(kind, "dy"),
+            dz=_value(kind, "dz", 0.0),
+            h=_value(orientation, "h") if turned else None,
+        )
+    if turned:
+        raise ValueError("a turned RelativeWorldPosition")  # SceML's heads as its entity
+    return scm.RelativeWorldPosition(
+        entity=entity, dx=_value(kind, "dx"), dy=_value(kind, "dy"), dz=_value(kind, "dz", 0.0)
+    )
+
+
+_RELATIVE = frozenset(
+    {
+        "RelativeLanePosition",
+        "RelativeRoadPosition",
+        "RelativeObjectPosition",
+        "RelativeWorldPosition",
+    }
+)
 
 #: Lane ids are 32-bit integers in OpenSCENARIO (and in the model's EInt).
 _LANE_LIMIT = 2**31 - 1

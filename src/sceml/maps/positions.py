@@ -10,6 +10,7 @@ skipped until a use gives it one (rules run on the flattened scenario for that).
 from __future__ import annotations
 
 import itertools
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -21,6 +22,10 @@ from .model import PositionError, WorldPose, wrap_angle
 
 if TYPE_CHECKING:
     from .roadmap import RoadMap
+
+
+#: How a coordinate is read: every number it is judged at, or only its nominal one.
+Spread = Callable[[EObject | None, float | None], list[float] | None]
 
 
 def spread(parameter: EObject | None, default: float | None = None) -> list[float] | None:
@@ -78,10 +83,13 @@ class Located:
 
 def is_concrete(position: EObject) -> bool:
     """Whether every coordinate of a position is a single value (or unset with a default)."""
-    names = ("x", "y", "h") if isinstance(position, scm.WorldPosition) else ("s", "offset")
     return all(
-        getattr(position, name) is None or isinstance(getattr(position, name), scm.Value)
-        for name in names
+        held is None or isinstance(held, scm.Value)
+        for held in (
+            position.eGet(feature)
+            for feature in position.eClass.eAllStructuralFeatures()
+            if getattr(feature, "containment", False)
+        )
     )
 
 
@@ -116,7 +124,31 @@ def locate(position: EObject | None, road_map: RoadMap | None) -> list[Located]:
                 )
             )
         return points
+    if isinstance(position, scm.RoadPosition) and road_map is not None:
+        return _on_road(position, road_map, spread)
     return []
+
+
+def _on_road(position: scm.RoadPosition, road_map: RoadMap, numbers: Spread) -> list[Located]:
+    """The points of a road position, each with the lane coordinate it lies in."""
+    from .resolve import road_pose, road_to_lane  # resolve reads this module's numbers
+
+    ss, ts, hs = numbers(position.s, None), numbers(position.t, 0.0), numbers(position.h, None)
+    if not ss or not ts or not position.roadId:
+        return []
+    road = str(position.roadId)
+    points = []
+    headings: list[float | None] = list(hs) if hs else [None]
+    for s, t, h in itertools.product(ss, ts, headings):
+        lane = road_to_lane(road_map, road, s, t)
+        pose = road_pose(road_map, road, s, t, h)
+        points.append(Located(pose.x, pose.y, pose.heading, (road, lane.lane_id, s, lane.offset)))
+    return points
+
+
+def _nominal_only(parameter: EObject | None, default: float | None = None) -> list[float] | None:
+    value = nominal(parameter, default)
+    return None if value is None else [value]
 
 
 def centre(position: EObject | None, road_map: RoadMap | None) -> Located | None:
@@ -136,6 +168,9 @@ def centre(position: EObject | None, road_map: RoadMap | None) -> Located | None
             return Located(
                 pose.x, pose.y, pose.heading, (str(position.roadId), position.laneId, s, offset)
             )
+        if isinstance(position, scm.RoadPosition) and road_map is not None:
+            points = _on_road(position, road_map, _nominal_only)
+            return points[0] if points else None
     except PositionError:
         return None
     return None

@@ -9,7 +9,9 @@ that the preview copies them instead of guessing.
 
 Positions are the actor's reference point, which the export puts at the centre of its box
 (BoundingBox Center x = 0), so a start position, a destination and a radius mean the same
-point in the file, in the preview and in a player's log.
+point in the file, in the preview and in a player's log. Where a position is (a road
+coordinate, a position relative to an actor where that actor is when it is used) is defined
+once in `sceml.maps.resolve`, which every stage reads.
 """
 
 from __future__ import annotations

@@ -120,7 +120,8 @@ def describe_value(value: scm.ParameterValue | None, unit: str, scope: Scope) ->
 
 
 def describe_position(position: EObject | None, scope: Scope) -> str:
-    """`(x, y) m, h 1.57 rad` for world positions, `road 3 lane 1 s 30 m` for lane positions."""
+    """`(x, y) m, h 1.57 rad` for world positions, `road 3 lane 1 s 30 m` for lane positions,
+    `road 3 s 30 m t -1.75 m` for road positions."""
     if isinstance(position, scm.WorldPosition):
         x = describe_value(position.x, "", scope)
         y = describe_value(position.y, "", scope)
@@ -133,7 +134,41 @@ def describe_position(position: EObject | None, scope: Scope) -> str:
         if position.offset is not None and not _is_zero(_resolve(position.offset, scope)):
             text += f" offset {describe_value(position.offset, 'm', scope)}"
         return text
+    if isinstance(position, scm.RoadPosition):
+        text = f"road {position.roadId} s {describe_value(position.s, 'm', scope)}"
+        text += (
+            f" t {describe_value(position.t, 'm', scope)}" if position.t is not None else " t 0 m"
+        )
+        if position.h is not None:
+            text += f", h {describe_value(position.h, 'rad', scope)}"
+        return text
+    if position is not None and position.eClass.name in _RELATIVE_WORDS:
+        return _describe_relative(position, scope)
     return "(none)" if position is None else position.eClass.name
+
+
+#: The offsets each relative position shows, in order.
+_RELATIVE_WORDS = {
+    "RelativeLanePosition": ("ds", "offset"),
+    "RelativeRoadPosition": ("ds", "dt"),
+    "RelativeObjectPosition": ("dx", "dy", "dz", "h"),
+    "RelativeWorldPosition": ("dx", "dy", "dz"),
+}
+
+
+def _describe_relative(position: EObject, scope: Scope) -> str:
+    """`from ego: lane +1, ds 30 m` (only what is set and not zero), as it reads on a box."""
+    parts = []
+    if position.eClass.name == "RelativeLanePosition":
+        parts.append(f"lane {int(position.dLane or 0):+d}")
+    for feature in _RELATIVE_WORDS[position.eClass.name]:
+        held = position.eGet(feature)
+        if held is not None and not _is_zero(_resolve(held, scope)):
+            unit = "rad" if feature == "h" else "m"
+            parts.append(f"{feature} {describe_value(held, unit, scope)}")
+    frame = "in world axes " if position.eClass.name == "RelativeWorldPosition" else ""
+    entity = getattr(position.entity, "name", None) or "?"
+    return f"{frame}from {entity}: " + (", ".join(parts) if parts else "its own place")
 
 
 def _is_zero(value: scm.ParameterValue | None) -> bool:

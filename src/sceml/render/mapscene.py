@@ -22,9 +22,10 @@ from .. import catalog
 from ..errors import SceMLError
 from ..graph import actors, root_node, topological_order
 from ..io import allowed_roots_of
-from ..maps import PositionError, RoadMap, load_map
+from ..maps import PositionError, RoadMap, WorldPose, load_map
 from ..maps.positions import Located, centre, is_concrete, locate, nominal, spread
 from ..maps.reference import map_reference
+from ..maps.resolve import is_relative, start_poses
 from ..modules import flatten
 from .flow import RenderError
 from .labels import scenario_title
@@ -204,10 +205,14 @@ def _flattened(scenario: scm.Scenario, notes: list[str]) -> scm.Scenario:
 
 
 def _add_actors(scene: MapScene, scenario: scm.Scenario) -> None:
+    starts = start_poses(actors(scenario), scene.road_map)  # relative starts need the others'
     for actor in actors(scenario):
         name = str(actor.name or "?")
         dimensions = catalog.actor_dimensions(actor)
-        place = _place(actor.startPosition, scene, f"{name}'s start position")
+        if is_relative(actor.startPosition):
+            place = _relative_start(actor, starts, scene, f"{name}'s start position")
+        else:
+            place = _place(actor.startPosition, scene, f"{name}'s start position")
         scene.actors.append(
             ActorMark(
                 name,
@@ -292,9 +297,26 @@ def _actor_mark(scene: MapScene, participant: EObject | None) -> ActorMark | Non
     return next((actor for actor in scene.actors if actor.name == name), None)
 
 
+def _relative_start(
+    actor: scm.Actor, starts: dict[EObject, WorldPose], scene: MapScene, what: str
+) -> Place | None:
+    """A start relative to another actor, where that actor's start puts it."""
+    pose = starts.get(actor)
+    if pose is None:
+        other = getattr(actor.startPosition.entity, "name", None)
+        scene.notes.append(f"{what} is not drawn: it is relative to {other!r}, not placed")
+        return None
+    point = Located(pose.x, pose.y, pose.heading)
+    return Place(point, (point,))
+
+
 def _place(position: EObject | None, scene: MapScene, what: str) -> Place | None:
     """The place of a position on the map; None (with a note) when it does not fit the map."""
     if position is None:
+        return None
+    if is_relative(position):
+        # A destination or condition relative to an actor moves with it: the run tells where.
+        scene.notes.append(f"{what} is not drawn: it is relative to where an actor is then")
         return None
     try:
         points = tuple(locate(position, scene.road_map))

@@ -12,6 +12,7 @@ from collections.abc import Callable
 
 from pyecore.ecore import EObject
 
+from ..maps.resolve import is_relative
 from ..params import concrete
 from ..players import meaning
 from .geometry import free_distance_now
@@ -51,8 +52,11 @@ def _compare(rule: EObject | None, value: float, threshold: float, previous: flo
 @kind("InLocationRadius")
 def in_location_radius(node: EObject, world: World) -> Test:
     actor = world.actor(node.referenceActor, str(node.name))
-    x, y = world.point(node.position, f"{node.name}'s position")
+    what = f"{node.name}'s position"
     radius = concrete(node, "radius")
+    if is_relative(node.position):  # where its entity is at each step, as players evaluate it
+        return lambda w: actor.distance_to(*w.point(node.position, what)) <= radius + 1e-9
+    x, y = world.point(node.position, what)
     return lambda w: actor.distance_to(x, y) <= radius + 1e-9
 
 

@@ -98,6 +98,8 @@ def run_samples(scenario: EObject, step: float) -> int:
 
 
 def _check(flattened: Flattened, owner: EObject, spec: catalog.ParameterSpec, step: float) -> None:
+    if spec.optional and owner.eGet(spec.name) is None:
+        return  # unset has its own meaning (a road position's h: along its lane)
     try:
         value = concrete(owner, spec.name)
     except ValueError as error:

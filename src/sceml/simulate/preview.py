@@ -14,6 +14,7 @@ from ..graph import root_node
 from ..io import allowed_roots_of
 from ..maps import RoadMap, load_map
 from ..maps.reference import map_reference
+from ..maps.resolve import start_poses
 from ..modules.flatten import Flattened, expand
 from ..params import concrete
 from .engine import Scheduler, run_schedule
@@ -80,8 +81,9 @@ def _simulate(
     if road_map is None:
         road_map = _road_map(flat_root, scenario_file, allowed_roots_of(scenario))
     world = World(road_map, {}, step)
+    starts = start_poses(scenario_actors(flat), road_map)
     for actor in scenario_actors(flat):
-        world.actors[str(actor.name)] = make_actor(actor, road_map)
+        world.actors[str(actor.name)] = make_actor(actor, road_map, starts)
     scheduler = Scheduler(list(flat.nodes), world)
     names = list(world.actors)
     times: list[float] = []

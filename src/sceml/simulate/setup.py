@@ -2,9 +2,14 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+
+from pyecore.ecore import EObject
+
 import scemlmodel as scm
 
-from ..maps import PositionError, RoadMap
+from ..maps import PositionError, RoadMap, WorldPose
+from ..maps.resolve import is_relative, resolve, road_pose, road_to_lane
 from ..params import concrete
 from . import lanes
 from .actors import Actor
@@ -12,8 +17,13 @@ from .paths import LaneSpot, heading_path
 from .world import SimulationError
 
 
-def make_actor(actor: scm.Actor, road_map: RoadMap | None) -> Actor:
-    """An actor at its start position with its initial speed, following its lane if on one."""
+def make_actor(
+    actor: scm.Actor, road_map: RoadMap | None, starts: Mapping[EObject, WorldPose] | None = None
+) -> Actor:
+    """An actor at its start position with its initial speed, following its lane if on one.
+
+    `starts`: where the actors start (maps.resolve.start_poses), for a start relative to one.
+    """
     name = str(actor.name)
     size = (concrete(actor, "length"), concrete(actor, "width"))
     speed = concrete(actor, "initialSpeed")
@@ -23,6 +33,18 @@ def make_actor(actor: scm.Actor, road_map: RoadMap | None) -> Actor:
             return _on_lane(actor, position, road_map, size, speed)
         if isinstance(position, scm.WorldPosition):
             return _in_world(actor, position, road_map, size, speed)
+        if isinstance(position, scm.RoadPosition):
+            return _on_road(actor, position, road_map, size, speed)
+        if is_relative(position):
+            pose = resolve(position, road_map, starts or {})
+            if pose is None:
+                other = getattr(position.entity, "name", None)
+                raise SimulationError(
+                    f"{name}'s start is relative to {other!r}, whose start is not known "
+                    "(no such actor, a start off the map, or starts relative to each other)",
+                    element=name,
+                )
+            return _in_world(actor, _world(pose), road_map, size, speed)
     except (PositionError, ValueError) as error:
         raise SimulationError(f"{name}'s start position: {error}", element=name) from None
     raise SimulationError(f"{name} has no start position", element=name)
@@ -62,6 +84,39 @@ def _in_world(
     lane_spot = LaneSpot(coordinate.road_id, coordinate.lane_id, coordinate.s, forward)
     lateral = coordinate.offset if forward else -coordinate.offset
     return Actor(*_identity(actor), size, lanes.lane_path(road_map, lane_spot), speed, lateral)
+
+
+def _on_road(
+    actor: scm.Actor,
+    position: scm.RoadPosition,
+    road_map: RoadMap | None,
+    size: tuple[float, float],
+    speed: float,
+) -> Actor:
+    """A road coordinate is the lane position it lies in (maps/resolve.py); a heading given
+    relative to the road places the actor as at that world pose."""
+    if road_map is None:
+        raise SimulationError(
+            f"{actor.name} starts on a road, which needs an OpenDRIVE map", element=str(actor.name)
+        )
+    road_id, s, t = str(position.roadId), concrete(position, "s"), concrete(position, "t")
+    if position.h is not None:
+        pose = road_pose(road_map, road_id, s, t, concrete(position, "h"))
+        return _in_world(actor, _world(pose), road_map, size, speed)
+    lane = road_to_lane(road_map, road_id, s, t)
+    in_lane = scm.LanePosition(
+        roadId=lane.road_id,
+        laneId=lane.lane_id,
+        s=scm.Value(value=s),
+        offset=scm.Value(value=lane.offset),
+    )
+    return _on_lane(actor, in_lane, road_map, size, speed)
+
+
+def _world(pose: WorldPose) -> scm.WorldPosition:
+    return scm.WorldPosition(
+        x=scm.Value(value=pose.x), y=scm.Value(value=pose.y), h=scm.Value(value=pose.heading)
+    )
 
 
 def _identity(actor: scm.Actor) -> tuple[str, str, bool]:

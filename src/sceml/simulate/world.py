@@ -7,8 +7,9 @@ from dataclasses import dataclass, field
 from pyecore.ecore import EObject
 
 from ..errors import SceMLError
-from ..maps import RoadMap
+from ..maps import RoadMap, WorldPose
 from ..maps.positions import centre
+from ..maps.resolve import is_relative, resolve
 from .actors import Actor
 
 
@@ -40,7 +41,11 @@ class World:
         return self.actors[name]
 
     def point(self, position: EObject | None, what: str) -> tuple[float, float]:
-        """The world point of a concrete position."""
+        """The world point of a concrete position; a relative one where its entity is now (a
+        destination is asked for when its maneuver starts, a condition's at every step)."""
+        if is_relative(position):
+            assert position is not None
+            return self._relative_point(position, what)
         try:
             located = centre(position, self.road_map)
         except ValueError as error:
@@ -48,6 +53,21 @@ class World:
         if located is None:
             raise SimulationError(f"{what} has no usable position", element=what)
         return located.x, located.y
+
+    def _relative_point(self, position: EObject, what: str) -> tuple[float, float]:
+        entity = position.entity
+        actor = self.actors.get(str(getattr(entity, "name", None)))
+        if actor is None:
+            raise SimulationError(f"{what} is relative to no actor of the scenario", element=what)
+        try:
+            pose = resolve(
+                position, self.road_map, {entity: WorldPose(actor.x, actor.y, actor.heading)}
+            )
+        except ValueError as error:
+            raise SimulationError(f"{what}: {error}", element=what) from None
+        if pose is None:
+            raise SimulationError(f"{what} has no usable position", element=what)
+        return pose.x, pose.y
 
     def note(self, text: str) -> None:
         if text not in self.notes:

@@ -12,6 +12,7 @@ import scemlmodel as scm
 from .. import catalog
 from ..diagnostics import Severity
 from ..graph import nodes_of
+from ..maps.resolve import RELATIVE_KINDS, is_relative
 from .context import Context
 from .registry import Finding, constraint
 
@@ -125,3 +126,47 @@ def exactly_one_ego(root: scm.RootNode, context: Context) -> Iterator[Finding]:
     for extra in egos[1:]:
         first = egos[0].name
         yield extra, f"{extra.name!r} is a second ego besides {first!r}; there is exactly one"
+
+
+@constraint(
+    "SCEML-A008",
+    ERROR,
+    RELATIVE_KINDS,
+    "a relative position names its entity, an actor of the scenario (in a module: a role); a "
+    "relative start names another actor, and relative starts do not name each other in a cycle",
+)
+def relative_position_has_an_anchor(position: EObject, context: Context) -> Iterator[Finding]:
+    holder = position.eContainer()
+    entity = position.entity
+    if entity is None:
+        yield position, f"the {position.eClass.name} of {_owner(holder)} names no entity"
+        return
+    graph = holder.eContainer() if isinstance(holder, scm.Actor) else holder
+    while graph is not None and not isinstance(graph, scm.Graph):
+        graph = graph.eContainer()
+    declared = declared_participants(graph, context)
+    if declared and entity not in declared:
+        what = f"the {position.eClass.name} of {_owner(holder)}"
+        yield position, f"{what} names {label(entity)}, which is not declared here"
+        return
+    if not isinstance(holder, scm.Actor) or position.eContainmentFeature().name != "startPosition":
+        return  # a destination or condition may be relative to its own actor, where it is then
+    chain, current = [holder], entity
+    while True:
+        if current in chain:
+            names = " -> ".join(label(actor) for actor in [*chain, current])
+            yield position, f"start positions relative to each other in a cycle: {names}"
+            return
+        chain.append(current)
+        start: EObject | None = getattr(current, "startPosition", None)
+        if start is None or not is_relative(start) or start.entity is None:
+            return
+        current = start.entity
+
+
+def _owner(holder: EObject | None) -> str:
+    if isinstance(holder, scm.Actor):
+        return f"the start of actor {label(holder)}"
+    if holder is None:
+        return "nothing"
+    return repr(str(getattr(holder, "name", None) or holder.eClass.name))

@@ -98,6 +98,8 @@ READS: dict[str, Reads] = {
     "SCEML-A003": Reads(_SELF),
     "SCEML-A004": Reads(_SELF | _ACTORS),  # the target's name
     "SCEML-A005": Reads(_SELF | _ACTORS),
+    # A relative start follows the chain of the other actors' starts.
+    "SCEML-A008": Reads(_VALUE, Aspect.CAST | Aspect.POSITIONS | Aspect.ROLES),
     "SCEML-A006": Reads(_SELF),  # the root's actors are its contents
     "SCEML-A007": Reads(_SELF),
     # structure.py
@@ -151,10 +153,12 @@ READS: dict[str, Reads] = {
     "SCEML-R001": Reads(_SELF, _LEVEL),
     "SCEML-R002": Reads(_SELF, _LEVEL),
     "SCEML-R003": Reads(_VALUE, _LEVEL),
-    "SCEML-R004": Reads(_VALUE, _LEVEL | Aspect.CAST),
+    # A relative start reads the starts of the actors it is placed after.
+    "SCEML-R004": Reads(_VALUE, _LEVEL | Aspect.CAST | Aspect.POSITIONS),
     "SCEML-R005": Reads(_VALUE, _LEVEL | Aspect.CAST),
     "SCEML-R006": Reads(_VALUE, _ROUTE),
     "SCEML-R007": Reads(_VALUE, _ROUTE),
+    "SCEML-R008": Reads(_VALUE, _LEVEL),
     # players.py: the node's speed; the earlier nodes of its actor along the flows (their names
     # in the message), and for Y003 the actor's initial speed
     "SCEML-Y001": Reads(_VALUE),

@@ -30,6 +30,7 @@ from ..maps import (
 )
 from ..maps.positions import Located, centre, locate, spread
 from ..maps.reference import MapReference, is_town_name, map_reference
+from ..maps.resolve import RELATIVE_KINDS, is_relative, road_to_lane, start_poses
 from ..maps.routes import routes_from
 from .context import Context, is_kind, performer
 from .registry import Finding, constraint
@@ -195,9 +196,30 @@ def lane_position_exists(position: scm.LanePosition, context: Context) -> Iterat
 
 
 @constraint(
+    "SCEML-R008",
+    ERROR,
+    "RoadPosition",
+    "a road position names a road of the map, with s within the road and t on one of its lanes",
+    source=_SOURCE,
+    through_modules=True,
+)
+def road_position_exists(position: scm.RoadPosition, context: Context) -> Iterator[Finding]:
+    road_map = _map_of(position, context)
+    if road_map is None or not position.roadId:
+        return
+    for s in spread(position.s) or []:
+        for t in spread(position.t, 0.0) or []:
+            try:
+                road_to_lane(road_map, str(position.roadId), s, t)
+            except PositionError as error:
+                yield position, f"{_what(position)}: {error}"
+                return
+
+
+@constraint(
     "SCEML-R004",
     ERROR,
-    ("WorldPosition", "LanePosition"),
+    ("WorldPosition", "LanePosition", "RoadPosition", *RELATIVE_KINDS),
     "a position lies on a lane that fits its actor: driving lanes for vehicles; the roadway, "
     "sidewalks and bike lanes for bicycles and pedestrians",
     source=_SOURCE,
@@ -211,9 +233,9 @@ def position_fits_actor(position: EObject, context: Context) -> Iterator[Finding
     usable, needs = _usable_lanes(actor)
     what = _what(position)
     try:
-        points = locate(position, road_map)
+        points = _relative_start(position, road_map, context) or locate(position, road_map)
     except PositionError:
-        return  # SCEML-R003 says what is wrong with the lane position
+        return  # SCEML-R003 or R008 says what is wrong with the position
     for point in points:
         if point.lane is not None:
             road_id, lane_id, s, _ = point.lane
@@ -245,6 +267,18 @@ def position_fits_actor(position: EObject, context: Context) -> Iterator[Finding
                 ),
             )
             return
+
+
+def _relative_start(position: EObject, road_map: RoadMap, context: Context) -> list[Located]:
+    """A relative start where the other starts put it (maps.resolve, as players read Init); []
+    for any other position (a relative destination or condition moves with its entity)."""
+    actor = position.eContainer()
+    if not is_relative(position) or not isinstance(actor, scm.Actor):
+        return []
+    root = actor.eContainer()
+    starts = context.memo(("start poses", root), lambda: start_poses(root.actors, road_map))
+    pose = starts.get(actor)
+    return [] if pose is None else [Located(pose.x, pose.y, pose.heading)]
 
 
 def _nearest(road_map: RoadMap, point: Located) -> str:

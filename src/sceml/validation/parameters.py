@@ -102,7 +102,7 @@ def _missing_parameters(owner: EObject) -> Iterator[str]:
             count = len(held) if many else int(held is not None)
             if count < minimum:
                 yield feature if minimum == 1 else f"{feature} (at least {minimum})"
-    if isinstance(owner, scm.LanePosition) and not owner.roadId:
+    if isinstance(owner, scm.LanePosition | scm.RoadPosition) and not owner.roadId:
         yield "roadId"
 
 
