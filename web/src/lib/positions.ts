@@ -1,24 +1,47 @@
-// The inputs of a position (none, world, lane) and the Position they stand for.
+// The inputs of a position (none, world, lane, road, or relative to an actor) and the Position
+// they stand for; the protocol's types are those of docs/editor-protocol.md.
 
-import type { ParamValue, Position } from "../types";
+import type { Position } from "../types";
 import { formatParam, parseParam } from "./values";
 
-export type PositionType = "none" | "world" | "lane";
+export type PositionType = "none" | Position["type"];
+
+/** What an input holds: a name (road id, the actor a relative position is measured from), a
+ * whole number (a lane, a lane difference), or a parameter value (a coordinate). */
+export type InputKind = "name" | "integer" | "parameter";
+
+export interface PositionInput {
+  key: string;
+  label: string;
+  required: boolean;
+  kind: InputKind;
+}
+
+const name = (key: string, label: string): PositionInput => ({ key, label, required: true, kind: "name" });
+const integer = (key: string, label: string, required = true): PositionInput => ({ key, label, required, kind: "integer" });
+const param = (key: string, label: string, required = false): PositionInput => ({ key, label, required, kind: "parameter" });
 
 /** The inputs of each position type: protocol key and the word in the input's label. */
-export const POSITION_INPUTS: Record<Exclude<PositionType, "none">, { key: string; label: string; required: boolean }[]> = {
-  world: [
-    { key: "x", label: "x", required: true },
-    { key: "y", label: "y", required: true },
-    { key: "z", label: "z", required: false },
-    { key: "h", label: "heading", required: false },
-  ],
-  lane: [
-    { key: "roadId", label: "road", required: true },
-    { key: "laneId", label: "lane", required: true },
-    { key: "s", label: "s", required: true },
-    { key: "offset", label: "offset", required: false },
-  ],
+export const POSITION_INPUTS: Record<Exclude<PositionType, "none">, PositionInput[]> = {
+  world: [param("x", "x", true), param("y", "y", true), param("z", "z"), param("h", "heading")],
+  lane: [name("roadId", "road"), integer("laneId", "lane"), param("s", "s", true), param("offset", "offset")],
+  road: [name("roadId", "road"), param("s", "s", true), param("t", "t"), param("h", "heading")],
+  relativeLane: [name("entity", "from"), integer("dLane", "lanes", false), param("ds", "ds"), param("offset", "offset")],
+  relativeRoad: [name("entity", "from"), param("ds", "ds"), param("dt", "dt")],
+  relativeObject: [name("entity", "from"), param("dx", "dx"), param("dy", "dy"), param("dz", "dz"), param("h", "heading")],
+  relativeWorld: [name("entity", "from"), param("dx", "dx"), param("dy", "dy"), param("dz", "dz")],
+};
+
+/** The words the type select shows. */
+export const POSITION_LABELS: Record<PositionType, string> = {
+  none: "none",
+  world: "world",
+  lane: "lane",
+  road: "road",
+  relativeLane: "relative lane",
+  relativeRoad: "relative road",
+  relativeObject: "relative to actor",
+  relativeWorld: "relative world",
 };
 
 export interface PositionDraft {
@@ -28,36 +51,39 @@ export interface PositionDraft {
 
 export function positionDraft(value: Position | null): PositionDraft {
   if (value === null) return { type: "none", inputs: {} };
-  if (value.type === "world") {
-    return {
-      type: "world",
-      inputs: { x: formatParam(value.x), y: formatParam(value.y), z: formatParam(value.z), h: formatParam(value.h) },
-    };
+  const fields = value as unknown as Record<string, unknown>;
+  const inputs: Record<string, string> = {};
+  for (const input of POSITION_INPUTS[value.type]) {
+    const held = fields[input.key];
+    if (input.kind === "parameter") inputs[input.key] = formatParam((held ?? null) as Parameters<typeof formatParam>[0]);
+    else inputs[input.key] = held === null || held === undefined ? "" : String(held);
   }
-  return {
-    type: "lane",
-    inputs: {
-      roadId: value.roadId,
-      laneId: String(value.laneId),
-      s: formatParam(value.s),
-      offset: formatParam(value.offset),
-    },
-  };
+  return { type: value.type, inputs };
 }
 
 /** The Position of a draft: null for none, undefined while incomplete or malformed. */
 export function positionOfDraft(draft: PositionDraft): Position | null | undefined {
-  const param = (key: string) => parseParam(draft.inputs[key] ?? "");
   if (draft.type === "none") return null;
-  if (draft.type === "world") {
-    const [x, y, z, h] = [param("x"), param("y"), param("z"), param("h")];
-    if (!x || !y || z === undefined || h === undefined) return undefined;
-    return { type: "world", x, y, z, h };
+  const built: Record<string, unknown> = { type: draft.type };
+  for (const input of POSITION_INPUTS[draft.type]) {
+    const text = (draft.inputs[input.key] ?? "").trim();
+    if (input.kind === "name") {
+      if (!text) return undefined;
+      built[input.key] = text;
+    } else if (input.kind === "integer") {
+      if (text === "") {
+        if (input.required) return undefined;
+        built[input.key] = 0;
+        continue;
+      }
+      const whole = Number(text);
+      if (!Number.isInteger(whole)) return undefined;
+      built[input.key] = whole;
+    } else {
+      const value = parseParam(draft.inputs[input.key] ?? "");
+      if (value === undefined || (input.required && !value)) return undefined;
+      built[input.key] = value;
+    }
   }
-  const roadId = (draft.inputs.roadId ?? "").trim();
-  const laneText = (draft.inputs.laneId ?? "").trim();
-  const laneId = Number(laneText);
-  const [s, offset]: (ParamValue | null | undefined)[] = [param("s"), param("offset")];
-  if (!roadId || laneText === "" || !Number.isInteger(laneId) || !s || offset === undefined) return undefined;
-  return { type: "lane", roadId, laneId, s, offset };
+  return built as unknown as Position;
 }

@@ -1,8 +1,17 @@
-// A position: none, world (x, y, z, heading) or lane (road, lane, s, offset). Coordinates accept
-// a number or a compact distribution (U(1, 2), N(8, 1), [5, 10] step 1, {1, 2}).
+// A position: none, world (x, y, z, heading), lane (road, lane, s, offset), road (road, s, t,
+// heading), or relative to an actor (by lane, road, its own axes or the world's). Coordinates
+// accept a number or a compact distribution (U(1, 2), N(8, 1), [5, 10] step 1, {1, 2}).
 
 import { useState } from "react";
-import { POSITION_INPUTS, positionDraft, positionOfDraft, type PositionDraft, type PositionType } from "../lib/positions";
+import {
+  POSITION_INPUTS,
+  POSITION_LABELS,
+  positionDraft,
+  positionOfDraft,
+  type PositionDraft,
+  type PositionInput,
+  type PositionType,
+} from "../lib/positions";
 import { sameJson } from "../lib/same";
 import { numberProblem, paramTextProblem } from "../lib/values";
 import type { Position } from "../types";
@@ -17,16 +26,18 @@ interface Props {
   allowNone?: boolean;
 }
 
-/** Why a coordinate's text cannot be used: the road is any text, the lane a whole number. */
-function coordinateProblem(key: string, text: string | undefined): string | null {
-  if (key === "roadId") return null;
-  if (key === "laneId") {
+/** Why an input's text cannot be used: a name is any text, a lane a whole number. */
+function coordinateProblem(input: PositionInput, text: string | undefined): string | null {
+  if (input.kind === "name") return null;
+  if (input.kind === "integer") {
     const trimmed = (text ?? "").trim();
     if (trimmed === "") return null;
-    return numberProblem(trimmed) ?? (Number.isInteger(Number(trimmed)) ? null : `a lane is a whole number, not ${trimmed}`);
+    return numberProblem(trimmed) ?? (Number.isInteger(Number(trimmed)) ? null : `${input.label} is a whole number, not ${trimmed}`);
   }
   return paramTextProblem(text);
 }
+
+const TYPES = Object.keys(POSITION_LABELS).filter((type) => type !== "none") as Exclude<PositionType, "none">[];
 
 export function PositionEditor({ label, value, disabled, onCommit, allowNone = true }: Props) {
   const [draft, setDraft] = useState<PositionDraft>(() => positionDraft(value));
@@ -42,7 +53,7 @@ export function PositionEditor({ label, value, disabled, onCommit, allowNone = t
     const position = positionOfDraft(next);
     if (position !== undefined && JSON.stringify(position) !== JSON.stringify(value)) onCommit(position);
   };
-  const types: PositionType[] = allowNone ? ["none", "world", "lane"] : ["world", "lane"];
+  const types: PositionType[] = allowNone ? ["none", ...TYPES] : TYPES;
   return (
     <fieldset className="position">
       <legend>{label}</legend>
@@ -50,7 +61,7 @@ export function PositionEditor({ label, value, disabled, onCommit, allowNone = t
         label={`${label} type`}
         value={draft.type}
         disabled={disabled}
-        options={types.map((type) => ({ value: type, label: type }))}
+        options={types.map((type) => ({ value: type, label: POSITION_LABELS[type] }))}
         onChange={(type) => update({ type: type as PositionType, inputs: {} })}
       />
       {draft.type !== "none" && (
@@ -62,10 +73,10 @@ export function PositionEditor({ label, value, disabled, onCommit, allowNone = t
               label={`${label} ${input.label}`}
               value={draft.inputs[input.key] ?? ""}
               disabled={disabled}
-              inputMode={input.key === "roadId" ? "text" : "decimal"}
+              inputMode={input.kind === "name" ? "text" : "decimal"}
               placeholder={input.required ? undefined : "optional"}
               invalid={result === undefined && input.required && !(draft.inputs[input.key] ?? "").trim()}
-              problem={coordinateProblem(input.key, draft.inputs[input.key])}
+              problem={coordinateProblem(input, draft.inputs[input.key])}
               onCommit={(text) => update({ ...draft, inputs: { ...draft.inputs, [input.key]: text } })}
             />
           ))}
