@@ -11,9 +11,13 @@ import pytest
 import scemlmodel as scm
 from sceml.diagnostics import Severity
 from sceml.extract import Recording, Track, extract
+from sceml.players.meaning import FLOW_DELAY_STEPS
+from sceml.simulate import DEFAULT_STEP
 from sceml.validation import validate
 
 STEP = 0.05
+#: What a flow costs in the replay (s): a node starts a step after its predecessor finished.
+FLOW = FLOW_DELAY_STEPS * DEFAULT_STEP
 
 
 def times(duration: float) -> np.ndarray:
@@ -47,10 +51,12 @@ def test_a_speed_change_is_one_accelerate_with_its_target_rate_and_start() -> No
     assert event.start == pytest.approx(1.0, abs=0.05) and event.end == pytest.approx(3.0, abs=0.05)
     assert event.parameters["targetSpeed"] == pytest.approx(9.0, abs=0.02)
     assert event.parameters["rate"] == pytest.approx(2.0, abs=0.05)
-    # It waited 1 s with nobody else there: a time, kept while driving as KeepVelocity.
+    # It waited 1 s with nobody else there: a time, kept while driving as KeepVelocity. The
+    # flows into and out of the wait cost a step each, and the Accelerate shows a step before
+    # its node starts (it acts in that step): the wait lasts 1 s less one step.
     (wait,) = found.inferred
     assert wait.explanation.kind == "KeepVelocity" and wait.explanation.confidence == "low"
-    assert wait.explanation.parameters["duration"] == pytest.approx(1.0, abs=0.05)
+    assert wait.explanation.parameters["duration"] == pytest.approx(1.0 - 2 * FLOW + DEFAULT_STEP, abs=0.05)
     assert found.replay is not None and found.replay.largest < 0.1
 
 
@@ -100,7 +106,7 @@ def test_a_start_nothing_explains_is_a_time() -> None:
     found = extract(Recording((ego, car), "by hand"))
     (why,) = found.inferred
     assert why.explanation.kind == "TimeElapsed" and why.explanation.confidence == "low"
-    assert why.explanation.parameters == {"duration": pytest.approx(3.0, abs=0.05)}
+    assert why.explanation.parameters == {"duration": pytest.approx(3.0 - 2 * FLOW + DEFAULT_STEP, abs=0.05)}
     graph = found.scenario
     waits = [n for n in graph.nodes if isinstance(n, scm.TimeElapsed)]
     assert [str(n.referenceActor.name) for n in waits] == ["car"]
