@@ -56,7 +56,9 @@ def test_a_speed_change_is_one_accelerate_with_its_target_rate_and_start() -> No
     # its node starts (it acts in that step): the wait lasts 1 s less one step.
     (wait,) = found.inferred
     assert wait.explanation.kind == "KeepVelocity" and wait.explanation.confidence == "low"
-    assert wait.explanation.parameters["duration"] == pytest.approx(1.0 - 2 * FLOW + DEFAULT_STEP, abs=0.05)
+    assert wait.explanation.parameters["duration"] == pytest.approx(
+        1.0 - 2 * FLOW + DEFAULT_STEP, abs=0.05
+    )
     assert found.replay is not None and found.replay.largest < 0.1
 
 
@@ -106,7 +108,9 @@ def test_a_start_nothing_explains_is_a_time() -> None:
     found = extract(Recording((ego, car), "by hand"))
     (why,) = found.inferred
     assert why.explanation.kind == "TimeElapsed" and why.explanation.confidence == "low"
-    assert why.explanation.parameters == {"duration": pytest.approx(3.0 - 2 * FLOW + DEFAULT_STEP, abs=0.05)}
+    assert why.explanation.parameters == {
+        "duration": pytest.approx(3.0 - 2 * FLOW + DEFAULT_STEP, abs=0.05)
+    }
     graph = found.scenario
     waits = [n for n in graph.nodes if isinstance(n, scm.TimeElapsed)]
     assert [str(n.referenceActor.name) for n in waits] == ["car"]

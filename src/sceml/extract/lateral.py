@@ -119,8 +119,14 @@ def _lane_change(motion: Motion, first: int, last: int, thresholds: Thresholds) 
     Only the turning stretch and a smoothing window either side are looked at, so the start of
     a crossing or turn just after it does not count as sideways motion.
     """
-    h0 = float(motion.heading[first])
     reach = max(1, int(round(thresholds.smoothing_window / motion.step)))
+    # Sideways is judged against the heading before the change; but within the smoothing's
+    # first half window that heading already shows the change (its chord reaches into it),
+    # so there the heading after it is taken: a lane change ends heading as it began.
+    if first >= reach // 2:
+        h0 = float(motion.heading[first])
+    else:
+        h0 = float(np.median(motion.heading[last : last + reach + 1]))
     lo, hi = max(first - reach, 0), min(last + reach, len(motion.times) - 1)
     dx, dy = motion.x[lo : hi + 1] - motion.x[lo], motion.y[lo : hi + 1] - motion.y[lo]
     sideways = -dx * math.sin(h0) + dy * math.cos(h0)
