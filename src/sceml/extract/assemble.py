@@ -32,7 +32,6 @@ from .motion import Motion
 from .sync import Explanation, explain
 from .thresholds import Thresholds
 
-
 #: How long (s) a flow delays its successor in a replay, which runs at the preview's step.
 FLOW_DELAY = FLOW_DELAY_STEPS * DEFAULT_STEP
 #: How long (s) before its node's start a maneuver shows: it acts in the step it starts.
