@@ -57,7 +57,7 @@ def test_a_speed_change_is_one_accelerate_with_its_target_rate_and_start() -> No
     (wait,) = found.inferred
     assert wait.explanation.kind == "KeepVelocity" and wait.explanation.confidence == "low"
     assert wait.explanation.parameters["duration"] == pytest.approx(
-        1.0 - 2 * FLOW + DEFAULT_STEP, abs=0.05
+        1.0 - 2 * FLOW + DEFAULT_STEP, abs=0.01
     )
     assert found.replay is not None and found.replay.largest < 0.1
 
@@ -109,7 +109,7 @@ def test_a_start_nothing_explains_is_a_time() -> None:
     (why,) = found.inferred
     assert why.explanation.kind == "TimeElapsed" and why.explanation.confidence == "low"
     assert why.explanation.parameters == {
-        "duration": pytest.approx(3.0 - 2 * FLOW + DEFAULT_STEP, abs=0.05)
+        "duration": pytest.approx(3.0 - 2 * FLOW + DEFAULT_STEP, abs=0.01)
     }
     graph = found.scenario
     waits = [n for n in graph.nodes if isinstance(n, scm.TimeElapsed)]
