@@ -47,8 +47,10 @@ def path_events(
         ):
             # After a crossing the actor goes on along the lane it reached (docs/simulate.md):
             # this bend is where the crossing ended, not a maneuver. A bend the recording ends
-            # in cannot be judged, but a crossing goes straight, so it ended there too.
-            _end_crossing(events[-1], motion, first, last)
+            # in cannot be judged, but a crossing goes straight, so it ended there too. Later
+            # such bends are the lane's own, which following it makes anyway.
+            if events[-1].destination is None:
+                _end_crossing(events[-1], motion, first, last)
             continue
         if cut_off:
             continue  # still turning when the recording ends (or the smoothing's edge)
