@@ -1,5 +1,6 @@
-"""Extraction from recordings made by hand (closed-form motions on an empty plane), with the
-expected maneuvers, parameters and conditions worked out on paper."""
+"""Extraction from recordings made by hand (closed-form motions on an empty plane, or where
+said on maps/intersection.xodr), with the expected maneuvers, parameters and conditions worked
+out on paper."""
 
 from __future__ import annotations
 
@@ -133,7 +134,9 @@ def test_a_bike_that_turns_onto_a_lane_after_crossing_crossed_to_that_corner() -
     bike = Track("bike", t, x, y, kind="Bicycle")
     ego = straight("ego", t, -40.0, -1.75, 0.0, np.zeros_like(t))
     road_map = load_map(REPO / "maps" / "intersection.xodr")
-    found = extract(Recording((ego, bike), "by hand"), road_map, map_reference="Town")
+    found = extract(
+        Recording((ego, bike), "by hand"), road_map, map_reference="../maps/intersection.xodr"
+    )
     (actor,) = [a for a in found.actors if a.name == "bike"]
     (cross,) = actor.maneuvers
     assert cross.kind == "Cross" and cross.destination is not None
