@@ -121,7 +121,7 @@ def noisy_runs(run: Run, seeds: int) -> Iterator[Extraction]:
 
 def test_noisy_recordings_of_uis1_mostly_come_back_whole() -> None:
     # Under noise a speed change below 1 m/s may be seen or missed by chance: not compared.
-    # The figures over 200 samples are in docs/extract.md; this guards them on 8 fixed seeds.
+    # The figures over 100 samples are in docs/extract.md; this guards them on 8 fixed seeds.
     scenario, run = original(EXAMPLES / "uis1-concrete.xmi")
     expected = signature(scenario, run, min_change=1.0)
     whole = [

@@ -1,5 +1,6 @@
-"""Extraction from recordings made by hand (closed-form motions on an empty plane), with the
-expected maneuvers, parameters and conditions worked out on paper."""
+"""Extraction from recordings made by hand (closed-form motions on an empty plane, or where
+said on maps/intersection.xodr), with the expected maneuvers, parameters and conditions worked
+out on paper."""
 
 from __future__ import annotations
 
@@ -7,13 +8,19 @@ import math
 
 import numpy as np
 import pytest
+from conftest import REPO
 
 import scemlmodel as scm
 from sceml.diagnostics import Severity
 from sceml.extract import Recording, Track, extract
+from sceml.maps import load_map
+from sceml.players.meaning import FLOW_DELAY_STEPS
+from sceml.simulate import DEFAULT_STEP
 from sceml.validation import validate
 
 STEP = 0.05
+#: What a flow costs in the replay (s): a node starts a step after its predecessor finished.
+FLOW = FLOW_DELAY_STEPS * DEFAULT_STEP
 
 
 def times(duration: float) -> np.ndarray:
@@ -47,10 +54,14 @@ def test_a_speed_change_is_one_accelerate_with_its_target_rate_and_start() -> No
     assert event.start == pytest.approx(1.0, abs=0.05) and event.end == pytest.approx(3.0, abs=0.05)
     assert event.parameters["targetSpeed"] == pytest.approx(9.0, abs=0.02)
     assert event.parameters["rate"] == pytest.approx(2.0, abs=0.05)
-    # It waited 1 s with nobody else there: a time, kept while driving as KeepVelocity.
+    # It waited 1 s with nobody else there: a time, kept while driving as KeepVelocity. The
+    # flows into and out of the wait cost a step each, and the Accelerate shows a step before
+    # its node starts (it acts in that step): the wait lasts 1 s less one step.
     (wait,) = found.inferred
     assert wait.explanation.kind == "KeepVelocity" and wait.explanation.confidence == "low"
-    assert wait.explanation.parameters["duration"] == pytest.approx(1.0, abs=0.05)
+    assert wait.explanation.parameters["duration"] == pytest.approx(
+        1.0 - 2 * FLOW + DEFAULT_STEP, abs=0.01
+    )
     assert found.replay is not None and found.replay.largest < 0.1
 
 
@@ -100,7 +111,35 @@ def test_a_start_nothing_explains_is_a_time() -> None:
     found = extract(Recording((ego, car), "by hand"))
     (why,) = found.inferred
     assert why.explanation.kind == "TimeElapsed" and why.explanation.confidence == "low"
-    assert why.explanation.parameters == {"duration": pytest.approx(3.0, abs=0.05)}
+    assert why.explanation.parameters == {
+        "duration": pytest.approx(3.0 - 2 * FLOW + DEFAULT_STEP, abs=0.01)
+    }
     graph = found.scenario
     waits = [n for n in graph.nodes if isinstance(n, scm.TimeElapsed)]
     assert [str(n.referenceActor.name) for n in waits] == ["car"]
+
+
+def test_a_bike_that_turns_onto_a_lane_after_crossing_crossed_to_that_corner() -> None:
+    # On maps/intersection.xodr: a bike rides north at 5 m/s along x = 4.5 until (4.5, -10) at
+    # 2 s, then straight to the corner (10, 4.5) (15.51 m: 3.10 s), then east along the lane
+    # whose centre is y = 4.5, as players go on after a crossing. The bend onto the lane is
+    # where the crossing ended, not a second crossing.
+    t = times(8.0)
+    s = 5.0 * t
+    leg = math.hypot(5.5, 14.5)
+    on_leg = np.clip(s - 10.0, 0.0, leg) / leg
+    after = np.maximum(s - 10.0 - leg, 0.0)
+    x = 4.5 + 5.5 * on_leg + after
+    y = -20.0 + np.minimum(s, 10.0) + 14.5 * on_leg
+    bike = Track("bike", t, x, y, kind="Bicycle")
+    ego = straight("ego", t, -40.0, -1.75, 0.0, np.zeros_like(t))
+    road_map = load_map(REPO / "maps" / "intersection.xodr")
+    found = extract(
+        Recording((ego, bike), "by hand"), road_map, map_reference="../maps/intersection.xodr"
+    )
+    (actor,) = [a for a in found.actors if a.name == "bike"]
+    (cross,) = actor.maneuvers
+    assert cross.kind == "Cross" and cross.destination is not None
+    assert cross.start == pytest.approx(2.0, abs=0.15)
+    assert math.hypot(cross.destination[0] - 10.0, cross.destination[1] - 4.5) < 0.3
+    assert found.replay is not None and found.replay.largest < 0.5

@@ -7,6 +7,13 @@ crossing is followed by its arrival check (InLocationRadius at its destination),
 the export knows it has finished (SPEC §7). When every node of the actor is still running at
 a maneuver's start (a lane change during a speed change), the maneuver gets a branch of its
 own from the root, with its wait in front.
+
+Timing follows the players (docs/simulate.md): every flow costs a step
+(`players.meaning.FLOW_DELAY_STEPS`), and a maneuver acts in the step its node starts, so a
+recording shows its motion change a step before the node's start. A maneuver right after
+another therefore shows at its predecessor's finish, as recorded. A wait adds a flow: its
+condition is aimed at when it must hold for the maneuver to show at its recorded start, and
+a timed wait is shorter than the gap it fills by what the flows cost beyond that step.
 """
 
 from __future__ import annotations
@@ -18,10 +25,17 @@ import scemlmodel as scm
 
 from ..build import ScenarioBuilder, world
 from ..params import value
+from ..players.meaning import FLOW_DELAY_STEPS
+from ..simulate import DEFAULT_STEP
 from .events import Event
 from .motion import Motion
 from .sync import Explanation, explain
 from .thresholds import Thresholds
+
+#: How long (s) a flow delays its successor in a replay, which runs at the preview's step.
+FLOW_DELAY = FLOW_DELAY_STEPS * DEFAULT_STEP
+#: How long (s) before its node's start a maneuver shows: it acts in the step it starts.
+SHOWS_EARLY = DEFAULT_STEP
 
 
 @dataclass(frozen=True)
@@ -62,7 +76,17 @@ def add_actor_graph(
         if not event.flexible and event.start - tail.finish > _least_wait(event, thresholds):
             driving = own.at(own.speed, event.start) > thresholds.standing_speed
             driving = driving and not _speed_changing(events, tail.finish, event.start)
-            why = explain(name, event.start, tail.finish, motions, ego, thresholds, driving=driving)
+            # The condition starts a flow after the tail finished, and holds a flow before the
+            # maneuver's node starts (which is when the maneuver shows, plus SHOWS_EARLY).
+            why = explain(
+                name,
+                event.start + SHOWS_EARLY - FLOW_DELAY,
+                tail.finish + FLOW_DELAY,
+                motions,
+                ego,
+                thresholds,
+                driving=driving,
+            )
             condition = _condition(builder, why, actors)
             builder.chain(tail.node, condition, node)
             inferred.append(Inferred(str(condition.name), str(node.name), name, event.start, why))

@@ -38,9 +38,22 @@ def path_events(
     settle = max(1, int(round(thresholds.smoothing_window / step / 2)))
     events: list[Event] = []
     for a, b in _runs(turning, gap=max(1, int(0.5 / step))):
-        if b >= len(motion.times) - settle:
-            continue  # still turning when the recording ends (or the smoothing's edge)
         first, last = max(a - settle, 0), min(b + settle, len(motion.times) - 1)
+        cut_off = b >= len(motion.times) - settle
+        if (
+            events
+            and events[-1].kind == "Cross"
+            and (cut_off or _along_lane(motion, last, road_map))
+        ):
+            # After a crossing the actor goes on along the lane it reached (docs/simulate.md):
+            # this bend is where the crossing ended, not a maneuver. A bend the recording ends
+            # in cannot be judged, but a crossing goes straight, so it ended there too. Later
+            # such bends are the lane's own, which following it makes anyway.
+            if events[-1].destination is None:
+                _end_crossing(events[-1], motion, first, last)
+            continue
+        if cut_off:
+            continue  # still turning when the recording ends (or the smoothing's edge)
         turned = _turned(motion, first, last, 2 * settle)
         if events and events[-1].kind == "LaneChange" and motion.times[first] < events[-1].end:
             continue  # the way back of a lane change already found (its heading swings twice)
@@ -108,8 +121,14 @@ def _lane_change(motion: Motion, first: int, last: int, thresholds: Thresholds) 
     Only the turning stretch and a smoothing window either side are looked at, so the start of
     a crossing or turn just after it does not count as sideways motion.
     """
-    h0 = float(motion.heading[first])
     reach = max(1, int(round(thresholds.smoothing_window / motion.step)))
+    # Sideways is judged against the heading before the change; but within the smoothing's
+    # first half window that heading already shows the change (its chord reaches into it),
+    # so there the heading after it is taken: a lane change ends heading as it began.
+    if first >= reach // 2:
+        h0 = float(motion.heading[first])
+    else:
+        h0 = float(np.median(motion.heading[last : last + reach + 1]))
     lo, hi = max(first - reach, 0), min(last + reach, len(motion.times) - 1)
     dx, dy = motion.x[lo : hi + 1] - motion.x[lo], motion.y[lo : hi + 1] - motion.y[lo]
     sideways = -dx * math.sin(h0) + dy * math.cos(h0)
@@ -152,6 +171,40 @@ def _fit_half_cosine(
     errors = ((c[:, None] + d[:, None] * shape - offset[None, :]) ** 2).sum(axis=1)
     best = int(np.argmin(errors))
     return float(s1[best]), float(length[best]), float(d[best])
+
+
+#: A heading within this much (rad) of a lane's direction goes along the lane.
+_ALONG_LANE = 0.15
+
+
+def _along_lane(motion: Motion, last: int, road_map: RoadMap | None) -> bool:
+    """Whether the actor goes along (or against) the lane under it after sample `last`."""
+    if road_map is None:
+        return False
+    k = min(last, len(motion.times) - 1)
+    heading = float(np.median(motion.heading[k:])) if k < len(motion.times) - 1 else None
+    heading = float(motion.heading[-1]) if heading is None else heading
+    for lane in road_map.world_to_lane(float(motion.x[k]), float(motion.y[k]), tolerance=1.0):
+        traffic = road_map.traffic_heading(lane.road_id, lane.lane_id, lane.s)
+        off = abs((heading - traffic + math.pi / 2) % math.pi - math.pi / 2)
+        if off < _ALONG_LANE:
+            return True
+    return False
+
+
+def _end_crossing(crossing: Event, motion: Motion, first: int, last: int) -> None:
+    """Put a crossing's destination where the actor turned onto its lane.
+
+    A crossing goes straight to its destination, where the actor turns onto the lane at once.
+    The corner is where the straight line got to at the moment of the bend: the smoothing
+    rounds the corner, so it is extrapolated from before the bend by the distance driven.
+    """
+    corner_time = _midway(motion, first, last)
+    heading = float(motion.heading[first])
+    run = motion.at(motion.arc, corner_time) - float(motion.arc[first])
+    x = float(motion.x[first]) + run * math.cos(heading)
+    y = float(motion.y[first]) + run * math.sin(heading)
+    crossing.destination = (x, y, heading)
 
 
 def _one_crossing_at_a_time(events: list[Event]) -> list[Event]:
@@ -215,15 +268,16 @@ def _finish_destinations(motion: Motion, events: list[Event], thresholds: Thresh
     for i, event in enumerate(events):
         if event.kind not in ("TurnLeft", "TurnRight", "Cross"):
             continue
-        if event.kind == "Cross":
-            later = [e.start for e in events[i + 1 :]]
-            end = _last_moving(motion, event.start, later[0] if later else None, thresholds)
-        else:
-            end_arc = motion.at(motion.arc, event.end) + thresholds.turn_settle
-            end = float(np.interp(end_arc, motion.arc, motion.times))
-        x, y = motion.position(end)
-        heading = motion.at(motion.heading, end)
-        event.destination = (x, y, heading)
+        if event.destination is None:  # not yet ended by a turn onto a lane
+            if event.kind == "Cross":
+                later = [e.start for e in events[i + 1 :]]
+                end = _last_moving(motion, event.start, later[0] if later else None, thresholds)
+            else:
+                end_arc = motion.at(motion.arc, event.end) + thresholds.turn_settle
+                end = float(np.interp(end_arc, motion.arc, motion.times))
+            x, y = motion.position(end)
+            event.destination = (x, y, motion.at(motion.heading, end))
+        x, y, _ = event.destination
         event.end = max(event.end, event.start)
         event.finish = _arrival(motion, event.start, x, y, tolerance)
 
