@@ -27,6 +27,11 @@ PrecipitationType = EEnum('PrecipitationType', literals=['dry', 'rain', 'snow'])
 ActorKind = EEnum('ActorKind', literals=[
                   'Pedestrian', 'TwoWheeler', 'Bicycle', 'Motorcycle', 'FourWheeler', 'Car', 'Van', 'Truck', 'Bus'])
 
+RelativeDistanceType = EEnum('RelativeDistanceType', literals=[
+                             'euclidean', 'longitudinal', 'lateral'])
+
+CoordinateSystem = EEnum('CoordinateSystem', literals=['entity', 'lane', 'road', 'trajectory'])
+
 
 @abstract
 class NamedElement(EObject, metaclass=MetaEClass):
@@ -851,14 +856,29 @@ class TimeToCollision(Condition):
 
     rule = EAttribute(eType=ComparisonRule, unique=True, derived=False,
                       changeable=True, default_value=ComparisonRule.lessThan)
+    freespace = EAttribute(eType=EBoolean, unique=True, derived=False,
+                           changeable=True, default_value=True)
+    relativeDistanceType = EAttribute(eType=RelativeDistanceType, unique=True,
+                                      derived=False, changeable=True, default_value=RelativeDistanceType.euclidean)
+    coordinateSystem = EAttribute(eType=CoordinateSystem, unique=True,
+                                  derived=False, changeable=True, default_value=CoordinateSystem.entity)
     time = EReference(ordered=True, unique=True, containment=True, derived=False)
 
-    def __init__(self, *, rule=None, time=None, **kwargs):
+    def __init__(self, *, rule=None, time=None, freespace=None, relativeDistanceType=None, coordinateSystem=None, **kwargs):
 
         super().__init__(**kwargs)
 
         if rule is not None:
             self.rule = rule
+
+        if freespace is not None:
+            self.freespace = freespace
+
+        if relativeDistanceType is not None:
+            self.relativeDistanceType = relativeDistanceType
+
+        if coordinateSystem is not None:
+            self.coordinateSystem = coordinateSystem
 
         if time is not None:
             self.time = time

@@ -357,6 +357,20 @@ def plan_speed_condition(ctx: Context, node: scm.SpeedCondition, groups: list[Gr
     return _marker(ctx, node, with_extra(groups, check), ctx.entity(node.referenceActor))
 
 
+def measured_along(node: Any) -> dict[str, str]:
+    """The relativeDistanceType and coordinateSystem attributes of a measuring condition, only
+    where they differ from OpenSCENARIO's defaults (euclidean, entity) so that files that never
+    set them export as before (`support.unsupported_setting` refuses them for 1.0)."""
+    data = {}
+    kind = node.relativeDistanceType.name
+    if kind != "euclidean":
+        data["relative_distance_type"] = kind
+    system = node.coordinateSystem.name
+    if system != "entity":
+        data["coordinate_system"] = system
+    return data
+
+
 @planner("TimeToCollision")
 def plan_ttc(ctx: Context, node: scm.TimeToCollision, groups: list[Group]) -> Plan:
     """A marker on TimeToCollisionCondition towards the target actor."""
@@ -367,7 +381,8 @@ def plan_ttc(ctx: Context, node: scm.TimeToCollision, groups: list[Group]) -> Pl
         "value": ctx.values.text(node, "time"),
         "rule": node.rule.name,
     }
-    data["freespace"] = "true" if meaning.TTC_FREESPACE else "false"
+    data["freespace"] = "true" if node.freespace else "false"
+    data.update(measured_along(node))
     check = Condition(f"{name}_ttc", "ttc", data)
     return _marker(ctx, node, with_extra(groups, check), ctx.entity(node.referenceActor))
 
