@@ -1,0 +1,44 @@
+"""A measuring condition's box says how it measures when that is not the default, in one line."""
+
+from __future__ import annotations
+
+from sceml.build import ScenarioBuilder, world
+from sceml.render.labels import Scope, action_lines
+
+
+def ttc_lines(**measure: object) -> list[str]:
+    b = ScenarioBuilder("labels", level="concrete")
+    ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0), speed=10.0)
+    lead = b.actor("Car", "lead", start=world(30.0, 0.0), speed=5.0)
+    return action_lines(b.add("TimeToCollision", ego, target=lead, time=2.0, **measure), Scope())
+
+
+def test_the_default_measure_adds_no_line() -> None:
+    assert ttc_lines() == ["ego, target lead", "rule: lessThan", "time: 2 s"]
+
+
+def test_a_measure_apart_from_the_default_is_one_line() -> None:
+    lines = ttc_lines(freespace=False, relativeDistanceType="longitudinal", coordinateSystem="lane")
+    assert lines[1] == "measured: reference points, longitudinal, lane coordinates"
+    assert not any(line.startswith(("freespace", "relativeDistanceType")) for line in lines)
+
+
+def test_the_editor_offers_the_measure_as_fields() -> None:
+    from sceml.build import node_named
+    from sceml.editor.fields import node_fields
+
+    b = ScenarioBuilder("fields", level="concrete")
+    ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0), speed=10.0)
+    lead = b.actor("Car", "lead", start=world(30.0, 0.0), speed=5.0)
+    b.add("TimeToCollision", ego, target=lead, name="ttc", relativeDistanceType="lateral")
+    fields = {f["name"]: f for f in node_fields(node_named(b.scenario, "ttc"))}
+    assert fields["freespace"] == {
+        "name": "freespace",
+        "label": "Freespace",
+        "type": "bool",
+        "value": True,
+    }
+    assert fields["relativeDistanceType"]["options"] == ["euclidean", "longitudinal", "lateral"]
+    assert fields["relativeDistanceType"]["value"] == "lateral"
+    assert fields["coordinateSystem"]["options"] == ["entity", "lane", "road", "trajectory"]
+    assert fields["coordinateSystem"]["value"] == "entity"
