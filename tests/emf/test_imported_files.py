@@ -26,3 +26,18 @@ def test_emf_reads_and_writes_an_imported_scenario_with_opaque_nodes(
     assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
     original, from_emf = io.load(source / "alks.xmi"), io.load(out / "alks.xmi")
     assert differences(original.root, from_emf.root) == []
+
+
+def test_emf_keeps_how_an_imported_time_to_collision_measures(emf: Harness, tmp_path: Path) -> None:
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    import_to_file(FILES / "ttc-measured.xosc", source / "ttc.xmi")
+    written = (source / "ttc.xmi").read_text()
+    assert 'freespace="false"' in written and 'relativeDistanceType="longitudinal"' in written
+    result = emf.run("roundtrip", ECORE, source, out, Path("ttc.xmi"))
+    assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+    from_emf = io.load(out / "ttc.xmi").root
+    assert differences(io.load(source / "ttc.xmi").root, from_emf) == []
+    (ttc,) = [n for n in from_emf.nodes if n.eClass.name == "TimeToCollision"]
+    assert (ttc.freespace, ttc.relativeDistanceType.name) == (False, "longitudinal")
