@@ -884,6 +884,18 @@ class TimeToCollision(Condition):
             self.time = time
 
 
+class TraveledDistance(Condition):
+    """Holds once the reference actor's odometer reaches the distance: every metre it has moved since the simulation started, whichever way (OpenSCENARIO's TraveledDistanceCondition), not since the node's activation."""
+    distance = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, distance=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if distance is not None:
+            self.distance = distance
+
+
 class Accelerate(LongitudinalManeuver):
 
     targetSpeed = EReference(ordered=True, unique=True, containment=True, derived=False)

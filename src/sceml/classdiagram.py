@@ -69,6 +69,7 @@ VIEWS: dict[str, tuple[str, ...]] = {
         "TimeElapsed",
         "SpeedCondition",
         "TimeToCollision",
+        "TraveledDistance",
         "OpaqueAction",
         "Participant",
         "Position",

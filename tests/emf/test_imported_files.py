@@ -41,3 +41,14 @@ def test_emf_keeps_how_an_imported_time_to_collision_measures(emf: Harness, tmp_
     assert differences(io.load(source / "ttc.xmi").root, from_emf) == []
     (ttc,) = [n for n in from_emf.nodes if n.eClass.name == "TimeToCollision"]
     assert (ttc.freespace, ttc.relativeDistanceType.name) == (False, "longitudinal")
+
+
+def test_emf_reads_and_writes_an_imported_traveled_distance(emf: Harness, tmp_path: Path) -> None:
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    import_to_file(FILES / "traveled-distance.xosc", source / "traveled.xmi")
+    assert "scemlmodel:TraveledDistance" in (source / "traveled.xmi").read_text()
+    result = emf.run("roundtrip", ECORE, source, out, Path("traveled.xmi"))
+    assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+    assert differences(io.load(source / "traveled.xmi").root, io.load(out / "traveled.xmi").root) == []

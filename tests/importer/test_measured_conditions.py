@@ -85,3 +85,27 @@ def test_a_time_to_collision_along_the_route_stays_opaque_and_says_why(tmp_path:
     imported = import_file(along)
     assert imported.report.counts()["opaque"] == 1
     assert any("alongRoute" in entry.message for entry in imported.report.section("opaque"))
+
+
+TRAVELED = FILES / "traveled-distance.xosc"
+
+
+@pytest.mark.parametrize("version", ("1.0", "1.1", "1.2", "1.3"))
+def test_a_traveled_distance_is_mapped_and_exported_as_it_was_read(
+    version: str, tmp_path: Path, same
+) -> None:
+    first = import_file(TRAVELED)
+    assert first.report.counts()["opaque"] == 0
+    (traveled,) = [n for n in first.scenario.nodes if n.eClass.name == "TraveledDistance"]
+    assert (traveled.referenceActor.name, traveled.distance.value) == ("Ego", 60.0)
+    exported = tmp_path / "traveled.xosc"
+    export_to_file(first.scenario, exported, version=version, source_path=TRAVELED)
+    assert schema.validate_tree(schema.parse_file(exported)) == []
+    (written,) = etree.parse(str(exported)).iter("TraveledDistanceCondition")
+    assert float(written.get("value")) == 60.0
+    entity = written.getparent().getparent().find("TriggeringEntities/EntityRef")
+    assert entity.get("entityRef") == "Ego"
+    again = import_file(exported, allow=[FILES]).scenario
+    for scenario in (first.scenario, again):
+        graph.root_node(scenario).environment = None
+    same(first.scenario, again)

@@ -87,15 +87,14 @@ HAND_WRITTEN = {
             "JoinAllFinished",
             "OpaqueAction",
             "OpaqueAction",
-            # Between reference points (freespace="false"): SceML's is between the boxes, so it
-            # is kept as written rather than fire at another time.
-            "OpaqueAction",
             "RootNode",
             "Stop",
             "TimeElapsed",
             "TimeElapsed",
+            # Between reference points (freespace="false"), kept as the node's freespace.
+            "TimeToCollision",
         ],
-        {"Action VisibilityAction", "Condition TimeToCollisionCondition"},
+        {"Action VisibilityAction"},
     ),
     "follow-and-brake": (
         "1.2",
@@ -125,13 +124,14 @@ HAND_WRITTEN = {
             "JoinAllFinished",
             "LaneChange",
             "OpaqueAction",
-            "OpaqueAction",
             "RootNode",
             "SpeedCondition",
             "TimeElapsed",
             "TimeElapsed",
+            # The odometer since the start, as SceML's TraveledDistance counts.
+            "TraveledDistance",
         ],
-        {"Action LaneOffsetAction", "Condition TraveledDistanceCondition"},
+        {"Action LaneOffsetAction"},
     ),
 }
 

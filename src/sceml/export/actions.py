@@ -357,6 +357,17 @@ def plan_speed_condition(ctx: Context, node: scm.SpeedCondition, groups: list[Gr
     return _marker(ctx, node, with_extra(groups, check), ctx.entity(node.referenceActor))
 
 
+@planner("TraveledDistance")
+def plan_traveled(ctx: Context, node: scm.TraveledDistance, groups: list[Group]) -> Plan:
+    """A marker on TraveledDistanceCondition: the actor's odometer since the simulation started
+    (players.meaning.TRAVELED_FROM), the same in every version and profile."""
+    name = ctx.event_names[node]
+    entity = ctx.entity(node.referenceActor)
+    data = {"entity": entity, "value": ctx.values.text(node, "distance")}
+    check = Condition(f"{name}_traveled", "traveled", data)
+    return _marker(ctx, node, with_extra(groups, check), entity)
+
+
 def measured_along(node: Any) -> dict[str, str]:
     """The relativeDistanceType and coordinateSystem attributes of a measuring condition, only
     where they differ from OpenSCENARIO's defaults (euclidean, entity) so that files that never

@@ -1,7 +1,8 @@
 """One entity condition to SceML condition nodes, or an opaque node keeping the Condition.
 
 ReachPosition and Distance (to a position, less than) to InLocationRadius, RelativeDistance to
-InVehicleRadius, Speed to SpeedCondition, TimeToCollision (to an entity) to TimeToCollision.
+InVehicleRadius, Speed to SpeedCondition, TimeToCollision (to an entity) to TimeToCollision with
+its measure, TraveledDistance to TraveledDistance.
 With several triggering entities there is one node per entity, joined: `any` by JoinOneFinished,
 `all` by JoinAllFinished.
 """
@@ -196,6 +197,14 @@ def _speed(
     node = _node(build, "SpeedCondition", actor, wanted, speed=number(test, "value"))
     node.rule = scm.ComparisonRule.getEEnumLiteral(rule[0])
     return node
+
+
+@_maps("TraveledDistanceCondition")
+def _traveled(
+    build: Build, test: etree._Element, actor: scm.Actor, wanted: str
+) -> scm.ActionNode | str:
+    # The same odometer from the simulation's start in OpenSCENARIO and SceML.
+    return _node(build, "TraveledDistance", actor, wanted, distance=number(test, "value"))
 
 
 #: OpenSCENARIO's relativeDistanceType values as SceML's RelativeDistanceType literals

@@ -159,6 +159,16 @@ def measured_distance(at: Separation, freespace: bool, kind: str) -> float:
     return at.box_gap if freespace else math.hypot(at.ahead, at.left)
 
 
+#: TraveledDistance counts the actor's odometer from the start of the simulation, every metre
+#: moved whichever way (esmini 3.6: `odometer_`, compared with `>=`), not from the node's start.
+TRAVELED_FROM = "simulation start"
+
+
+def traveled_reached(odometer: float, distance: float) -> bool:
+    """Whether a TraveledDistance holds."""
+    return odometer >= distance
+
+
 def time_to_collision(
     free_distance: float,
     velocity: tuple[float, float],

@@ -86,6 +86,13 @@ def speed_condition(node: EObject, world: World) -> Test:
     return holds
 
 
+@kind("TraveledDistance")
+def traveled_distance(node: EObject, world: World) -> Test:
+    actor = world.actor(node.referenceActor, str(node.name))
+    distance = concrete(node, "distance")
+    return lambda w: meaning.traveled_reached(actor.odometer, distance)
+
+
 #: Coordinate systems the preview measures in: the actor's own frame. Lane, road and
 #: trajectory coordinates follow the road's curve, which the preview does not take apart.
 _MEASURED_FRAMES = ("entity",)

@@ -42,3 +42,17 @@ def test_the_editor_offers_the_measure_as_fields() -> None:
     assert fields["relativeDistanceType"]["value"] == "lateral"
     assert fields["coordinateSystem"]["options"] == ["entity", "lane", "road", "trajectory"]
     assert fields["coordinateSystem"]["value"] == "entity"
+
+
+def test_the_palette_offers_traveled_distance_among_the_conditions() -> None:
+    from sceml.editor.palette import node_groups
+
+    conditions = next(g for g in node_groups() if "TimeToCollision" in str(g))
+    assert "TraveledDistance" in str(conditions)
+
+
+def test_a_traveled_distance_box_shows_its_distance() -> None:
+    b = ScenarioBuilder("labels", level="concrete")
+    ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0), speed=10.0)
+    node = b.add("TraveledDistance", ego, distance=60.0)
+    assert action_lines(node, Scope()) == ["ego", "distance: 60 m"]
