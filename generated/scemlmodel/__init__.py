@@ -1,13 +1,13 @@
 
 from .scemlmodel import getEClassifier, eClassifiers
 from .scemlmodel import name, nsURI, nsPrefix, eClass
-from .scemlmodel import AbstractionLevel, JoinPolicy, LaneChangeDirection, ComparisonRule, CloudState, PrecipitationType, ActorKind, NamedElement, Graph, Scenario, Library, Flow, GraphElement, DiagramPosition, RootNode, EndNode, ModuleElement, ActionNode, Maneuver, LongitudinalManeuver, LateralManeuver, CompositeManeuver, Condition, Accelerate, Decelerate, Stop, KeepVelocity, DriveDistance, Follow, Approach, LaneChange, RoutedManeuver, TurnLeft, TurnRight, Cross, FollowTrajectory, Overtake, InLocationRadius, InVehicleRadius, TimeElapsed, SpeedCondition, TimeToCollision, OpaqueAction, JoiningPolicy, JoinAllFinished, JoinOneFinished, ModuleDefinition, InPort, OutPort, ModuleUse, RoleBinding, ParameterOverride, ModuleParameter, Participant, ActorRole, AllowedKind, Actor, Pedestrian, TwoWheeler, Bicycle, Motorcycle, FourWheeler, Car, Van, Truck, Bus, Position, WorldPosition, LanePosition, Environment, ParameterValue, Value, Range, Distribution, UniformDistribution, NormalDistribution, DiscreteDistribution, WeightedValue, ParameterRef, RelativeDistanceType, CoordinateSystem, TraveledDistance
+from .scemlmodel import AbstractionLevel, JoinPolicy, LaneChangeDirection, ComparisonRule, CloudState, PrecipitationType, ActorKind, NamedElement, Graph, Scenario, Library, Flow, GraphElement, DiagramPosition, RootNode, EndNode, ModuleElement, ActionNode, Maneuver, LongitudinalManeuver, LateralManeuver, CompositeManeuver, Condition, Accelerate, Decelerate, Stop, KeepVelocity, DriveDistance, Follow, Approach, LaneChange, RoutedManeuver, TurnLeft, TurnRight, Cross, FollowTrajectory, Overtake, InLocationRadius, InVehicleRadius, TimeElapsed, SpeedCondition, TimeToCollision, OpaqueAction, JoiningPolicy, JoinAllFinished, JoinOneFinished, ModuleDefinition, InPort, OutPort, ModuleUse, RoleBinding, ParameterOverride, ModuleParameter, Participant, ActorRole, AllowedKind, Actor, Pedestrian, TwoWheeler, Bicycle, Motorcycle, FourWheeler, Car, Van, Truck, Bus, Position, WorldPosition, LanePosition, Environment, ParameterValue, Value, Range, Distribution, UniformDistribution, NormalDistribution, DiscreteDistribution, WeightedValue, ParameterRef, RelativeDistanceType, CoordinateSystem, TraveledDistance, TimeHeadway
 
 
 from . import scemlmodel
 
 __all__ = ['AbstractionLevel', 'JoinPolicy', 'LaneChangeDirection', 'ComparisonRule', 'CloudState', 'PrecipitationType', 'ActorKind', 'NamedElement', 'Graph', 'Scenario', 'Library', 'Flow', 'GraphElement', 'DiagramPosition', 'RootNode', 'EndNode', 'ModuleElement', 'ActionNode', 'Maneuver', 'LongitudinalManeuver', 'LateralManeuver', 'CompositeManeuver', 'Condition', 'Accelerate', 'Decelerate', 'Stop', 'KeepVelocity', 'DriveDistance', 'Follow', 'Approach', 'LaneChange', 'RoutedManeuver', 'TurnLeft', 'TurnRight', 'Cross', 'FollowTrajectory', 'Overtake', 'InLocationRadius', 'InVehicleRadius', 'TimeElapsed', 'SpeedCondition',
-           'TimeToCollision', 'OpaqueAction', 'JoiningPolicy', 'JoinAllFinished', 'JoinOneFinished', 'ModuleDefinition', 'InPort', 'OutPort', 'ModuleUse', 'RoleBinding', 'ParameterOverride', 'ModuleParameter', 'Participant', 'ActorRole', 'AllowedKind', 'Actor', 'Pedestrian', 'TwoWheeler', 'Bicycle', 'Motorcycle', 'FourWheeler', 'Car', 'Van', 'Truck', 'Bus', 'Position', 'WorldPosition', 'LanePosition', 'Environment', 'ParameterValue', 'Value', 'Range', 'Distribution', 'UniformDistribution', 'NormalDistribution', 'DiscreteDistribution', 'WeightedValue', 'ParameterRef', 'RelativeDistanceType', 'CoordinateSystem', 'TraveledDistance']
+           'TimeToCollision', 'OpaqueAction', 'JoiningPolicy', 'JoinAllFinished', 'JoinOneFinished', 'ModuleDefinition', 'InPort', 'OutPort', 'ModuleUse', 'RoleBinding', 'ParameterOverride', 'ModuleParameter', 'Participant', 'ActorRole', 'AllowedKind', 'Actor', 'Pedestrian', 'TwoWheeler', 'Bicycle', 'Motorcycle', 'FourWheeler', 'Car', 'Van', 'Truck', 'Bus', 'Position', 'WorldPosition', 'LanePosition', 'Environment', 'ParameterValue', 'Value', 'Range', 'Distribution', 'UniformDistribution', 'NormalDistribution', 'DiscreteDistribution', 'WeightedValue', 'ParameterRef', 'RelativeDistanceType', 'CoordinateSystem', 'TraveledDistance', 'TimeHeadway']
 
 eSubpackages = []
 eSuperPackage = None
@@ -72,6 +72,7 @@ Environment.fogVisualRange.eType = ParameterValue
 DiscreteDistribution.options.eType = WeightedValue
 ParameterRef.parameter.eType = ModuleParameter
 TraveledDistance.distance.eType = ParameterValue
+TimeHeadway.time.eType = ParameterValue
 Flow.source.eType = GraphElement
 Flow.target.eType = GraphElement
 GraphElement.incoming.eType = Flow

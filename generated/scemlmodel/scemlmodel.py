@@ -896,6 +896,38 @@ class TraveledDistance(Condition):
             self.distance = distance
 
 
+class TimeHeadway(Condition):
+    """Compares by rule the time headway to the target actor with time: the distance to the target over the reference actor's own speed (OpenSCENARIO's TimeHeadwayCondition); undefined, so never holding, while the target is behind or the actor stands."""
+    rule = EAttribute(eType=ComparisonRule, unique=True, derived=False,
+                      changeable=True, default_value=ComparisonRule.lessThan)
+    freespace = EAttribute(eType=EBoolean, unique=True, derived=False,
+                           changeable=True, default_value=True)
+    relativeDistanceType = EAttribute(eType=RelativeDistanceType, unique=True,
+                                      derived=False, changeable=True, default_value=RelativeDistanceType.euclidean)
+    coordinateSystem = EAttribute(eType=CoordinateSystem, unique=True,
+                                  derived=False, changeable=True, default_value=CoordinateSystem.entity)
+    time = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, rule=None, time=None, freespace=None, relativeDistanceType=None, coordinateSystem=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if rule is not None:
+            self.rule = rule
+
+        if freespace is not None:
+            self.freespace = freespace
+
+        if relativeDistanceType is not None:
+            self.relativeDistanceType = relativeDistanceType
+
+        if coordinateSystem is not None:
+            self.coordinateSystem = coordinateSystem
+
+        if time is not None:
+            self.time = time
+
+
 class Accelerate(LongitudinalManeuver):
 
     targetSpeed = EReference(ordered=True, unique=True, containment=True, derived=False)

@@ -70,6 +70,7 @@ VIEWS: dict[str, tuple[str, ...]] = {
         "SpeedCondition",
         "TimeToCollision",
         "TraveledDistance",
+        "TimeHeadway",
         "OpaqueAction",
         "Participant",
         "Position",

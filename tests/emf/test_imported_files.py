@@ -52,3 +52,14 @@ def test_emf_reads_and_writes_an_imported_traveled_distance(emf: Harness, tmp_pa
     result = emf.run("roundtrip", ECORE, source, out, Path("traveled.xmi"))
     assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
     assert differences(io.load(source / "traveled.xmi").root, io.load(out / "traveled.xmi").root) == []
+
+
+def test_emf_keeps_how_an_imported_time_headway_measures(emf: Harness, tmp_path: Path) -> None:
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    import_to_file(FILES / "headway-measured.xosc", source / "headway.xmi")
+    assert 'coordinateSystem="lane"' in (source / "headway.xmi").read_text()
+    result = emf.run("roundtrip", ECORE, source, out, Path("headway.xmi"))
+    assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+    assert differences(io.load(source / "headway.xmi").root, io.load(out / "headway.xmi").root) == []

@@ -17,6 +17,7 @@ from sceml.importer import import_file
 
 FILES = Path(__file__).parent / "files"
 TTC = FILES / "ttc-measured.xosc"
+HEADWAY = FILES / "headway-measured.xosc"
 MEASURE = ("value", "freespace", "rule", "relativeDistanceType", "coordinateSystem")
 
 
@@ -41,31 +42,63 @@ def test_a_measured_time_to_collision_is_mapped_not_opaque() -> None:
     assert ttc.time.value == 2.5
 
 
-@pytest.mark.parametrize("version", ("1.1", "1.2", "1.3"))
-def test_a_measured_time_to_collision_exports_as_it_was_read(
-    version: str, tmp_path: Path, same
-) -> None:
-    first = import_file(TTC)
-    exported = tmp_path / "ttc.xosc"
-    export_to_file(first.scenario, exported, version=version, source_path=TTC)
-    assert schema.validate_tree(schema.parse_file(exported)) == []
-    original = _attributes(TTC, "TimeToCollisionCondition")
-    assert original == [
+#: Each hand-written file, its condition element and the measure it was written with.
+WRITTEN = {
+    "ttc": (
+        TTC,
+        "TimeToCollisionCondition",
         {
             "value": "$HeadwayTime",
             "freespace": "false",
             "rule": "lessThan",
             "relativeDistanceType": "longitudinal",
             "coordinateSystem": "entity",
-        }
-    ]
-    written = _attributes(exported, "TimeToCollisionCondition")
-    assert written == [{**original[0], "value": "2.5"}]
+        },
+    ),
+    "headway": (
+        HEADWAY,
+        "TimeHeadwayCondition",
+        {
+            "value": "1.2",
+            "freespace": "true",
+            "rule": "lessThan",
+            "relativeDistanceType": "longitudinal",
+            "coordinateSystem": "lane",
+        },
+    ),
+}
+
+
+@pytest.mark.parametrize("version", ("1.1", "1.2", "1.3"))
+@pytest.mark.parametrize("which", sorted(WRITTEN))
+def test_a_measuring_condition_exports_as_it_was_read(
+    which: str, version: str, tmp_path: Path, same
+) -> None:
+    source, tag, measure = WRITTEN[which]
+    assert _attributes(source, tag) == [measure]
+    first = import_file(source)
+    assert first.report.counts()["opaque"] == 0
+    exported = tmp_path / "measured.xosc"
+    export_to_file(first.scenario, exported, version=version, source_path=source)
+    assert schema.validate_tree(schema.parse_file(exported)) == []
+    written = _attributes(exported, tag)
+    assert written == [{**measure, "value": "2.5" if which == "ttc" else "1.2"}]
     again = import_file(exported, allow=[FILES]).scenario
     # The export writes the default environment where the file had none: not this test's matter.
     for scenario in (first.scenario, again):
         graph.root_node(scenario).environment = None
     same(first.scenario, again)
+
+
+def test_a_measured_time_headway_is_mapped_with_its_target() -> None:
+    (headway,) = [
+        n for n in import_file(HEADWAY).scenario.nodes if n.eClass.name == "TimeHeadway"
+    ]
+    assert (headway.referenceActor.name, headway.targetActor.name) == ("Target", "Ego")
+    assert headway.freespace is True
+    assert headway.relativeDistanceType.name == "longitudinal"
+    assert headway.coordinateSystem.name == "lane"
+    assert (headway.rule.name, headway.time.value) == ("lessThan", 1.2)
 
 
 def test_openscenario_1_0_cannot_say_a_longitudinal_time_to_collision(tmp_path: Path) -> None:

@@ -51,6 +51,19 @@ def test_the_palette_offers_traveled_distance_among_the_conditions() -> None:
     assert "TraveledDistance" in str(conditions)
 
 
+def test_a_time_headway_box_shows_its_measure() -> None:
+    b = ScenarioBuilder("labels", level="concrete")
+    ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0), speed=10.0)
+    lead = b.actor("Car", "lead", start=world(30.0, 0.0), speed=5.0)
+    node = b.add("TimeHeadway", ego, target=lead, time=1.5, coordinateSystem="road")
+    assert action_lines(node, Scope()) == [
+        "ego, target lead",
+        "measured: road coordinates",
+        "rule: lessThan",
+        "time: 1.5 s",
+    ]
+
+
 def test_a_traveled_distance_box_shows_its_distance() -> None:
     b = ScenarioBuilder("labels", level="concrete")
     ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0), speed=10.0)

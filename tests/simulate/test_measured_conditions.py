@@ -76,3 +76,26 @@ def test_traveled_distance_of_a_standing_actor_never_holds() -> None:
     traveled = b.add("TraveledDistance", ego, distance=1.0)
     b.chain(b.root, traveled, b.end)
     assert simulate(b.scenario).node(str(traveled.name)).finished is None
+
+
+def headway_run(lead_x: float, ego_speed: float, **measure: object) -> float | None:
+    """Ego at `ego_speed` from x = 0, the lead standing at `lead_x`: when `headway < 2 s`
+    (ego to the lead) finishes."""
+    b = ScenarioBuilder("headway", level="concrete", max_duration=6.0)
+    ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0, h=0.0), speed=ego_speed, **SIZE)
+    lead = b.actor("Car", "lead", start=world(lead_x, 0.0, h=0.0), speed=0.0, **SIZE)
+    headway = b.add("TimeHeadway", ego, target=lead, time=2.0, rule="lessThan", **measure)
+    b.chain(b.root, headway, b.end)
+    return simulate(b.scenario).node(str(headway.name)).finished
+
+
+def test_time_headway_is_the_distance_over_the_actor_speed() -> None:
+    # 60.25 - 4 = 56.25 m between the boxes at 10 m/s: below 20 m (2 s) after 3.625 s.
+    assert headway_run(60.25, 10.0) == pytest.approx(3.65)
+    # Between the centres: 60.25 m, below 20 m after 4.025 s.
+    assert headway_run(60.25, 10.0, freespace=False) == pytest.approx(4.05)
+
+
+def test_time_headway_to_a_target_behind_never_holds() -> None:
+    # The lead is 30 m behind: undefined, though 26 m at 20 m/s would be 1.3 s.
+    assert headway_run(-30.0, 20.0) is None

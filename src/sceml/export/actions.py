@@ -368,6 +368,22 @@ def plan_traveled(ctx: Context, node: scm.TraveledDistance, groups: list[Group])
     return _marker(ctx, node, with_extra(groups, check), entity)
 
 
+@planner("TimeHeadway")
+def plan_headway(ctx: Context, node: scm.TimeHeadway, groups: list[Group]) -> Plan:
+    """A marker on TimeHeadwayCondition towards the target actor, measured as the node says."""
+    name = ctx.event_names[node]
+    data = {
+        "entity": ctx.entity(node.referenceActor),
+        "target": ctx.entity(node.targetActor),
+        "value": ctx.values.text(node, "time"),
+        "rule": node.rule.name,
+        "freespace": "true" if node.freespace else "false",
+        **measured_along(node),
+    }
+    check = Condition(f"{name}_headway", "headway", data)
+    return _marker(ctx, node, with_extra(groups, check), ctx.entity(node.referenceActor))
+
+
 def measured_along(node: Any) -> dict[str, str]:
     """The relativeDistanceType and coordinateSystem attributes of a measuring condition, only
     where they differ from OpenSCENARIO's defaults (euclidean, entity) so that files that never

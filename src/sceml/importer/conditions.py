@@ -207,6 +207,28 @@ def _traveled(
     return _node(build, "TraveledDistance", actor, wanted, distance=number(test, "value"))
 
 
+@_maps("TimeHeadwayCondition")
+def _headway(
+    build: Build, test: etree._Element, actor: scm.Actor, wanted: str
+) -> scm.ActionNode | str:
+    rule = RULES.get(str(test.get("rule")))
+    if rule is None:
+        return f"the rule {test.get('rule')} has no SceML form"
+    if rule[1]:
+        build.report.add(
+            "guessed", f"{wanted}: {test.get('rule')} read as {rule[0]}", build.where(test)
+        )
+    measure = measure_of(test, wanted)
+    if isinstance(measure, str):
+        return measure
+    node = _node(build, "TimeHeadway", actor, wanted, time=number(test, "value"))
+    node.rule = scm.ComparisonRule.getEEnumLiteral(rule[0])
+    node.targetActor = build.actor(test.get("entityRef"), test)
+    for feature, value in measure.items():
+        node.eSet(feature, value)
+    return node
+
+
 #: OpenSCENARIO's relativeDistanceType values as SceML's RelativeDistanceType literals
 #: (cartesianDistance is 1.0's name, deprecated in 1.1, for the same straight line).
 DISTANCE_TYPES = {

@@ -169,6 +169,15 @@ def traveled_reached(odometer: float, distance: float) -> bool:
     return odometer >= distance
 
 
+def time_headway(at: Separation, freespace: bool, kind: str, speed: float) -> float | None:
+    """The time headway a player measures (esmini 3.6, `TrigByTimeHeadway`): the measured
+    distance to the target over the actor's own speed. None when undefined: the target
+    behind, or the actor standing or reversing."""
+    if at.ahead < 0 or speed < 1e-10:
+        return None
+    return measured_distance(at, freespace, kind) / speed
+
+
 def time_to_collision(
     free_distance: float,
     velocity: tuple[float, float],

@@ -122,6 +122,22 @@ def _frame_note(node: EObject, world: World) -> None:
         )
 
 
+@kind("TimeHeadway")
+def time_headway(node: EObject, world: World) -> Test:
+    actor = world.actor(node.referenceActor, str(node.name))
+    other = world.actor(node.targetActor, str(node.name))
+    threshold = concrete(node, "time")
+    freespace, measure = bool(node.freespace), node.relativeDistanceType.name
+    _frame_note(node, world)
+
+    def holds(w: World) -> bool:
+        headway = meaning.time_headway(separation(actor, other), freespace, measure, actor.speed)
+        # Undefined (target behind, standing): players hold no rule then.
+        return headway is not None and _compare(node.rule, headway, threshold, None)
+
+    return holds
+
+
 @kind("TimeToCollision")
 def time_to_collision(node: EObject, world: World) -> Test:
     actor = world.actor(node.referenceActor, str(node.name))

@@ -72,7 +72,7 @@ def actors_declared_here(node: scm.ActionNode, context: Context) -> Iterator[Fin
     ERROR,
     "ActionNode",
     "kinds that act relative to another actor (Follow, Approach, Overtake, InVehicleRadius, "
-    "TimeToCollision) have a target actor",
+    "TimeToCollision, TimeHeadway) have a target actor",
 )
 def target_actor_where_needed(node: scm.ActionNode, context: Context) -> Iterator[Finding]:
     if catalog.needs_target(node.eClass.name) and node.targetActor is None:

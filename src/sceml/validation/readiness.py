@@ -123,7 +123,7 @@ def kinds_exportable(scenario: scm.Scenario, context: Context) -> Iterator[Findi
 @constraint(
     "SCEML-E008",
     ERROR,
-    ("TimeToCollision",),
+    ("TimeToCollision", "TimeHeadway"),
     "with a target OpenSCENARIO version or export profile given, every node's settings can be "
     "said in it (1.0 has no relativeDistanceType or coordinateSystem)",
 )
