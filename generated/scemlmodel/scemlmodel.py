@@ -32,6 +32,8 @@ RelativeDistanceType = EEnum('RelativeDistanceType', literals=[
 
 CoordinateSystem = EEnum('CoordinateSystem', literals=['entity', 'lane', 'road', 'trajectory'])
 
+LaneChangeShape = EEnum('LaneChangeShape', literals=['sinusoidal', 'linear', 'cubic', 'step'])
+
 
 @abstract
 class NamedElement(EObject, metaclass=MetaEClass):
@@ -1028,17 +1030,34 @@ class LaneChange(LateralManeuver):
 
     direction = EAttribute(eType=LaneChangeDirection, unique=True, derived=False,
                            changeable=True, default_value=LaneChangeDirection.left)
+    lanes = EAttribute(eType=EInt, unique=True, derived=False, changeable=True, default_value=1)
+    targetLane = EAttribute(eType=EIntegerObject, unique=True, derived=False, changeable=True)
+    shape = EAttribute(eType=LaneChangeShape, unique=True, derived=False,
+                       changeable=True, default_value=LaneChangeShape.sinusoidal)
     distance = EReference(ordered=True, unique=True, containment=True, derived=False)
+    targetOffset = EReference(ordered=True, unique=True, containment=True, derived=False)
 
-    def __init__(self, *, direction=None, distance=None, **kwargs):
+    def __init__(self, *, direction=None, distance=None, lanes=None, targetLane=None, targetOffset=None, shape=None, **kwargs):
 
         super().__init__(**kwargs)
 
         if direction is not None:
             self.direction = direction
 
+        if lanes is not None:
+            self.lanes = lanes
+
+        if targetLane is not None:
+            self.targetLane = targetLane
+
+        if shape is not None:
+            self.shape = shape
+
         if distance is not None:
             self.distance = distance
+
+        if targetOffset is not None:
+            self.targetOffset = targetOffset
 
 
 @abstract

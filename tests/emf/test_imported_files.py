@@ -63,3 +63,15 @@ def test_emf_keeps_how_an_imported_time_headway_measures(emf: Harness, tmp_path:
     result = emf.run("roundtrip", ECORE, source, out, Path("headway.xmi"))
     assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
     assert differences(io.load(source / "headway.xmi").root, io.load(out / "headway.xmi").root) == []
+
+
+def test_emf_keeps_an_imported_lane_change_target(emf: Harness, tmp_path: Path) -> None:
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    import_to_file(FILES / "lane-changes.xosc", source / "lanes.xmi")
+    written = (source / "lanes.xmi").read_text()
+    assert 'targetLane="-3"' in written and 'shape="cubic"' in written
+    result = emf.run("roundtrip", ECORE, source, out, Path("lanes.xmi"))
+    assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+    assert differences(io.load(source / "lanes.xmi").root, io.load(out / "lanes.xmi").root) == []

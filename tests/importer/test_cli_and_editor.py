@@ -81,7 +81,8 @@ def test_opaque_nodes_open_in_the_editor_and_are_not_in_the_palette(tmp_path: Pa
     session.open(output)
     view = session.view()
     opaque = [node for node in view["nodes"] if node["kind"] == "OpaqueAction"]
-    assert [node["look"] for node in opaque] == ["opaque", "opaque"]
+    # The LaneOffsetAction; its TraveledDistanceCondition maps to TraveledDistance.
+    assert [node["look"] for node in opaque] == ["opaque"]
     assert opaque[0]["lines"] == [
         "SideVehicle",
         "Action LaneOffsetAction",

@@ -69,3 +69,21 @@ def test_a_traveled_distance_box_shows_its_distance() -> None:
     ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0), speed=10.0)
     node = b.add("TraveledDistance", ego, distance=60.0)
     assert action_lines(node, Scope()) == ["ego", "distance: 60 m"]
+
+
+def test_a_lane_change_box_shows_its_target_lane_offset_and_shape() -> None:
+    b = ScenarioBuilder("labels", level="concrete")
+    ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0), speed=10.0)
+    lead = b.actor("Car", "lead", start=world(30.0, 0.0), speed=5.0)
+    plain = b.add("LaneChange", ego, direction="right")
+    assert action_lines(plain, Scope()) == ["ego", "direction: right"]
+    into = b.add("LaneChange", ego, target=lead, lanes=0, shape="cubic", targetOffset=0.5)
+    assert action_lines(into, Scope()) == [
+        "ego, target lead",
+        "direction: left",
+        "lanes: 0",
+        "shape: cubic",
+        "targetOffset: 0.5 m",
+    ]
+    absolute = b.add("LaneChange", ego, targetLane=-3, distance=40.0)
+    assert action_lines(absolute, Scope()) == ["ego", "targetLane: -3", "distance: 40 m"]

@@ -181,10 +181,22 @@ def plan_distance_keeping(ctx: Context, node: scm.ActionNode, groups: list[Group
 
 @planner("LaneChange")
 def plan_lane_change(ctx: Context, node: scm.LaneChange, groups: list[Group]) -> Plan:
-    """LaneChangeAction one lane to the left (+1) or right (-1) of the actor's own lane."""
+    """LaneChangeAction `lanes` lanes to the left (+) or right (-) of the actor's own lane or of
+    the target actor's, or into the absolute `targetLane`, shaped as the node says."""
     name = ctx.event_names[node]
     action = _lane_change(ctx, node, name, node.direction.name, ctx.values.text(node, "distance"))
-    return _single(ctx, node, groups, action)
+    data = dict(action.data)
+    count = int(node.lanes)
+    data["lanes"] = str(count if node.direction.name == "left" else -count)
+    if node.targetActor is not None:
+        data["entity"] = ctx.entity(node.targetActor)
+    if node.targetLane is not None:
+        data["absolute"] = str(node.targetLane)
+    if ctx.profile != "carla":
+        data["shape"] = node.shape.name
+    if ctx.values.raw(node, "targetOffset") != 0:
+        data["offset"] = ctx.values.text(node, "targetOffset")
+    return _single(ctx, node, groups, replace(action, data=data))
 
 
 def _lane_change(

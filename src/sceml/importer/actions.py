@@ -166,24 +166,22 @@ def _distance(
     return node
 
 
+#: OpenSCENARIO's dynamicsShape values, SceML's LaneChangeShape literals of the same names.
+SHAPES = ("sinusoidal", "linear", "cubic", "step")
+
+
 @_maps("PrivateAction/LateralAction/LaneChangeAction")
 def _lane_change(
     build: Build, request: Request, change: etree._Element, motion: Motion
 ) -> scm.ActionNode | str:
     relative = change.find("LaneChangeTarget/RelativeTargetLane")
-    if relative is None:
-        return "a change to an absolute lane has no SceML kind"
-    reference = build.actor(relative.get("entityRef"), relative)
-    lanes = lane_id(relative, "value")
-    direction: str | None = "left" if lanes > 0 else "right"
-    if reference is not request.actor or abs(lanes) != 1:
-        direction = _towards(request.actor, reference, lanes)
-        if direction is None:
-            return "a change by more than one lane, or to another actor's lane, has no SceML kind"
-        _guess(
-            build, request, f"the change into {reference.name}'s lane read as one lane {direction}"
-        )
+    absolute = change.find("LaneChangeTarget/AbsoluteTargetLane")
     dynamics = change.find("LaneChangeActionDynamics")
+    shape = "sinusoidal" if dynamics is None else dynamics.get("dynamicsShape", "sinusoidal")
+    if shape not in SHAPES:
+        return f"a lane change shaped {shape} has no SceML form"
+    if relative is None and absolute is None:
+        return "a lane change without a target lane has no SceML form"
     distance = None
     if dynamics is not None and dynamics.get("dynamicsDimension") == "distance":
         distance = number(dynamics, "value")
@@ -196,28 +194,20 @@ def _lane_change(
                 request,
                 f"the lane change's {dynamics.get('dynamicsDimension')} taken at {speed} m/s as {distance:g} m",
             )
-    node = _add(build, request, "LaneChange", distance=distance)
-    node.direction = scm.LaneChangeDirection.getEEnumLiteral(direction)
+    offset = number(change, "targetLaneOffset") if change.get("targetLaneOffset") else None
+    node = _add(build, request, "LaneChange", distance=distance, targetOffset=offset)
+    node.shape = scm.LaneChangeShape.getEEnumLiteral(shape)
+    if absolute is not None:
+        node.targetLane = lane_id(absolute, "value")
+        return node
+    assert relative is not None
+    reference = build.actor(relative.get("entityRef"), relative)
+    lanes = lane_id(relative, "value")
+    node.direction = scm.LaneChangeDirection.getEEnumLiteral("left" if lanes >= 0 else "right")
+    node.lanes = abs(lanes)
+    if reference is not request.actor:
+        node.targetActor = reference
     return node
-
-
-def _towards(actor: scm.Actor, reference: scm.Actor, lanes: int) -> str | None:
-    """left/right for a change into another actor's lane, from both start lanes on one road."""
-    mine, theirs = actor.startPosition, reference.startPosition
-    if (
-        lanes != 0
-        or not isinstance(mine, scm.LanePosition)
-        or not isinstance(theirs, scm.LanePosition)
-    ):
-        return None
-    if (
-        mine.roadId != theirs.roadId
-        or mine.laneId * theirs.laneId <= 0
-        or mine.laneId == theirs.laneId
-    ):
-        return None
-    # Lanes are numbered outwards from the centre line on both sides; the centre is on the left.
-    return "left" if abs(theirs.laneId) < abs(mine.laneId) else "right"
 
 
 @_maps("PrivateAction/RoutingAction/AcquirePositionAction")

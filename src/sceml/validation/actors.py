@@ -87,7 +87,7 @@ def target_actor_where_needed(node: scm.ActionNode, context: Context) -> Iterato
     source="engineer",
 )
 def target_actor_only_where_used(node: scm.ActionNode, context: Context) -> Iterator[Finding]:
-    if not catalog.needs_target(node.eClass.name) and node.targetActor is not None:
+    if not catalog.allows_target(node.eClass.name) and node.targetActor is not None:
         yield (
             node,
             f"{node.eClass.name} {node.name!r} does not use a target actor; "
