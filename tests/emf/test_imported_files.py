@@ -51,7 +51,9 @@ def test_emf_reads_and_writes_an_imported_traveled_distance(emf: Harness, tmp_pa
     assert "scemlmodel:TraveledDistance" in (source / "traveled.xmi").read_text()
     result = emf.run("roundtrip", ECORE, source, out, Path("traveled.xmi"))
     assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
-    assert differences(io.load(source / "traveled.xmi").root, io.load(out / "traveled.xmi").root) == []
+    assert (
+        differences(io.load(source / "traveled.xmi").root, io.load(out / "traveled.xmi").root) == []
+    )
 
 
 def test_emf_keeps_how_an_imported_time_headway_measures(emf: Harness, tmp_path: Path) -> None:
@@ -62,7 +64,9 @@ def test_emf_keeps_how_an_imported_time_headway_measures(emf: Harness, tmp_path:
     assert 'coordinateSystem="lane"' in (source / "headway.xmi").read_text()
     result = emf.run("roundtrip", ECORE, source, out, Path("headway.xmi"))
     assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
-    assert differences(io.load(source / "headway.xmi").root, io.load(out / "headway.xmi").root) == []
+    assert (
+        differences(io.load(source / "headway.xmi").root, io.load(out / "headway.xmi").root) == []
+    )
 
 
 def test_emf_keeps_an_imported_lane_change_target(emf: Harness, tmp_path: Path) -> None:

@@ -60,24 +60,28 @@ def test_the_lane_changes_export_as_they_were_read(version: str, tmp_path: Path,
     exported = tmp_path / "lane-changes.xosc"
     export_to_file(first.scenario, exported, version=version, source_path=LANE_CHANGES)
     assert schema.validate_tree(schema.parse_file(exported)) == []
-    assert _changes(exported) == _changes(LANE_CHANGES) == [
-        {
-            "offset": "0.5",
-            "shape": "cubic",
-            "distance": "40.0",
-            "target": "RelativeTargetLane",
-            "entity": "Ego",
-            "value": "0",
-        },
-        {
-            "offset": "0.0",
-            "shape": "linear",
-            "distance": "30.0",
-            "target": "AbsoluteTargetLane",
-            "entity": "None",
-            "value": "-3",
-        },
-    ]
+    assert (
+        _changes(exported)
+        == _changes(LANE_CHANGES)
+        == [
+            {
+                "offset": "0.5",
+                "shape": "cubic",
+                "distance": "40.0",
+                "target": "RelativeTargetLane",
+                "entity": "Ego",
+                "value": "0",
+            },
+            {
+                "offset": "0.0",
+                "shape": "linear",
+                "distance": "30.0",
+                "target": "AbsoluteTargetLane",
+                "entity": "None",
+                "value": "-3",
+            },
+        ]
+    )
     again = import_file(exported, allow=[FILES]).scenario
     # The export writes the default environment where the file had none: not this test's matter.
     for scenario in (first.scenario, again):

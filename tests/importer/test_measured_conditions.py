@@ -91,9 +91,7 @@ def test_a_measuring_condition_exports_as_it_was_read(
 
 
 def test_a_measured_time_headway_is_mapped_with_its_target() -> None:
-    (headway,) = [
-        n for n in import_file(HEADWAY).scenario.nodes if n.eClass.name == "TimeHeadway"
-    ]
+    (headway,) = [n for n in import_file(HEADWAY).scenario.nodes if n.eClass.name == "TimeHeadway"]
     assert (headway.referenceActor.name, headway.targetActor.name) == ("Target", "Ego")
     assert headway.freespace is True
     assert headway.relativeDistanceType.name == "longitudinal"

@@ -175,7 +175,9 @@ def test_settings_a_version_cannot_say() -> None:
     assert codes(b.scenario, osc_profile="carla") == {"SCEML-E008"}
     assert codes(b.scenario, osc_version="1.1") == set()
     assert codes(b.scenario) == set()
-    b.chain(b.root, b.add("TimeHeadway", ego, target=lead, time=1.0, coordinateSystem="lane"), b.end)
+    b.chain(
+        b.root, b.add("TimeHeadway", ego, target=lead, time=1.0, coordinateSystem="lane"), b.end
+    )
     assert {d.message.split(":")[-1] for d in validate(b.scenario, osc_version="1.0")} >= {
         " coordinateSystem lane needs OpenSCENARIO 1.1 or later (1.0 measures entity only)"
     }

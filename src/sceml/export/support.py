@@ -62,8 +62,7 @@ def unsupported_setting(node: object, version: str) -> str | None:
         held = getattr(node, feature, None)
         if held is not None and held.name != plain:
             return (
-                f"{feature} {held.name} needs OpenSCENARIO 1.1 or later "
-                f"(1.0 measures {plain} only)"
+                f"{feature} {held.name} needs OpenSCENARIO 1.1 or later (1.0 measures {plain} only)"
             )
     return None
 
