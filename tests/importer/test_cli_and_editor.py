@@ -22,7 +22,8 @@ def test_import_writes_the_scenario_and_prints_the_report(tmp_path: Path) -> Non
         cli, ["import", str(FILES / "cut-in.xosc"), "-o", str(output), "--report"]
     )
     assert result.exit_code == 0, result.output
-    assert "OpenSCENARIO 1.1; 11 mapped, 1 opaque, 3 guessed, 0 not represented" in result.output
+    # The change into the ego's lane is exact now (LaneChange's target actor), not a guess.
+    assert "OpenSCENARIO 1.1; 11 mapped, 1 opaque, 2 guessed, 0 not represented" in result.output
     assert (
         "line 99: CutInStartCondition: <Condition TimeHeadwayCondition entityRef=Target "
         "value=0.4 freespace=false alongRoute=true rule=greaterThan> kept verbatim" in result.output

@@ -2,7 +2,12 @@
 
 from __future__ import annotations
 
+import pytest
+
+import scemlmodel as scm
 from sceml.build import ScenarioBuilder, world
+from sceml.editor.errors import OperationError
+from sceml.editor.node_ops import attribute_value
 from sceml.render.labels import Scope, action_lines
 
 
@@ -87,3 +92,13 @@ def test_a_lane_change_box_shows_its_target_lane_offset_and_shape() -> None:
     ]
     absolute = b.add("LaneChange", ego, targetLane=-3, distance=40.0)
     assert action_lines(absolute, Scope()) == ["ego", "targetLane: -3", "distance: 40 m"]
+
+
+def test_the_editor_sets_a_lane_change_target_lane_from_its_text_field() -> None:
+    feature = scm.LaneChange.eClass.findEStructuralFeature
+    assert attribute_value(feature("targetLane"), "-3") == -3
+    assert attribute_value(feature("targetLane"), "") is None
+    assert attribute_value(feature("lanes"), 2) == 2
+    for wrong in ("two", True, 1.5):
+        with pytest.raises(OperationError, match="whole number"):
+            attribute_value(feature("lanes"), wrong)
