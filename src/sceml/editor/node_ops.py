@@ -174,16 +174,17 @@ def _integer(feature: EAttribute, value: object) -> int | None:
     optional = type_name(feature) == "EIntegerObject"
     if optional and (value is None or (isinstance(value, str) and not value.strip())):
         return None
+    number: int | None = None
     if isinstance(value, str):
         try:
-            value = int(value.strip())
+            number = int(value.strip())
         except ValueError:
-            value = None
-    require(
-        isinstance(value, int) and not isinstance(value, bool) and abs(value) < 2**31,
-        f"{feature.name} must be a whole number" + (" or empty" if optional else ""),
-    )
-    return int(value)  # type: ignore[arg-type]
+            number = None
+    elif isinstance(value, int) and not isinstance(value, bool):
+        number = value
+    wanted = f"{feature.name} must be a whole number" + (" or empty" if optional else "")
+    require(number is not None and abs(number) < 2**31, wanted)
+    return number
 
 
 def _check_name(ctx: EditContext, node: scm.GraphElement, value: object) -> None:
