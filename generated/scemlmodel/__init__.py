@@ -1,13 +1,13 @@
 
 from .scemlmodel import getEClassifier, eClassifiers
 from .scemlmodel import name, nsURI, nsPrefix, eClass
-from .scemlmodel import AbstractionLevel, JoinPolicy, LaneChangeDirection, ComparisonRule, CloudState, PrecipitationType, ActorKind, NamedElement, Graph, Scenario, Library, Flow, GraphElement, DiagramPosition, RootNode, EndNode, ModuleElement, ActionNode, Maneuver, LongitudinalManeuver, LateralManeuver, CompositeManeuver, Condition, Accelerate, Decelerate, Stop, KeepVelocity, DriveDistance, Follow, Approach, LaneChange, RoutedManeuver, TurnLeft, TurnRight, Cross, FollowTrajectory, Overtake, InLocationRadius, InVehicleRadius, TimeElapsed, SpeedCondition, TimeToCollision, OpaqueAction, JoiningPolicy, JoinAllFinished, JoinOneFinished, ModuleDefinition, InPort, OutPort, ModuleUse, RoleBinding, ParameterOverride, ModuleParameter, Participant, ActorRole, AllowedKind, Actor, Pedestrian, TwoWheeler, Bicycle, Motorcycle, FourWheeler, Car, Van, Truck, Bus, Position, WorldPosition, LanePosition, RoadPosition, RelativeLanePosition, RelativeRoadPosition, RelativeObjectPosition, RelativeWorldPosition, Environment, ParameterValue, Value, Range, Distribution, UniformDistribution, NormalDistribution, DiscreteDistribution, WeightedValue, ParameterRef
+from .scemlmodel import AbstractionLevel, JoinPolicy, LaneChangeDirection, ComparisonRule, CloudState, PrecipitationType, ActorKind, NamedElement, Graph, Scenario, Library, Flow, GraphElement, DiagramPosition, RootNode, EndNode, ModuleElement, ActionNode, Maneuver, LongitudinalManeuver, LateralManeuver, CompositeManeuver, Condition, Accelerate, Decelerate, Stop, KeepVelocity, DriveDistance, Follow, Approach, LaneChange, RoutedManeuver, TurnLeft, TurnRight, Cross, FollowTrajectory, Overtake, InLocationRadius, InVehicleRadius, TimeElapsed, SpeedCondition, TimeToCollision, OpaqueAction, JoiningPolicy, JoinAllFinished, JoinOneFinished, ModuleDefinition, InPort, OutPort, ModuleUse, RoleBinding, ParameterOverride, ModuleParameter, Participant, ActorRole, AllowedKind, Actor, Pedestrian, TwoWheeler, Bicycle, Motorcycle, FourWheeler, Car, Van, Truck, Bus, Position, WorldPosition, LanePosition, RoadPosition, RelativeLanePosition, RelativeRoadPosition, RelativeObjectPosition, RelativeWorldPosition, Environment, ParameterValue, Value, Range, Distribution, UniformDistribution, NormalDistribution, DiscreteDistribution, WeightedValue, ParameterRef, RelativeDistanceType, CoordinateSystem, TraveledDistance, TimeHeadway, LaneChangeShape
 
 
 from . import scemlmodel
 
-__all__ = ['AbstractionLevel', 'JoinPolicy', 'LaneChangeDirection', 'ComparisonRule', 'CloudState', 'PrecipitationType', 'ActorKind', 'NamedElement', 'Graph', 'Scenario', 'Library', 'Flow', 'GraphElement', 'DiagramPosition', 'RootNode', 'EndNode', 'ModuleElement', 'ActionNode', 'Maneuver', 'LongitudinalManeuver', 'LateralManeuver', 'CompositeManeuver', 'Condition', 'Accelerate', 'Decelerate', 'Stop', 'KeepVelocity', 'DriveDistance', 'Follow', 'Approach', 'LaneChange', 'RoutedManeuver', 'TurnLeft', 'TurnRight', 'Cross', 'FollowTrajectory', 'Overtake', 'InLocationRadius', 'InVehicleRadius', 'TimeElapsed', 'SpeedCondition', 'TimeToCollision',
-           'OpaqueAction', 'JoiningPolicy', 'JoinAllFinished', 'JoinOneFinished', 'ModuleDefinition', 'InPort', 'OutPort', 'ModuleUse', 'RoleBinding', 'ParameterOverride', 'ModuleParameter', 'Participant', 'ActorRole', 'AllowedKind', 'Actor', 'Pedestrian', 'TwoWheeler', 'Bicycle', 'Motorcycle', 'FourWheeler', 'Car', 'Van', 'Truck', 'Bus', 'Position', 'WorldPosition', 'LanePosition', 'RoadPosition', 'RelativeLanePosition', 'RelativeRoadPosition', 'RelativeObjectPosition', 'RelativeWorldPosition', 'Environment', 'ParameterValue', 'Value', 'Range', 'Distribution', 'UniformDistribution', 'NormalDistribution', 'DiscreteDistribution', 'WeightedValue', 'ParameterRef']
+__all__ = ['AbstractionLevel', 'JoinPolicy', 'LaneChangeDirection', 'ComparisonRule', 'CloudState', 'PrecipitationType', 'ActorKind', 'NamedElement', 'Graph', 'Scenario', 'Library', 'Flow', 'GraphElement', 'DiagramPosition', 'RootNode', 'EndNode', 'ModuleElement', 'ActionNode', 'Maneuver', 'LongitudinalManeuver', 'LateralManeuver', 'CompositeManeuver', 'Condition', 'Accelerate', 'Decelerate', 'Stop', 'KeepVelocity', 'DriveDistance', 'Follow', 'Approach', 'LaneChange', 'RoutedManeuver', 'TurnLeft', 'TurnRight', 'Cross', 'FollowTrajectory', 'Overtake', 'InLocationRadius', 'InVehicleRadius', 'TimeElapsed', 'SpeedCondition', 'TimeToCollision', 'OpaqueAction', 'JoiningPolicy', 'JoinAllFinished',
+           'JoinOneFinished', 'ModuleDefinition', 'InPort', 'OutPort', 'ModuleUse', 'RoleBinding', 'ParameterOverride', 'ModuleParameter', 'Participant', 'ActorRole', 'AllowedKind', 'Actor', 'Pedestrian', 'TwoWheeler', 'Bicycle', 'Motorcycle', 'FourWheeler', 'Car', 'Van', 'Truck', 'Bus', 'Position', 'WorldPosition', 'LanePosition', 'RoadPosition', 'RelativeLanePosition', 'RelativeRoadPosition', 'RelativeObjectPosition', 'RelativeWorldPosition', 'Environment', 'ParameterValue', 'Value', 'Range', 'Distribution', 'UniformDistribution', 'NormalDistribution', 'DiscreteDistribution', 'WeightedValue', 'ParameterRef', 'RelativeDistanceType', 'CoordinateSystem', 'TraveledDistance', 'TimeHeadway', 'LaneChangeShape']
 
 eSubpackages = []
 eSuperPackage = None
@@ -34,6 +34,7 @@ DriveDistance.speed.eType = ParameterValue
 Follow.distance.eType = ParameterValue
 Approach.distance.eType = ParameterValue
 LaneChange.distance.eType = ParameterValue
+LaneChange.targetOffset.eType = ParameterValue
 RoutedManeuver.destination.eType = Position
 RoutedManeuver.tolerance.eType = ParameterValue
 FollowTrajectory.waypoints.eType = Position
@@ -89,6 +90,8 @@ Environment.precipitationIntensity.eType = ParameterValue
 Environment.fogVisualRange.eType = ParameterValue
 DiscreteDistribution.options.eType = WeightedValue
 ParameterRef.parameter.eType = ModuleParameter
+TraveledDistance.distance.eType = ParameterValue
+TimeHeadway.time.eType = ParameterValue
 Flow.source.eType = GraphElement
 Flow.target.eType = GraphElement
 GraphElement.incoming.eType = Flow
@@ -96,8 +99,8 @@ GraphElement.incoming.eOpposite = Flow.target
 GraphElement.outgoing.eType = Flow
 GraphElement.outgoing.eOpposite = Flow.source
 
-otherClassifiers = [AbstractionLevel, JoinPolicy, LaneChangeDirection,
-                    ComparisonRule, CloudState, PrecipitationType, ActorKind]
+otherClassifiers = [AbstractionLevel, JoinPolicy, LaneChangeDirection, ComparisonRule, CloudState,
+                    PrecipitationType, ActorKind, RelativeDistanceType, CoordinateSystem, LaneChangeShape]
 
 for classif in otherClassifiers:
     eClassifiers[classif.name] = classif

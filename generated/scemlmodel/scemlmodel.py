@@ -27,6 +27,13 @@ PrecipitationType = EEnum('PrecipitationType', literals=['dry', 'rain', 'snow'])
 ActorKind = EEnum('ActorKind', literals=[
                   'Pedestrian', 'TwoWheeler', 'Bicycle', 'Motorcycle', 'FourWheeler', 'Car', 'Van', 'Truck', 'Bus'])
 
+RelativeDistanceType = EEnum('RelativeDistanceType', literals=[
+                             'euclidean', 'longitudinal', 'lateral'])
+
+CoordinateSystem = EEnum('CoordinateSystem', literals=['entity', 'lane', 'road', 'trajectory'])
+
+LaneChangeShape = EEnum('LaneChangeShape', literals=['sinusoidal', 'linear', 'cubic', 'step'])
+
 
 @abstract
 class NamedElement(EObject, metaclass=MetaEClass):
@@ -971,14 +978,73 @@ class TimeToCollision(Condition):
 
     rule = EAttribute(eType=ComparisonRule, unique=True, derived=False,
                       changeable=True, default_value=ComparisonRule.lessThan)
+    freespace = EAttribute(eType=EBoolean, unique=True, derived=False,
+                           changeable=True, default_value=True)
+    relativeDistanceType = EAttribute(eType=RelativeDistanceType, unique=True,
+                                      derived=False, changeable=True, default_value=RelativeDistanceType.euclidean)
+    coordinateSystem = EAttribute(eType=CoordinateSystem, unique=True,
+                                  derived=False, changeable=True, default_value=CoordinateSystem.entity)
     time = EReference(ordered=True, unique=True, containment=True, derived=False)
 
-    def __init__(self, *, rule=None, time=None, **kwargs):
+    def __init__(self, *, rule=None, time=None, freespace=None, relativeDistanceType=None, coordinateSystem=None, **kwargs):
 
         super().__init__(**kwargs)
 
         if rule is not None:
             self.rule = rule
+
+        if freespace is not None:
+            self.freespace = freespace
+
+        if relativeDistanceType is not None:
+            self.relativeDistanceType = relativeDistanceType
+
+        if coordinateSystem is not None:
+            self.coordinateSystem = coordinateSystem
+
+        if time is not None:
+            self.time = time
+
+
+class TraveledDistance(Condition):
+    """Holds once the reference actor's odometer reaches the distance: every metre it has moved since the simulation started, whichever way (OpenSCENARIO's TraveledDistanceCondition), not since the node's activation."""
+    distance = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, distance=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if distance is not None:
+            self.distance = distance
+
+
+class TimeHeadway(Condition):
+    """Compares by rule the time headway to the target actor with time: the distance to the target over the reference actor's own speed (OpenSCENARIO's TimeHeadwayCondition); undefined, so never holding, while the target is behind or the actor stands."""
+    rule = EAttribute(eType=ComparisonRule, unique=True, derived=False,
+                      changeable=True, default_value=ComparisonRule.lessThan)
+    freespace = EAttribute(eType=EBoolean, unique=True, derived=False,
+                           changeable=True, default_value=True)
+    relativeDistanceType = EAttribute(eType=RelativeDistanceType, unique=True,
+                                      derived=False, changeable=True, default_value=RelativeDistanceType.euclidean)
+    coordinateSystem = EAttribute(eType=CoordinateSystem, unique=True,
+                                  derived=False, changeable=True, default_value=CoordinateSystem.entity)
+    time = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, rule=None, time=None, freespace=None, relativeDistanceType=None, coordinateSystem=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if rule is not None:
+            self.rule = rule
+
+        if freespace is not None:
+            self.freespace = freespace
+
+        if relativeDistanceType is not None:
+            self.relativeDistanceType = relativeDistanceType
+
+        if coordinateSystem is not None:
+            self.coordinateSystem = coordinateSystem
 
         if time is not None:
             self.time = time
@@ -1084,17 +1150,34 @@ class LaneChange(LateralManeuver):
 
     direction = EAttribute(eType=LaneChangeDirection, unique=True, derived=False,
                            changeable=True, default_value=LaneChangeDirection.left)
+    lanes = EAttribute(eType=EInt, unique=True, derived=False, changeable=True, default_value=1)
+    targetLane = EAttribute(eType=EIntegerObject, unique=True, derived=False, changeable=True)
+    shape = EAttribute(eType=LaneChangeShape, unique=True, derived=False,
+                       changeable=True, default_value=LaneChangeShape.sinusoidal)
     distance = EReference(ordered=True, unique=True, containment=True, derived=False)
+    targetOffset = EReference(ordered=True, unique=True, containment=True, derived=False)
 
-    def __init__(self, *, direction=None, distance=None, **kwargs):
+    def __init__(self, *, direction=None, distance=None, lanes=None, targetLane=None, targetOffset=None, shape=None, **kwargs):
 
         super().__init__(**kwargs)
 
         if direction is not None:
             self.direction = direction
 
+        if lanes is not None:
+            self.lanes = lanes
+
+        if targetLane is not None:
+            self.targetLane = targetLane
+
+        if shape is not None:
+            self.shape = shape
+
         if distance is not None:
             self.distance = distance
+
+        if targetOffset is not None:
+            self.targetOffset = targetOffset
 
 
 @abstract

@@ -205,6 +205,13 @@ def needs_target(kind: EObject | EClass | type | str) -> bool:
     return _node_details(class_name(kind)).get("needsTarget") == "true"
 
 
+def allows_target(kind: EObject | EClass | type | str) -> bool:
+    """Whether the node kind uses a target actor when it has one (needed, or optional as a
+    LaneChange's relative to another actor's lane)."""
+    details = _node_details(class_name(kind))
+    return needs_target(kind) or details.get("optionalTarget") == "true"
+
+
 @cache
 def _node_details(name: str) -> dict[str, str]:
     return _inherited_annotation(name, NODE_ANNOTATION)

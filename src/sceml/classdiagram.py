@@ -69,6 +69,8 @@ VIEWS: dict[str, tuple[str, ...]] = {
         "TimeElapsed",
         "SpeedCondition",
         "TimeToCollision",
+        "TraveledDistance",
+        "TimeHeadway",
         "OpaqueAction",
         "Participant",
         "Position",

@@ -141,7 +141,7 @@ def test_spec_concepts_exist(package) -> None:
 def test_every_action_kind_has_category_complexity_and_typed_parameters() -> None:
     # OpaqueAction (what `sceml import` keeps verbatim) is no paper kind: category "opaque".
     kinds = [k for k in catalog.action_node_kinds() if k.__name__ != "OpaqueAction"]
-    assert len(kinds) == 18
+    assert len(kinds) == 20
     assert catalog.category("OpaqueAction") == "opaque"
     for kind in kinds:
         assert catalog.category(kind) in catalog.CATEGORIES, kind
@@ -161,7 +161,14 @@ def test_categories_follow_the_paper() -> None:
 
 def test_target_actor_kinds() -> None:
     needing = {k.__name__ for k in catalog.action_node_kinds() if catalog.needs_target(k)}
-    assert needing == {"Follow", "Approach", "Overtake", "InVehicleRadius", "TimeToCollision"}
+    assert needing == {
+        "Follow",
+        "Approach",
+        "Overtake",
+        "InVehicleRadius",
+        "TimeToCollision",
+        "TimeHeadway",
+    }
 
 
 def test_language_defaults_and_required_parameters() -> None:

@@ -59,3 +59,56 @@ def test_emf_reads_and_writes_relative_positions_naming_their_actors(
     lead = actors["Lead"].startPosition
     assert lead.eClass.name == "RelativeLanePosition" and lead.entity is actors["Ego"]
     assert (lead.dLane, lead.ds.value) == (1, 30.0)
+
+
+def test_emf_keeps_how_an_imported_time_to_collision_measures(emf: Harness, tmp_path: Path) -> None:
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    import_to_file(FILES / "ttc-measured.xosc", source / "ttc.xmi")
+    written = (source / "ttc.xmi").read_text()
+    assert 'freespace="false"' in written and 'relativeDistanceType="longitudinal"' in written
+    result = emf.run("roundtrip", ECORE, source, out, Path("ttc.xmi"))
+    assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+    from_emf = io.load(out / "ttc.xmi").root
+    assert differences(io.load(source / "ttc.xmi").root, from_emf) == []
+    (ttc,) = [n for n in from_emf.nodes if n.eClass.name == "TimeToCollision"]
+    assert (ttc.freespace, ttc.relativeDistanceType.name) == (False, "longitudinal")
+
+
+def test_emf_reads_and_writes_an_imported_traveled_distance(emf: Harness, tmp_path: Path) -> None:
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    import_to_file(FILES / "traveled-distance.xosc", source / "traveled.xmi")
+    assert "scemlmodel:TraveledDistance" in (source / "traveled.xmi").read_text()
+    result = emf.run("roundtrip", ECORE, source, out, Path("traveled.xmi"))
+    assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+    assert (
+        differences(io.load(source / "traveled.xmi").root, io.load(out / "traveled.xmi").root) == []
+    )
+
+
+def test_emf_keeps_how_an_imported_time_headway_measures(emf: Harness, tmp_path: Path) -> None:
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    import_to_file(FILES / "headway-measured.xosc", source / "headway.xmi")
+    assert 'coordinateSystem="lane"' in (source / "headway.xmi").read_text()
+    result = emf.run("roundtrip", ECORE, source, out, Path("headway.xmi"))
+    assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+    assert (
+        differences(io.load(source / "headway.xmi").root, io.load(out / "headway.xmi").root) == []
+    )
+
+
+def test_emf_keeps_an_imported_lane_change_target(emf: Harness, tmp_path: Path) -> None:
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    import_to_file(FILES / "lane-changes.xosc", source / "lanes.xmi")
+    written = (source / "lanes.xmi").read_text()
+    assert 'targetLane="-3"' in written and 'shape="cubic"' in written
+    result = emf.run("roundtrip", ECORE, source, out, Path("lanes.xmi"))
+    assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+    assert differences(io.load(source / "lanes.xmi").root, io.load(out / "lanes.xmi").root) == []

@@ -22,7 +22,8 @@ def test_import_writes_the_scenario_and_prints_the_report(tmp_path: Path) -> Non
         cli, ["import", str(FILES / "cut-in.xosc"), "-o", str(output), "--report"]
     )
     assert result.exit_code == 0, result.output
-    assert "OpenSCENARIO 1.1; 11 mapped, 1 opaque, 3 guessed, 0 not represented" in result.output
+    # The change into the ego's lane is exact now (LaneChange's target actor), not a guess.
+    assert "OpenSCENARIO 1.1; 11 mapped, 1 opaque, 2 guessed, 0 not represented" in result.output
     assert (
         "line 99: CutInStartCondition: <Condition TimeHeadwayCondition entityRef=Target "
         "value=0.4 freespace=false alongRoute=true rule=greaterThan> kept verbatim" in result.output
@@ -81,7 +82,8 @@ def test_opaque_nodes_open_in_the_editor_and_are_not_in_the_palette(tmp_path: Pa
     session.open(output)
     view = session.view()
     opaque = [node for node in view["nodes"] if node["kind"] == "OpaqueAction"]
-    assert [node["look"] for node in opaque] == ["opaque", "opaque"]
+    # The LaneOffsetAction; its TraveledDistanceCondition maps to TraveledDistance.
+    assert [node["look"] for node in opaque] == ["opaque"]
     assert opaque[0]["lines"] == [
         "SideVehicle",
         "Action LaneOffsetAction",

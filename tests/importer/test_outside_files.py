@@ -87,15 +87,14 @@ HAND_WRITTEN = {
             "JoinAllFinished",
             "OpaqueAction",
             "OpaqueAction",
-            # Between reference points (freespace="false"): SceML's is between the boxes, so it
-            # is kept as written rather than fire at another time.
-            "OpaqueAction",
             "RootNode",
             "Stop",
             "TimeElapsed",
             "TimeElapsed",
+            # Between reference points (freespace="false"), kept as the node's freespace.
+            "TimeToCollision",
         ],
-        {"Action VisibilityAction", "Condition TimeToCollisionCondition"},
+        {"Action VisibilityAction"},
     ),
     "follow-and-brake": (
         "1.2",
@@ -125,13 +124,14 @@ HAND_WRITTEN = {
             "JoinAllFinished",
             "LaneChange",
             "OpaqueAction",
-            "OpaqueAction",
             "RootNode",
             "SpeedCondition",
             "TimeElapsed",
             "TimeElapsed",
+            # The odometer since the start, as SceML's TraveledDistance counts.
+            "TraveledDistance",
         ],
-        {"Action LaneOffsetAction", "Condition TraveledDistanceCondition"},
+        {"Action LaneOffsetAction"},
     ),
 }
 
@@ -161,7 +161,8 @@ def test_cut_in_reads_parameters_expressions_catalog_and_geometry() -> None:
     assert target.startPosition.s.value == 25.0  # ${$EgoStart - 25}
     assert ego.length.value == 5.04  # from the vehicle catalog
     change = next(n for n in imported.scenario.nodes if isinstance(n, scm.LaneChange))
-    assert change.direction.name == "right"  # from lane -1 into the ego's lane -2
+    # Into the ego's lane (RelativeTargetLane Ego 0), not read as one lane to the right.
+    assert (change.targetActor.name, change.lanes) == ("Ego", 0)
     brake = next(n for n in imported.scenario.nodes if isinstance(n, scm.Decelerate))
     assert (brake.targetSpeed.value, brake.rate.value) == (15.0, 4.0)
     assert root.maxDuration.value == 30.0
@@ -190,7 +191,8 @@ def test_an_opaque_node_exports_back_verbatim(tmp_path: Path) -> None:
     text = back.read_text()
     assert '<LaneOffsetAction continuous="false">' in text
     assert '<AbsoluteTargetLaneOffset value="-0.8"/>' in text
-    assert '<TraveledDistanceCondition value="400"/>' in text
+    # The StopTrigger's TraveledDistance is a SceML kind now, written as a marker's condition.
+    assert '<TraveledDistanceCondition value="400.0"/>' in text
 
 
 # --- built with scenariogeneration ---------------------------------------------------------
@@ -411,12 +413,14 @@ def test_scenariogeneration_cut_in(version: int, tmp_path: Path) -> None:
         "Decelerate",
         "EndNode",
         "InVehicleRadius",
-        "OpaqueAction",
+        "LaneChange",
         "RootNode",
         "TimeElapsed",
     ]
-    # An absolute target lane has no SceML kind: kept, with its line.
-    assert opaque_tags(imported.scenario) == {"Action LaneChangeAction"}
+    # An absolute target lane is the LaneChange's targetLane.
+    assert opaque_tags(imported.scenario) == set()
+    change = next(n for n in imported.scenario.nodes if isinstance(n, scm.LaneChange))
+    assert change.targetLane is not None
     brake = next(n for n in imported.scenario.nodes if isinstance(n, scm.Decelerate))
     assert (brake.targetSpeed.value, brake.rate.value) == (15.0, 3.0)  # from 25 m/s
     round_trip(source, tmp_path, f"1.{version}")

@@ -161,6 +161,28 @@ def test_kinds_a_profile_cannot_export() -> None:
     assert codes(b.scenario) == set()
 
 
+def test_settings_a_version_cannot_say() -> None:
+    # OpenSCENARIO 1.0 has no relativeDistanceType: a longitudinal time to collision needs 1.1;
+    # the carla profile writes 1.0, so it refuses it too.
+    b, ego = scenario()
+    lead = b.actor("Car", "lead", start=lane(1, -1, 40.0))
+    b.chain(
+        b.root,
+        b.add("TimeToCollision", ego, target=lead, relativeDistanceType="longitudinal"),
+        b.end,
+    )
+    assert codes(b.scenario, osc_version="1.0") == {"SCEML-E008"}
+    assert codes(b.scenario, osc_profile="carla") == {"SCEML-E008"}
+    assert codes(b.scenario, osc_version="1.1") == set()
+    assert codes(b.scenario) == set()
+    b.chain(
+        b.root, b.add("TimeHeadway", ego, target=lead, time=1.0, coordinateSystem="lane"), b.end
+    )
+    assert {d.message.split(":")[-1] for d in validate(b.scenario, osc_version="1.0")} >= {
+        " coordinateSystem lane needs OpenSCENARIO 1.1 or later (1.0 measures entity only)"
+    }
+
+
 def test_library_internals_are_reported_in_the_library_file(tmp_path: Path) -> None:
     library = LibraryBuilder("L")
     module = library.module("Loose")

@@ -70,7 +70,9 @@ def feature_field(
         return None
     kind = type_name(feature)
     if kind == "Participant":
-        return {**base, "type": "actor", "value": _participant(held), "required": True}
+        # An optional target (a LaneChange's) may stay empty.
+        required = name != "targetActor" or catalog.needs_target(owner)
+        return {**base, "type": "actor", "value": _participant(held), "required": required}
     if kind == "ParameterValue":
         return {**base, **parameter_field(owner, name, held)}
     if kind == "Position" and feature.many:
@@ -120,7 +122,7 @@ def node_fields(node: EObject) -> list[dict[str, Any]]:
     # metamodel order (a stable sort keeps it).
     ordered = sorted(_features(node), key=lambda feature: _FIRST.get(feature.name, len(_FIRST)))
     for feature in ordered:
-        if feature.name == "targetActor" and not catalog.needs_target(node):
+        if feature.name == "targetActor" and not catalog.allows_target(node):
             continue
         made = feature_field(node, feature)
         if made is not None:

@@ -162,10 +162,31 @@ def attribute_value(feature: EAttribute, value: object) -> object:
     if type_name(feature) in ("EBoolean", "EBooleanObject"):
         require(isinstance(value, bool), f"{feature.name} must be true or false")
         return value
+    if type_name(feature) in ("EInt", "EIntegerObject"):
+        return _integer(feature, value)
     require(value is None or isinstance(value, str), f"{feature.name} must be text")
     if isinstance(value, str):
         check_text(str(feature.name), value)
     return value or None
+
+
+def _integer(feature: EAttribute, value: object) -> int | None:
+    """A whole number, given as a number or as the text of a text field (a lane id, a count);
+    empty unsets an optional one (EIntegerObject)."""
+    optional = type_name(feature) == "EIntegerObject"
+    if optional and (value is None or (isinstance(value, str) and not value.strip())):
+        return None
+    number: int | None = None
+    if isinstance(value, str):
+        try:
+            number = int(value.strip())
+        except ValueError:
+            number = None
+    elif isinstance(value, int) and not isinstance(value, bool):
+        number = value
+    wanted = f"{feature.name} must be a whole number" + (" or empty" if optional else "")
+    require(number is not None and abs(number) < 2**31, wanted)
+    return number
 
 
 def _check_name(ctx: EditContext, node: scm.GraphElement, value: object) -> None:

@@ -181,10 +181,22 @@ def plan_distance_keeping(ctx: Context, node: scm.ActionNode, groups: list[Group
 
 @planner("LaneChange")
 def plan_lane_change(ctx: Context, node: scm.LaneChange, groups: list[Group]) -> Plan:
-    """LaneChangeAction one lane to the left (+1) or right (-1) of the actor's own lane."""
+    """LaneChangeAction `lanes` lanes to the left (+) or right (-) of the actor's own lane or of
+    the target actor's, or into the absolute `targetLane`, shaped as the node says."""
     name = ctx.event_names[node]
     action = _lane_change(ctx, node, name, node.direction.name, ctx.values.text(node, "distance"))
-    return _single(ctx, node, groups, action)
+    data = dict(action.data)
+    count = int(node.lanes)
+    data["lanes"] = str(count if node.direction.name == "left" else -count)
+    if node.targetActor is not None:
+        data["entity"] = ctx.entity(node.targetActor)
+    if node.targetLane is not None:
+        data["absolute"] = str(node.targetLane)
+    if ctx.profile != "carla":
+        data["shape"] = node.shape.name
+    if ctx.values.raw(node, "targetOffset") != 0:
+        data["offset"] = ctx.values.text(node, "targetOffset")
+    return _single(ctx, node, groups, replace(action, data=data))
 
 
 def _lane_change(
@@ -357,6 +369,47 @@ def plan_speed_condition(ctx: Context, node: scm.SpeedCondition, groups: list[Gr
     return _marker(ctx, node, with_extra(groups, check), ctx.entity(node.referenceActor))
 
 
+@planner("TraveledDistance")
+def plan_traveled(ctx: Context, node: scm.TraveledDistance, groups: list[Group]) -> Plan:
+    """A marker on TraveledDistanceCondition: the actor's odometer since the simulation started
+    (players.meaning.TRAVELED_FROM), the same in every version and profile."""
+    name = ctx.event_names[node]
+    entity = ctx.entity(node.referenceActor)
+    data = {"entity": entity, "value": ctx.values.text(node, "distance")}
+    check = Condition(f"{name}_traveled", "traveled", data)
+    return _marker(ctx, node, with_extra(groups, check), entity)
+
+
+@planner("TimeHeadway")
+def plan_headway(ctx: Context, node: scm.TimeHeadway, groups: list[Group]) -> Plan:
+    """A marker on TimeHeadwayCondition towards the target actor, measured as the node says."""
+    name = ctx.event_names[node]
+    data = {
+        "entity": ctx.entity(node.referenceActor),
+        "target": ctx.entity(node.targetActor),
+        "value": ctx.values.text(node, "time"),
+        "rule": node.rule.name,
+        "freespace": "true" if node.freespace else "false",
+        **measured_along(node),
+    }
+    check = Condition(f"{name}_headway", "headway", data)
+    return _marker(ctx, node, with_extra(groups, check), ctx.entity(node.referenceActor))
+
+
+def measured_along(node: Any) -> dict[str, str]:
+    """The relativeDistanceType and coordinateSystem attributes of a measuring condition, only
+    where they differ from OpenSCENARIO's defaults (euclidean, entity) so that files that never
+    set them export as before (`support.unsupported_setting` refuses them for 1.0)."""
+    data = {}
+    kind = node.relativeDistanceType.name
+    if kind != "euclidean":
+        data["relative_distance_type"] = kind
+    system = node.coordinateSystem.name
+    if system != "entity":
+        data["coordinate_system"] = system
+    return data
+
+
 @planner("TimeToCollision")
 def plan_ttc(ctx: Context, node: scm.TimeToCollision, groups: list[Group]) -> Plan:
     """A marker on TimeToCollisionCondition towards the target actor."""
@@ -367,7 +420,8 @@ def plan_ttc(ctx: Context, node: scm.TimeToCollision, groups: list[Group]) -> Pl
         "value": ctx.values.text(node, "time"),
         "rule": node.rule.name,
     }
-    data["freespace"] = "true" if meaning.TTC_FREESPACE else "false"
+    data["freespace"] = "true" if node.freespace else "false"
+    data.update(measured_along(node))
     check = Condition(f"{name}_ttc", "ttc", data)
     return _marker(ctx, node, with_extra(groups, check), ctx.entity(node.referenceActor))
 

@@ -31,6 +31,7 @@ EXPORT_RULE_CODES = (
     "SCEML-E001",
     "SCEML-E002",
     "SCEML-E003",
+    "SCEML-E008",
     "SCEML-P002",
 )
 

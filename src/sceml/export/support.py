@@ -6,7 +6,13 @@ from .actions import PLANNERS
 from .profiles import CARLA_VERSION, PROFILES
 from .versions import VERSIONS
 
-__all__ = ["CARLA_VERSION", "PROFILES", "default_version", "unsupported_reason"]
+__all__ = [
+    "CARLA_VERSION",
+    "PROFILES",
+    "default_version",
+    "unsupported_reason",
+    "unsupported_setting",
+]
 
 #: Node kinds that never become events: the root starts the act, the end feeds the StopTrigger,
 #: module uses are flattened away before mapping.
@@ -40,6 +46,24 @@ def unsupported_reason(kind_name: str, version: str, profile: str = "generic") -
         return f"{kind_name} has no OpenSCENARIO mapping"
     if profile == "carla" and kind_name in CARLA_UNSUPPORTED:
         return f"{kind_name} is not supported by the carla profile: {CARLA_UNSUPPORTED[kind_name]}"
+    return None
+
+
+#: Node settings OpenSCENARIO 1.0 has no attribute for: (feature, the value 1.0 always means).
+#: 1.1 added relativeDistanceType and coordinateSystem to the measuring conditions.
+_SINCE_1_1 = (("relativeDistanceType", "euclidean"), ("coordinateSystem", "entity"))
+
+
+def unsupported_setting(node: object, version: str) -> str | None:
+    """Why a node's settings (not its kind) cannot be said in `version`; None when they can."""
+    if version != "1.0":
+        return None
+    for feature, plain in _SINCE_1_1:
+        held = getattr(node, feature, None)
+        if held is not None and held.name != plain:
+            return (
+                f"{feature} {held.name} needs OpenSCENARIO 1.1 or later (1.0 measures {plain} only)"
+            )
     return None
 
 

@@ -167,24 +167,22 @@ def _distance(
     return node
 
 
+#: OpenSCENARIO's dynamicsShape values, SceML's LaneChangeShape literals of the same names.
+SHAPES = ("sinusoidal", "linear", "cubic", "step")
+
+
 @_maps("PrivateAction/LateralAction/LaneChangeAction")
 def _lane_change(
     build: Build, request: Request, change: etree._Element, motion: Motion
 ) -> scm.ActionNode | str:
     relative = change.find("LaneChangeTarget/RelativeTargetLane")
-    if relative is None:
-        return "a change to an absolute lane has no SceML kind"
-    reference = build.actor(relative.get("entityRef"), relative)
-    lanes = lane_id(relative, "value")
-    direction: str | None = "left" if lanes > 0 else "right"
-    if reference is not request.actor or abs(lanes) != 1:
-        direction = _towards(build, request.actor, reference, lanes)
-        if direction is None:
-            return "a change by more than one lane, or to another actor's lane, has no SceML kind"
-        _guess(
-            build, request, f"the change into {reference.name}'s lane read as one lane {direction}"
-        )
+    absolute = change.find("LaneChangeTarget/AbsoluteTargetLane")
     dynamics = change.find("LaneChangeActionDynamics")
+    shape = "sinusoidal" if dynamics is None else dynamics.get("dynamicsShape", "sinusoidal")
+    if shape not in SHAPES:
+        return f"a lane change shaped {shape} has no SceML form"
+    if relative is None and absolute is None:
+        return "a lane change without a target lane has no SceML form"
     distance = None
     if dynamics is not None and dynamics.get("dynamicsDimension") == "distance":
         distance = number(dynamics, "value")
@@ -197,22 +195,20 @@ def _lane_change(
                 request,
                 f"the lane change's {dynamics.get('dynamicsDimension')} taken at {speed} m/s as {distance:g} m",
             )
-    node = _add(build, request, "LaneChange", distance=distance)
-    node.direction = scm.LaneChangeDirection.getEEnumLiteral(direction)
+    offset = number(change, "targetLaneOffset") if change.get("targetLaneOffset") else None
+    node = _add(build, request, "LaneChange", distance=distance, targetOffset=offset)
+    node.shape = scm.LaneChangeShape.getEEnumLiteral(shape)
+    if absolute is not None:
+        node.targetLane = lane_id(absolute, "value")
+        return node
+    assert relative is not None
+    reference = build.actor(relative.get("entityRef"), relative)
+    lanes = lane_id(relative, "value")
+    node.direction = scm.LaneChangeDirection.getEEnumLiteral("left" if lanes >= 0 else "right")
+    node.lanes = abs(lanes)
+    if reference is not request.actor:
+        node.targetActor = reference
     return node
-
-
-def _towards(build: Build, actor: scm.Actor, reference: scm.Actor, lanes: int) -> str | None:
-    """left/right for a change into another actor's lane, from both start lanes on one road."""
-    if lanes != 0:
-        return None
-    mine, theirs = _start_lane(build, actor), _start_lane(build, reference)
-    if mine is None or theirs is None:
-        return None
-    if mine[0] != theirs[0] or mine[1] * theirs[1] <= 0 or mine[1] == theirs[1]:
-        return None
-    # Lanes are numbered outwards from the centre line on both sides; the centre is on the left.
-    return "left" if abs(theirs[1]) < abs(mine[1]) else "right"
 
 
 def _at_the_start(build: Build, position: scm.Position | None) -> scm.Position | None:
@@ -231,20 +227,6 @@ def _at_the_start(build: Build, position: scm.Position | None) -> scm.Position |
     )
 
 
-def _start_lane(build: Build, actor: scm.Actor) -> tuple[str, int] | None:
-    """The road and lane an actor starts in: as written, or where its road or relative start
-    lies on the map (the starts of the others placed first, as in Init)."""
-    start = actor.startPosition
-    if isinstance(start, scm.LanePosition):
-        return str(start.roadId), int(start.laneId)
-    if build.road_map is None:
-        return None
-    pose = start_poses(build.actors.values(), build.road_map).get(actor)
-    found = [] if pose is None else build.road_map.world_to_lane(pose.x, pose.y)
-    return (found[0].road_id, found[0].lane_id) if found else None
-
-
-@_maps("PrivateAction/RoutingAction/AcquirePositionAction")
 def _acquire(
     build: Build, request: Request, acquire: etree._Element, motion: Motion
 ) -> scm.ActionNode | str:

@@ -1,7 +1,8 @@
 """One entity condition to SceML condition nodes, or an opaque node keeping the Condition.
 
 ReachPosition and Distance (to a position, less than) to InLocationRadius, RelativeDistance to
-InVehicleRadius, Speed to SpeedCondition, TimeToCollision (to an entity) to TimeToCollision.
+InVehicleRadius, Speed to SpeedCondition, TimeToCollision (to an entity) to TimeToCollision with
+its measure, TraveledDistance to TraveledDistance.
 With several triggering entities there is one node per entity, joined: `any` by JoinOneFinished,
 `all` by JoinAllFinished.
 """
@@ -14,7 +15,6 @@ from lxml import etree
 
 import scemlmodel as scm
 
-from ..players.meaning import TTC_FREESPACE
 from . import traced
 from .context import Build
 from .opaque import opaque_node
@@ -199,21 +199,63 @@ def _speed(
     return node
 
 
-def _ttc_measure(test: etree._Element) -> str | None:
-    """How a TimeToCollisionCondition measures, when that is not SceML's way (between the
-    bounding boxes, in a straight line); None when it is."""
-    # SceML's TimeToCollision is between the boxes (players.meaning.TTC_FREESPACE).
-    if (test.get("freespace") == "true") != TTC_FREESPACE:
-        return "between reference points" if TTC_FREESPACE else "between bounding boxes"
-    kind = test.get("relativeDistanceType")
-    if kind in ("longitudinal", "lateral"):
-        return f"of {kind} distance"
+@_maps("TraveledDistanceCondition")
+def _traveled(
+    build: Build, test: etree._Element, actor: scm.Actor, wanted: str
+) -> scm.ActionNode | str:
+    # The same odometer from the simulation's start in OpenSCENARIO and SceML.
+    return _node(build, "TraveledDistance", actor, wanted, distance=number(test, "value"))
+
+
+@_maps("TimeHeadwayCondition")
+def _headway(
+    build: Build, test: etree._Element, actor: scm.Actor, wanted: str
+) -> scm.ActionNode | str:
+    rule = RULES.get(str(test.get("rule")))
+    if rule is None:
+        return f"the rule {test.get('rule')} has no SceML form"
+    if rule[1]:
+        build.report.add(
+            "guessed", f"{wanted}: {test.get('rule')} read as {rule[0]}", build.where(test)
+        )
+    measure = measure_of(test, wanted)
+    if isinstance(measure, str):
+        return measure
+    node = _node(build, "TimeHeadway", actor, wanted, time=number(test, "value"))
+    node.rule = scm.ComparisonRule.getEEnumLiteral(rule[0])
+    node.targetActor = build.actor(test.get("entityRef"), test)
+    for feature, value in measure.items():
+        node.eSet(feature, value)
+    return node
+
+
+#: OpenSCENARIO's relativeDistanceType values as SceML's RelativeDistanceType literals
+#: (cartesianDistance is 1.0's name, deprecated in 1.1, for the same straight line).
+DISTANCE_TYPES = {
+    "euclidianDistance": "euclidean",
+    "cartesianDistance": "euclidean",
+    "longitudinal": "longitudinal",
+    "lateral": "lateral",
+}
+#: OpenSCENARIO's coordinateSystem values, the same names in SceML.
+COORDINATE_SYSTEMS = ("entity", "lane", "road", "trajectory")
+
+
+def measure_of(test: etree._Element, wanted: str) -> dict[str, object] | str:
+    """How a measuring condition measures (freespace, distance type, coordinate system) as
+    node feature values; why not when SceML cannot say it."""
     if test.get("alongRoute") == "true":
-        return "along the route"
-    system = test.get("coordinateSystem")
-    if system not in (None, "entity"):
-        return f"in {system} coordinates"
-    return None
+        # Deprecated in 1.1 and never defined beyond "along the route"; no SceML form.
+        return "a distance along the route (alongRoute) has no SceML form"
+    kind = DISTANCE_TYPES.get(test.get("relativeDistanceType") or "euclidianDistance")
+    system = test.get("coordinateSystem") or "entity"
+    if kind is None or system not in COORDINATE_SYSTEMS:
+        return f"the distance type or coordinate system of {wanted} has no SceML form"
+    return {
+        "freespace": test.get("freespace") == "true",
+        "relativeDistanceType": scm.RelativeDistanceType.getEEnumLiteral(kind),
+        "coordinateSystem": scm.CoordinateSystem.getEEnumLiteral(system),
+    }
 
 
 @_maps("TimeToCollisionCondition")
@@ -226,12 +268,14 @@ def _ttc(build: Build, test: etree._Element, actor: scm.Actor, wanted: str) -> s
         build.report.add(
             "guessed", f"{wanted}: {test.get('rule')} read as {rule[0]}", build.where(test)
         )
-    measured = _ttc_measure(test)
-    if measured is not None:
-        # Read as SceML's (between the boxes, straight line) it would fire at another time
-        # (alks_cut-in: 0.10 s instead of 2.20 s); kept verbatim, it runs as written.
-        return f"a time to collision {measured} has no SceML form yet"
+    # Read as the default measure it would fire at another time (alks_cut-in: 0.10 s instead
+    # of 2.20 s), so the measure is kept as written.
+    measure = measure_of(test, wanted)
+    if isinstance(measure, str):
+        return measure
     node = _node(build, "TimeToCollision", actor, wanted, time=number(test, "value"))
+    for feature, value in measure.items():
+        node.eSet(feature, value)
     node.rule = scm.ComparisonRule.getEEnumLiteral(rule[0])
     node.targetActor = build.actor(target.get("entityRef"), target)
     return node

@@ -147,7 +147,10 @@ def _gap_reached(node: EObject, at: Moment) -> str | None:
 @goal("LaneChange")
 def _lane_changed(node: EObject, at: Moment) -> str | None:
     trace = at.trace(node.referenceActor)
-    if trace is None:
+    # Into another actor's lane or an absolute lane, the actor may already be there: only a
+    # change of lanes >= 1 from its own lane must leave it.
+    relative = node.targetActor is None and node.targetLane is None and node.lanes >= 1
+    if trace is None or not relative:
         return None
     before, after = trace.lane[trace.at(at.start)], trace.lane[trace.at(at.finish)]
     if before and after and before == after:

@@ -126,8 +126,58 @@ def approach_reached(gap: float, distance: float) -> bool:
 
 # --- conditions ---------------------------------------------------------------------------------
 
-#: TimeToCollision is measured between the bounding boxes (OpenSCENARIO freespace="true").
+#: TimeToCollision is measured between the bounding boxes (OpenSCENARIO freespace="true") unless
+#: the node says otherwise: the default of its `freespace`, so files saved before that feature
+#: keep their meaning.
 TTC_FREESPACE = True
+
+
+@dataclass(frozen=True)
+class Separation:
+    """Where a target is from an actor, in the actor's frame (x ahead, y to the left), and the
+    sizes of both boxes: what a measuring condition's distance is taken from."""
+
+    ahead: float
+    left: float
+    length: float
+    width: float
+    target_length: float
+    target_width: float
+    #: The least distance between the two boxes' outlines (0 while they overlap).
+    box_gap: float
+
+
+def measured_distance(at: Separation, freespace: bool, kind: str) -> float:
+    """The distance a condition measures (esmini 3.6, `Object::Distance` in the entity
+    coordinate system): euclidean is the straight line, longitudinal and lateral its parts
+    along and across the actor's heading; with freespace between the boxes' outlines (the
+    boxes taken as aligned for the parts), else between the reference points."""
+    if kind == "longitudinal":
+        reach = (at.length + at.target_length) / 2 if freespace else 0.0
+        return max(0.0, abs(at.ahead) - reach)
+    if kind == "lateral":
+        reach = (at.width + at.target_width) / 2 if freespace else 0.0
+        return max(0.0, abs(at.left) - reach)
+    return at.box_gap if freespace else math.hypot(at.ahead, at.left)
+
+
+#: TraveledDistance counts the actor's odometer from the start of the simulation, every metre
+#: moved whichever way (esmini 3.6: `odometer_`, compared with `>=`), not from the node's start.
+TRAVELED_FROM = "simulation start"
+
+
+def traveled_reached(odometer: float, distance: float) -> bool:
+    """Whether a TraveledDistance holds."""
+    return odometer >= distance
+
+
+def time_headway(at: Separation, freespace: bool, kind: str, speed: float) -> float | None:
+    """The time headway a player measures (esmini 3.6, `TrigByTimeHeadway`): the measured
+    distance to the target over the actor's own speed. None when undefined: the target
+    behind, or the actor standing or reversing."""
+    if at.ahead < 0 or speed < 1e-10:
+        return None
+    return measured_distance(at, freespace, kind) / speed
 
 
 def time_to_collision(

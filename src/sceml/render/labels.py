@@ -175,14 +175,53 @@ def _is_zero(value: scm.ParameterValue | None) -> bool:
     return isinstance(value, scm.Value) and value.value == 0.0
 
 
+#: How a measuring condition measures, with OpenSCENARIO's defaults: one `measured` line shows
+#: what differs, so a box with the defaults stays as small as before.
+_MEASURE = {"freespace": True, "relativeDistanceType": "euclidean", "coordinateSystem": "entity"}
+
+
+#: Attributes shown only when they differ from these defaults (a LaneChange of one lane,
+#: sinusoidal, stays the box it was before these features existed).
+_QUIET_DEFAULTS: dict[str, object] = {"lanes": 1, "shape": "sinusoidal"}
+
+
+def _quiet(node: EObject, name: str, held: object) -> bool:
+    """Whether an attribute says nothing worth a line: its quiet default, or a LaneChange's
+    direction when an absolute target lane makes it unused."""
+    if name == "direction" and getattr(node, "targetLane", None) is not None:
+        return True
+    value = getattr(held, "name", held)
+    return name in _QUIET_DEFAULTS and value == _QUIET_DEFAULTS[name]
+
+
+def measure_text(node: EObject) -> str | None:
+    """`reference points, longitudinal, lane` for what a measuring condition sets apart from
+    the defaults (between the boxes, straight line, the actor's frame); None when all are."""
+    parts = []
+    if node.eClass.findEStructuralFeature("freespace") is not None and not node.freespace:
+        parts.append("reference points")
+    for name in ("relativeDistanceType", "coordinateSystem"):
+        if node.eClass.findEStructuralFeature(name) is None:
+            continue
+        literal = node.eGet(name).name
+        if literal != _MEASURE[name]:
+            parts.append(f"{literal} coordinates" if name == "coordinateSystem" else literal)
+    return ", ".join(parts) or None
+
+
 def parameter_items(node: EObject, scope: Scope) -> Iterator[tuple[str, str]]:
     """(name, text) for every parameter the model sets on a node: numbers, positions, literals."""
     units = {spec.name: spec.unit for spec in catalog.parameters(node)}
+    measured = measure_text(node)
+    if measured:
+        yield "measured", measured
     for feature in node.eClass.eAllStructuralFeatures():
         name = str(feature.name)
-        if name in _NOT_PARAMETERS or getattr(feature, "derived", False):
+        if name in _NOT_PARAMETERS or name in _MEASURE or getattr(feature, "derived", False):
             continue
         held = node.eGet(feature)
+        if isinstance(feature, EAttribute) and _quiet(node, name, held):
+            continue
         if isinstance(feature, EAttribute):
             if isinstance(feature.eType, EEnum) and held is not None:
                 yield name, str(held.name if hasattr(held, "name") else held)

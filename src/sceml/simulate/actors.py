@@ -109,6 +109,8 @@ class Actor:
         self.speed = speed
         self.control: SpeedControl = Hold()
         self.x = self.y = self.heading = 0.0
+        #: Metres moved since the run started, whichever way (TraveledDistance's odometer).
+        self.odometer = 0.0
         self.place()
 
     def place(self) -> None:
@@ -138,11 +140,13 @@ class Actor:
             # The speed is along the heading: during a lane change part of it goes sideways.
             slope = self.shift.slope(self.d) if self.shift is not None else 0.0
             self.d += step / math.sqrt(1.0 + slope * slope)
+            x, y = self.x, self.y
+            stopped = False
             if end is not None and self.d >= end:
-                self.d, self.speed = end, 0.0
-                self.place()
-                return True
+                self.d, self.speed, stopped = end, 0.0, True
             self.place()
+            self.odometer += math.hypot(self.x - x, self.y - y)
+            return stopped
         return False
 
     def follow(self, path: Path, lateral: float = 0.0) -> None:

@@ -20,6 +20,7 @@ from pyecore.ecore import EObject
 import scemlmodel as scm
 
 from ..export.entities import performance_of
+from ..maps import RoadMap
 from ..params import concrete
 from ..players import meaning
 from . import lanes
@@ -147,22 +148,107 @@ class GapManeuver(Behaviour):
 # --- lateral --------------------------------------------------------------------------------
 
 
-class LaneShift:
-    """One lane change of an actor: the lateral profile, then the path on the new lane."""
+#: How many lanes a search for a lane by id or by another actor's lane walks at most.
+_LANE_SEARCH = 12
 
-    def __init__(self, world: World, actor: Actor, side: str, distance: float, what: str) -> None:
+
+def _walk(
+    road_map: RoadMap, spot: LaneSpot, side: str, count: int
+) -> tuple[LaneSpot, float] | None:
+    """`count` lanes to the `side` of `spot` and how far left of it their centre lies."""
+    total = 0.0
+    for _ in range(count):
+        beside = lanes.neighbour(road_map, spot, side)
+        if beside is None:
+            return None
+        spot, total = beside[0], total + beside[1]
+    return spot, total
+
+
+def _to_lane(road_map: RoadMap, spot: LaneSpot, lane: int) -> tuple[LaneSpot, float] | None:
+    """The lane of id `lane` on the road of `spot`, found beside it on either side."""
+    if spot.lane == lane:
+        return spot, 0.0
+    for side in ("left", "right"):
+        here, total = spot, 0.0
+        for _ in range(_LANE_SEARCH):
+            beside = lanes.neighbour(road_map, here, side)
+            if beside is None:
+                break
+            here, total = beside[0], total + beside[1]
+            if here.lane == lane:
+                return here, total
+    return None
+
+
+class LaneShift:
+    """One lane change of an actor: the lateral profile, then the path on the new lane.
+
+    `count` lanes to `side` of the actor's lane, or of `toward`'s lane (another actor's), or
+    into the absolute lane `lane`; `offset` m left of that lane's centre at the end (as an
+    OpenSCENARIO LaneChangeAction's targetLaneOffset), or, with None, as far off the centre as
+    the actor was before."""
+
+    def __init__(
+        self,
+        world: World,
+        actor: Actor,
+        side: str,
+        distance: float,
+        what: str,
+        *,
+        count: int = 1,
+        toward: Actor | None = None,
+        lane: int | None = None,
+        offset: float | None = None,
+    ) -> None:
         self.actor = actor
         spot = actor.path.spot(actor.d)
-        beside = None
+        found = None
         if world.road_map is not None and spot is not None:
-            beside = lanes.neighbour(world.road_map, spot, side)
-        self.target = beside[0] if beside is not None else None
-        amount = (
-            beside[1] if beside is not None else DEFAULT_LANE_WIDTH * (1 if side == "left" else -1)
-        )
-        if beside is None:
-            world.note(f"{what}: no lane on the {side}; moved {DEFAULT_LANE_WIDTH:g} m sideways")
-        actor.shift = Shift(actor.d, distance, amount)
+            found = self._find(world.road_map, spot, side, count, toward, lane)
+        self.target = found[0] if found is not None else None
+        if found is not None:
+            amount = found[1]
+        else:
+            amount = self._without_map(side, count, toward)
+            wanted = f"lane {lane}" if lane is not None else f"{count} lane(s) on the {side}"
+            world.note(f"{what}: no {wanted} on the map; moved {amount:g} m sideways")
+        self.across = amount
+        # From where the actor is in its lane to `offset` in the new one.
+        within = 0.0 if offset is None else offset - actor.lateral
+        actor.shift = Shift(actor.d, distance, amount + within)
+
+    @staticmethod
+    def _find(
+        road_map: RoadMap,
+        spot: LaneSpot,
+        side: str,
+        count: int,
+        toward: Actor | None,
+        lane: int | None,
+    ) -> tuple[LaneSpot, float] | None:
+        if lane is not None:
+            return _to_lane(road_map, spot, lane)
+        if toward is None:
+            return _walk(road_map, spot, side, count)
+        theirs = toward.path.spot(toward.d)
+        if theirs is None or theirs.road != spot.road:
+            return None
+        start = _to_lane(road_map, spot, theirs.lane)
+        if start is None:
+            return None
+        then = _walk(road_map, start[0], side, count)
+        return None if then is None else (then[0], start[1] + then[1])
+
+    def _without_map(self, side: str, count: int, toward: Actor | None) -> float:
+        """Lane widths of DEFAULT_LANE_WIDTH, from the other actor's centre where there is one."""
+        step = DEFAULT_LANE_WIDTH * count * (1 if side == "left" else -1)
+        if toward is None:
+            return step
+        dx, dy = toward.x - self.actor.x, toward.y - self.actor.y
+        heading = self.actor.heading
+        return -dx * math.sin(heading) + dy * math.cos(heading) + step
 
     def finished(self, world: World) -> bool:
         shift = self.actor.shift
@@ -172,7 +258,8 @@ class LaneShift:
         spot = self.actor.path.spot(self.actor.d)
         if self.target is not None and spot is not None and world.road_map is not None:
             moved = LaneSpot(self.target.road, self.target.lane, spot.s, spot.forward)
-            lateral = self.actor.lateral - shift.amount
+            # The lanes crossed become the new path; what is left is the offset within it.
+            lateral = self.actor.lateral - self.across
             self.actor.follow(lanes.lane_path(world.road_map, moved), lateral)
         return True
 
@@ -182,8 +269,24 @@ class LaneChange(Behaviour):
     """Move into the lane beside, along half a cosine over `distance` m."""
 
     def start(self, world: World) -> None:
-        side = str(self.node.direction.name if self.node.direction is not None else "left")
-        self.shift = LaneShift(world, self.actor, side, concrete(self.node, "distance"), self.name)
+        node = self.node
+        side = str(node.direction.name if node.direction is not None else "left")
+        toward = None
+        if node.targetActor is not None and node.targetLane is None:
+            toward = world.actor(node.targetActor, self.name)
+        if node.shape.name != "sinusoidal":
+            world.note(f"{self.name}: a {node.shape.name} lane change is previewed as sinusoidal")
+        self.shift = LaneShift(
+            world,
+            self.actor,
+            side,
+            concrete(node, "distance"),
+            self.name,
+            count=int(node.lanes),
+            toward=toward,
+            lane=node.targetLane,
+            offset=concrete(node, "targetOffset"),
+        )
 
     def done(self, world: World) -> bool:
         return self.shift.finished(world)

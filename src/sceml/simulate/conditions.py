@@ -2,12 +2,13 @@
 
 A condition is evaluated only after its activation, at the activation instant and after every
 step, until it first holds. Distances are between actor reference points (centres), like the
-export's `freespace="false"`; the time to collision is the players' (`players.meaning`), between
-the boxes.
+export's `freespace="false"`; the time to collision is the players' (`players.meaning`), over
+the distance its node measures (between the boxes by default).
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 
 from pyecore.ecore import EObject
@@ -15,6 +16,7 @@ from pyecore.ecore import EObject
 from ..maps.resolve import is_relative
 from ..params import concrete
 from ..players import meaning
+from .actors import Actor
 from .geometry import free_distance_now
 from .world import World
 
@@ -88,15 +90,69 @@ def speed_condition(node: EObject, world: World) -> Test:
     return holds
 
 
+@kind("TraveledDistance")
+def traveled_distance(node: EObject, world: World) -> Test:
+    actor = world.actor(node.referenceActor, str(node.name))
+    distance = concrete(node, "distance")
+    return lambda w: meaning.traveled_reached(actor.odometer, distance)
+
+
+#: Coordinate systems the preview measures in: the actor's own frame. Lane, road and
+#: trajectory coordinates follow the road's curve, which the preview does not take apart.
+_MEASURED_FRAMES = ("entity",)
+
+
+def separation(actor: Actor, other: Actor) -> meaning.Separation:
+    """Where `other` is from `actor`, in the actor's frame."""
+    dx, dy = other.x - actor.x, other.y - actor.y
+    cos, sin = math.cos(actor.heading), math.sin(actor.heading)
+    return meaning.Separation(
+        ahead=dx * cos + dy * sin,
+        left=-dx * sin + dy * cos,
+        length=actor.length,
+        width=actor.width,
+        target_length=other.length,
+        target_width=other.width,
+        box_gap=free_distance_now(actor, other),
+    )
+
+
+def _frame_note(node: EObject, world: World) -> None:
+    system = node.coordinateSystem.name
+    if system not in _MEASURED_FRAMES:
+        world.note(
+            f"{node.name}: measured in the actor's own frame; the preview has no {system} "
+            "coordinates (a player measures along the road, so on a curve it differs)"
+        )
+
+
+@kind("TimeHeadway")
+def time_headway(node: EObject, world: World) -> Test:
+    actor = world.actor(node.referenceActor, str(node.name))
+    other = world.actor(node.targetActor, str(node.name))
+    threshold = concrete(node, "time")
+    freespace, measure = bool(node.freespace), node.relativeDistanceType.name
+    _frame_note(node, world)
+
+    def holds(w: World) -> bool:
+        headway = meaning.time_headway(separation(actor, other), freespace, measure, actor.speed)
+        # Undefined (target behind, standing): players hold no rule then.
+        return headway is not None and _compare(node.rule, headway, threshold, None)
+
+    return holds
+
+
 @kind("TimeToCollision")
 def time_to_collision(node: EObject, world: World) -> Test:
     actor = world.actor(node.referenceActor, str(node.name))
     other = world.actor(node.targetActor, str(node.name))
     threshold = concrete(node, "time")
+    freespace, measure = bool(node.freespace), node.relativeDistanceType.name
+    _frame_note(node, world)
 
     def holds(w: World) -> bool:
         ttc = meaning.time_to_collision(
-            free_distance_now(actor, other),
+            meaning.measured_distance(separation(actor, other), freespace, measure),
             actor.velocity(),
             actor.speed,
             other.velocity(),

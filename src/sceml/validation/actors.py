@@ -73,7 +73,7 @@ def actors_declared_here(node: scm.ActionNode, context: Context) -> Iterator[Fin
     ERROR,
     "ActionNode",
     "kinds that act relative to another actor (Follow, Approach, Overtake, InVehicleRadius, "
-    "TimeToCollision) have a target actor",
+    "TimeToCollision, TimeHeadway) have a target actor",
 )
 def target_actor_where_needed(node: scm.ActionNode, context: Context) -> Iterator[Finding]:
     if catalog.needs_target(node.eClass.name) and node.targetActor is None:
@@ -88,7 +88,7 @@ def target_actor_where_needed(node: scm.ActionNode, context: Context) -> Iterato
     source="engineer",
 )
 def target_actor_only_where_used(node: scm.ActionNode, context: Context) -> Iterator[Finding]:
-    if not catalog.needs_target(node.eClass.name) and node.targetActor is not None:
+    if not catalog.allows_target(node.eClass.name) and node.targetActor is not None:
         yield (
             node,
             f"{node.eClass.name} {node.name!r} does not use a target actor; "

@@ -170,6 +170,8 @@ READS: dict[str, Reads] = {
     "SCEML-E003": Reads(aspects=_EXPANSION | _LEVEL),
     "SCEML-E004": Reads(_SELF),
     "SCEML-E005": Reads(_SELF),
+    # The node's own measure settings against the target version.
+    "SCEML-E008": Reads(_SELF),
     # opaque.py
     "SCEML-E006": Reads(_SELF),
     "SCEML-E007": Reads(_SELF),

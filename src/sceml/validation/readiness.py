@@ -118,3 +118,21 @@ def kinds_exportable(scenario: scm.Scenario, context: Context) -> Iterator[Findi
         if reason:
             target = f"OpenSCENARIO {version} ({profile} profile)"
             yield node, f"{kind} cannot be exported to {target}: {reason}"
+
+
+@constraint(
+    "SCEML-E008",
+    ERROR,
+    ("TimeToCollision", "TimeHeadway"),
+    "with a target OpenSCENARIO version or export profile given, every node's settings can be "
+    "said in it (1.0 has no relativeDistanceType or coordinateSystem)",
+)
+def settings_exportable(node: EObject, context: Context) -> Iterator[Finding]:
+    if context.osc_version is None and context.osc_profile is None:
+        return
+    from ..export.support import default_version, unsupported_setting
+
+    version = context.osc_version or default_version(context.osc_profile or "generic")
+    reason = unsupported_setting(node, version)
+    if reason:
+        yield node, f"{node.name!r} cannot be exported to OpenSCENARIO {version}: {reason}"

@@ -1,0 +1,104 @@
+"""A measuring condition's box says how it measures when that is not the default, in one line."""
+
+from __future__ import annotations
+
+import pytest
+
+import scemlmodel as scm
+from sceml.build import ScenarioBuilder, world
+from sceml.editor.errors import OperationError
+from sceml.editor.node_ops import attribute_value
+from sceml.render.labels import Scope, action_lines
+
+
+def ttc_lines(**measure: object) -> list[str]:
+    b = ScenarioBuilder("labels", level="concrete")
+    ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0), speed=10.0)
+    lead = b.actor("Car", "lead", start=world(30.0, 0.0), speed=5.0)
+    return action_lines(b.add("TimeToCollision", ego, target=lead, time=2.0, **measure), Scope())
+
+
+def test_the_default_measure_adds_no_line() -> None:
+    assert ttc_lines() == ["ego, target lead", "rule: lessThan", "time: 2 s"]
+
+
+def test_a_measure_apart_from_the_default_is_one_line() -> None:
+    lines = ttc_lines(freespace=False, relativeDistanceType="longitudinal", coordinateSystem="lane")
+    assert lines[1] == "measured: reference points, longitudinal, lane coordinates"
+    assert not any(line.startswith(("freespace", "relativeDistanceType")) for line in lines)
+
+
+def test_the_editor_offers_the_measure_as_fields() -> None:
+    from sceml.build import node_named
+    from sceml.editor.fields import node_fields
+
+    b = ScenarioBuilder("fields", level="concrete")
+    ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0), speed=10.0)
+    lead = b.actor("Car", "lead", start=world(30.0, 0.0), speed=5.0)
+    b.add("TimeToCollision", ego, target=lead, name="ttc", relativeDistanceType="lateral")
+    fields = {f["name"]: f for f in node_fields(node_named(b.scenario, "ttc"))}
+    assert fields["freespace"] == {
+        "name": "freespace",
+        "label": "Freespace",
+        "type": "bool",
+        "value": True,
+    }
+    assert fields["relativeDistanceType"]["options"] == ["euclidean", "longitudinal", "lateral"]
+    assert fields["relativeDistanceType"]["value"] == "lateral"
+    assert fields["coordinateSystem"]["options"] == ["entity", "lane", "road", "trajectory"]
+    assert fields["coordinateSystem"]["value"] == "entity"
+
+
+def test_the_palette_offers_traveled_distance_among_the_conditions() -> None:
+    from sceml.editor.palette import node_groups
+
+    conditions = next(g for g in node_groups() if "TimeToCollision" in str(g))
+    assert "TraveledDistance" in str(conditions)
+
+
+def test_a_time_headway_box_shows_its_measure() -> None:
+    b = ScenarioBuilder("labels", level="concrete")
+    ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0), speed=10.0)
+    lead = b.actor("Car", "lead", start=world(30.0, 0.0), speed=5.0)
+    node = b.add("TimeHeadway", ego, target=lead, time=1.5, coordinateSystem="road")
+    assert action_lines(node, Scope()) == [
+        "ego, target lead",
+        "measured: road coordinates",
+        "rule: lessThan",
+        "time: 1.5 s",
+    ]
+
+
+def test_a_traveled_distance_box_shows_its_distance() -> None:
+    b = ScenarioBuilder("labels", level="concrete")
+    ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0), speed=10.0)
+    node = b.add("TraveledDistance", ego, distance=60.0)
+    assert action_lines(node, Scope()) == ["ego", "distance: 60 m"]
+
+
+def test_a_lane_change_box_shows_its_target_lane_offset_and_shape() -> None:
+    b = ScenarioBuilder("labels", level="concrete")
+    ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0), speed=10.0)
+    lead = b.actor("Car", "lead", start=world(30.0, 0.0), speed=5.0)
+    plain = b.add("LaneChange", ego, direction="right")
+    assert action_lines(plain, Scope()) == ["ego", "direction: right"]
+    into = b.add("LaneChange", ego, target=lead, lanes=0, shape="cubic", targetOffset=0.5)
+    assert action_lines(into, Scope()) == [
+        "ego, target lead",
+        "direction: left",
+        "lanes: 0",
+        "shape: cubic",
+        "targetOffset: 0.5 m",
+    ]
+    absolute = b.add("LaneChange", ego, targetLane=-3, distance=40.0)
+    assert action_lines(absolute, Scope()) == ["ego", "targetLane: -3", "distance: 40 m"]
+
+
+def test_the_editor_sets_a_lane_change_target_lane_from_its_text_field() -> None:
+    feature = scm.LaneChange.eClass.findEStructuralFeature
+    assert attribute_value(feature("targetLane"), "-3") == -3
+    assert attribute_value(feature("targetLane"), "") is None
+    assert attribute_value(feature("lanes"), 2) == 2
+    for wrong in ("two", True, 1.5):
+        with pytest.raises(OperationError, match="whole number"):
+            attribute_value(feature("lanes"), wrong)
