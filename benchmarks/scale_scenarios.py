@@ -110,11 +110,7 @@ def write(nodes: int, folder: Path) -> Path:
     crossing = io.load_library(folder / "library" / LIBRARY.name).root.modules[0]
     path = io.save(build(nodes, crossing), folder / f"scale-{nodes}.xmi")
     document = io.load(path)
-    errors = [
-        d
-        for d in validate(document.root, document=document)
-        if d.severity is Severity.ERROR
-    ]
+    errors = [d for d in validate(document.root, document=document) if d.severity is Severity.ERROR]
     if errors:
         shown = "\n".join(str(d) for d in errors[:8])
         raise SystemExit(f"{path}: the generated scenario has {len(errors)} errors:\n{shown}")

@@ -66,7 +66,7 @@ def main(argv: list[str] | None = None) -> None:
             f"{'nodes':>7} {'MB':>5} {'sceml validate s':>17} {'lxml parse s':>13}"
             f" {'ratio':>6}   in-process: {'load s':>6} {'validate s':>10} {'expansion s':>11}"
         )
-        for size, path in files.items():
+        for path in files.values():
             commands = {
                 "ours": [SCEML, "validate", str(path)],
                 "anchor": [sys.executable, "-c", PARSE, str(path)],
