@@ -14,18 +14,23 @@ from collections.abc import Mapping, Sequence
 
 
 def interleaved(
-    commands: Mapping[str, Sequence[str]], rounds: int, env: Mapping[str, str] | None = None
+    commands: Mapping[str, Sequence[str]],
+    rounds: int,
+    env: Mapping[str, str] | None = None,
+    envs: Mapping[str, Mapping[str, str]] | None = None,
 ) -> dict[str, list[float]]:
     """Wall seconds of each command per round, the commands taken in turn; one warm-up each
-    first (it writes the bytecode caches, as any second run of a command finds them)."""
+    first (it writes the bytecode caches, as any second run of a command finds them). `envs`:
+    a command's own environment, by name, instead of `env`."""
     names = list(commands)
+    chosen = {name: (envs or {}).get(name, env) for name in names}
     for name in names:
-        _run(commands[name], env)
+        _run(commands[name], chosen[name])
     seconds: dict[str, list[float]] = {name: [] for name in names}
     for round_number in range(rounds):
         shift = round_number % len(names)
         for name in names[shift:] + names[:shift]:
-            seconds[name].append(_run(commands[name], env))
+            seconds[name].append(_run(commands[name], chosen[name]))
     return seconds
 
 
