@@ -53,9 +53,12 @@ KINDS: list[tuple[str, dict[str, float]]] = [
     ("Decelerate", {"targetSpeed": 5.0, "rate": 2.0}),
     ("DriveDistance", {"distance": 30.0, "speed": 8.0}),
 ]
+# Ends as `sceml` ends (sceml.cli.end_now): without the interpreter's collection of the model.
 PYTHON_LOAD = (
     "import sys, time; from pathlib import Path; from sceml import io; "
-    "t = time.perf_counter(); io.load(Path(sys.argv[1])); print(time.perf_counter() - t)"
+    "from sceml.cli import end_now; "
+    "t = time.perf_counter(); io.load(Path(sys.argv[1])); print(time.perf_counter() - t); "
+    "end_now(0)"
 )
 SCEML = Path(sys.executable).with_name("sceml")
 
