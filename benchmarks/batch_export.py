@@ -2,7 +2,7 @@
 
     .venv/bin/python benchmarks/batch_export.py [--n 5000] [--workers W] [--rounds R] [--keep DIR]
 
-Three figures, all on this machine in one run, each the median of R rounds (default 3) taken in
+Four figures, all on this machine in one run, each the median of R rounds (default 3) taken in
 turn (the order rotates every round), because this machine is shared and its disk is noisy:
 
 1. ours: `sceml sample examples/uis2-logical.xmi --strategy random --n N --format xosc
@@ -16,12 +16,14 @@ turn (the order rotates every round), because this machine is shared and its dis
    hand-written UIS2-like scenario (3 entities, init, 12 events with conditions, like our UIS2
    export; 27 KB per file against our 26.6 KB), without validation and without a manifest.
    Also the whole process as a subprocess, also counting its N .xosc files. Benchmark-only
-   dependency; it runs in one process (it has no parallel mode).
-3. The floor, as issue 17 defines it: what it physically takes to produce the same files, i.e.
+   dependency; serial here (see 3).
+3. scenariogeneration again, with its `number_of_parallel_writings` = W (it writes the files
+   from W processes; on this machine it has been slower than its serial mode).
+4. The floor, as issue 17 defines it: what it physically takes to produce the same files, i.e.
    lxml serialise, XSD validate and write each file (plain `open`/`write`/`close`, no rename,
-   no check of any kind) in one process per core (W processes). The documents are those of run
-   1, parsed beforehand; the XSD is loaded beforehand; the files go to a new folder next to run
-   1's. Timed from the moment all W processes start their loop until the last one is done.
+   no check of any kind) in one process per core (W processes), and (issue 31) as a whole
+   process like the others: Python's start, importing lxml and the XSD loader, compiling the
+   XSD and parsing the documents (those of an untimed run of ours) are inside its time.
 
 Each figure also says how long the run took to its first file and how fast it wrote from the
 first file to the last (the files' modification times): the part that start-up does not
@@ -33,7 +35,6 @@ Targets (issue 17): ours at least 5x scenariogeneration in files/s, and within 2
 from __future__ import annotations
 
 import argparse
-import multiprocessing
 import os
 import shutil
 import statistics
@@ -44,11 +45,7 @@ import textwrap
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
-from multiprocessing.queues import Queue
-from multiprocessing.synchronize import Barrier
 from pathlib import Path
-
-from lxml import etree
 
 REPO = Path(__file__).resolve().parent.parent
 LOGICAL = REPO / "examples" / "uis2-logical.xmi"
@@ -106,6 +103,7 @@ SCENARIOGENERATION_SCRIPT = textwrap.dedent(
             names = ["ego_speed", "target_speed", "radius", "car_speed"][: len(values)]
             self.parameters = dict(zip(names, values))
             self.naming = "numerical"
+            self.number_of_parallel_writings = int(sys.argv[3])
 
         def scenario(self, **p):
             ego_speed = 3 + p.get("ego_speed", 0.0)
@@ -246,56 +244,62 @@ def run_sceml(n: int, workers: int, out: Path) -> Run:
     return _run_of(wall, elapsed, sorted(out.glob("*.xosc")))
 
 
-def run_scenariogeneration(n: int, out: Path) -> Run:
-    """The whole scenariogeneration process."""
+def run_scenariogeneration(n: int, out: Path, writers: int = 1) -> Run:
+    """The whole scenariogeneration process; `writers` > 1: its number_of_parallel_writings."""
     script = out.parent / "sg_uis2.py"
     script.write_text(SCENARIOGENERATION_SCRIPT, encoding="utf-8")
     sizes = ",".join(str(s) for s in factors(n))
     wall, started = time.time(), time.perf_counter()
-    subprocess.run([sys.executable, str(script), str(out), sizes], check=True, capture_output=True)
+    command = [sys.executable, str(script), str(out), sizes, str(writers)]
+    subprocess.run(command, check=True, capture_output=True)
     elapsed = time.perf_counter() - started
     return _run_of(wall, elapsed, sorted(out.rglob("*.xosc")))
 
 
-def _floor_process(
-    files: list[Path], out: Path, ready: Barrier, times: Queue[tuple[float, float, float]]
-) -> None:
-    """One core's share of the floor: serialise, validate and plainly write each document."""
+FLOOR_SCRIPT = textwrap.dedent(
+    """
+    import multiprocessing, sys
+    from pathlib import Path
+    from lxml import etree
     from sceml import schema
 
+    source, out, workers = Path(sys.argv[1]), Path(sys.argv[2]), int(sys.argv[3])
+    files = sorted(source.glob("*.xosc"))
     trees = [etree.parse(str(f)) for f in files]
     version = schema.declared_version(trees[0])
-    schema.is_valid_tree(trees[0], version)  # loads and compiles the XSD before the clock
-    ready.wait()
-    wall, started = time.time(), time.perf_counter()  # CLOCK_MONOTONIC: same in every process
-    for source, tree in zip(files, trees, strict=True):
-        data = etree.tostring(tree, xml_declaration=True, encoding="UTF-8")
-        if not schema.is_valid_tree(tree, version):
-            raise SystemExit(f"{source} of the sceml run fails the XSD")
-        with open(out / source.name, "wb") as stream:
-            stream.write(data)
-    times.put((wall, started, time.perf_counter()))
+    schema.is_valid_tree(trees[0], version)  # compiles the XSD once, before the processes fork
 
 
-def run_floor(files: list[Path], workers: int, out: Path) -> Run:
-    """The floor for `files` on `workers` processes."""
-    out.mkdir()
-    context = multiprocessing.get_context("fork")
-    ready = context.Barrier(workers)
-    times: Queue[tuple[float, float, float]] = context.Queue()
-    shares = [files[k::workers] for k in range(workers)]
-    processes = [
-        context.Process(target=_floor_process, args=(share, out, ready, times)) for share in shares
-    ]
+    def share(k):
+        for source_file, tree in list(zip(files, trees))[k::workers]:
+            data = etree.tostring(tree, xml_declaration=True, encoding="UTF-8")
+            if not schema.is_valid_tree(tree, version):
+                raise SystemExit(f"{source_file} fails the XSD")
+            with open(out / source_file.name, "wb") as stream:
+                stream.write(data)
+
+
+    processes = [multiprocessing.get_context("fork").Process(target=share, args=(k,)) for k in range(workers)]
     for process in processes:
         process.start()
-    spans = [times.get() for _ in processes]
     for process in processes:
         process.join()
-        if process.exitcode != 0:
-            raise SystemExit("a floor process failed")
-    elapsed = max(end for _, _, end in spans) - min(start for _, start, _ in spans)
-    return _run_of(min(wall for wall, _, _ in spans), elapsed, sorted(out.glob("*.xosc")))
+        if process.exitcode:
+            sys.exit(1)
+    """
+)
+
+
+def run_floor(source: Path, workers: int, out: Path) -> Run:
+    """The floor for the documents in `source` on `workers` processes, as a whole process:
+    Python's start, importing lxml and the XSD loader, compiling the XSD and parsing the
+    documents are inside the time, as they are in ours."""
+    out.mkdir()
+    command = [sys.executable, "-c", FLOOR_SCRIPT, str(source), str(out), str(workers)]
+    wall, started = time.time(), time.perf_counter()
+    subprocess.run(command, check=True, capture_output=True)
+    elapsed = time.perf_counter() - started
+    return _run_of(wall, elapsed, sorted(out.glob("*.xosc")))
 
 
 def main() -> None:
@@ -312,19 +316,21 @@ def main() -> None:
     # The floor writes the documents of an untimed sceml run, so that it makes the same files.
     source = base / "documents"
     run_sceml(args.n, args.workers, source)
-    documents = sorted(source.glob("*.xosc"))
 
     runs: dict[str, Callable[[Path], Run]] = {
         "ours": lambda out: run_sceml(args.n, args.workers, out),
         "scenariogeneration": lambda out: run_scenariogeneration(args.n, out),
-        "floor": lambda out: run_floor(documents, args.workers, out),
+        "scenariogeneration parallel": lambda out: run_scenariogeneration(
+            args.n, out, args.workers
+        ),
+        "floor": lambda out: run_floor(source, args.workers, out),
     }
     done: dict[str, list[Run]] = {name: [] for name in runs}
     names = list(runs)
     for number in range(args.rounds):
         order = names[number % len(names) :] + names[: number % len(names)]
         for name in order:
-            run = runs[name](base / f"{name}-{number}")
+            run = runs[name](base / f"{name.replace(' ', '-')}-{number}")
             if run.files != args.n:
                 raise SystemExit(f"{name} wrote {run.files} files, not {args.n}")
             done[name].append(run)
@@ -342,7 +348,10 @@ def main() -> None:
     labels = {
         "ours": "ours, sceml sample (validated), whole process",
         "scenariogeneration": "scenariogeneration (no validation), whole process",
-        "floor": f"floor (lxml serialise + XSD validate + plain write, {args.workers} processes)",
+        "scenariogeneration parallel": "scenariogeneration, number_of_parallel_writings="
+        f"{args.workers}, whole process",
+        "floor": f"floor (start, parse, lxml serialise + XSD validate + plain write, {args.workers}"
+        " processes), whole process",
     }
     rate = {name: statistics.median(r.rate for r in done[name]) for name in names}
     for name in names:
@@ -352,9 +361,8 @@ def main() -> None:
             f"{labels[name]}: {rate[name]:.0f} files/s "
             f"({before:.2f} s to the first file, then {steady:.0f} files/s)"
         )
-    print(
-        f"ours / scenariogeneration: {rate['ours'] / rate['scenariogeneration']:.2f}x (target >= 5)"
-    )
+    best = max(rate["scenariogeneration"], rate["scenariogeneration parallel"])
+    print(f"ours / scenariogeneration's faster mode: {rate['ours'] / best:.2f}x (target >= 5)")
     print(f"floor / ours: {rate['floor'] / rate['ours']:.2f}x slower than the floor (target <= 2)")
 
 

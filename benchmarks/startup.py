@@ -1,53 +1,54 @@
-"""Whole-process time of short commands, beside the interpreter's own start, in one run.
+"""Whole-process time of short commands beside the interpreter's own start, in one run.
 
-    python benchmarks/startup.py [--runs 15]
+    python benchmarks/startup.py [--rounds 21]
 
-Each command runs as a fresh process (as a user or CI script runs it), with bytecode caching on,
-after one warm-up run that writes the caches. Prints the median wall time of each and its ratio
-to `python -c pass`, so a noisy machine shows in both. The target for `sceml validate` of UIS1 is
-under 0.25 s (issue 17).
+Each command runs as a fresh process, as a user or a CI script runs it (`sceml` is the installed
+console script), bytecode caches written by one warm-up run. The anchors, measured in the same
+rounds and interleaved with the subjects: `python -c pass` (the interpreter alone) and
+`python -c "import lxml.etree"` (the interpreter and the XML library any reader of these files
+needs). Also measured: the import of click and of pyecore alone, what `sceml` cannot start
+without. Prints medians and each one's ratio to both anchors. Issue 31's goal: `sceml validate`
+of UIS1 and `sceml --help` within 4x the bare interpreter.
 """
 
 from __future__ import annotations
 
 import argparse
 import os
-import statistics
-import subprocess
 import sys
-import time
 from pathlib import Path
+
+from side_by_side import interleaved, median
 
 REPO = Path(__file__).resolve().parents[1]
 UIS1 = REPO / "examples" / "uis1-concrete.xmi"
-COMMANDS = {
-    "python -c pass": [sys.executable, "-c", "pass"],
-    "sceml --help": [sys.executable, "-m", "sceml.cli", "--help"],
-    "sceml info UIS1": [sys.executable, "-m", "sceml.cli", "info", str(UIS1)],
-    "sceml validate UIS1": [sys.executable, "-m", "sceml.cli", "validate", str(UIS1)],
+PYTHON = sys.executable
+SCEML = str(Path(sys.executable).with_name("sceml"))
+ANCHORS = {
+    "python -c pass": [PYTHON, "-c", "pass"],
+    'python -c "import lxml.etree"': [PYTHON, "-c", "import lxml.etree"],
 }
-
-
-def median_seconds(command: list[str], runs: int, env: dict[str, str]) -> float:
-    subprocess.run(command, env=env, capture_output=True, check=True)  # warm-up: writes .pyc
-    times = []
-    for _ in range(runs):
-        start = time.perf_counter()
-        subprocess.run(command, env=env, capture_output=True, check=True)
-        times.append(time.perf_counter() - start)
-    return statistics.median(times)
+SUBJECTS = {
+    'python -c "import click"': [PYTHON, "-c", "import click"],
+    'python -c "import pyecore.ecore"': [PYTHON, "-c", "import pyecore.ecore"],
+    "sceml --help": [SCEML, "--help"],
+    "sceml info UIS1": [SCEML, "info", str(UIS1)],
+    "sceml validate UIS1": [SCEML, "validate", str(UIS1)],
+}
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--runs", type=int, default=15, help="runs per command (default 15)")
-    runs = parser.parse_args().runs
+    parser.add_argument("--rounds", type=int, default=21, help="rounds (default 21)")
+    rounds = parser.parse_args().rounds
     env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
-    base = None
-    for name, command in COMMANDS.items():
-        seconds = median_seconds(command, runs, env)
-        base = base or seconds
-        print(f"{name:22s} {seconds * 1000:7.0f} ms  {seconds / base:5.1f}x python")
+    seconds = interleaved({**ANCHORS, **SUBJECTS}, rounds, env)
+    bare = median(seconds["python -c pass"])
+    lxml = median(seconds['python -c "import lxml.etree"'])
+    print(f"{'command':34s} {'median ms':>9s} {'x python':>9s} {'x lxml':>7s}  ({rounds} rounds)")
+    for name, values in seconds.items():
+        figure = median(values)
+        print(f"{name:34s} {figure * 1000:9.0f} {figure / bare:9.1f} {figure / lxml:7.1f}")
 
 
 if __name__ == "__main__":

@@ -1,18 +1,25 @@
-"""Benchmark: load a large scenario XMI with pyecore's decoder, with SceML's reader, and with EMF.
+"""Benchmark: load a large scenario XMI with SceML (Python) and with Eclipse EMF, like with like.
 
-Builds each scenario with the builder API (many actors, forks into parallel chains, joins), saves
-it with sceml.io, then in one run times `sceml.io.load` through pyecore's own decoder
-(`SafeXMIResource.fast_decoding = False`) and through the fast reader (sceml.xmi_reader, the
-default), and the EMF harness of tests/emf (its `load` mode reports its own load time, JVM start
-excluded). It also times a deep copy of the loaded model with pyecore's setters (SetterCopier)
-and with the direct copier (Copier). Each figure is the best of `--repeat` runs, and the
-ratios compare figures measured side by side, since these machines are shared and noisy.
+Builds each scenario with the builder API (many actors, forks into parallel chains, joins; every
+node with its parameters, so the file is valid, which is checked before anything is timed) and
+saves it with sceml.io. Then, side by side in one run:
+
+- cold, whole process: a fresh `python -c "sceml.io.load(FILE)"` against a fresh `java EmfLoad
+  ECORE FILE 1` (benchmarks/java/EmfLoad.java: EMF's XMI resource, the metamodel registered
+  first), the runs interleaved, medians; and the load alone inside those same processes (each
+  prints its own load time), without the interpreter's or the JVM's start;
+- warm, in one process: the best of `--repeat` loads in this process against the best of
+  `--repeat` loads in one JVM after its first (JIT-compiled by then);
+- pyecore's own decoder (`SafeXMIResource.fast_decoding = False`) warm, and a deep copy of the
+  loaded model with pyecore's setters (SetterCopier) and with the direct copier (Copier).
+
+Issue 31's goal: at most 1.5x EMF at 50k nodes, with process start.
 
 `--validate N` also builds a scenario of N nodes and runs `sceml validate` on it in a fresh
-process, reporting its wall time and peak resident memory (issue 17: under 20 s and 1 GB for
-about 208k nodes). Needs javac, java and /usr/share/java/eclipse-emf-*.jar.
+process, reporting its wall time and peak resident memory. Needs javac, java and
+/usr/share/java/eclipse-emf-*.jar.
 
-    .venv/bin/python benchmarks/xmi_load.py [--sizes 10000,50000] [--repeat 3] [--validate 208000]
+    .venv/bin/python benchmarks/xmi_load.py [--sizes 10000,50000] [--repeat 5] [--validate 208000]
 """
 
 from __future__ import annotations
@@ -21,6 +28,7 @@ import argparse
 import gc
 import os
 import re
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -34,16 +42,31 @@ from sceml.collector import collector_paused
 from sceml.copying import Copier, SetterCopier
 
 REPO = Path(__file__).resolve().parents[1]
-HARNESS = REPO / "tests" / "emf" / "java" / "SceMLHarness.java"
+EMF_LOAD = REPO / "benchmarks" / "java" / "EmfLoad.java"
 ECORE = REPO / "metamodel" / "scemlmodel.ecore"
 JARS = [f"/usr/share/java/eclipse-emf-{name}.jar" for name in ("common", "ecore", "ecore-xmi")]
-KINDS = ["Accelerate", "KeepVelocity", "TimeElapsed", "Decelerate", "DriveDistance"]
+#: Each kind with the parameters a concrete scenario needs (DriveDistance: distance and speed).
+KINDS: list[tuple[str, dict[str, float]]] = [
+    ("Accelerate", {"targetSpeed": 12.0, "rate": 2.0}),
+    ("KeepVelocity", {"duration": 2.0}),
+    ("TimeElapsed", {"duration": 1.0}),
+    ("Decelerate", {"targetSpeed": 5.0, "rate": 2.0}),
+    ("DriveDistance", {"distance": 30.0, "speed": 8.0}),
+]
+# Ends as `sceml` ends (sceml.cli.end_now): without the interpreter's collection of the model.
+PYTHON_LOAD = (
+    "import sys, time; from pathlib import Path; from sceml import io; "
+    "from sceml.cli import end_now; "
+    "t = time.perf_counter(); io.load(Path(sys.argv[1])); print(time.perf_counter() - t); "
+    "end_now(0)"
+)
 SCEML = Path(sys.executable).with_name("sceml")
 
 
 def build(nodes: int, actors: int = 50, chain: int = 8) -> ScenarioBuilder:
     """A scenario of about `nodes` action nodes: blocks of parallel chains merged by joins."""
-    builder = ScenarioBuilder("Large", level="concrete", max_duration=600)
+    # A simulator town: this measures loading; validate_scale.py runs the map rules.
+    builder = ScenarioBuilder("Large", map="Town03", level="concrete", max_duration=600)
     people = [
         builder.actor("Car", f"car{i}", ego=i == 0, start=lane(1, 1 + i % 3, 5.0 * i), speed=5)
         for i in range(actors)
@@ -53,21 +76,34 @@ def build(nodes: int, actors: int = 50, chain: int = 8) -> ScenarioBuilder:
         ends = []
         for branch in range(4):  # a fork into four chains, merged by one join
             actor = people[(block * 4 + branch) % actors]
-            steps = [builder.add(KINDS[(made + k) % len(KINDS)], actor) for k in range(chain)]
+            kinds = [KINDS[(made + k) % len(KINDS)] for k in range(chain)]
+            steps = [builder.add(kind, actor, **values) for kind, values in kinds]
             made += chain
             builder.chain(previous, *steps)
             ends.append(steps[-1])
-        previous = builder.join_all(*ends) if block % 2 else builder.join_one(*ends)
+        previous = builder.join_all(*ends)  # a JoinOne would leave chains running on
         block += 1
     builder.flow(previous, builder.end)
     return builder
 
 
 def compile_harness(folder: Path) -> str:
-    """Compile the harness into `folder`; return the classpath to run it."""
+    """Compile EmfLoad into `folder`; return the classpath to run it."""
     classpath = os.pathsep.join(JARS)
-    subprocess.run(["javac", "-d", str(folder), "-cp", classpath, str(HARNESS)], check=True)
+    subprocess.run(["javac", "-d", str(folder), "-cp", classpath, str(EMF_LOAD)], check=True)
     return os.pathsep.join([str(folder), classpath])
+
+
+def saved_valid(nodes: int, path: Path) -> Path:
+    """Save the scenario of `nodes` nodes to `path`, after checking it has no errors."""
+    from sceml.diagnostics import Severity
+    from sceml.validation import validate
+
+    scenario = build(nodes).scenario
+    errors = [d for d in validate(scenario) if d.severity is Severity.ERROR]
+    if errors:
+        raise SystemExit(f"the {nodes}-node scenario has {len(errors)} errors, e.g. {errors[0]}")
+    return io.save(scenario, path)
 
 
 def best_of(repeat: int, run: Callable[[], object]) -> float:
@@ -92,17 +128,37 @@ def load_with(path: Path, fast: bool) -> io.Document:
         io.SafeXMIResource.fast_decoding = True
 
 
-def emf_load(path: Path, classpath: str) -> tuple[int, float]:
-    """EMF's own load time of `path` (seconds, JVM start excluded) and its object count."""
+def emf_loads(path: Path, classpath: str, times: int) -> tuple[int, list[float]]:
+    """The object count and EMF's own time of each of `times` loads in one JVM (seconds)."""
     result = subprocess.run(
-        ["java", "-cp", classpath, "SceMLHarness", "load", str(ECORE), str(path)],
+        ["java", "-cp", classpath, "EmfLoad", str(ECORE), str(path), str(times)],
         capture_output=True,
         text=True,
         check=True,
     )
-    found = re.search(r"LOADED (\d+) objects in ([\d.]+) ms", result.stdout)
-    assert found, result.stdout
-    return int(found.group(1)), float(found.group(2)) / 1000
+    loads = re.findall(r"LOAD ([\d.]+) (\d+)", result.stdout)
+    assert len(loads) == times, result.stdout
+    return int(loads[0][1]), [float(ms) / 1000 for ms, _ in loads]
+
+
+def cold(path: Path, classpath: str, rounds: int) -> dict[str, float]:
+    """Medians of fresh processes, interleaved: whole process and the load alone, both ways."""
+    commands = {
+        "python": [sys.executable, "-c", PYTHON_LOAD, str(path)],
+        "emf": ["java", "-cp", classpath, "EmfLoad", str(ECORE), str(path), "1"],
+    }
+    whole: dict[str, list[float]] = {name: [] for name in commands}
+    inside: dict[str, list[float]] = {name: [] for name in commands}
+    for number in range(rounds):
+        for name in list(commands)[number % 2 :] + list(commands)[: number % 2]:
+            started = time.perf_counter()
+            done = subprocess.run(commands[name], capture_output=True, text=True, check=True)
+            whole[name].append(time.perf_counter() - started)
+            text = done.stdout.split()
+            inside[name].append(float(text[-1]) if name == "python" else float(text[1]) / 1000)
+    figures = {f"{name} whole": statistics.median(v) for name, v in whole.items()}
+    figures.update({f"{name} load": statistics.median(v) for name, v in inside.items()})
+    return figures
 
 
 def copy_with(make: type[Copier], document: io.Document) -> object:
@@ -116,21 +172,32 @@ def copy_with(make: type[Copier], document: io.Document) -> object:
 
 
 def measure(nodes: int, folder: Path, classpath: str, repeat: int) -> None:
-    """Print load times (pyecore, fast reader, EMF) and copy times for one size."""
-    path = io.save(build(nodes).scenario, folder / f"large-{nodes}.xmi")
-    pyecore_s = best_of(repeat, lambda: load_with(path, fast=False))
+    """Print cold and warm load times (Python, EMF), pyecore's decoder and copy times."""
+    path = saved_valid(nodes, folder / f"large-{nodes}.xmi")
+    figures = cold(path, classpath, repeat)
+    emf_objects, emf_runs = emf_loads(path, classpath, repeat + 1)
+    emf_warm = min(emf_runs[1:])
     fast_s = best_of(repeat, lambda: load_with(path, fast=True))
-    runs = [emf_load(path, classpath) for _ in range(repeat)]
-    emf_objects, emf_s = runs[0][0], min(seconds for _, seconds in runs)
+    pyecore_s = best_of(repeat, lambda: load_with(path, fast=False))
     document = load_with(path, fast=True)
     count = 1 + sum(1 for _ in document.root.eAllContents())
     setters_s = best_of(repeat, lambda: copy_with(SetterCopier, document))
     direct_s = best_of(repeat, lambda: copy_with(Copier, document))
     size_mb = path.stat().st_size / 1e6
-    print(f"{nodes:>6} nodes, {count} objects ({emf_objects} in EMF), {size_mb:.1f} MB:")
+    py_whole, emf_whole = figures["python whole"], figures["emf whole"]
+    py_load, emf_load = figures["python load"], figures["emf load"]
+    print(f"{nodes:>6} nodes, {count} objects ({emf_objects} in EMF), {size_mb:.1f} MB, valid:")
     print(
-        f"    load: pyecore decoder {pyecore_s:.2f} s, fast reader {fast_s:.2f} s, "
-        f"EMF {emf_s:.2f} s; fast/EMF {fast_s / emf_s:.2f}x, fast/pyecore {fast_s / pyecore_s:.2f}x"
+        f"    cold, whole process: Python {py_whole:.2f} s, EMF {emf_whole:.2f} s: "
+        f"{py_whole / emf_whole:.2f}x (medians of {repeat} fresh processes each, interleaved)"
+    )
+    print(
+        f"    cold, the load alone: Python {py_load:.2f} s, EMF {emf_load:.2f} s: "
+        f"{py_load / emf_load:.2f}x (same processes)"
+    )
+    print(
+        f"    warm, best of {repeat} in one process: Python {fast_s:.2f} s, EMF {emf_warm:.2f} s: "
+        f"{fast_s / emf_warm:.2f}x; pyecore's decoder {pyecore_s:.2f} s"
     )
     print(
         f"    copy: setters {setters_s:.2f} s, direct {direct_s:.2f} s; "
@@ -140,7 +207,7 @@ def measure(nodes: int, folder: Path, classpath: str, repeat: int) -> None:
 
 def validate_fresh(nodes: int, folder: Path) -> None:
     """Print the wall time and peak memory of `sceml validate` on `nodes` nodes, fresh process."""
-    path = io.save(build(nodes).scenario, folder / f"validate-{nodes}.xmi")
+    path = saved_valid(nodes, folder / f"validate-{nodes}.xmi")
     started = time.perf_counter()
     process = subprocess.Popen(
         [str(SCEML), "validate", str(path)], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE
@@ -161,7 +228,7 @@ def main() -> int:
     parser.add_argument(
         "--sizes", default="10000,50000", help="action node counts, comma-separated"
     )
-    parser.add_argument("--repeat", type=int, default=3, help="runs per figure (the best counts)")
+    parser.add_argument("--repeat", type=int, default=5, help="runs per figure (default 5)")
     parser.add_argument(
         "--validate", type=int, default=0, help="also validate a scenario of this many nodes"
     )

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
+
 from sceml import io
 from sceml.export import build_xosc
 from sceml.levels.apply import apply
@@ -14,16 +16,19 @@ from sceml.levels.space import parameter_space
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
-def test_fast_path_bytes_equal_a_full_export_of_apply(tmp_path: Path) -> None:
-    # UIS1: UIS2's DriveDistance finishes after distance / speed, a number the export derives
-    # from a sampled one, so its samples take the full export (see the next test).
-    logical_path = EXAMPLES / "uis1-logical.xmi"
+@pytest.mark.parametrize(("name", "samples"), [("uis1", 5), ("uis2", 12)])
+def test_fast_path_bytes_equal_a_full_export_of_apply(
+    tmp_path: Path, name: str, samples: int
+) -> None:
+    # UIS2's DriveDistance finishes distance / speed after it starts, a delay the export derives
+    # from the sampled speed: the fast path must write that too.
+    logical_path = EXAMPLES / f"{name}-logical.xmi"
     logical = io.load_scenario(logical_path).root
     space = parameter_space(logical)
-    config = BatchConfig(logical_path, tmp_path, space.paths, ("xosc",), "1.2", "uis1", 5)
+    config = BatchConfig(logical_path, tmp_path, space.paths, ("xosc",), "1.2", name, 5)
     worker = Worker(config)
     assert worker.fast is not None  # substitution reproduced the probe export
-    for index, row in enumerate(design(space, Plan("random", 5, seed=21))):
+    for index, row in enumerate(design(space, Plan("random", samples, seed=21))):
         record = worker.run(index, row)
         assert record.status == "written", record.reason
         concrete = apply(logical, dict(zip(space.paths, (float(v) for v in row), strict=True)))
@@ -35,21 +40,19 @@ def test_fast_path_bytes_equal_a_full_export_of_apply(tmp_path: Path) -> None:
     assert worker.fast is not None  # the per-worker byte comparison held
 
 
-def test_a_derived_number_sends_samples_to_the_full_export(tmp_path: Path) -> None:
+def test_the_derived_delay_is_distance_over_the_sampled_speed(tmp_path: Path) -> None:
     logical_path = EXAMPLES / "uis2-logical.xmi"
-    logical = io.load_scenario(logical_path).root
-    space = parameter_space(logical)
-    worker = Worker(BatchConfig(logical_path, tmp_path, space.paths, ("xosc",), "1.2", "uis2", 2))
-    assert worker.fast is None  # the probe's substitution did not reproduce the export
-    for index, row in enumerate(design(space, Plan("random", 2, seed=21))):
-        record = worker.run(index, row)
-        assert record.status == "written", record.reason
-        concrete = apply(logical, dict(zip(space.paths, (float(v) for v in row), strict=True)))
-        target = tmp_path / record.files[0]
-        expected = build_xosc(
-            concrete, version="1.2", source_path=logical_path, output_path=target
-        ).data
-        assert target.read_bytes() == expected
+    space = parameter_space(io.load_scenario(logical_path).root)
+    worker = Worker(BatchConfig(logical_path, tmp_path, space.paths, ("xosc",), "1.2"))
+    assert worker.fast is not None
+    speed = space.paths.index("DriveDistance_1.speed")
+    row = [5.0, 7.0, 4.0, 10.0, 15.0, 1.5]
+    for sampled, delay in [(8.0, b'delay="7.5"'), (12.0, b'delay="5.0"')]:  # 60 m at that speed
+        row[speed] = sampled
+        assert delay in worker.fast.render(row)
+    # At 0 m/s the DriveDistance never finishes: the full export refuses that sample itself.
+    row[speed] = 0.0
+    assert not worker.fast.covers(row)
 
 
 def test_samples_breaking_a_rule_are_skipped_with_a_reason(tmp_path: Path) -> None:

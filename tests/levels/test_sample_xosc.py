@@ -14,7 +14,7 @@ from sceml.levels.batch import BatchConfig, Worker
 from sceml.levels.sampling import Plan, design
 from sceml.levels.space import parameter_space
 
-#: UIS1: UIS2's samples take the full export (its DriveDistance's duration is derived).
+#: UIS1 (tests/levels/test_batch.py covers UIS2's derived delay on the same path).
 LOGICAL = Path(__file__).resolve().parents[2] / "examples" / "uis1-logical.xmi"
 
 

@@ -11,7 +11,7 @@ import pytest
 from sceml import io
 from sceml.levels.paths import LevelError
 from sceml.levels.sampling import Plan, design, plan_for, sample_row, values_at
-from sceml.levels.space import ParameterSpace, parameter_space
+from sceml.levels.space import Dimension, ParameterSpace, parameter_space
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
@@ -74,3 +74,14 @@ def test_random_sample_does_not_depend_on_n(space: ParameterSpace) -> None:
 def test_index_out_of_range_is_refused(space: ParameterSpace) -> None:
     with pytest.raises(LevelError):
         values_at(space, Plan("random", 5, seed=0), np.array([5]))
+
+
+@pytest.mark.parametrize(("seed", "n", "d"), [(0, 1, 1), (7, 50, 6), (12345, 2000, 3)])
+def test_lhs_design_is_scipys(seed: int, n: int, d: int) -> None:
+    # The design is drawn without scipy; it must stay the one scipy's LatinHypercube draws.
+    from scipy.stats import qmc
+
+    dims = tuple(Dimension(f"p{i}", "uniform", low=0.0, high=1.0) for i in range(d))
+    ours = design(ParameterSpace(dims), Plan("lhs", n, seed))
+    theirs = qmc.LatinHypercube(d, rng=np.random.default_rng(seed)).random(n)
+    assert np.array_equal(ours, theirs)

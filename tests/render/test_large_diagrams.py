@@ -17,19 +17,16 @@ from sceml.render.report import build_report
 
 REPO = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(REPO / "benchmarks"))
-from validate_scale import build_library, build_scenario  # noqa: E402
+from scale_scenarios import write  # noqa: E402
 
 EXAMPLES = REPO / "examples"
 
 
 @pytest.fixture(scope="module")
 def big(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    """A 600-node synthetic scenario (and the library its module uses come from), on disk."""
-    folder = tmp_path_factory.mktemp("big")
-    library = build_library()
-    io.save(library, folder / "library.xmi")
-    pause = io.load_library(folder / "library.xmi").root.modules[0]
-    return io.save(build_scenario(600, pause), folder / "big.xmi")
+    """A generated scenario of about 600 nodes on the real map (with the library and the map it
+    names beside it), on disk."""
+    return write(600, tmp_path_factory.mktemp("big"))
 
 
 def test_a_diagram_above_the_limit_is_refused_before_anything_is_drawn(

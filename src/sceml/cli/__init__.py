@@ -7,6 +7,11 @@ drawing) is imported only when that command runs, or when `--help` lists them al
 
 from __future__ import annotations
 
+import atexit
+import os
+import sys
+import threading
+
 import click
 
 from .common import LazySceMLGroup
@@ -54,8 +59,48 @@ def cli() -> None:
 
 
 def main() -> None:
-    """Console-script entry point."""
-    cli()
+    """Console-script entry point: run the command, then end the process without teardown."""
+    try:
+        cli()
+    except SystemExit as done:
+        # A message instead of a status (sys.exit("...")) is printed by the ordinary exit.
+        if done.code is None or isinstance(done.code, int):
+            end_now(done.code or 0)
+        raise
+
+
+def end_now(code: int) -> None:
+    """End the process with `code` once its output is out, without freeing the model.
+
+    The interpreter's own exit collects every object it still holds: for a loaded model, a
+    million pyecore objects in reference cycles, 0.5 s at 10k nodes and 5-10 s at 200k, after
+    the command has said everything. The exit handlers still run (temporary folders, logging);
+    what is skipped is only the freeing, which the operating system does at once. A thread or
+    child process still running gets the ordinary exit, which waits for it.
+    """
+    if any(t.is_alive() and not t.daemon for t in threading.enumerate() if t is not _MAIN):
+        return
+    multiprocessing = sys.modules.get("multiprocessing")
+    if multiprocessing is not None and multiprocessing.active_children():
+        return
+    if not _flushed():
+        return  # a closed pipe or stream: the ordinary exit reports it
+    atexit._run_exitfuncs()  # what the interpreter's exit would run, in the same order
+    _flushed()
+    os._exit(code)
+
+
+_MAIN = threading.main_thread()
+
+
+def _flushed() -> bool:
+    """Flush stdout and stderr; False if either cannot take it."""
+    try:
+        sys.stdout.flush()
+        sys.stderr.flush()
+    except (OSError, ValueError):
+        return False
+    return True
 
 
 def commands() -> dict[str, click.Command]:

@@ -108,6 +108,25 @@ class LazySceMLGroup(SceMLGroup):
             *(n for n in super().list_commands(ctx) if n not in self.lazy_commands),
         ]
 
+    def format_commands(self, ctx: click.Context, formatter: click.HelpFormatter) -> None:
+        """The list of commands, from their summaries: nothing is imported to show it."""
+        from .summaries import SUMMARIES
+
+        names = self.list_commands(ctx)
+        if any(name not in SUMMARIES and name not in self.commands for name in names):
+            super().format_commands(ctx, formatter)  # a command without a summary: import all
+            return
+        limit = formatter.width - 6 - max(len(name) for name in names)
+        rows = []
+        for name in names:
+            command = self.commands.get(name)
+            if command is None:  # shortened by click's own rule, as the command would be
+                command = click.Command(name, help=SUMMARIES[name])
+            if not command.hidden:
+                rows.append((name, command.get_short_help_str(limit)))
+        with formatter.section("Commands"):
+            formatter.write_dl(rows)
+
     def get_command(self, ctx: click.Context, cmd_name: str) -> click.Command | None:
         target = self.lazy_commands.get(cmd_name)
         if target is None or cmd_name in self.commands:

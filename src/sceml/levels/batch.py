@@ -54,6 +54,7 @@ from .apply import FlatTemplate, copy_scenario, set_level
 from .checks import SampleChecker
 from .manifest import SampleRecord
 from .paths import place_value, resolve, slots
+from .space import parameter_space
 from .xosc import SampleXosc, XoscWriter
 
 FORMATS = ("xmi", "xosc")
@@ -103,7 +104,10 @@ class Worker:
         self.verified = False
         if "xosc" in config.formats:
             self.xosc = XoscWriter(config.logical, config.osc_version)
-            self.fast = _fast_path(self.xosc, self.template, config.out_dir / "probe.xosc")
+            # Rendered at the nominal values (midpoints, means): a row the export accepts.
+            nominal = {d.path: d.nominal() for d in parameter_space(logical).dimensions}
+            probe = [nominal.get(path, 0.0) for path in config.paths]
+            self.fast = _fast_path(self.xosc, self.template, config.out_dir / "probe.xosc", probe)
         self.xmi_copy = None
         if "xmi" in config.formats:
             self.xmi_copy = _xmi_working_copy(logical, config.paths)
@@ -143,7 +147,7 @@ class Worker:
             self.verified = True
             if not self.fast.matches(flat, row):
                 self.fast = None
-        if self.fast is not None:
+        if self.fast is not None and self.fast.covers(row):
             texts = self.fast.texts(row)
             problem = self.fast.schema_problem(row, texts)
             return (None, problem) if problem else (self.fast.render(row, texts), "")
@@ -181,9 +185,11 @@ def write_sample(folder: Path, produced: Produced, staging: Path | None = None) 
     return produced.record
 
 
-def _fast_path(writer: XoscWriter, template: FlatTemplate, probe: Path) -> SampleXosc | None:
+def _fast_path(
+    writer: XoscWriter, template: FlatTemplate, probe: Path, row: Sequence[float]
+) -> SampleXosc | None:
     try:
-        fast = SampleXosc(writer, template, probe)
+        fast = SampleXosc(writer, template, probe, row)
     except SceMLError:
         return None  # the per-sample export will report why
     return fast if fast.usable else None

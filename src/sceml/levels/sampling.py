@@ -10,7 +10,9 @@ Every sample is reproducible from (seed, index) alone:
   `SeedSequence(seed).spawn(n)[i]` gives, without creating the other n - 1.
 - lhs: a Latin hypercube is a joint design of all n samples, so sample i is row i of the design
   scipy's `qmc.LatinHypercube(d, rng=default_rng(seed))` draws for (seed, n). Reproducing one
-  LHS sample needs the n of the original run too.
+  LHS sample needs the n of the original run too. The design is drawn here with numpy alone,
+  step for step as scipy draws it (importing `scipy.stats` costs half a second);
+  tests/levels/test_sampling.py checks that both give the same design.
 """
 
 from __future__ import annotations
@@ -106,10 +108,14 @@ def _random_uniforms(seed: int, index: int, d: int) -> NDArray[np.float64]:
 def _lhs_design(plan: Plan, d: int) -> NDArray[np.float64]:
     if d == 0:
         return np.empty((plan.n, 0))
-    from scipy.stats import qmc  # slow to import; only Latin hypercube sampling needs it
-
-    sampler = qmc.LatinHypercube(d, rng=np.random.default_rng(plan.seed))
-    design: NDArray[np.float64] = sampler.random(plan.n)
+    # scipy's LatinHypercube spawns one child of the generator it is given and draws from it:
+    # first the offsets within each cell, then one shuffle of the cells per dimension.
+    generator = np.random.default_rng(np.random.SeedSequence(plan.seed, spawn_key=(0,)))
+    offsets = generator.uniform(size=(plan.n, d))
+    cells = np.tile(np.arange(1, plan.n + 1), (d, 1))
+    for row in cells:
+        generator.shuffle(row)
+    design: NDArray[np.float64] = (cells.T - offsets) / plan.n
     return design
 
 

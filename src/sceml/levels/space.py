@@ -7,7 +7,8 @@ into parameter values:
 - a Range with a step is a *set* of grid levels min, min+step, ... <= max, equally likely;
 - a DiscreteDistribution is a set of its options, weighted (missing weights count as 1);
 - a Range without a step and a UniformDistribution are continuous uniform;
-- a NormalDistribution is normal, truncated to its bounds where given (scipy's truncnorm).
+- a NormalDistribution is normal, truncated to its bounds where given (the values of
+  scipy's truncnorm, computed by `levels.normal` without importing scipy).
 
 Sets are what grid sampling enumerates; a continuous dimension is held at its *nominal* value
 during a grid sweep (the midpoint, or the normal's mean clipped into its bounds).
@@ -23,6 +24,7 @@ from numpy.typing import NDArray
 
 import scemlmodel as scm
 
+from .normal import truncated_normal_ppf
 from .paths import LevelError, slots
 
 #: A grid dimension may have at most this many levels (a typo'd step must not eat the disk).
@@ -57,12 +59,7 @@ class Dimension:
             return np.asarray(self.levels)[np.minimum(picks, len(self.levels) - 1)]
         if self.kind == "uniform":
             return self.low + u * (self.high - self.low)
-        a, b = (self.low - self.mean) / self.sd, (self.high - self.mean) / self.sd
-        # Imported here: scipy.stats takes half a second to import, and only sampling needs it.
-        from scipy.stats import truncnorm
-
-        drawn: NDArray[np.float64] = truncnorm.ppf(u, a, b, loc=self.mean, scale=self.sd)
-        return np.clip(drawn, self.low, self.high)
+        return truncated_normal_ppf(u, self.low, self.high, self.mean, self.sd)
 
     def nominal(self) -> float:
         """The value a grid sweep holds a continuous dimension at."""

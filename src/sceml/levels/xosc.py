@@ -19,6 +19,7 @@ import scemlmodel as scm
 from .. import schema
 from ..errors import SceMLError
 from ..io import model_path, write_atomically
+from ..players.meaning import drive_distance_duration
 from ..safexml import hardened_parser
 from .apply import FlatTemplate
 
@@ -62,6 +63,13 @@ class XoscWriter:
 _PLACEHOLDER = "SceMLsample"
 _TOKEN = re.compile(rb"\$" + _PLACEHOLDER.encode() + rb"(\d+)")
 _TEXT_TOKEN = re.compile(r"\$" + _PLACEHOLDER + r"(\d+)")
+# A value the exporter derives from sampled ones: DriveDistance's condition delay, which it
+# writes as `${$distance / $speed}` where either is a parameter and as the quotient otherwise.
+_OPERAND = rb"(\$" + _PLACEHOLDER.encode() + rb"\d+|[-+0-9.eE]+)"
+_QUOTIENT = re.compile(rb"\$\{" + _OPERAND + rb" / " + _OPERAND + rb"\}")
+
+#: An operand of a derived value: the index of a sampled number, or a number written as is.
+Operand = int | float
 
 
 class SampleXosc:
@@ -70,8 +78,10 @@ class SampleXosc:
     The export is run once with every sampled value written as a placeholder `$SceMLsample<k>`
     (the export's parameter hook); per sample the placeholders are replaced by the numbers as
     the export writes them, and the top-level ParameterDeclarations are those of a concrete
-    export. Only the sampled numbers change between samples, so when the exporter derives no
-    other value from them the bytes equal a full export. That is checked, not assumed:
+    export. The one value the exporter derives from sampled numbers, a DriveDistance's delay
+    (distance / speed, written `${$distance / $speed}` under the hook), becomes a slot of its
+    own that is computed per sample as the exporter computes it. Should the exporter derive
+    anything else, the bytes would differ from a full export. That is checked, not assumed:
     `matches` compares the result with a full export, and the batch uses this path only while
     those comparisons hold.
 
@@ -84,7 +94,17 @@ class SampleXosc:
     parsed instead.
     """
 
-    def __init__(self, writer: XoscWriter, template: FlatTemplate, target: Path) -> None:
+    def __init__(
+        self,
+        writer: XoscWriter,
+        template: FlatTemplate,
+        target: Path,
+        row: Sequence[float] | None = None,
+    ) -> None:
+        """Render the template at `row` (a sample's numbers; by default those it holds now).
+
+        The export must accept that row: the values it derives (a DriveDistance's time from
+        its speed) are computed from it, so a speed of 0 there would refuse the whole path."""
         from ..export import ParameterDeclarationSpec
         from ..export.values import number
 
@@ -92,7 +112,10 @@ class SampleXosc:
         self.template = template
         self.target = target
         self._number = number
-        row = [t[0].value if t else 0.0 for t in template.targets]
+        if row is None:
+            row = [t[0].value if t else 0.0 for t in template.targets]
+        else:
+            template.fill(row)
         hook = {}
         for k, targets in enumerate(template.targets):
             spec = ParameterDeclarationSpec(f"{_PLACEHOLDER}{k}", number(row[k]))
@@ -101,6 +124,7 @@ class SampleXosc:
         concrete = writer.document(template.scenario, target).data
         marked = writer.document(template.scenario, target, parameters=hook).data
         marked = _with_declarations_of(marked, concrete)
+        marked, self.derived = _derived_slots(marked, len(template.targets))
         self.segments: list[bytes] = _TOKEN.split(marked)
         self.usable = self.render(row) == concrete
         self._tree = _SlottedTree.of(marked, (len(self.segments) - 1) // 2)
@@ -108,8 +132,18 @@ class SampleXosc:
             self._tree = None
 
     def texts(self, row: Sequence[float]) -> list[str]:
-        """Each sampled number as the export writes it."""
-        return [self._number(value) for value in row]
+        """Each sampled number as the export writes it, then each value derived from them."""
+        texts = [self._number(value) for value in row]
+        for distance, speed in self.derived:
+            duration = drive_distance_duration(_operand(distance, row), _operand(speed, row))
+            texts.append(self._number(duration))
+        return texts
+
+    def covers(self, row: Sequence[float]) -> bool:
+        """Whether this path gives the sample's document: every derived value is finite.
+
+        A DriveDistance at 0 m/s never finishes; the full export refuses it with its reason."""
+        return all(_operand(speed, row) > 0 for _, speed in self.derived)
 
     def render(self, row: Sequence[float], texts: Sequence[str] | None = None) -> bytes:
         """The document bytes of one sample (`texts`: its `texts(row)`, if already made)."""
@@ -191,6 +225,28 @@ class _SlottedTree:
         """Whether the tree filled with `texts` equals the tree that `data` parses into."""
         parsed = etree.fromstring(data, _parser())
         return bool(etree.tostring(self.filled(texts)) == etree.tostring(parsed))
+
+
+def _derived_slots(marked: bytes, sampled: int) -> tuple[bytes, list[tuple[Operand, Operand]]]:
+    """`marked` with each derived quotient made a placeholder of its own, numbered after the
+    `sampled` ones, and the operands of each (distance, speed)."""
+    derived: list[tuple[Operand, Operand]] = []
+
+    def slot(match: re.Match[bytes]) -> bytes:
+        derived.append((_operand_of(match.group(1)), _operand_of(match.group(2))))
+        return f"${_PLACEHOLDER}{sampled + len(derived) - 1}".encode()
+
+    return _QUOTIENT.sub(slot, marked), derived
+
+
+def _operand_of(text: bytes) -> Operand:
+    token = _TOKEN.fullmatch(text)
+    return int(token.group(1)) if token else float(text)
+
+
+def _operand(operand: Operand, row: Sequence[float]) -> float:
+    # The export computes from the numbers as it writes them; repr reads back as the same float.
+    return float(row[operand]) if isinstance(operand, int) else operand
 
 
 def _with_declarations_of(marked: bytes, concrete: bytes) -> bytes:
