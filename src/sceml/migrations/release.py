@@ -15,7 +15,7 @@ EXPORTS = (("1.0", "generic"), ("1.3", "generic"), ("1.0", "carla"))
 def keep_release(root: Path) -> Path:
     """Copy the current release's metamodel and material into the history; the new folder."""
     from .. import io
-    from ..export.writer import export_to_file
+    from ..export.writer import ExportError, export_to_file
 
     current = ecore.read(root / "metamodel" / "scemlmodel.ecore")
     folder = root / "metamodel" / "history" / current.version
@@ -36,9 +36,12 @@ def keep_release(root: Path) -> Path:
             for version, profile in EXPORTS:
                 suffix = version if profile == "generic" else profile
                 target = folder / "exports" / f"{example.stem}-{suffix}.xosc"
-                export_to_file(
-                    document.root, target, version=version, profile=profile, source_path=example
-                )
+                try:
+                    export_to_file(
+                        document.root, target, version=version, profile=profile, source_path=example
+                    )
+                except ExportError:
+                    continue  # that version or profile cannot say this example: nothing to keep
     except BaseException:
         shutil.rmtree(folder, ignore_errors=True)
         raise
