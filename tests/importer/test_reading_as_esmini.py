@@ -325,10 +325,11 @@ def test_a_relative_position_reads_a_road_position_start(tmp_path: Path) -> None
     assert (pose.x, pose.y) == pytest.approx((60.0, -1.75))
 
 
-@pytest.mark.parametrize(("d_lane", "direction"), [(1, "left"), (-1, "right")])
-def test_a_change_into_the_lane_of_an_actor_placed_relative_reads_where_it_starts(
-    tmp_path: Path, d_lane: int, direction: str
+@pytest.mark.parametrize("d_lane", [1, -1])
+def test_a_change_into_the_lane_of_an_actor_placed_relative_keeps_that_actor(
+    tmp_path: Path, d_lane: int
 ) -> None:
+    # LaneChange names the actor whose lane it goes into (metamodel 1.1): no left/right guess.
     change = (
         '<Maneuver name="M"><Event name="Change" priority="overwrite"><Action name="ChangeAction">'
         "<PrivateAction><LateralAction><LaneChangeAction><LaneChangeActionDynamics "
@@ -352,7 +353,7 @@ def test_a_change_into_the_lane_of_an_actor_placed_relative_reads_where_it_start
     )
     node = next(n for n in import_file(path).scenario.nodes if n.name == "Change")
     assert node.eClass.name == "LaneChange"
-    assert node.direction.name == direction
+    assert (node.targetActor.name, node.lanes) == ("Other", 0)
 
 
 # --- storyboard --------------------------------------------------------------------------

@@ -27,6 +27,10 @@ SUMMARIES = {
     "module": "Work with module libraries: list, show and extract reusable sub-scenarios.",
     "flatten": "Expand every module use in scenario FILE, recursively, and save the result as OUT.",
     "migrate": "Rewrite scenario and library FILES saved with an older release of the SceML metamodel.",
+    "extract": "Extract a concrete SceML scenario from the recorded drive RECORDING.",
+    "diff": "Show what changed from scenario OLD to scenario NEW, by name and path.",
+    "merge": "Merge the changes from BASE to THEIRS into OURS, and write the result to OUT.",
+    "git-setup": "Configure git so that `git diff` shows `sceml diff` and `git merge` uses `sceml merge` for *.xmi files.",
     "dev": "Developer commands (need a source checkout and `pip install -e .[dev]`).",
     "edit": "Edit FILE, a scenario (.xmi), in the browser; a missing FILE starts a new scenario.",
 }

@@ -227,6 +227,7 @@ def _at_the_start(build: Build, position: scm.Position | None) -> scm.Position |
     )
 
 
+@_maps("PrivateAction/RoutingAction/AcquirePositionAction")
 def _acquire(
     build: Build, request: Request, acquire: etree._Element, motion: Motion
 ) -> scm.ActionNode | str:
