@@ -331,3 +331,27 @@ def test_modules_expand_with_room_unique_labels_fitting_roles_and_a_way_back(
     toolbar.get_by_role("button", name="Back to scenario").click()
     expect(toolbar).to_contain_text("uis2-concrete.xmi")
     expect(toolbar.get_by_role("button", name="Back to scenario")).to_have_count(0)
+
+
+def test_expanding_a_use_fits_the_whole_diagram_in_view(
+    page: Page, editor: object, examples_copy: Path
+) -> None:
+    # UIS2 has no saved places: ELK lays it out again, and the page must fit what it drew (it
+    # used to keep the old view, the frame spilling past the canvas's edge).
+    url = editor(examples_copy / "uis2-concrete.xmi")  # type: ignore[operator]
+    open_editor(page, url)
+    node(page, "CrossingManeuver_1").get_by_role("button", name="Expand").click()
+    expect(node(page, "CrossingManeuver_1.Cross_1")).to_be_visible()
+    page.wait_for_timeout(1500)  # the fit glides for 200 ms
+    pane = page.locator(".react-flow").bounding_box()
+    assert pane is not None
+    for box in page.locator(".react-flow__node").evaluate_all(
+        "els => els.map(e => { const r = e.getBoundingClientRect();"
+        " return {x: r.x, y: r.y, width: r.width, height: r.height}; })"
+    ):
+        assert (
+            pane["x"] - 1 <= box["x"] and box["x"] + box["width"] <= pane["x"] + pane["width"] + 1
+        )
+        assert (
+            pane["y"] - 1 <= box["y"] and box["y"] + box["height"] <= pane["y"] + pane["height"] + 1
+        )

@@ -233,6 +233,9 @@ export function Editor() {
   const arrange = useCallback(
     async (to: Direction = direction) => {
       const positions = await diagram.arrange(to);
+      // Fit again once the arranged places are drawn (after an expand, the first fit came
+      // before them).
+      fitNext.current = true;
       if (editable) void server.ops([{ op: "move", positions }], "Arrange");
     },
     [diagram, direction, editable, server],

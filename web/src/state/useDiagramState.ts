@@ -111,7 +111,9 @@ export function useDiagramState(
       const nextEdges = reuse(flowEdges(shown, selectedEdges, view.readOnly), drawn.current.edges, sameEdge);
       setNodes(nextNodes);
       setEdges(nextEdges);
-      setLaidOut(view);
+      // A new object for every layout: expanding a use lays out the same view again, and the
+      // page fits the view after that layout (a same-object update would not be seen).
+      setLaidOut({ ...view });
     });
     return () => {
       cancelled = true;
