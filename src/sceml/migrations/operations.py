@@ -62,6 +62,24 @@ def _related(old: Metamodel, a: str, b: str) -> bool:
     return old.is_kind_of(a, b) or old.is_kind_of(b, a)
 
 
+def _accounts_for_removal(change: BreakingChange, old: Metamodel, cls: str, feature: str) -> bool:
+    """Whether `change` is the removal of `feature` from `cls` (or a class related to it)."""
+    return (
+        change.kind == "feature-removed"
+        and change.feature == feature
+        and _related(old, change.cls, cls)
+    )
+
+
+def _new_child(model: TreeModel, parent: etree._Element, tag: str, kind: str) -> etree._Element:
+    """A contained element of class `kind`, placed at its parent's line (it has none of its own)."""
+    child = etree.SubElement(parent, tag)
+    child.set(XSI_TYPE, f"{model.prefix}:{kind}")
+    child.sourceline = parent.sourceline
+    model.classes[child] = kind
+    return child
+
+
 def _need_class(old: Metamodel, cls: str, what: str) -> list[str]:
     return [] if cls in old.classes else [f"{what}: release {old.version} has no class {cls}"]
 
@@ -136,11 +154,7 @@ class RenameFeature(Operation):
         return _need_feature(old, self.cls, self.old_name, self.describe())
 
     def covers(self, change: BreakingChange, old: Metamodel) -> bool:
-        return (
-            change.kind == "feature-removed"
-            and change.feature == self.old_name
-            and _related(old, change.cls, self.cls)
-        )
+        return _accounts_for_removal(change, old, self.cls, self.old_name)
 
     def describe(self) -> str:
         return f"rename {self.cls}.{self.old_name} to {self.new_name}"
@@ -163,10 +177,7 @@ class MoveFeature(Operation):
                 continue
             holder = next((c for c in element if c.tag == self.into), None)
             if holder is None:
-                holder = etree.SubElement(element, self.into)
-                holder.set(XSI_TYPE, f"{model.prefix}:{self.into_type}")
-                holder.sourceline = element.sourceline
-                model.classes[holder] = self.into_type
+                holder = _new_child(model, element, self.into, self.into_type)
             if text is not None:
                 del element.attrib[self.feature]
                 holder.set(self.feature, text)
@@ -181,11 +192,7 @@ class MoveFeature(Operation):
         return found
 
     def covers(self, change: BreakingChange, old: Metamodel) -> bool:
-        return (
-            change.kind == "feature-removed"
-            and change.feature == self.feature
-            and _related(old, change.cls, self.cls)
-        )
+        return _accounts_for_removal(change, old, self.cls, self.feature)
 
     def describe(self) -> str:
         return f"move {self.cls}.{self.feature} into {self.into} ({self.into_type})"
@@ -221,14 +228,11 @@ class AddFeature(Operation):
             element.set(self.feature, value)
             record.add(self.name, element, f"{self.feature} = {value!r} (computed)", self.note)
         elif isinstance(self.default, Mapping):
-            child = etree.SubElement(element, self.feature)
             kind = self.default["type"]
-            child.set(XSI_TYPE, f"{model.prefix}:{kind}")
+            child = _new_child(model, element, self.feature, kind)
             for key, value in self.default.items():
                 if key != "type":
                     child.set(key, str(value))
-            child.sourceline = element.sourceline
-            model.classes[child] = kind
             shown = ", ".join(f"{k}={v}" for k, v in self.default.items() if k != "type")
             record.add(self.name, element, f"{self.feature} = {kind} {shown}".rstrip(), self.note)
         elif self.default is not None:
@@ -480,11 +484,7 @@ class DeleteFeature(Operation):
         return found + ([] if self.note else [f"{self.describe()}: a deletion needs a note"])
 
     def covers(self, change: BreakingChange, old: Metamodel) -> bool:
-        return (
-            change.kind == "feature-removed"
-            and change.feature == self.feature
-            and _related(old, change.cls, self.cls)
-        )
+        return _accounts_for_removal(change, old, self.cls, self.feature)
 
     def describe(self) -> str:
         return f"delete {self.cls}.{self.feature}"
