@@ -31,8 +31,9 @@ def named_files(model: EObject, origin: str | Path | None) -> list[Path]:
                 found.append(Path(resource.uri.normalize()))
     root = root_node(model) if isinstance(model, scm.Scenario) else None
     reference = map_reference(root.map if root is not None else None, origin, roots=())
-    if reference is not None and reference.path is not None:
-        found.append(reference.path)
+    needed = None if reference is None else reference.path or reference.scenery
+    if needed is not None:
+        found.append(needed)
     return list(dict.fromkeys(path.resolve() for path in found))
 
 

@@ -502,3 +502,32 @@ def test_lane_sections_listed_out_of_order_are_read_by_s(tmp_path: Path) -> None
     assert [section.s for section in road.sections] == [0.0, 50.0]
     assert road.section_at(20.0).lane(2).type == "sidewalk"
     assert road.section_at(70.0).lane(2).type == "biking"
+
+
+def _linked_road(road_id: str, x: float, successor: str = "") -> str:
+    plan = (
+        f'<planView><geometry s="0" x="{x}" y="0" hdg="0" length="10"><line/></geometry>'
+        "</planView>\n"
+    )
+    link = f"<link>{successor}</link>\n" if successor else ""
+    return f'<road id="{road_id}" junction="-1" length="10">\n{link}{plan}{_LANES}</road>\n'
+
+
+def test_a_direct_junction_leads_into_its_linked_road(tmp_path: Path) -> None:
+    """OpenDRIVE 1.7's direct junction names `linkedRoad`, not `connectingRoad` (esmini's
+    soderleden.xodr): it reads, and traffic from the incoming road goes on into that road."""
+    junction = (
+        '<junction id="9" name="" type="direct">\n'
+        '<connection id="0" incomingRoad="1" linkedRoad="2" contactPoint="start">'
+        '<laneLink from="-1" to="-1"/></connection>\n</junction>\n'
+    )
+    successor = '<successor elementType="junction" elementId="9"/>'
+    path = tmp_path / "direct.xodr"
+    text = _HEADER + _linked_road("1", 0.0, successor) + _linked_road("2", 10.0) + junction
+    path.write_text(text + "</OpenDRIVE>\n", encoding="utf-8")
+    road_map = load_map(path)
+    (connection,) = road_map.junctions["9"].connections
+    assert (connection.incoming_road, connection.connecting_road) == ("1", "2")
+    (route,) = routes_from(road_map, "1", -1)
+    assert (route.connecting_road, route.turn) == ("2", "straight")
+    assert route.reaches("2", -1)

@@ -14,6 +14,7 @@ import scemlmodel as scm
 
 from .. import graph
 from ..errors import SceMLError
+from ..maps.reference import is_scenery_file
 from .actions import PLANNERS
 from .context import Context, Event, node_name
 from .entities import entity, init_actions
@@ -48,6 +49,9 @@ class View:
     marker: dict[str, str]
     parameters: list[Any]
     logic_file: str
+    #: The RoadNetwork element that names the map: a scene graph with no roads, or the usual
+    #: LogicFile (OpenDRIVE or a simulator town).
+    road_network: str
     entities: list[dict[str, Any]]
     environment: dict[str, Any]
     privates: list[dict[str, Any]]
@@ -105,6 +109,7 @@ def build_view(scenario: scm.Scenario, options: Options) -> View:
         marker={"name": ctx.marker, "type": "string", "value": "none"},
         parameters=sorted(ctx.values.declarations.values(), key=lambda spec: spec.name),
         logic_file=options.logic_file,
+        road_network="SceneGraphFile" if is_scenery_file(options.logic_file) else "LogicFile",
         entities=entities,
         environment=env,
         privates=privates,

@@ -188,6 +188,12 @@ def _start(
     assert header is not None  # the XSD requires it
     logic = source.root.find("RoadNetwork/LogicFile")
     given = None if logic is None else logic.get("filepath")
+    scenery = source.root.find("RoadNetwork/SceneGraphFile")
+    if not given and scenery is not None and scenery.get("filepath"):
+        # A place with no roads (esmini's parking lot): the scene graph is the map, and every
+        # position is a world position.
+        given = scenery.get("filepath")
+        report.add("mapped", f"the scene graph {given!r} (no road network) as the map")
     if map_path is not None:
         given = Path(
             os.path.relpath(Path(map_path).resolve(), source.path.parent.resolve())

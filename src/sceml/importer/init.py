@@ -73,6 +73,9 @@ def _private(build: Build, actor: scm.Actor, private: etree._Element) -> bool:
         actor.startPosition = start
         build.report.add("mapped", f"{actor.name}: start position", build.where(teleport))
         return True
+    follow = private.find("RoutingAction/FollowTrajectoryAction")
+    if follow is not None and actor.startPosition is None:
+        return _starts_on_trajectory(build, actor, private, follow)
     speed = private.find("LongitudinalAction/SpeedAction")
     target = None if speed is None else speed.find("SpeedActionTarget/AbsoluteTargetSpeed")
     if speed is None or target is None:
@@ -110,6 +113,41 @@ def _gradual(
         f"is {made.name} from the start, from {before:g} m/s (it is not the initial speed)",
         build.where(speed),
     )
+    return True
+
+
+def _starts_on_trajectory(
+    build: Build, actor: scm.Actor, private: etree._Element, follow: etree._Element
+) -> bool:
+    """An Init trajectory of an actor that has no TeleportAction: players put the actor at the
+    trajectory's first vertex, so that is its start, and the trajectory is a FollowTrajectory
+    from the start (a file would otherwise lose the actor's start: SCEML-E002). A NURBS curve
+    starts at its first control point (players clamp its knots)."""
+    shape = follow.find(".//Trajectory/Shape")
+    first = None
+    if shape is not None:
+        first = shape.find("Polyline/Vertex")
+        first = shape.find("Nurbs/ControlPoint") if first is None else first
+    start = None if first is None else place(build, first, initial=True)
+    if start is None:
+        return False
+    actor.startPosition = start
+    build.report.add(
+        "mapped",
+        f"{actor.name}: start position at the first point of its Init trajectory",
+        build.where(first),
+    )
+    wrapper = etree.Element("Action", name=f"Init_{actor.name}_trajectory")
+    wrapper.append(deepcopy(private))
+    name = str(actor.name)
+    motion = Motion(speed={name: build.init_speeds.get(name, _speed_of(actor))})
+    made = map_action(build, Request(wrapper, actor, f"Init_{name}_trajectory"), motion)
+    if isinstance(made, str):
+        _keep(build, private, actor)  # the start is known; the trajectory stays as it was read
+        return True
+    if isinstance(made, scm.FollowTrajectory) and len(made.waypoints) > 1:
+        made.waypoints.remove(made.waypoints[0])  # the start itself
+    build.flow(build.root, made)
     return True
 
 

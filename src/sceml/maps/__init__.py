@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING, Any
 from .model import (
     BICYCLE_LANE_TYPES,
     PEDESTRIAN_LANE_TYPES,
+    VEHICLE_EDGE_LANE_TYPES,
     VEHICLE_LANE_TYPES,
     LaneBand,
     LaneCoordinate,
@@ -33,6 +34,7 @@ if TYPE_CHECKING:
 __all__ = [
     "BICYCLE_LANE_TYPES",
     "PEDESTRIAN_LANE_TYPES",
+    "VEHICLE_EDGE_LANE_TYPES",
     "VEHICLE_LANE_TYPES",
     "LaneBand",
     "LaneCoordinate",

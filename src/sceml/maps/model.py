@@ -30,6 +30,9 @@ VEHICLE_LANE_TYPES = frozenset(
         "connectingramp",
     }
 )
+#: Lane types at the edge of the roadway where a vehicle may stand or pull over (a breakdown on
+#: the shoulder, a parked car, a motorcycle on a hard shoulder) but does not normally drive.
+VEHICLE_EDGE_LANE_TYPES = frozenset({"shoulder", "stop", "parking", "restricted"})
 #: Lane types a bicycle may use: the roadway and the lanes beside it meant for people.
 BICYCLE_LANE_TYPES = VEHICLE_LANE_TYPES | {"biking", "sidewalk", "walking", "shoulder"}
 #: Lane types a pedestrian may use: sidewalks, and the roadway (pedestrians cross it).

@@ -223,7 +223,14 @@ class _Reader:
             Connection(
                 id=connection.get("id", ""),
                 incoming_road=self.text(connection, "incomingRoad"),
-                connecting_road=self.text(connection, "connectingRoad"),
+                connecting_road=self.text(
+                    connection,
+                    # A direct junction (OpenDRIVE 1.7) links the incoming road straight to
+                    # `linkedRoad`: that road is where its traffic goes on.
+                    "linkedRoad"
+                    if element.get("type") == "direct" and connection.get("connectingRoad") is None
+                    else "connectingRoad",
+                ),
                 contact_point=connection.get("contactPoint", "start"),
                 lane_links=tuple(
                     LaneLink(int(self.number(link, "from")), int(self.number(link, "to")))

@@ -172,8 +172,11 @@ def build_scene(scenario: scm.Scenario, scenario_file: str | Path | None) -> Map
             "the scenario names no map; the map view needs an OpenDRIVE (.xodr) file", file=where
         )
     if reference.path is None:
+        what = (
+            "a scene graph with no roads" if reference.scenery is not None else "a simulator town"
+        )
         raise MapViewError(
-            f"the scenario's map {reference.text!r} is a simulator town; the map view needs an "
+            f"the scenario's map {reference.text!r} is {what}; the map view needs an "
             "OpenDRIVE (.xodr) file",
             file=where,
         )

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
+from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -22,6 +23,7 @@ from ..graph import Flows, OwnFlows, reachable, root_node
 from ..maps import (
     BICYCLE_LANE_TYPES,
     PEDESTRIAN_LANE_TYPES,
+    VEHICLE_EDGE_LANE_TYPES,
     VEHICLE_LANE_TYPES,
     LaneCoordinate,
     MapError,
@@ -87,7 +89,7 @@ def _loaded(reference: MapReference, context: Context) -> RoadMap | MapError:
 def _map_of(obj: EObject, context: Context) -> RoadMap | None:
     """The readable OpenDRIVE map `obj`'s scenario names, or None (no map, a town, unreadable)."""
     reference = _reference(obj, context)
-    if reference is None or reference.is_town:
+    if reference is None or reference.path is None:
         return None
     loaded = _loaded(reference, context)
     return None if isinstance(loaded, MapError) else loaded
@@ -143,7 +145,7 @@ def _lane_words(lane: LaneCoordinate) -> str:
 )
 def map_file_is_opendrive(root: scm.RootNode, context: Context) -> Iterator[Finding]:
     reference = _reference(root, context)
-    if reference is None or reference.is_town:
+    if reference is None or reference.path is None:
         return
     loaded = _loaded(reference, context)
     if isinstance(loaded, MapError):
@@ -155,19 +157,20 @@ def map_file_is_opendrive(root: scm.RootNode, context: Context) -> Iterator[Find
     "SCEML-R002",
     INFO,
     "RootNode",
-    "a map given as a simulator town name is not read: positions are not checked against it",
+    "a map given as a simulator town name or a scene graph (3D scenery with no roads) is not "
+    "read: positions are not checked against it",
     source=_SOURCE,
 )
 def town_is_not_checked(root: scm.RootNode, context: Context) -> Iterator[Finding]:
     reference = _reference(root, context)
-    if reference is not None and reference.is_town:
-        yield (
-            root,
-            (
-                f"map {reference.text!r} is a simulator town, not an OpenDRIVE file: "
-                "positions are not checked against it"
-            ),
-        )
+    if reference is None or reference.path is not None:
+        return
+    what = (
+        "a scene graph with no roads (every position is a world position)"
+        if reference.scenery is not None
+        else "a simulator town, not an OpenDRIVE file"
+    )
+    yield root, f"map {reference.text!r} is {what}: positions are not checked against it"
 
 
 # --- positions --------------------------------------------------------------------------------
@@ -216,12 +219,51 @@ def road_position_exists(position: scm.RoadPosition, context: Context) -> Iterat
                 return
 
 
+@dataclass(frozen=True)
+class _Ground:
+    """What a position stands on: the lane types there (none: off the road network) and how to
+    name the place in a message."""
+
+    types: tuple[str, ...]
+    place: str  # "lane -2 of road 1" or "(5.00, -15.00)"
+    lane: str  # "" for a lane position; " (road 1, lane -2)" for a world point
+    off_road: str = ""  # the nearest lane, for a point off the road network
+
+    def words(self, lane_type: str) -> str:
+        return (
+            f"{self.place} is a {lane_type} lane"
+            if not self.lane
+            else f"{self.place} is on a {lane_type} lane{self.lane}"
+        )
+
+
+def _grounds(position: EObject, road_map: RoadMap, context: Context) -> Iterator[_Ground]:
+    """The ground under each point of a position (a relative start where the starts put it)."""
+    try:
+        points = _relative_start(position, road_map, context) or locate(position, road_map)
+    except PositionError:
+        return  # SCEML-R003 or R008 says what is wrong with the position
+    for point in points:
+        if point.lane is not None:
+            road_id, lane_id, s, _ = point.lane
+            lane_type = road_map.band(road_id, lane_id, s).lane.type
+            yield _Ground((lane_type,), f"lane {lane_id} of road {road_id}", "")
+            continue
+        lanes = road_map.world_to_lane(point.x, point.y, POSITION_TOLERANCE)
+        if not lanes:
+            yield _Ground((), _at(point.x, point.y), "", _nearest(road_map, point))
+            continue
+        words = f" ({_lane_words(lanes[0])})"
+        yield _Ground(tuple(lane.lane_type for lane in lanes), _at(point.x, point.y), words)
+
+
 @constraint(
     "SCEML-R004",
     ERROR,
     ("WorldPosition", "LanePosition", "RoadPosition", *RELATIVE_KINDS),
-    "a position lies on a lane that fits its actor: driving lanes for vehicles; the roadway, "
-    "sidewalks and bike lanes for bicycles and pedestrians",
+    "a position lies on a lane that fits its actor: driving lanes (or a shoulder, stop or "
+    "parking lane) for vehicles; the roadway, sidewalks and bike lanes for bicycles and "
+    "pedestrians",
     source=_SOURCE,
     through_modules=True,
 )
@@ -231,42 +273,45 @@ def position_fits_actor(position: EObject, context: Context) -> Iterator[Finding
     if road_map is None or actor is None:
         return
     usable, needs = _usable_lanes(actor)
+    if _is_vehicle(actor):
+        usable = usable | VEHICLE_EDGE_LANE_TYPES  # SCEML-R009 warns there
     what = _what(position)
-    try:
-        points = _relative_start(position, road_map, context) or locate(position, road_map)
-    except PositionError:
-        return  # SCEML-R003 or R008 says what is wrong with the position
-    for point in points:
-        if point.lane is not None:
-            road_id, lane_id, s, _ = point.lane
-            lane_type = road_map.band(road_id, lane_id, s).lane.type
-            if lane_type not in usable:
+    for ground in _grounds(position, road_map, context):
+        if not ground.types:
+            yield position, f"{what}: {ground.place} is off the road network{ground.off_road}"
+            return
+        if not any(lane_type in usable for lane_type in ground.types):
+            yield (
+                position,
+                f"{what}: {ground.words(ground.types[0])}; a {_kind(actor)} needs {needs}",
+            )
+            return
+
+
+@constraint(
+    "SCEML-R009",
+    WARNING,
+    ("WorldPosition", "LanePosition", "RoadPosition", *RELATIVE_KINDS),
+    "a vehicle's position on a shoulder, stop, parking or restricted lane is meant: vehicles stand "
+    "or pull over there but do not normally drive there",
+    source=_SOURCE,
+    through_modules=True,
+)
+def vehicle_on_the_edge(position: EObject, context: Context) -> Iterator[Finding]:
+    road_map = _map_of(position, context)
+    actor = performer(position.eContainer())
+    if road_map is None or actor is None or not _is_vehicle(actor):
+        return
+    for ground in _grounds(position, road_map, context):
+        if ground.types and not any(t in VEHICLE_LANE_TYPES for t in ground.types):
+            edge = next((t for t in ground.types if t in VEHICLE_EDGE_LANE_TYPES), None)
+            if edge is not None:
                 yield (
                     position,
-                    (
-                        f"{what}: lane {lane_id} of road {road_id} is a {lane_type} lane; "
-                        f"a {_kind(actor)} needs {needs}"
-                    ),
+                    f"{_what(position)}: {ground.words(edge)}, not a driving lane; a "
+                    f"{_kind(actor)} may stand there, but does it drive there?",
                 )
                 return
-            continue
-        lanes = road_map.world_to_lane(point.x, point.y, POSITION_TOLERANCE)
-        if not lanes:
-            yield (
-                position,
-                f"{what}: {_at(point.x, point.y)} is off the road network{_nearest(road_map, point)}",
-            )
-            return
-        if not any(lane.lane_type in usable for lane in lanes):
-            lane = lanes[0]
-            yield (
-                position,
-                (
-                    f"{what}: {_at(point.x, point.y)} is on a {lane.lane_type} lane "
-                    f"({_lane_words(lane)}); a {_kind(actor)} needs {needs}"
-                ),
-            )
-            return
 
 
 def _relative_start(position: EObject, road_map: RoadMap, context: Context) -> list[Located]:
