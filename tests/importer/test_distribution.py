@@ -265,16 +265,19 @@ def test_ranges_and_sets_map_and_what_does_not_fit_is_reported(tmp_path: Path) -
     assert (go.targetSpeed.min, go.targetSpeed.max, go.targetSpeed.step) == (8.0, 12.0, 2.0)
     assert [o.value for o in go.rate.options] == [1.0, 2.0, 3.0]
     assert [o.weight for o in go.rate.options] == [None, None, None]
-    # The expression keeps the declared Speed: 10 / 2.5.
-    assert _nodes(imported.scenario)["Stop"].rate.value == 4.0
+    # `${$Speed / 2.5}` is affine in Speed: its range is carried through, [8, 12] step 2 / 2.5.
+    stop_rate = _nodes(imported.scenario)["Stop"].rate
+    assert isinstance(stop_rate, scm.Range)
+    assert (stop_rate.min, stop_rate.max, stop_rate.step) == pytest.approx((3.2, 4.8, 0.8))
     assert imported.scenario.nodes[0].level is scm.AbstractionLevel.logical
     assert imported.report.logical == {
         "Go.targetSpeed": "$Speed: [8, 12] step 2",
         "Go.rate": "$Rate: {1, 2, 3}",
+        "Stop.rate": "$Speed * 0.4: [3.2, 4.8] step 0.8",
     }
     assert _messages(imported, "not represented") == [
-        "scenario.xosc:48: $Speed at <SpeedActionDynamics value> keeps its declared value 10 "
-        "(it is used in an expression)",
+        "scenario.pvd.xosc:7: Speed fills 2 places: SceML samples each on its own, OpenSCENARIO "
+        "draws one value for all",
         "scenario.pvd.xosc:13: Unused is distributed but the scenario never uses it",
         "scenario.pvd.xosc:16: Ghost is distributed but the scenario does not declare it",
     ]
@@ -412,7 +415,8 @@ def test_a_parameter_passed_into_a_catalog_entry_is_followed_there(tmp_path: Pat
     assert Path(str(braked[0].file)).name == "ManeuverCatalog.xosc"
     lost = _messages(imported, "not represented")
     assert any("Speed fills 2 places: SceML samples each on its own" in m for m in lost)
-    assert any("$Gap at <LanePosition s>" in m and "used in an expression" in m for m in lost)
+    # The lead starts at `${100 + $Gap + 10}`: the gap's distribution, shifted by 110.
+    assert logical["Lead.startPosition.s"] == "$Gap + 110: U(130, 140)"
 
 
 # The command line and unusable input ---------------------------------------------------------
@@ -442,8 +446,9 @@ def test_the_distribution_option_applies_a_distribution_to_the_scenario(tmp_path
         ],
     )
     assert result.exit_code == 0, result.output
-    assert "1 places logical" in result.output
+    assert "2 places logical" in result.output
     assert "Go.targetSpeed = $Speed: U(8, 12)" in result.output
+    assert "Stop.rate = $Speed * 0.4: U(3.2, 4.8)" in result.output
     # The distribution names another file: applied as asked, and said so.
     assert "elsewhere.xosc; applied to" in result.output
     assert 'level="logical"' in output.read_text()
@@ -487,3 +492,83 @@ def test_distribution_options_that_cannot_be_used_are_refused(case: str, tmp_pat
     assert not output.exists()
     with pytest.raises(XoscImportError):
         import_file(arguments[0], distribution=arguments[2] if len(arguments) > 1 else None)
+
+
+# Expressions of a distributed parameter (issue 24: logical imports keep their logic) -----------
+
+_SPEED_SET = """    <Deterministic>
+      <DeterministicSingleParameterDistribution parameterName="Speed">
+        <DistributionSet><Element value="10"/><Element value="20"/></DistributionSet>
+      </DeterministicSingleParameterDistribution>
+    </Deterministic>"""
+
+
+@pytest.mark.parametrize(
+    ("expression", "carried"),
+    [
+        # A line in Speed, also with a negative slope: carried through.
+        ("${$Speed / 2 + 1}", [6.0, 11.0]),
+        ("${30 - $Speed}", [10.0, 20.0]),  # 30 - {10, 20}: the order of the options turns round
+        # Not a line in Speed: computed from the declared 10 and reported.
+        ("${$Speed * $Speed / 100}", None),
+        ("${floor($Speed / 3)}", None),
+        ("${max($Speed, 15)}", None),
+    ],
+)
+def test_an_affine_expression_carries_the_distribution(
+    tmp_path: Path, expression: str, carried: list[float] | None
+) -> None:
+    pvd = _write(tmp_path, _SPEED_SET)
+    scenario = tmp_path / "scenario.xosc"
+    scenario.write_text(scenario.read_text().replace("${$Speed / 2.5}", expression))
+    imported = import_file(pvd)
+    rate = _nodes(imported.scenario)["Stop"].rate
+    if carried is None:
+        assert isinstance(rate, scm.Value)
+        assert any(
+            "(it is used in an expression)" in m for m in _messages(imported, "not represented")
+        )
+    else:
+        assert isinstance(rate, scm.DiscreteDistribution)
+        assert sorted(option.value for option in rate.options) == carried
+
+
+def test_applied_maps_every_kind_of_value_through_the_line() -> None:
+    from sceml.importer.logical import applied
+
+    normal = applied(
+        scm.NormalDistribution(mean=10.0, standardDeviation=2.0, lowerBound=6.0, upperBound=14.0),
+        -0.5,
+        1.0,
+    )
+    # -0.5 * 10 + 1 = -4; sd 0.5 * 2 = 1; the bounds swap: -0.5 * 14 + 1 = -6, -0.5 * 6 + 1 = -2.
+    assert (normal.mean, normal.standardDeviation, normal.lowerBound, normal.upperBound) == (
+        -4.0,
+        1.0,
+        -6.0,
+        -2.0,
+    )
+    ranged = applied(scm.Range(min=8.0, max=12.0, step=2.0), 0.5, 0.0)
+    assert (ranged.min, ranged.max, ranged.step) == (4.0, 6.0, 1.0)
+    uniform = applied(scm.UniformDistribution(min=1.0, max=3.0), -1.0, 0.0)
+    assert (uniform.min, uniform.max) == (-3.0, -1.0)
+    options = scm.DiscreteDistribution()
+    options.options.extend([scm.WeightedValue(value=1.0, weight=3.0), scm.WeightedValue(value=2.0)])
+    mapped = applied(options, 2.0, 1.0)
+    assert [(o.value, o.weight) for o in mapped.options] == [(3.0, 3.0), (5.0, None)]
+
+
+def test_a_declaration_that_is_a_line_in_the_parameter_carries_it_on(tmp_path: Path) -> None:
+    pvd = _write(tmp_path, _SPEED_SET)
+    scenario = tmp_path / "scenario.xosc"
+    text = scenario.read_text().replace(
+        '<Maneuver name="M">',
+        '<Maneuver name="M"><ParameterDeclarations><ParameterDeclaration name="Half" '
+        'parameterType="double" value="${$Speed / 2}"/></ParameterDeclarations>',
+    )
+    scenario.write_text(text.replace("${$Speed / 2.5}", "${$Half + 1}"))
+    imported = import_file(pvd)
+    rate = _nodes(imported.scenario)["Stop"].rate
+    # Speed {10, 20} / 2 + 1: {6, 11}.
+    assert sorted(option.value for option in rate.options) == [6.0, 11.0]
+    assert imported.report.logical["Stop.rate"] == "$Speed * 0.5 + 1: {6, 11}"

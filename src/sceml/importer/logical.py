@@ -57,16 +57,48 @@ def _place(
         if spec is None or spec.value is None:
             continue
         owner, feature = held.eContainer(), held.eContainmentFeature()
-        owner.eSet(feature, copy_tree(spec.value))
+        placed_value = applied(copy_tree(spec.value), number.link.scale, number.link.shift)
+        owner.eSet(feature, placed_value)
         path = paths.get((id(owner), str(feature.name)), f"{owner.eClass.name}.{feature.name}")
         placed.setdefault(number.parameter, []).append((number.line, number.attribute))
-        build.report.logical[path] = f"${number.parameter}: {params.describe(spec.value)}"
+        described = params.describe(placed_value)
+        build.report.logical[path] = f"{number.link.text()}: {described}"
         build.report.add(
             "mapped",
-            f"{path} <- ${number.parameter}: {params.describe(spec.value)} (logical)",
+            f"{path} <- {number.link.text()}: {described} (logical)",
             (files.get(number.place(), str(build.source.path)), number.line),
         )
     return placed
+
+
+def applied(value: scm.ParameterValue, scale: float, shift: float) -> scm.ParameterValue:
+    """`value` (a fresh copy) with every number it can take mapped by scale * x + shift: what a
+    file computes from a distributed parameter with an affine expression. A negative scale
+    turns the order of bounds round; spreads scale by |scale|; weights stay."""
+    if scale == 1.0 and shift == 0.0:
+        return value
+
+    def line(x: float) -> float:
+        return scale * x + shift
+
+    def bounds(low: float | None, high: float | None) -> tuple[float | None, float | None]:
+        ends = (None if low is None else line(low), None if high is None else line(high))
+        return ends if scale > 0 else (ends[1], ends[0])
+
+    if isinstance(value, scm.Value):
+        value.value = line(value.value)
+    elif isinstance(value, (scm.Range, scm.UniformDistribution)):
+        value.min, value.max = bounds(value.min, value.max)
+        if isinstance(value, scm.Range) and value.step is not None:
+            value.step = abs(scale) * value.step
+    elif isinstance(value, scm.NormalDistribution):
+        value.mean = line(value.mean)
+        value.standardDeviation = abs(scale) * value.standardDeviation
+        value.lowerBound, value.upperBound = bounds(value.lowerBound, value.upperBound)
+    elif isinstance(value, scm.DiscreteDistribution):
+        for option in value.options:
+            option.value = line(option.value)
+    return value
 
 
 def _traced(number: object) -> bool:

@@ -14,6 +14,7 @@ SceML cannot carry a distribution through arithmetic.
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Collection, Mapping
 from dataclasses import dataclass, field
@@ -55,8 +56,8 @@ class Resolved:
 @dataclass(frozen=True)
 class _Scope:
     values: Mapping[str, str]
-    #: Name -> the traced top-level parameter it stands for.
-    origins: Mapping[str, str]
+    #: Name -> the traced top-level parameter it stands for, and how.
+    origins: Mapping[str, tracing.Link]
 
 
 def resolve(source: Source, traced: Collection[str] = ()) -> Resolved:
@@ -95,13 +96,12 @@ def _declare(
     for declaration in declarations.iterchildren("ParameterDeclaration"):
         name, text = declared_name(declaration), str(declaration.get("value", ""))
         declaration.set("name", name)  # the name is no reference, even with its `$`
-        alias = _REFERENCE.fullmatch(text)
-        origin = origins.get(alias.group(1)) if alias is not None else None
+        origin = _link(text, values, origins)
         _substitute(source, declaration, _Scope(values, origins), None)
         values[name] = str(declaration.get("value", ""))
         origins.pop(name, None)
         if top and name in traced:
-            origins[name] = name
+            origins[name] = tracing.Link(name)
         elif origin is not None:
             origins[name] = origin
     if top:
@@ -135,9 +135,60 @@ def _trace(
         origin = scope.origins.get(name)
         if origin is None:
             continue
-        resolved.uses.append(Use(origin, str(element.tag), key, file, line, expression))
-        if not expression:
-            tracing.mark(element, key, origin)
+        resolved.uses.append(Use(origin.origin, str(element.tag), key, file, line, expression))
+    link = _link(text, scope.values, scope.origins)
+    if link is not None:
+        tracing.mark(element, key, link)
+
+
+def _link(
+    text: str, values: Mapping[str, str], origins: Mapping[str, tracing.Link]
+) -> tracing.Link | None:
+    """What a value written as `text` is of a traced parameter: `$name` is the name's own link;
+    `${expression}` of one traced name is its link when the expression is affine in it (a
+    speed in km/h divided by 3.6, an offset plus a lane width), so the distribution can be
+    carried through (`tracing.Link.applied`); anything else is None (the value is computed)."""
+    if not text.startswith("$"):
+        return None
+    if not text.startswith("${"):
+        return origins.get(text[1:])
+    expression = text[2:-1] if text.endswith("}") else ""
+    names = {name for name in _REFERENCE.findall(expression) if name in origins}
+    if len(names) != 1:
+        return None
+    (name,) = names
+    affine = _affine(expression, name, values)
+    return None if affine is None else origins[name].then(*affine)
+
+
+#: Where an expression is probed around the declared value, off any integer grid so that a
+#: step function (floor, round) is not taken for a line.
+_PROBES = (0.0, 0.37, 1.29, -0.73, 3.11)
+
+
+def _affine(expression: str, name: str, values: Mapping[str, str]) -> tuple[float, float] | None:
+    """(scale, shift) when `expression` is scale * name + shift near the name's value."""
+    try:
+        here = float(values[name])
+    except (KeyError, ValueError):
+        return None
+    points = []
+    for probe in _PROBES:
+        at = here + probe * max(1.0, abs(here))
+        try:
+            points.append((at, evaluate(expression, {**values, name: repr(at)})))
+        except (ExpressionError, ArithmeticError):
+            return None
+    (x0, y0), (x1, y1) = points[0], points[1]
+    # Twelve significant digits: the probes' rounding noise (0.4 + 4e-16) is not the file's.
+    scale = float(f"{(y1 - y0) / (x1 - x0):.12g}")
+    shift = y0 - scale * x0
+    shift = 0.0 if abs(shift) <= 1e-9 * max(1.0, abs(y0)) else float(f"{shift:.12g}")
+    if scale == 0 or not all(
+        math.isclose(y, scale * x + shift, rel_tol=1e-9, abs_tol=1e-9) for x, y in points
+    ):
+        return None
+    return scale, shift
 
 
 def declared_name(declaration: etree._Element) -> str:
