@@ -147,7 +147,7 @@ def test_every_event_starts_after_its_nodes_predecessors_finished(
     what it waits for and its own condition. completeState stays true, which is what makes
     that exact."""
     flat, document, events_of = exported(name, version, profile)
-    inline = inlined(flat)
+    inline = inlined(flat.nodes)
     node_of = {finish: sanitize(node) for node, (_, finish) in events_of.items()}
     owns = {sanitize(n.name) for n in inline}
     for node in flat.nodes:
@@ -178,7 +178,7 @@ def test_stop_trigger_waits_for_the_end_nodes_predecessors(
     """The storyboard stops when the end node finishes (its predecessors' finish events: all in
     one group, or one group each for join-one), or at the maximum duration, in a group of its own."""
     flat, document, events_of = exported(name, version, profile)
-    inline = inlined(flat)
+    inline = inlined(flat.nodes)
     end = graph.end_node(flat)
     root = graph.root_node(flat)
     assert end is not None and root is not None

@@ -57,7 +57,7 @@ def read_groups(trigger: etree._Element, finishes: dict[str, str], owns: set[str
 
 def check_round_trip(scenario: scm.Scenario, version: str) -> None:
     flat = flatten(scenario)
-    inline = inlined(flat)
+    inline = inlined(flat.nodes)
     document = build_xosc(scenario, version=version, date="2026-01-01T00:00:00")
     tree = etree.fromstring(document.data)
     finishes = finish_events(tree)

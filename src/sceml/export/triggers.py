@@ -100,5 +100,34 @@ def with_extra(groups: list[Group], extra: Condition) -> list[Group]:
 
 
 def delayed(groups: list[Group], delay: str) -> list[Group]:
-    """The same groups with every condition delayed; exact because they stay true once true."""
-    return [[replace(condition, delay=delay) for condition in group] for group in groups]
+    """The same groups with every condition delayed by `delay` more; exact because they stay
+    true once true (a wait written into its successor's trigger may already carry one)."""
+    return [
+        [replace(condition, delay=_sum(condition.delay, delay)) for condition in group]
+        for group in groups
+    ]
+
+
+def _sum(first: str, second: str) -> str:
+    """Two delays as one: a number, or an expression where either is a parameter (1.1+)."""
+    try:
+        return repr(float(first) + float(second))
+    except ValueError:
+        pass
+    if _is_zero(first):
+        return second
+    if _is_zero(second):
+        return first
+    return f"${{{_inner(first)} + {_inner(second)}}}"
+
+
+def _is_zero(text: str) -> bool:
+    try:
+        return float(text) == 0.0
+    except ValueError:
+        return False
+
+
+def _inner(text: str) -> str:
+    """The content of an expression `${...}`; a parameter or number as it is."""
+    return f"({text[2:-1]})" if text.startswith("${") and text.endswith("}") else text

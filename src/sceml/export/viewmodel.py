@@ -90,7 +90,7 @@ def build_view(scenario: scm.Scenario, options: Options) -> View:
     for node in nodes:
         ctx.event_names[node] = names.claim(node_name(node))
     ctx.marker = names.claim("SceML_marker")
-    ctx.inline = inlined(scenario)
+    ctx.inline = inlined(scenario.nodes)
     events, finishes = _plan(ctx, nodes)
     story = names.claim(sanitize(root.scenarioName, "Scenario"))
     act = names.claim(f"{story}_Act")

@@ -25,6 +25,8 @@ is evaluated again at every step, so it may only stand where "holds now" and "ha
 
 from __future__ import annotations
 
+from collections.abc import Iterable
+
 import scemlmodel as scm
 
 from .. import graph
@@ -49,10 +51,11 @@ def _uses_activation_once(node: scm.GraphElement) -> bool:
     return node.eClass.name in _USES_ACTIVATION_ONCE
 
 
-def inlined(scenario: scm.Graph) -> set[scm.GraphElement]:
-    """The nodes the export writes into their successor's trigger instead of a marker event."""
+def inlined(nodes: Iterable[scm.GraphElement]) -> set[scm.GraphElement]:
+    """Of a (flattened) graph's nodes, those the export writes into their successor's trigger
+    instead of a marker event."""
     found: set[scm.GraphElement] = set()
-    for node in scenario.nodes:
+    for node in nodes:
         after = graph.successors(node)
         if len(after) != 1:
             continue
@@ -66,6 +69,11 @@ def inlined(scenario: scm.Graph) -> set[scm.GraphElement]:
         ):
             found.add(node)
     return found
+
+
+def is_passing(node: scm.GraphElement) -> bool:
+    """Joins and ports: they finish as soon as they are activated."""
+    return isinstance(node, _PASSING)
 
 
 def flow_steps(source: scm.GraphElement, inline: set[scm.GraphElement]) -> int:
