@@ -50,6 +50,9 @@ class NodeState:
     behaviour: Behaviour | None = None
     test: Test | None = None
     note: str = ""
+    #: When a trigger that holds in the instant started it (`players.flows.inlined`); its
+    #: behaviour begins at the next step.
+    since: float | None = None
 
     def ready(self) -> bool:
         done = [p.finished is not None for p in self.predecessors]
@@ -122,10 +125,16 @@ class Scheduler:
                 waiting = any(successor is other for _, other in self.ready)
                 if successor.started is None and not waiting and successor.ready():
                     when = self._activated_at(successor)
-                    if when <= self.world.t + 1e-9:
-                        queue.extend(self._activate(successor))
-                    else:
+                    if when > self.world.t + 1e-9:
                         self.ready.append((when, successor))
+                    elif isinstance(successor.node, scm.Maneuver):
+                        # Started now by a trigger that holds now: it acts from the next
+                        # step, as the player's action does (one started after a flow step
+                        # acts in the step it starts, the preview's convention).
+                        successor.since = self.world.t
+                        self.ready.append((round(self.world.t + self.world.dt, 9), successor))
+                    else:
+                        queue.extend(self._activate(successor))
 
     def _activated_at(self, state: NodeState) -> float:
         """When a ready node is activated: each finished predecessor's finish plus what its
@@ -150,7 +159,7 @@ class Scheduler:
 
     def _activate(self, state: NodeState) -> list[NodeState]:
         """Start a node; the nodes that finish because of it (itself, superseded ones)."""
-        state.started = self.world.t
+        state.started = self.world.t if state.since is None else state.since
         node = state.node
         if isinstance(node, scm.Condition):
             state.test = condition_for(node, self.world)
