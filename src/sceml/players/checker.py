@@ -157,12 +157,10 @@ def _inlined_times(
     (`players.flows.flow_steps`); a join or port finishes then, a wait its duration later, and
     a condition when its successor (whose only predecessor it is) started."""
     one = isinstance(node, scm.JoinOneFinished)
-    reached = [
-        None
-        if finish[str(p.name)] is None
-        else finish[str(p.name)] + flow_steps(p, inline) * run.step
-        for p in graph.predecessors(node)
-    ]
+    reached = []
+    for before in graph.predecessors(node):
+        done = finish[str(before.name)]
+        reached.append(None if done is None else done + flow_steps(before, inline) * run.step)
     activated = required(reached, one)
     if activated is None:
         return None, None

@@ -64,17 +64,12 @@ def player_starts(report: RunReport, step: float) -> dict[str, float]:
     inline = {node.name for node in report.nodes if node.inlined}
     starts: dict[str, float] = {}
     for node in report.nodes:
-        reached = [
-            None if finishes.get(name, 0.0) is None else finishes.get(name, 0.0)
-            for name in node.after
-        ]
-        ready = required(
-            [
-                None if t is None else t + (0 if name in inline else FLOW_DELAY_STEPS) * step
-                for name, t in zip(node.after, reached, strict=True)
-            ],
-            node.one,
-        )
+        reached = []
+        for name in node.after:
+            done = finishes.get(name, 0.0)  # the root is no node of the report: 0
+            steps = 0 if name in inline else FLOW_DELAY_STEPS
+            reached.append(None if done is None else done + steps * step)
+        ready = required(reached, node.one)
         if node.inlined and node.start is not None:
             starts[node.name] = node.start
         elif catalog.is_kind_of(node.kind, "Condition") and ready is not None:

@@ -59,16 +59,23 @@ def inlined(nodes: Iterable[scm.GraphElement]) -> set[scm.GraphElement]:
         after = graph.successors(node)
         if len(after) != 1:
             continue
-        successor = after[0]
-        if isinstance(node, (*_PASSING, scm.TimeElapsed)):
-            found.add(node)
-        elif (
-            (isinstance(node, scm.Condition) or is_condition_element(node))
-            and len(graph.predecessors(successor)) == 1
-            and _uses_activation_once(successor)
-        ):
+        if _passes_latched(node) or _holds_now_for(node, after[0]):
             found.add(node)
     return found
+
+
+def _passes_latched(node: scm.GraphElement) -> bool:
+    """Joins, ports and waits: what they write stays true once true."""
+    return isinstance(node, (*_PASSING, scm.TimeElapsed))
+
+
+def _holds_now_for(node: scm.GraphElement, successor: scm.GraphElement) -> bool:
+    """A condition whose successor waits for it alone and starts one event on it."""
+    return (
+        (isinstance(node, scm.Condition) or is_condition_element(node))
+        and len(graph.predecessors(successor)) == 1
+        and _uses_activation_once(successor)
+    )
 
 
 def is_passing(node: scm.GraphElement) -> bool:
