@@ -111,7 +111,10 @@ def _wait(build: Build, earlier: scm.Maneuver, later: scm.Maneuver) -> scm.JoinA
         target = sources[0]
     join = build.add(scm.JoinAllFinished(), f"{later.name}_after_{earlier.name}")
     for flow in list(target.incoming):
-        flow.target = join
+        # Moved through the opposite list: setting `flow.target` would leave the flow in
+        # `target.incoming` too (pyecore keeps the old side of an opposite on a set).
+        target.incoming.remove(flow)
+        join.incoming.append(flow)
     build.flow(earlier, join)
     build.flow(join, target)
     build.report.add(

@@ -1,0 +1,120 @@
+"""Triggers read from a file start their events in the same step after the round trip (issue 24,
+"same run"): a condition the import makes a node is written back into the StartTrigger of the
+event that waits for it (`players.flows.inlined`), not as a marker event a step before it.
+
+`files/triggers-in-step.xosc` is written by hand; every expectation below is read off it."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from lxml import etree
+
+import scemlmodel as scm
+from sceml import graph
+from sceml.export import build_xosc
+from sceml.importer import import_file
+
+FILES = Path(__file__).parent / "files"
+SOURCE = FILES / "triggers-in-step.xosc"
+
+
+@pytest.fixture(scope="module")
+def imported() -> scm.Scenario:
+    return import_file(SOURCE).scenario
+
+
+@pytest.fixture(scope="module")
+def exported(imported: scm.Scenario) -> etree._Element:
+    return build_xosc(imported, version="1.1", source_path=SOURCE).tree.getroot()
+
+
+def event(document: etree._Element, name: str) -> etree._Element:
+    found = document.find(f".//Event[@name='{name}']")
+    assert found is not None, f"no event {name}"
+    return found
+
+
+def groups(element: etree._Element, trigger: str = "StartTrigger") -> list[list[str]]:
+    """Each ConditionGroup as what its conditions test: `state:<event>`, `time>v+delay`, the tag
+    of an entity condition."""
+    read = []
+    for group in element.iterfind(f"{trigger}/ConditionGroup"):
+        tests = []
+        for condition in group.iterfind("Condition"):
+            state = condition.find(".//StoryboardElementStateCondition")
+            clock = condition.find(".//SimulationTimeCondition")
+            if state is not None:
+                tests.append(f"state:{state.get('storyboardElementRef')}")
+            elif clock is not None:
+                delay = float(condition.get("delay"))
+                tests.append(f"time>{float(clock.get('value')):g}+{delay:g}")
+            else:
+                tests.append(condition.find(".//EntityCondition/*").tag)
+        read.append(sorted(tests))
+    return sorted(read)
+
+
+def test_a_condition_with_a_state_is_in_the_events_own_trigger(exported: etree._Element) -> None:
+    # Brake: SpeedUp completed AND the ego faster than 14 m/s, in one group, as in the file.
+    assert groups(event(exported, "Brake")) == [["SpeedCondition", "state:SpeedUp"]]
+    assert exported.find(".//Event[@name='Fast']") is None  # no marker event for it
+
+
+def test_a_condition_alone_is_in_the_events_own_trigger(exported: etree._Element) -> None:
+    # Cut: the lead within 30 m of the ego, from the act's start (a 1 s wait the act's other
+    # events share, so it stays an event of its own).
+    assert groups(event(exported, "Cut")) == [
+        ["RelativeDistanceCondition", "state:InStepAct_start_delay"]
+    ]
+    assert exported.find(".//Event[@name='Near']") is None
+
+
+def test_a_second_lane_change_waits_for_the_first_and_keeps_its_condition(
+    imported: scm.Scenario, exported: etree._Element
+) -> None:
+    # Back may start while Cut runs; SceML runs one lateral maneuver of an actor at a time, so
+    # it also waits for Cut, before its own condition, which stays in its trigger.
+    close = next(n for n in imported.nodes if n.name == "Close")
+    back = next(n for n in imported.nodes if n.name == "Back")
+    assert graph.predecessors(back) == [close]
+    (join,) = graph.predecessors(close)
+    assert isinstance(join, scm.JoinAllFinished)
+    assert sorted(str(p.name) for p in graph.predecessors(join)) == [
+        "Cut",
+        "InStepAct_start_delay",
+    ]
+    assert groups(event(exported, "Back")) == [
+        ["RelativeDistanceCondition", "state:Cut", "state:InStepAct_start_delay"]
+    ]
+
+
+def test_waits_in_a_row_add_up_in_one_trigger(exported: etree._Element) -> None:
+    # The act waits 1 s (a marker: three events wait for it), SpeedUp 2 s after the act.
+    assert groups(event(exported, "InStepAct_start_delay")) == [["time>0+1"]]
+    (group,) = event(exported, "SpeedUp").iterfind("StartTrigger/ConditionGroup")
+    (condition,) = group.iterfind("Condition")
+    assert condition.find(".//StoryboardElementStateCondition") is not None
+    assert float(condition.get("delay")) == 2.0
+
+
+def test_the_stop_trigger_names_its_conditions_groups_directly(exported: etree._Element) -> None:
+    # Either distance (two groups, met in a join-one that is written into the StopTrigger), or
+    # the other branches once 60 s have passed (the time limit as a delay, no event of its own).
+    stop = exported.find("Storyboard")
+    assert groups(stop, "StopTrigger") == [
+        ["state:Back", "state:Brake", "time>0+60"],
+        ["state:EgoFar"],
+        ["state:LeadFar"],
+        ["time>60+0"],
+    ]
+    assert exported.find(".//Event[@name='stop_holds']") is None
+    assert exported.find(".//Event[@name='stop_time']") is None
+
+
+def test_an_init_speed_relative_to_another_actor_is_its_initial_speed(
+    imported: scm.Scenario,
+) -> None:
+    lead = next(a for a in graph.actors(imported) if a.name == "Lead")
+    assert float(lead.initialSpeed.value) == 10.0  # the ego's 12 m/s less 2
