@@ -63,11 +63,9 @@ def test_a_condition_with_a_state_is_in_the_events_own_trigger(exported: etree._
 
 
 def test_a_condition_alone_is_in_the_events_own_trigger(exported: etree._Element) -> None:
-    # Cut: the lead within 30 m of the ego, from the act's start (a 1 s wait the act's other
-    # events share, so it stays an event of its own).
-    assert groups(event(exported, "Cut")) == [
-        ["RelativeDistanceCondition", "state:InStepAct_start_delay"]
-    ]
+    # Cut: the lead within 30 m of the ego, from the act's start (a 1 s wait, written into
+    # the trigger of each event of the act as a delay).
+    assert groups(event(exported, "Cut")) == [["RelativeDistanceCondition", "time>0+1"]]
     assert exported.find(".//Event[@name='Near']") is None
 
 
@@ -86,17 +84,14 @@ def test_a_second_lane_change_waits_for_the_first_and_keeps_its_condition(
         "InStepAct_start_delay",
     ]
     assert groups(event(exported, "Back")) == [
-        ["RelativeDistanceCondition", "state:Cut", "state:InStepAct_start_delay"]
+        ["RelativeDistanceCondition", "state:Cut", "time>0+1"]
     ]
 
 
 def test_waits_in_a_row_add_up_in_one_trigger(exported: etree._Element) -> None:
-    # The act waits 1 s (a marker: three events wait for it), SpeedUp 2 s after the act.
-    assert groups(event(exported, "InStepAct_start_delay")) == [["time>0+1"]]
-    (group,) = event(exported, "SpeedUp").iterfind("StartTrigger/ConditionGroup")
-    (condition,) = group.iterfind("Condition")
-    assert condition.find(".//StoryboardElementStateCondition") is not None
-    assert float(condition.get("delay")) == 2.0
+    # The act waits 1 s, SpeedUp 2 s after the act: 3 s after the start, no event between.
+    assert groups(event(exported, "SpeedUp")) == [["time>0+3"]]
+    assert exported.find(".//Event[@name='InStepAct_start_delay']") is None
 
 
 def test_the_stop_trigger_names_its_conditions_groups_directly(exported: etree._Element) -> None:

@@ -13,11 +13,12 @@ instant after its activation at which it holds, and stays finished. Written into
 is evaluated again at every step, so it may only stand where "holds now" and "has held" agree:
 
 - joins and ports: what they wait for stays true once true (completions, simulation time,
-  delays of those);
-- TimeElapsed: its activation delayed, true from then on;
-- any other condition (SpeedCondition, InLocationRadius, an opaque Condition, ...): only into a
-  successor that has no other predecessor and uses its activation once, as the StartTrigger of
-  one event (`_USES_ACTIVATION_ONCE`). A maneuver with a finish marker (`__arrived`,
+  delays of those), so they go into the trigger of each successor;
+- TimeElapsed: its activation delayed, true from then on, likewise;
+- any other condition (SpeedCondition, InLocationRadius, an opaque Condition, ...): only into
+  successors that have no other predecessor and use their activation once, as the StartTrigger
+  of one event (`_USES_ACTIVATION_ONCE`); into each of them when there are several (an
+  imported event with several actions): each starts at the first instant it holds. A maneuver with a finish marker (`__arrived`,
   `__gap_reached`, ...) ANDs its activation with its goal, another condition ANDs it with its
   own test, a join combines it with other branches: there "held once" and "holds now" differ,
   so the condition keeps its marker event.
@@ -57,9 +58,9 @@ def inlined(nodes: Iterable[scm.GraphElement]) -> set[scm.GraphElement]:
     found: set[scm.GraphElement] = set()
     for node in nodes:
         after = graph.successors(node)
-        if len(after) != 1:
-            continue
-        if _passes_latched(node) or _holds_now_for(node, after[0]):
+        if after and (
+            _passes_latched(node) or all(_holds_now_for(node, successor) for successor in after)
+        ):
             found.add(node)
     return found
 
