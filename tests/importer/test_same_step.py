@@ -113,3 +113,32 @@ def test_an_init_speed_relative_to_another_actor_is_its_initial_speed(
 ) -> None:
     lead = next(a for a in graph.actors(imported) if a.name == "Lead")
     assert float(lead.initialSpeed.value) == 10.0  # the ego's 12 m/s less 2
+
+
+def test_an_action_named_within_its_event_is_that_events(tmp_path: Path) -> None:
+    # Both lane changes' actions called `Action` (as `cut-in_cr` names them), the StopTrigger's
+    # first group waiting for `Back::Action`: the end waits for Back, not for the first
+    # action of that name (Cut's).
+    document = etree.parse(str(SOURCE))
+    for action in document.iter("Action"):
+        if action.get("name") in ("CutAction", "BackAction"):
+            action.set("name", "Action")
+    far = document.find(".//StopTrigger/ConditionGroup/Condition[@name='EgoFar']")
+    far.clear()
+    far.attrib.update({"name": "BackDone", "delay": "0", "conditionEdge": "none"})
+    value = etree.SubElement(far, "ByValueCondition")
+    etree.SubElement(
+        value,
+        "StoryboardElementStateCondition",
+        storyboardElementType="action",
+        storyboardElementRef="Back::Action",
+        state="endTransition",
+    )
+    path = tmp_path / "qualified.xosc"
+    document.write(str(path))
+    (tmp_path / "highway.xodr").write_bytes((FILES / "highway.xodr").read_bytes())
+    scenario = import_file(path).scenario
+    end = graph.end_node(scenario)
+    stops = [p for p in graph.predecessors(end) if p.name == "stop_holds"]
+    assert len(stops) == 1
+    assert sorted(str(p.name) for p in graph.predecessors(stops[0])) == ["Back", "LeadFar"]

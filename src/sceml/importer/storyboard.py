@@ -43,7 +43,7 @@ class Storyboard:
     events: dict[str, Event] = field(default_factory=dict)
     #: Element name (action, maneuver, group, act, story) -> the events it holds.
     holds: dict[str, list[str]] = field(default_factory=dict)
-    #: Action name -> (its event, its index among the event's actions).
+    #: Action name, and `Event::Action`, -> (its event, its index among the event's actions).
     actions: dict[str, tuple[str, int]] = field(default_factory=dict)
     finish: dict[str, scm.GraphElement] = field(default_factory=dict)
     started: dict[str, scm.GraphElement] = field(default_factory=dict)
@@ -88,6 +88,10 @@ class Storyboard:
                         self.holds.setdefault(str(holder), []).append(name)
                     for index, action in enumerate(event.iterchildren("Action")):
                         self.actions.setdefault(str(action.get("name")), (name, index))
+                        # A reference may name the action within its event, `Event::Action`
+                        # (`cut-in_cr`: every event's action is called `Action`).
+                        qualified = f"{event.get('name')}::{action.get('name')}"
+                        self.actions.setdefault(qualified, (name, index))
                     count = int(event.get("maximumExecutionCount", "1"))
                     if count > 1:
                         self.build.report.add(
@@ -249,9 +253,12 @@ class Storyboard:
 
     def resolve(self, state: etree._Element) -> scm.GraphElement:
         """The node a state condition refers to: finished, or (other states) started."""
-        ref = last_name(str(state.get("storyboardElementRef")))
+        full = str(state.get("storyboardElementRef"))
+        ref = last_name(full)
         kind = state.get("storyboardElementType")
         done = state.get("state") in FINISHED
+        if kind == "action" and "::".join(full.split("::")[-2:]) in self.actions:
+            ref = "::".join(full.split("::")[-2:])
         if kind == "event" and ref in self.events:
             node = self.event(ref)
             return node if done else self._started(ref, state)

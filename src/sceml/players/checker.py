@@ -155,7 +155,7 @@ def _inlined_times(
     """Start and finish of a node the export wrote into its successor's trigger (it has no
     event of its own): activated when its predecessors' finishes reach it
     (`players.flows.flow_steps`); a join or port finishes then, a wait its duration later, and
-    a condition when its successor (whose only predecessor it is) started."""
+    a condition when its successors (whose only predecessor it is) started."""
     one = isinstance(node, scm.JoinOneFinished)
     reached = []
     for before in graph.predecessors(node):
@@ -169,9 +169,11 @@ def _inlined_times(
         return activated, activated
     if isinstance(node, scm.TimeElapsed):
         return activated, round(activated + float(params.concrete(node, "duration")), 9)
-    successor = graph.successors(node)[0]
-    first, _ = events_of[str(successor.name)]
-    return activated, run.events.get(first, EventRun()).start
+    starts = [
+        run.events.get(events_of[str(successor.name)][0], EventRun()).start
+        for successor in graph.successors(node)
+    ]
+    return activated, min((s for s in starts if s is not None), default=None)
 
 
 def _events_by_node(tree: etree._ElementTree, first_events: Iterable[str]) -> dict[str, list[str]]:
