@@ -13,6 +13,7 @@ from lxml import etree
 
 import scemlmodel as scm
 from sceml import graph
+from sceml.build import ScenarioBuilder, world
 from sceml.export import build_xosc
 from sceml.importer import import_file
 
@@ -142,3 +143,17 @@ def test_an_action_named_within_its_event_is_that_events(tmp_path: Path) -> None
     stops = [p for p in graph.predecessors(end) if p.name == "stop_holds"]
     assert len(stops) == 1
     assert sorted(str(p.name) for p in graph.predecessors(stops[0])) == ["Back", "LeadFar"]
+
+
+def test_a_wait_before_a_keep_velocity_comes_back_as_a_wait(tmp_path: Path) -> None:
+    # root -> TimeElapsed 1 s -> KeepVelocity 2 s -> end: the wait is a delay in the
+    # KeepVelocity's StartTrigger, and must not be read as a second KeepVelocity.
+    b = ScenarioBuilder("kv", map="map.xodr", level="concrete", max_duration=20.0)
+    ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0, h=0.0), speed=5.0)
+    wait = b.add("TimeElapsed", ego, duration=1.0)
+    keep = b.add("KeepVelocity", ego, duration=2.0)
+    b.chain(b.root, wait, keep, b.end)
+    path = tmp_path / "kv.xosc"
+    path.write_bytes(build_xosc(b.scenario, version="1.3").data)
+    kinds = sorted(n.eClass.name for n in import_file(path).scenario.nodes)
+    assert kinds == ["EndNode", "KeepVelocity", "RootNode", "TimeElapsed"]

@@ -164,15 +164,18 @@ class Storyboard:
             return self.event(folded[0])
         actor = info.actors[0]
         kind = markers.hint(self.build, info.name)
+        # Only a marker's delay is a KeepVelocity's duration; a delay in a KeepVelocity's own
+        # StartTrigger is a wait before it (written there by the export, players.flows).
+        marker = markers.is_marker(self.build, info.element)
         trigger = Trigger(
             self.build,
             self.resolve,
             self._act_start(info.act),
             actor,
-            "KeepVelocity" if kind == "KeepVelocity" else "TimeElapsed",
+            "KeepVelocity" if kind == "KeepVelocity" and marker else "TimeElapsed",
         )
         start = info.element.find("StartTrigger")
-        if markers.is_marker(self.build, info.element):
+        if marker:
             node = trigger.node(start, info.name, info.name)
             self.started[info.name] = node
             self._report_marker(info, node)
