@@ -41,6 +41,7 @@ from lxml import etree
 from sceml import io
 from sceml.diagnostics import Severity
 from sceml.errors import SceMLError
+from sceml.export.names import sanitize
 from sceml.importer import import_to_file
 from sceml.safexml import hardened_parser
 from sceml.validation import validate
@@ -252,7 +253,8 @@ def differences(original: Run, again: Run, ours: list[str], theirs: list[str]) -
     found.extend(late)
     off = []
     for entity, path in original.paths.items():
-        other = again.paths.get(entity)
+        # The export makes names safe for OpenSCENARIO (`ego jerk` -> `ego_jerk`).
+        other = again.paths.get(entity, again.paths.get(sanitize(entity, entity)))
         if other is None:
             off.append((math.inf, f"entity {entity} is missing"))
             continue
