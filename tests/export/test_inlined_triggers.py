@@ -3,11 +3,12 @@ what it writes there: worked out by hand from SPEC §3 on small graphs built her
 
 from __future__ import annotations
 
+import pytest
 from lxml import etree
 
 import scemlmodel as scm
 from sceml.build import ScenarioBuilder, world
-from sceml.export import build_xosc
+from sceml.export import ExportError, ParameterDeclarationSpec, build_xosc
 from sceml.players.flows import inlined
 
 SIZE = {"length": 4.0, "width": 2.0}
@@ -100,3 +101,18 @@ def test_the_triggers_hold_the_inlined_conditions() -> None:
         ],
         [("SimulationTimeCondition", "30.0", "0.0")],
     ]
+
+
+def test_parameterised_waits_in_a_row_add_up_as_an_expression() -> None:
+    # Wait1 and Wait2 (1.5 s, 0.5 s) as parameters: Brake's delay is their sum, which 1.1+
+    # write as an expression and 1.0, which has none, refuses with the reason.
+    b, _ = built()
+    hook = {
+        ("Wait1", "duration"): ParameterDeclarationSpec("First", "1.5"),
+        ("Wait2", "duration"): ParameterDeclarationSpec("Second", "0.5"),
+    }
+    document = build_xosc(b.scenario, version="1.1", parameters=hook).tree.getroot()
+    (condition,) = document.iterfind(".//Event[@name='Brake']/StartTrigger//Condition")
+    assert condition.get("delay") == "${$First + $Second}"
+    with pytest.raises(ExportError, match="1.0 has no expressions"):
+        build_xosc(b.scenario, version="1.0", parameters=hook)

@@ -124,7 +124,10 @@ def plan_drive_distance(ctx: Context, node: scm.DriveDistance, groups: list[Grou
         raise ValueError(f"{node.name}: a DriveDistance at 0 m/s never finishes (SCEML-Y001)")
     driven = ctx.extra_event(node, "driven")
     done = Event(
-        driven, entity, [ctx.marker_action(driven, driven)], delayed(groups, _drive_time(ctx, node))
+        driven,
+        entity,
+        [ctx.marker_action(driven, driven)],
+        delayed(groups, _drive_time(ctx, node), ctx.traits.expressions),
     )
     return [event, done], driven
 
@@ -352,7 +355,8 @@ def plan_in_vehicle(ctx: Context, node: scm.InVehicleRadius, groups: list[Group]
 def plan_duration(ctx: Context, node: scm.ActionNode, groups: list[Group]) -> Plan:
     """A marker whose activation conditions carry the duration as their delay."""
     duration = ctx.values.text(node, "duration")
-    return marker_plan(ctx, node, delayed(groups, duration), ctx.entity(node.referenceActor))
+    waited = delayed(groups, duration, ctx.traits.expressions)
+    return marker_plan(ctx, node, waited, ctx.entity(node.referenceActor))
 
 
 @planner("KeepVelocity")
@@ -367,7 +371,7 @@ def plan_keep_velocity(ctx: Context, node: scm.KeepVelocity, groups: list[Group]
         kept,
         entity,
         [ctx.marker_action(kept, kept)],
-        delayed(groups, ctx.values.text(node, "duration")),
+        delayed(groups, ctx.values.text(node, "duration"), ctx.traits.expressions),
     )
     return [Event(name, entity, [hold], groups), done], kept
 

@@ -99,16 +99,18 @@ def with_extra(groups: list[Group], extra: Condition) -> list[Group]:
     return [[*group, extra] for group in groups]
 
 
-def delayed(groups: list[Group], delay: str) -> list[Group]:
+def delayed(groups: list[Group], delay: str, expressions: bool = True) -> list[Group]:
     """The same groups with every condition delayed by `delay` more; exact because they stay
-    true once true (a wait written into its successor's trigger may already carry one)."""
+    true once true (a wait written into its successor's trigger may already carry one).
+    Without `expressions` (OpenSCENARIO 1.0) two delays of which one is a parameter cannot be
+    added up: ValueError."""
     return [
-        [replace(condition, delay=_sum(condition.delay, delay)) for condition in group]
+        [replace(condition, delay=_sum(condition.delay, delay, expressions)) for condition in group]
         for group in groups
     ]
 
 
-def _sum(first: str, second: str) -> str:
+def _sum(first: str, second: str, expressions: bool) -> str:
     """Two delays as one: a number, or an expression where either is a parameter (1.1+)."""
     try:
         return repr(float(first) + float(second))
@@ -118,6 +120,11 @@ def _sum(first: str, second: str) -> str:
         return second
     if _is_zero(second):
         return first
+    if not expressions:
+        raise ValueError(
+            f"waits of {first} and {second} s in a row are one delay in the trigger after them, "
+            "and OpenSCENARIO 1.0 has no expressions to add up parameters; export 1.1 or later"
+        )
     return f"${{{_inner(first)} + {_inner(second)}}}"
 
 
