@@ -17,7 +17,9 @@ re-export are played headless at 0.05 s steps and compared:
 It prints the stage table (play / import writes / exit 0 / validates clean / exports / plays
 the same), the opaque rate (opaque nodes over the Actions and Conditions of the originals),
 with `--constructs` what the files use that metamodel 1.0 has no class for, and, with `--csv`,
-one row per file with the reason a stage failed. A progress line per file goes to
+one row per file with the reason a stage failed and, for a re-export that plays otherwise,
+every difference (`differences`: the end, each event off by more than a step, each entity off
+its path with the time it first is). A progress line per file goes to
 stderr. Nothing is written into the DIRs.
 """
 
