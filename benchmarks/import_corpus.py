@@ -17,7 +17,9 @@ re-export are played headless at 0.05 s steps and compared:
 It prints the stage table (play / import writes / exit 0 / validates clean / exports / plays
 the same), the opaque rate (opaque nodes over the Actions and Conditions of the originals),
 with `--constructs` what the files use that metamodel 1.0 has no class for, and, with `--csv`,
-one row per file with the reason a stage failed. A progress line per file goes to
+one row per file with the reason a stage failed and, for a re-export that plays otherwise,
+every difference (`differences`: the end, each event off by more than a step, each entity off
+its path with the time it first is). A progress line per file goes to
 stderr. Nothing is written into the DIRs.
 """
 
@@ -41,6 +43,7 @@ from lxml import etree
 from sceml import io
 from sceml.diagnostics import Severity
 from sceml.errors import SceMLError
+from sceml.export.names import sanitize
 from sceml.importer import import_to_file
 from sceml.safexml import hardened_parser
 from sceml.validation import validate
@@ -76,6 +79,8 @@ class Row:
     actions: int = 0
     opaque: int = 0
     why: str = ""
+    #: Every difference of the re-export's run (`differences`), for the per-file diagnosis.
+    differences: str = ""
     #: Constructs of the original the metamodel lacks (`constructs`), with their counts.
     kinds: Counter[str] = field(default_factory=Counter)
 
@@ -228,26 +233,51 @@ def events(path: Path) -> list[str]:
 
 
 def compare(original: Run, again: Run, ours: list[str], theirs: list[str]) -> str:
-    """Why the re-export does not play the same; empty when it does."""
+    """Why the re-export does not play the same (its first difference); empty when it does."""
+    found = differences(original, again, ours, theirs)
+    return found[0] if found else ""
+
+
+def differences(original: Run, again: Run, ours: list[str], theirs: list[str]) -> list[str]:
+    """Every way the re-export's run differs: the end, each event that starts at another time
+    (earliest first), each entity off its path (worst first)."""
+    found = []
     if abs(original.end - again.end) > STEP + 1e-9:
-        return f"ends at {again.end:g} s instead of {original.end:g} s"
+        found.append(f"ends at {again.end:g} s instead of {original.end:g} s")
     free = sorted(again.starts[n] for n in theirs if n in again.starts and n not in ours)
-    for name in ours:
-        if name not in original.starts:
-            continue
+    late = []
+    for name in sorted((n for n in ours if n in original.starts), key=original.starts.get):
         want = original.starts[name]
         got = again.starts.get(name) if name in theirs else _take(free, want)
         if got is None or abs(got - want) > STEP + 1e-9:
             shown = "never" if got is None else f"at {got:g} s"
-            return f"event {name} starts {shown} instead of {want:g} s"
+            late.append(f"event {name} starts {shown} instead of {want:g} s")
+    found.extend(late)
+    off = []
     for entity, path in original.paths.items():
-        other = again.paths.get(entity)
+        # The export makes names safe for OpenSCENARIO (`ego jerk` -> `ego_jerk`).
+        other = again.paths.get(entity, again.paths.get(sanitize(entity, entity)))
         if other is None:
-            return f"entity {entity} is missing"
+            off.append((math.inf, f"entity {entity} is missing"))
+            continue
         worst = max(_distance(point, other) for point in path)
         if worst > DISTANCE:
-            return f"entity {entity} is {worst:.2f} m off its original trajectory"
-    return ""
+            off.append(
+                (
+                    worst,
+                    f"entity {entity} is {worst:.2f} m off its original trajectory "
+                    f"(first by 0.5 m at {_first_off(path, other):g} s)",
+                )
+            )
+    found.extend(text for _, text in sorted(off, key=lambda item: -item[0]))
+    return found
+
+
+def _first_off(
+    path: list[tuple[float, float, float]], other: list[tuple[float, float, float]]
+) -> float:
+    """When an entity first leaves its original path by more than DISTANCE."""
+    return next((p[0] for p in path if _distance(p, other) > DISTANCE), math.nan)
 
 
 def _take(free: list[float], want: float) -> float | None:
@@ -313,8 +343,9 @@ def measure(path: Path, work: Path, options: argparse.Namespace) -> Row:
         if isinstance(replayed, str):
             row.same, row.why = False, f"re-export: {replayed}"
         else:
-            why = compare(original, replayed, events(path), events(again))
-            row.same, row.why = not why, row.why or why
+            found = differences(original, replayed, events(path), events(again))
+            row.same, row.why = not found, row.why or (found[0] if found else "")
+            row.differences = "; ".join(found)
     elif original is not None:
         row.why = row.why or f"original: {original}"
     return row

@@ -14,13 +14,15 @@ from pathlib import Path
 
 import pytest
 from lxml import etree
+from trigger_waits import ROOT, expected_groups
 
 import scemlmodel as scm
 from sceml import graph, io
 from sceml.build import ScenarioBuilder, lane, world
 from sceml.export import build_xosc
-from sceml.export.names import SEPARATOR
+from sceml.export.names import SEPARATOR, sanitize
 from sceml.modules import flatten
+from sceml.players.flows import inlined
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 VERSIONS = ("1.0", "1.1", "1.2", "1.3")
@@ -125,39 +127,46 @@ def test_no_trajectory_vertex_carries_a_heading(name: str, version: str, profile
         assert next(vertex.iter("Orientation"), None) is None, etree.tostring(vertex)
 
 
+def waits(group: etree._Element, node_of: dict[str, str], owns: set[str]) -> frozenset[str]:
+    """The nodes a ConditionGroup waits for: by their finish events, the start (Root), an
+    inlined node's own condition (named after it); the maximum duration as LIMIT."""
+    found = {node_of[ref] for ref in state_refs(group)}
+    found |= {str(c.get("name")) for c in group.iter("Condition") if c.get("name") in owns}
+    for clock in group.iter("SimulationTimeCondition"):
+        found.add(ROOT if clock.get("value") == "0.0" else "LIMIT")
+    return frozenset(found)
+
+
 @pytest.mark.parametrize(("name", "version", "profile"), CASES)
 def test_every_event_starts_after_its_nodes_predecessors_finished(
     name: str, version: str, profile: str
 ) -> None:
     """Each group of each event's StartTrigger names the finish events of all predecessors
     (join-all, ordinary nodes) or of one (join-one, one group each), or an earlier event of the
-    same node; completeState stays true, which is what makes that exact."""
+    same node; a predecessor written into the trigger (`players.flows.inlined`) stands there as
+    what it waits for and its own condition. completeState stays true, which is what makes
+    that exact."""
     flat, document, events_of = exported(name, version, profile)
+    inline = inlined(flat.nodes)
+    node_of = {finish: sanitize(node) for node, (_, finish) in events_of.items()}
+    owns = {sanitize(n.name) for n in inline}
     for node in flat.nodes:
         if isinstance(node, scm.RootNode | scm.EndNode):
             continue
+        if node in inline:
+            assert str(node.name) not in events_of
+            continue
         first, _ = events_of[str(node.name)]
-        before = graph.predecessors(node)
-        finishes = {events_of[str(p.name)][1] for p in before if not isinstance(p, scm.RootNode)}
         own = {str(e.get("name")) for e in node_events(document, first)}
-        one = isinstance(node, scm.JoinOneFinished)
+        expected = expected_groups(node, inline)
         for event in node_events(document, first):
             groups = event.findall("StartTrigger/ConditionGroup")
             assert groups, f"{event.get('name')} has no start trigger"
-            reached: set[str] = set()
-            for group in groups:
-                refs = state_refs(group)
-                if refs & own:
-                    continue  # waits for an earlier event of its node (Overtake's way back)
-                if any(isinstance(p, scm.RootNode) for p in before):
-                    assert waits_for_start(group), event.get("name")
-                if one:
-                    assert len(refs) + waits_for_start(group) == 1, event.get("name")
-                else:
-                    assert refs == finishes, f"{event.get('name')} waits for {refs}"
-                reached |= refs
-            if one:
-                assert reached == finishes, event.get("name")
+            read = sorted(
+                (waits(g, node_of, owns) for g in groups if not state_refs(g) & own), key=sorted
+            )
+            if read:  # else it waits for an earlier event of its node (Overtake's way back)
+                assert read == expected, event.get("name")
         for condition in document.iter("StoryboardElementStateCondition"):
             assert condition.get("state") == "completeState"
 
@@ -169,20 +178,20 @@ def test_stop_trigger_waits_for_the_end_nodes_predecessors(
     """The storyboard stops when the end node finishes (its predecessors' finish events: all in
     one group, or one group each for join-one), or at the maximum duration, in a group of its own."""
     flat, document, events_of = exported(name, version, profile)
+    inline = inlined(flat.nodes)
     end = graph.end_node(flat)
     root = graph.root_node(flat)
     assert end is not None and root is not None
     groups = document.findall("Storyboard/StopTrigger/ConditionGroup")
     timeouts = [g for g in groups if next(g.iter("SimulationTimeCondition"), None) is not None]
+    timeouts = [g for g in timeouts if waits(g, {}, set()) == {"LIMIT"}]
     assert len(timeouts) == 1 and len(timeouts[0]) == 1
     limit = next(timeouts[0].iter("SimulationTimeCondition"))
     assert float(limit.get("value")) == float(root.maxDuration.value)
-    finishes = [events_of[str(p.name)][1] for p in graph.predecessors(end)]
-    by_end = [state_refs(g) for g in groups if g not in timeouts]
-    if end.policy is scm.JoinPolicy.joinOne:
-        assert sorted(by_end, key=sorted) == sorted(({f} for f in finishes), key=sorted)
-    else:
-        assert by_end == [set(finishes)]
+    node_of = {finish: sanitize(node) for node, (_, finish) in events_of.items()}
+    owns = {sanitize(n.name) for n in inline}
+    by_end = sorted((waits(g, node_of, owns) for g in groups if g not in timeouts), key=sorted)
+    assert by_end == expected_groups(end, inline)
 
 
 @pytest.mark.parametrize("version", VERSIONS)

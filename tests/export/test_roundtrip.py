@@ -14,29 +14,16 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from lxml import etree
 from strategies import scenarios
+from trigger_waits import ROOT, Structure, expected_groups
 
 import scemlmodel as scm
 from sceml import graph, io
 from sceml.export import build_xosc
 from sceml.export.names import SEPARATOR, sanitize
 from sceml.modules.flatten import flatten
+from sceml.players.flows import inlined
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
-ROOT = "Root"
-
-Structure = list[frozenset[str]]
-
-
-def expected_groups(node: scm.GraphElement) -> Structure:
-    """What the SceML graph says `node` waits for."""
-    before = [
-        ROOT if isinstance(p, scm.RootNode) else sanitize(p.name) for p in graph.predecessors(node)
-    ]
-    one = isinstance(node, scm.JoinOneFinished) or (
-        isinstance(node, scm.EndNode) and node.policy is scm.JoinPolicy.joinOne
-    )
-    groups = [frozenset([name]) for name in before] if one else [frozenset(before)]
-    return sorted(groups, key=sorted)
 
 
 def finish_events(root: etree._Element) -> dict[str, str]:
@@ -47,41 +34,52 @@ def finish_events(root: etree._Element) -> dict[str, str]:
     return last
 
 
-def read_groups(trigger: etree._Element, finishes: dict[str, str]) -> Structure:
-    """The nodes each ConditionGroup of a trigger waits for; checks refs hit finish events."""
+def read_groups(trigger: etree._Element, finishes: dict[str, str], owns: set[str]) -> Structure:
+    """The nodes each ConditionGroup of a trigger waits for (their finish events, the start, an
+    inlined node's own condition named in `owns`), and LIMIT for the maximum duration."""
     groups = []
     for group in trigger.iter("ConditionGroup"):
         waited: set[str] = set()
+        for condition in group.iter("Condition"):
+            if condition.get("name") in owns:
+                waited.add(str(condition.get("name")))
         for state in group.iter("StoryboardElementStateCondition"):
             assert state.get("state") == "completeState"
             ref = state.get("storyboardElementRef")
             node = ref.split(SEPARATOR)[0]
             assert finishes[node] == ref, f"{ref} is not the finish event of {node}"
             waited.add(node)
-        if group.find(".//SimulationTimeCondition") is not None and not waited:
-            waited.add(ROOT)
+        for clock in group.iter("SimulationTimeCondition"):
+            waited.add(ROOT if clock.get("value") == "0.0" else "LIMIT")
         groups.append(frozenset(waited))
     return sorted(groups, key=sorted)
 
 
 def check_round_trip(scenario: scm.Scenario, version: str) -> None:
     flat = flatten(scenario)
+    inline = inlined(flat.nodes)
     document = build_xosc(scenario, version=version, date="2026-01-01T00:00:00")
     tree = etree.fromstring(document.data)
     finishes = finish_events(tree)
     events = {event.get("name"): event for event in tree.iter("Event")}
+    owns = {sanitize(n.name) for n in inline}
     end = graph.end_node(flat)
     for node in flat.nodes:
         if isinstance(node, scm.RootNode | scm.EndNode):
             continue
+        if node in inline:
+            assert sanitize(node.name) not in events, f"{node.name} is inlined: no event"
+            continue
         event = events[sanitize(node.name)]
-        assert read_groups(event.find("StartTrigger"), finishes) == expected_groups(node), node.name
+        assert read_groups(event.find("StartTrigger"), finishes, owns) == expected_groups(
+            node, inline
+        ), node.name
     stop = tree.find("Storyboard/StopTrigger")
-    groups = read_groups(stop, finishes)
+    groups = read_groups(stop, finishes, owns)
     # The extra group is the maximum duration (SimulationTimeCondition only).
-    assert frozenset([ROOT]) in groups
-    groups.remove(frozenset([ROOT]))
-    assert groups == expected_groups(end)
+    assert frozenset(["LIMIT"]) in groups
+    groups.remove(frozenset(["LIMIT"]))
+    assert groups == expected_groups(end, inline)
 
 
 @settings(

@@ -11,8 +11,9 @@ from conftest import EXAMPLES
 from sceml import io
 from sceml.simulate import END_NODE, Run, simulate
 
-#: Every flow costs one time step (players.meaning.FLOW_DELAY_STEPS): a node starts one step
-#: after its predecessor finished.
+#: A flow costs one time step (players.meaning.FLOW_DELAY_STEPS): a node starts one step
+#: after its predecessor finished; none out of a condition the export writes into its
+#: successor's trigger (players.flows.inlined).
 STEP = 0.05
 
 
@@ -42,9 +43,11 @@ def test_uis1_the_bike_waits_until_the_ego_is_within_the_radius() -> None:
     bike = run.actor_index("bike")
     assert np.all(run.states[bike, : k + 1, 3] == 0.0)  # the bike stands until then
     assert np.allclose(run.states[bike, : k + 1, :2], (4.5, -24.0))
-    assert run.node("Accelerate_2").started == pytest.approx(trigger.finished + STEP)
-    # Accelerate_2: 0 -> 4 m/s at 1.5 m/s2 takes 8/3 s from the step it starts in (0.6 s to
-    # 0.65 s), the next sample past 0.6 + 2.667 s.
+    # The radius is Accelerate_2's only predecessor and is written into its StartTrigger: it
+    # starts in the instant the radius is reached and moves the bike from the next step on.
+    assert run.node("Accelerate_2").started == pytest.approx(trigger.finished)
+    # Accelerate_2: 0 -> 4 m/s at 1.5 m/s2 takes 8/3 s from the step after it starts (0.6 s
+    # to 0.65 s), the next sample past 0.6 + 2.667 s.
     assert run.node("Accelerate_2").finished == pytest.approx(3.3)
     assert run.node("Cross_1").started == pytest.approx(3.3 + STEP)
 

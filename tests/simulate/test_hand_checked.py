@@ -1,9 +1,11 @@
 """Cases with an answer worked out by hand: straight lines, constant speeds, known timings.
 
 The actors stand on no map (no map named): each moves straight along its heading, so every
-expectation below follows from x = x0 + v t with boxes of 4 m x 2 m. Every flow costs one time
+expectation below follows from x = x0 + v t with boxes of 4 m x 2 m. A flow costs one time
 step of 0.05 s, as in players (`players.meaning.FLOW_DELAY_STEPS`): the root finishes at 0, the
 nodes after it start at 0.05 s, and the end node finishes one step after its last predecessor.
+A flow out of a wait, a join, or a condition the export writes into its successor's trigger
+(`players.flows.inlined`) costs none: the successor starts in the instant it finishes.
 """
 
 from __future__ import annotations
@@ -39,15 +41,16 @@ def test_constant_speeds_on_a_straight_road_give_the_analytic_ttc_and_distance()
     car(b, "lead", 30.0, 0.0, 0.0, 10.0)
     b.chain(b.root, wait(b, ego, 2.0), b.end)
     run = simulate(b.scenario)
-    # The wait runs from 0.05 to 2.05 s, the end node finishes at 2.1 s. Gap between the
-    # boxes: 30 - 4/2 - 4/2 = 26 m at t = 0, closing at 15 - 10 = 5 m/s. At the end it is
-    # 26 - 2.1 * 5 = 15.5 m, and the TTC 15.5 / 5 = 3.1 s: both least then.
-    assert run.end_reason == END_NODE and run.end_time == pytest.approx(2.1)
+    # The wait runs from 0.05 to 2.05 s and is the StopTrigger's delay: the end node finishes
+    # at 2.05 s. Gap between the boxes: 30 - 4/2 - 4/2 = 26 m at t = 0, closing at
+    # 15 - 10 = 5 m/s. At the end it is 26 - 2.05 * 5 = 15.75 m, and the TTC
+    # 15.75 / 5 = 3.15 s: both least then.
+    assert run.end_reason == END_NODE and run.end_time == pytest.approx(2.05)
     pair = run.pair("ego", "lead")
-    assert pair.min_distance == pytest.approx(15.5)
-    assert pair.min_distance_time == pytest.approx(2.1)
-    assert pair.min_ttc == pytest.approx(3.1)
-    assert pair.min_ttc_time == pytest.approx(2.1)
+    assert pair.min_distance == pytest.approx(15.75)
+    assert pair.min_distance_time == pytest.approx(2.05)
+    assert pair.min_ttc == pytest.approx(3.15)
+    assert pair.min_ttc_time == pytest.approx(2.05)
     assert not pair.collision and pair.pet is None  # one path: nothing crosses
 
 
@@ -116,12 +119,13 @@ def test_a_condition_true_before_its_activation_does_not_fire_early() -> None:
     b.chain(b.root, delay, inside, b.end)
     b.chain(b.root, at_once, b.end)
     run = simulate(b.scenario)
-    # The ego stands inside the radius from t = 0; the wait runs from 0.05 to 2.05 s, so the
-    # first condition is activated (and holds) at 2.1 s, the other at 0.05 s.
-    assert run.node(inside.name).started == pytest.approx(2.1)
-    assert run.node(inside.name).finished == pytest.approx(2.1)
+    # The ego stands inside the radius from t = 0; the wait runs from 0.05 to 2.05 s and is
+    # written into the first condition's trigger as its delay, so that condition is activated
+    # (and holds) at 2.05 s, the other at 0.05 s; both are markers the end waits for, a step.
+    assert run.node(inside.name).started == pytest.approx(2.05)
+    assert run.node(inside.name).finished == pytest.approx(2.05)
     assert run.node(at_once.name).finished == pytest.approx(0.05)
-    assert run.end_time == pytest.approx(2.15)
+    assert run.end_time == pytest.approx(2.1)
 
 
 def test_a_location_condition_holds_when_the_actor_reaches_the_radius() -> None:
@@ -164,13 +168,14 @@ def test_join_one_finishes_with_the_first_branch_and_does_not_cancel_the_other()
     both = b.join_all(after, long)
     b.chain(both, b.end)
     run = simulate(b.scenario)
-    # short 0.05-1.05 s, long 0.05-3.05 s; the join-one at 1.1 s, after 1.15-1.65 s; the
-    # join-all one step after long, 3.1 s, the end node at 3.15 s.
-    assert run.node(first.name).finished == pytest.approx(1.1)
-    assert run.node(after.name).finished == pytest.approx(1.65)
+    # short 0.05-1.05 s, long 0.05-3.05 s. Waits and joins are written into their
+    # successors' triggers, so no flow here costs a step after the root's: the join-one at
+    # 1.05 s, after 1.05-1.55 s, the join-all with long at 3.05 s, the end node then too.
+    assert run.node(first.name).finished == pytest.approx(1.05)
+    assert run.node(after.name).finished == pytest.approx(1.55)
     assert run.node(long.name).finished == pytest.approx(3.05)  # not cancelled
-    assert run.node(both.name).finished == pytest.approx(3.1)
-    assert run.end_time == pytest.approx(3.15)
+    assert run.node(both.name).finished == pytest.approx(3.05)
+    assert run.end_time == pytest.approx(3.05)
 
 
 def test_a_join_one_end_stops_at_the_first_branch() -> None:
@@ -180,8 +185,8 @@ def test_a_join_one_end_stops_at_the_first_branch() -> None:
     b.chain(b.root, short, b.end)
     b.chain(b.root, long, b.end)
     run = simulate(b.scenario)
-    # short finishes at 1.05 s, the end node a step later.
-    assert run.end_reason == END_NODE and run.end_time == pytest.approx(1.1)
+    # short finishes at 1.05 s; it is a delay in the StopTrigger, so the end node then too.
+    assert run.end_reason == END_NODE and run.end_time == pytest.approx(1.05)
     assert run.node(long.name).finished is None  # still running when the scenario stopped
 
 

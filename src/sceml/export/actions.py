@@ -17,10 +17,12 @@ from ..players import meaning
 from .context import Action, Context, Event
 from .entities import performance_of
 from .speeds import speed_dynamics
-from .triggers import Condition, Group, delayed, finished, with_extra
+from .triggers import Condition, Finish, Group, delayed, finished, with_extra
 from .values import number
 
-Plan = tuple[list[Event], str]
+#: A node's events, and its finish: the event its successors wait for, or (for a node written
+#: into its successor's trigger, `players.flows.inlined`) the groups that hold once it finished.
+Plan = tuple[list[Event], Finish]
 Planner = Callable[[Context, scm.GraphElement, list[Group]], Plan]
 
 PLANNERS: dict[str, Planner] = {}
@@ -42,8 +44,22 @@ def _single(ctx: Context, node: scm.GraphElement, groups: list[Group], action: A
     return [Event(name, ctx.entity(node.referenceActor), [action], groups)], name
 
 
-def _marker(ctx: Context, node: scm.GraphElement, groups: list[Group], actor: str) -> Plan:
+def marker_plan(
+    ctx: Context,
+    node: scm.GraphElement,
+    groups: list[Group],
+    actor: str,
+    check: Condition | None = None,
+) -> Plan:
+    """A marker event that fires once the node is activated (and `check` holds); or, for an
+    inlined node, no event: its successor's trigger holds the same groups, the check named
+    after the node so that an import gives the node its name back."""
     name = ctx.event_names[node]
+    if node in ctx.inline:
+        own = None if check is None else replace(check, name=name, own=True)
+        return [], groups if own is None else with_extra(groups, own)
+    if check is not None:
+        groups = with_extra(groups, check)
     return [Event(name, actor, [ctx.marker_action(name, name)], groups)], name
 
 
@@ -63,7 +79,7 @@ def _finish_marker(
 @planner("JoinAllFinished", "JoinOneFinished", "InPort", "OutPort")
 def plan_join(ctx: Context, node: scm.GraphElement, groups: list[Group]) -> Plan:
     """Joins and ports only pass activation on: a marker event in the ego's group."""
-    return _marker(ctx, node, groups, ctx.ego)
+    return marker_plan(ctx, node, groups, ctx.ego)
 
 
 @planner("Accelerate", "Decelerate", "Stop")
@@ -108,7 +124,10 @@ def plan_drive_distance(ctx: Context, node: scm.DriveDistance, groups: list[Grou
         raise ValueError(f"{node.name}: a DriveDistance at 0 m/s never finishes (SCEML-Y001)")
     driven = ctx.extra_event(node, "driven")
     done = Event(
-        driven, entity, [ctx.marker_action(driven, driven)], delayed(groups, _drive_time(ctx, node))
+        driven,
+        entity,
+        [ctx.marker_action(driven, driven)],
+        delayed(groups, _drive_time(ctx, node), ctx.traits.expressions),
     )
     return [event, done], driven
 
@@ -311,7 +330,7 @@ def plan_in_location(ctx: Context, node: scm.InLocationRadius, groups: list[Grou
     inside = arrived(
         ctx, node, f"{name}_inside", ctx.position(node.position), ctx.values.text(node, "radius")
     )
-    return _marker(ctx, node, with_extra(groups, inside), ctx.entity(node.referenceActor))
+    return marker_plan(ctx, node, groups, ctx.entity(node.referenceActor), inside)
 
 
 @planner("InVehicleRadius")
@@ -329,14 +348,15 @@ def plan_in_vehicle(ctx: Context, node: scm.InVehicleRadius, groups: list[Group]
             "type": ctx.traits.euclidian,
         },
     )
-    return _marker(ctx, node, with_extra(groups, close), ctx.entity(node.referenceActor))
+    return marker_plan(ctx, node, groups, ctx.entity(node.referenceActor), close)
 
 
 @planner("TimeElapsed")
 def plan_duration(ctx: Context, node: scm.ActionNode, groups: list[Group]) -> Plan:
     """A marker whose activation conditions carry the duration as their delay."""
     duration = ctx.values.text(node, "duration")
-    return _marker(ctx, node, delayed(groups, duration), ctx.entity(node.referenceActor))
+    waited = delayed(groups, duration, ctx.traits.expressions)
+    return marker_plan(ctx, node, waited, ctx.entity(node.referenceActor))
 
 
 @planner("KeepVelocity")
@@ -351,7 +371,7 @@ def plan_keep_velocity(ctx: Context, node: scm.KeepVelocity, groups: list[Group]
         kept,
         entity,
         [ctx.marker_action(kept, kept)],
-        delayed(groups, ctx.values.text(node, "duration")),
+        delayed(groups, ctx.values.text(node, "duration"), ctx.traits.expressions),
     )
     return [Event(name, entity, [hold], groups), done], kept
 
@@ -366,7 +386,7 @@ def plan_speed_condition(ctx: Context, node: scm.SpeedCondition, groups: list[Gr
         "rule": node.rule.name,
     }
     check = Condition(f"{name}_speed", "speed", data)
-    return _marker(ctx, node, with_extra(groups, check), ctx.entity(node.referenceActor))
+    return marker_plan(ctx, node, groups, ctx.entity(node.referenceActor), check)
 
 
 @planner("TraveledDistance")
@@ -377,7 +397,7 @@ def plan_traveled(ctx: Context, node: scm.TraveledDistance, groups: list[Group])
     entity = ctx.entity(node.referenceActor)
     data = {"entity": entity, "value": ctx.values.text(node, "distance")}
     check = Condition(f"{name}_traveled", "traveled", data)
-    return _marker(ctx, node, with_extra(groups, check), entity)
+    return marker_plan(ctx, node, groups, entity, check)
 
 
 @planner("TimeHeadway")
@@ -393,7 +413,7 @@ def plan_headway(ctx: Context, node: scm.TimeHeadway, groups: list[Group]) -> Pl
         **measured_along(node),
     }
     check = Condition(f"{name}_headway", "headway", data)
-    return _marker(ctx, node, with_extra(groups, check), ctx.entity(node.referenceActor))
+    return marker_plan(ctx, node, groups, ctx.entity(node.referenceActor), check)
 
 
 def measured_along(node: Any) -> dict[str, str]:
@@ -423,7 +443,7 @@ def plan_ttc(ctx: Context, node: scm.TimeToCollision, groups: list[Group]) -> Pl
     data["freespace"] = "true" if node.freespace else "false"
     data.update(measured_along(node))
     check = Condition(f"{name}_ttc", "ttc", data)
-    return _marker(ctx, node, with_extra(groups, check), ctx.entity(node.referenceActor))
+    return marker_plan(ctx, node, groups, ctx.entity(node.referenceActor), check)
 
 
 from . import opaque  # noqa: E402, F401  (registers the OpaqueAction planner of sceml import)

@@ -2,7 +2,8 @@
 
 An Action element becomes the node's event (it finishes when the action completes); a Condition
 element becomes a marker event that fires once the node is activated and the condition holds, as
-every condition node does (docs/import.md). Only the element's `name` is replaced, so that names
+every condition node does (docs/import.md), or, where the node is inlined
+(`players.flows.inlined`), in its successor's trigger. Only the element's `name` is replaced, so that names
 stay unique in the written document; everything else is the text that was read.
 """
 
@@ -14,9 +15,9 @@ from markupsafe import Markup
 import scemlmodel as scm
 
 from ..safexml import hardened_parser
-from .actions import Plan, planner
+from .actions import Plan, marker_plan, planner
 from .context import Action, Context, Event
-from .triggers import Condition, Group, with_extra
+from .triggers import Condition, Group
 
 
 class OpaqueElementError(ValueError):
@@ -61,5 +62,4 @@ def plan_opaque(ctx: Context, node: scm.OpaqueAction, groups: list[Group]) -> Pl
         return [Event(name, entity, [action], groups)], name
     data = {"body": _body(element), "edge": element.get("conditionEdge", "none")}
     kept = Condition(f"{name}_kept", "opaque", data, delay=element.get("delay", "0.0"))
-    marker = ctx.marker_action(name, name)
-    return [Event(name, entity, [marker], with_extra(groups, kept))], name
+    return marker_plan(ctx, node, groups, entity, kept)

@@ -1,9 +1,10 @@
 """Conditions and trigger structure: when a node is activated and when it counts as finished.
 
-A node is activated when its predecessors have finished (SPEC §3). Each predecessor's finish is
-the completeState of one event (its *finish event*), so an activation is a list of
-ConditionGroups (OR) of StoryboardElementStateConditions (AND): one group holding every
-predecessor for ordinary nodes and join-all, one group per predecessor for join-one.
+A node is activated when its predecessors have finished (SPEC §3). A predecessor's finish is
+the completeState of one event (its *finish event*), or, for a node the export writes into its
+successor's trigger (`players.flows.inlined`), the ConditionGroups that hold when it has
+finished. An activation is a list of ConditionGroups (OR) of Conditions (AND): every
+predecessor's finish ANDed for ordinary nodes and join-all, ORed for join-one.
 """
 
 from __future__ import annotations
@@ -25,9 +26,15 @@ class Condition:
     delay: str = "0.0"
     #: Set on "has finished" references so readers (and tests) can find the predecessor.
     ref: str | None = None
+    #: Named after its (inlined) condition node, whose name is already taken: kept as it is,
+    #: so that `sceml import` gives the node its name back.
+    own: bool = False
 
 
 Group = list[Condition]
+#: What a predecessor's finish is: its finish event, None for the root node, or the groups of
+#: an inlined node.
+Finish = str | None | list[Group]
 
 
 def finished(event: str, by: str) -> Condition:
@@ -54,17 +61,37 @@ def simulation_time_over(value: str, by: str) -> Condition:
     )
 
 
-def activation(finishes: list[str | None], one: bool, by: str) -> list[Group]:
+def activation(finishes: list[Finish], one: bool, by: str) -> list[Group]:
     """Groups that hold when the predecessors have finished: all of them, or `one` of them.
 
-    A `None` finish stands for the root node.
+    A `None` finish stands for the root node; a list of groups for an inlined node, whose
+    conditions are named after `by` here (so that the names do not depend on the inlined
+    node's, which the file does not keep).
     """
-    conditions = [
-        simulation_started(by) if finish is None else finished(finish, by) for finish in finishes
-    ]
+    alternatives = [_groups_of(finish, by) for finish in finishes]
     if one:
-        return [[condition] for condition in conditions]
-    return [conditions]
+        return [group for groups in alternatives for group in groups]
+    combined: list[Group] = [[]]
+    for groups in alternatives:
+        combined = [[*before, *group] for before in combined for group in groups]
+    return combined
+
+
+def _groups_of(finish: Finish, by: str) -> list[Group]:
+    if finish is None:
+        return [[simulation_started(by)]]
+    if isinstance(finish, str):
+        return [[finished(finish, by)]]
+    return [[_named_by(condition, by) for condition in group] for group in finish]
+
+
+def _named_by(condition: Condition, by: str) -> Condition:
+    """An inlined node's condition as `by` waits for it."""
+    if condition.ref is not None:
+        return replace(condition, name=f"{by}_after_{condition.ref}")
+    if condition.kind == "simulation_time" and condition.name.endswith("_at_start"):
+        return replace(condition, name=f"{by}_at_start")
+    return condition
 
 
 def with_extra(groups: list[Group], extra: Condition) -> list[Group]:
@@ -72,6 +99,42 @@ def with_extra(groups: list[Group], extra: Condition) -> list[Group]:
     return [[*group, extra] for group in groups]
 
 
-def delayed(groups: list[Group], delay: str) -> list[Group]:
-    """The same groups with every condition delayed; exact because they stay true once true."""
-    return [[replace(condition, delay=delay) for condition in group] for group in groups]
+def delayed(groups: list[Group], delay: str, expressions: bool = True) -> list[Group]:
+    """The same groups with every condition delayed by `delay` more; exact because they stay
+    true once true (a wait written into its successor's trigger may already carry one).
+    Without `expressions` (OpenSCENARIO 1.0) two delays of which one is a parameter cannot be
+    added up: ValueError."""
+    return [
+        [replace(condition, delay=_sum(condition.delay, delay, expressions)) for condition in group]
+        for group in groups
+    ]
+
+
+def _sum(first: str, second: str, expressions: bool) -> str:
+    """Two delays as one: a number, or an expression where either is a parameter (1.1+)."""
+    try:
+        return repr(float(first) + float(second))
+    except ValueError:
+        pass
+    if _is_zero(first):
+        return second
+    if _is_zero(second):
+        return first
+    if not expressions:
+        raise ValueError(
+            f"waits of {first} and {second} s in a row are one delay in the trigger after them, "
+            "and OpenSCENARIO 1.0 has no expressions to add up parameters; export 1.1 or later"
+        )
+    return f"${{{_inner(first)} + {_inner(second)}}}"
+
+
+def _is_zero(text: str) -> bool:
+    try:
+        return float(text) == 0.0
+    except ValueError:
+        return False
+
+
+def _inner(text: str) -> str:
+    """The content of an expression `${...}`; a parameter or number as it is."""
+    return f"({text[2:-1]})" if text.startswith("${") and text.endswith("}") else text

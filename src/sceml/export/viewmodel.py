@@ -15,12 +15,13 @@ import scemlmodel as scm
 from .. import graph
 from ..errors import SceMLError
 from ..maps.reference import is_scenery_file
+from ..players.flows import inlined
 from .actions import PLANNERS
 from .context import Context, Event, node_name
 from .entities import entity, init_actions
 from .environment import environment
 from .names import NameTable, sanitize
-from .triggers import Group, activation, simulation_started, simulation_time_over
+from .triggers import Finish, Group, activation, simulation_started, simulation_time_over
 from .values import ParameterHook, Values
 from .versions import traits
 
@@ -60,7 +61,8 @@ class View:
     act_start: list[Group]
     groups: list[dict[str, Any]]
     stop: list[Group]
-    #: node name -> (first event, finish event); not rendered, for callers and tests.
+    #: node name -> (first event, finish event) of every node that has events (an inlined node
+    #: has none: `players.flows.inlined`); not rendered, for callers and tests.
     events_of: dict[str, tuple[str, str]] = field(default_factory=dict)
 
 
@@ -92,6 +94,7 @@ def build_view(scenario: scm.Scenario, options: Options) -> View:
     for node in nodes:
         ctx.event_names[node] = names.claim(node_name(node))
     ctx.marker = names.claim("SceML_marker")
+    ctx.inline = inlined(scenario.nodes)
     events, finishes = _plan(ctx, nodes)
     story = names.claim(sanitize(root.scenarioName, "Scenario"))
     act = names.claim(f"{story}_Act")
@@ -118,7 +121,11 @@ def build_view(scenario: scm.Scenario, options: Options) -> View:
         act_start=_unique(names, [[simulation_started(act)]]),
         groups=groups,
         stop=stop,
-        events_of={str(node.name): (ctx.event_names[node], finishes[node]) for node in nodes},
+        events_of={
+            str(node.name): (ctx.event_names[node], finish)
+            for node in nodes
+            if isinstance(finish := finishes[node], str)
+        },
     )
 
 
@@ -128,9 +135,9 @@ def _is_one(node: scm.GraphElement) -> bool:
     return isinstance(node, scm.JoinOneFinished)
 
 
-def _plan(ctx: Context, nodes: list[scm.GraphElement]) -> tuple[list[Event], dict[Any, str]]:
-    """Events of every node in topological order, and each node's finish event."""
-    finishes: dict[Any, str] = {}
+def _plan(ctx: Context, nodes: list[scm.GraphElement]) -> tuple[list[Event], dict[Any, Finish]]:
+    """Events of every node in topological order, and each node's finish (`triggers.Finish`)."""
+    finishes: dict[Any, Finish] = {}
     events: list[Event] = []
     for node in nodes:
         kind = node.eClass.name
@@ -170,8 +177,11 @@ def _groups(ctx: Context, actors: list[scm.Actor], events: list[Event]) -> list[
 
 
 def _unique(names: NameTable, groups: list[Group]) -> list[Group]:
-    """The groups with every condition name made unique in the document."""
-    return [[replace(c, name=names.claim(c.name)) for c in group] for group in groups]
+    """The groups with every condition name made unique in the document; a condition named
+    after its inlined node keeps the name the node took."""
+    return [
+        [c if c.own else replace(c, name=names.claim(c.name)) for c in group] for group in groups
+    ]
 
 
 def _header(root: scm.RootNode, date: str) -> dict[str, str]:

@@ -77,6 +77,8 @@ def _private(build: Build, actor: scm.Actor, private: etree._Element) -> bool:
     if follow is not None and actor.startPosition is None:
         return _starts_on_trajectory(build, actor, private, follow)
     speed = private.find("LongitudinalAction/SpeedAction")
+    if speed is not None and speed.find("SpeedActionTarget/RelativeTargetSpeed") is not None:
+        return _relative_speed(build, actor, speed)
     target = None if speed is None else speed.find("SpeedActionTarget/AbsoluteTargetSpeed")
     if speed is None or target is None:
         return False
@@ -89,6 +91,36 @@ def _private(build: Build, actor: scm.Actor, private: etree._Element) -> bool:
         return _gradual(build, actor, private, speed)
     actor.initialSpeed = traced.value(number(target, "value"))
     build.report.add("mapped", f"{actor.name}: initial speed", build.where(speed))
+    return True
+
+
+def _relative_speed(build: Build, actor: scm.Actor, speed: etree._Element) -> bool:
+    """A step Init speed relative to another actor's Init speed (ALKS: the lead vehicle at the
+    ego's speed): the initial speed it comes to, from that actor's, once it is known. A
+    continuous one (it keeps tracking the other's speed) or one before the other's speed is
+    set stays opaque."""
+    target = speed.find("SpeedActionTarget/RelativeTargetSpeed")
+    dynamics = speed.find("SpeedActionDynamics")
+    other = build.actors.get(str(target.get("entityRef")).split("::")[-1])
+    step = dynamics is None or (
+        dynamics.get("dynamicsShape") == "step" or number(dynamics, "value", 0.0) == 0
+    )
+    if (
+        other is None
+        or target.get("continuous") == "true"
+        or not step
+        or not isinstance(other.initialSpeed, scm.Value)
+    ):
+        return False
+    base, value = _speed_of(other), number(target, "value")
+    factor = target.get("speedTargetValueType") == "factor"
+    actor.initialSpeed = traced.value(base * value if factor else base + value)
+    build.report.add(
+        "mapped",
+        f"{actor.name}: initial speed {'×' if factor else '+'} {value:g} of {other.name}'s "
+        f"({float(actor.initialSpeed.value):g} m/s)",
+        build.where(speed),
+    )
     return True
 
 

@@ -15,6 +15,7 @@ from collections import deque
 import scemlmodel as scm
 
 from .. import catalog
+from ..players.flows import is_condition_element
 from .context import Build
 
 _AXES = {
@@ -43,8 +44,9 @@ def separate(build: Build) -> None:
     for line in lines.values():
         for earlier, later in zip(line, line[1:], strict=False):
             if not _reaches(earlier, later, order):
-                _wait(build, earlier, later)
+                join = _wait(build, earlier, later)
                 order[id(later.incoming[0].source)] = order[id(later)] - 0.5
+                order[id(join)] = order[id(later)] - 0.75
 
 
 def _axes(node: scm.Maneuver) -> set[str]:
@@ -92,15 +94,40 @@ def _reaches(start: scm.GraphElement, goal: scm.GraphElement, order: dict[int, f
     return False
 
 
-def _wait(build: Build, earlier: scm.Maneuver, later: scm.Maneuver) -> None:
+def _wait(build: Build, earlier: scm.Maneuver, later: scm.Maneuver) -> scm.JoinAllFinished:
+    """`later` also waits for `earlier`: a join before it, or, where `later` is started by a
+    condition of its own, before that condition. The condition is then evaluated once both
+    have finished and stays the only thing `later` waits for, so the export writes it into
+    `later`'s StartTrigger (`players.flows.inlined`) and `later` starts in the step it holds,
+    as in the original; a join after the condition would make it a marker, a step late."""
+    target: scm.GraphElement = later
+    sources = [flow.source for flow in later.incoming]
+    if (
+        len(sources) == 1
+        and _is_condition(sources[0])
+        and len(sources[0].outgoing) == 1
+        and len(sources[0].incoming) == 1
+    ):
+        target = sources[0]
     join = build.add(scm.JoinAllFinished(), f"{later.name}_after_{earlier.name}")
-    for flow in list(later.incoming):
-        flow.target = join
+    for flow in list(target.incoming):
+        # Moved through the opposite list: setting `flow.target` would leave the flow in
+        # `target.incoming` too (pyecore keeps the old side of an opposite on a set).
+        target.incoming.remove(flow)
+        join.incoming.append(flow)
     build.flow(earlier, join)
-    build.flow(join, later)
+    build.flow(join, target)
     build.report.add(
         "guessed",
         f"{later.name} also waits for {earlier.name} to finish (in OpenSCENARIO it would cut "
-        f"{earlier.name} short; SceML runs one maneuver of an actor and kind at a time)",
+        f"{earlier.name} short; SceML runs one maneuver of an actor and kind at a time)"
+        + (f"; {target.name} is evaluated once both have finished" if target is not later else ""),
         node=str(later.name),
     )
+    return join
+
+
+def _is_condition(node: scm.GraphElement | None) -> bool:
+    if isinstance(node, scm.TimeElapsed):
+        return False
+    return isinstance(node, scm.Condition) or (node is not None and is_condition_element(node))

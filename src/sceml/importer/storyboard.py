@@ -43,7 +43,7 @@ class Storyboard:
     events: dict[str, Event] = field(default_factory=dict)
     #: Element name (action, maneuver, group, act, story) -> the events it holds.
     holds: dict[str, list[str]] = field(default_factory=dict)
-    #: Action name -> (its event, its index among the event's actions).
+    #: Action name, and `Event::Action`, -> (its event, its index among the event's actions).
     actions: dict[str, tuple[str, int]] = field(default_factory=dict)
     finish: dict[str, scm.GraphElement] = field(default_factory=dict)
     started: dict[str, scm.GraphElement] = field(default_factory=dict)
@@ -88,6 +88,10 @@ class Storyboard:
                         self.holds.setdefault(str(holder), []).append(name)
                     for index, action in enumerate(event.iterchildren("Action")):
                         self.actions.setdefault(str(action.get("name")), (name, index))
+                        # A reference may name the action within its event, `Event::Action`
+                        # (`cut-in_cr`: every event's action is called `Action`).
+                        qualified = f"{event.get('name')}::{action.get('name')}"
+                        self.actions.setdefault(qualified, (name, index))
                     count = int(event.get("maximumExecutionCount", "1"))
                     if count > 1:
                         self.build.report.add(
@@ -160,15 +164,18 @@ class Storyboard:
             return self.event(folded[0])
         actor = info.actors[0]
         kind = markers.hint(self.build, info.name)
+        # Only a marker's delay is a KeepVelocity's duration; a delay in a KeepVelocity's own
+        # StartTrigger is a wait before it (written there by the export, players.flows).
+        marker = markers.is_marker(self.build, info.element)
         trigger = Trigger(
             self.build,
             self.resolve,
             self._act_start(info.act),
             actor,
-            "KeepVelocity" if kind == "KeepVelocity" else "TimeElapsed",
+            "KeepVelocity" if kind == "KeepVelocity" and marker else "TimeElapsed",
         )
         start = info.element.find("StartTrigger")
-        if markers.is_marker(self.build, info.element):
+        if marker:
             node = trigger.node(start, info.name, info.name)
             self.started[info.name] = node
             self._report_marker(info, node)
@@ -249,9 +256,12 @@ class Storyboard:
 
     def resolve(self, state: etree._Element) -> scm.GraphElement:
         """The node a state condition refers to: finished, or (other states) started."""
-        ref = last_name(str(state.get("storyboardElementRef")))
+        full = str(state.get("storyboardElementRef"))
+        ref = last_name(full)
         kind = state.get("storyboardElementType")
         done = state.get("state") in FINISHED
+        if kind == "action" and "::".join(full.split("::")[-2:]) in self.actions:
+            ref = "::".join(full.split("::")[-2:])
         if kind == "event" and ref in self.events:
             node = self.event(ref)
             return node if done else self._started(ref, state)

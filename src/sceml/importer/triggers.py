@@ -70,19 +70,29 @@ class Trigger:
     def _clock(self, seconds: float) -> scm.GraphElement:
         if seconds <= 0:
             return self.start
-        node = self.timed(
+        return self.timed(
             self.build.root,
             seconds,
             f"after_{seconds:g}s",
             "TimeElapsed",
             self.build.default_actor(),
+            share=True,
         )
-        return node
 
     def timed(
-        self, before: scm.GraphElement, seconds: float, wanted: str, kind: str, actor: scm.Actor
+        self,
+        before: scm.GraphElement,
+        seconds: float,
+        wanted: str,
+        kind: str,
+        actor: scm.Actor,
+        share: bool = False,
     ) -> scm.GraphElement:
-        """A TimeElapsed (or KeepVelocity) of `seconds` after `before`."""
+        """A TimeElapsed (or KeepVelocity) of `seconds` after `before`; with `share`, the one
+        already made for the same wait after the same node (see `condition`)."""
+        key = (id(before), f"{kind} {seconds!r}".encode())
+        if share and key in self.build.conditions:
+            return self.build.conditions[key]
         node: scm.ActionNode = getattr(scm, kind)(duration=traced.value(seconds))
         node.referenceActor = actor
         self.build.add(node, wanted)
@@ -90,6 +100,8 @@ class Trigger:
         self.build.report.add(
             "mapped", f"{node.name}: a wait of {seconds:g} s -> {kind}", node=str(node.name)
         )
+        if share:
+            self.build.conditions[key] = node
         return node
 
     def node(
@@ -110,10 +122,7 @@ class Trigger:
         )
         if len(ends) == 1:
             return ends[0]
-        join = self.build.add(scm.JoinOneFinished(), final or f"{wanted}_any")
-        for end in ends:
-            self.build.flow(end, join)
-        return join
+        return self._join(scm.JoinOneFinished, ends, final, f"{wanted}_any")
 
     def group_node(self, group: Group, final: str | None, wanted: str) -> scm.GraphElement:
         """The node that finishes when every condition of the group has held."""
@@ -125,19 +134,18 @@ class Trigger:
         if len(after) == 1:
             node = after[0]
         else:
-            name = final if last_step == "join" and final else f"{wanted}_all"
-            node = self.build.add(scm.JoinAllFinished(), name)
-            for before in after:
-                self.build.flow(before, node)
+            name = final if last_step == "join" else None
+            node = self._join(scm.JoinAllFinished, after, name, f"{wanted}_all")
         if len(group.conditions) == 1:
             condition, delay = group.conditions[0]
             name = final if shared <= 0 and final else str(condition.get("name") or wanted)
-            node = condition_after(self.build, condition, node, name)
+            node = self.condition(condition, node, name)
             node = self._delayed(node, delay - shared, name)
         elif group.conditions:
             node = self._all_hold(group, node, final if shared <= 0 else None, wanted)
         if shared > 0:
-            node = self.timed(node, shared, final or f"{wanted}_delay", self.delay_kind, self.actor)
+            name = final or f"{wanted}_delay"
+            node = self.timed(node, shared, name, self.delay_kind, self.actor, final is None)
         return node
 
     def _all_hold(
@@ -150,17 +158,43 @@ class Trigger:
         ends = []
         for condition, delay in group.conditions:
             name = str(condition.get("name") or wanted)
-            made = condition_after(self.build, condition, start, name)
+            made = self.condition(condition, start, name)
             ends.append(self._delayed(made, delay - shared, name))
-        join = self.build.add(scm.JoinAllFinished(), final or f"{wanted}_all_hold")
-        for end in _distinct(ends):
-            self.build.flow(end, join)
+        return self._join(scm.JoinAllFinished, _distinct(ends), final, f"{wanted}_all_hold")
+
+    def _join(
+        self, kind: type, inputs: list[scm.GraphElement], final: str | None, wanted: str
+    ) -> scm.GraphElement:
+        """A join of `inputs`: the one already made of the same kind and inputs, unless it is
+        to be named `final` (a SceML export's marker event: a node of its own)."""
+        key = (id(kind), " ".join(str(id(n)) for n in inputs).encode())
+        if final is None and key in self.build.conditions:
+            return self.build.conditions[key]
+        join = self.build.add(kind(), final or wanted)
+        for before in inputs:
+            self.build.flow(before, join)
+        if final is None:
+            self.build.conditions[key] = join
         return join
+
+    def condition(
+        self, condition: etree._Element, before: scm.GraphElement, wanted: str
+    ) -> scm.GraphElement:
+        """The node of a condition activated by `before`; the same one for the same condition
+        after the same node in another trigger (an event with several actions, or a SceML
+        export that wrote one condition node into each of its successors' triggers): each
+        waiting event starts at the first instant it holds, so one node means the same."""
+        key = (id(before), _content(condition))
+        found = self.build.conditions.get(key)
+        if found is None:
+            found = condition_after(self.build, condition, before, wanted)
+            self.build.conditions[key] = found
+        return found
 
     def _delayed(self, node: scm.GraphElement, delay: float, wanted: str) -> scm.GraphElement:
         if delay <= 0:
             return node
-        return self.timed(node, delay, f"{wanted}_delay", "TimeElapsed", self.actor)
+        return self.timed(node, delay, f"{wanted}_delay", "TimeElapsed", self.actor, share=True)
 
 
 def _distinct(nodes: list[scm.GraphElement]) -> list[scm.GraphElement]:
@@ -169,3 +203,13 @@ def _distinct(nodes: list[scm.GraphElement]) -> list[scm.GraphElement]:
         if all(node is not other for other in seen):
             seen.append(node)
     return seen
+
+
+def _content(condition: etree._Element) -> bytes:
+    """What a condition tests, with its delay and edge, without its name."""
+    body = b"".join(etree.tostring(child, with_tail=False) for child in condition)
+    return b"%s|%s|%s" % (
+        str(condition.get("delay", "0")).encode(),
+        str(condition.get("conditionEdge", "none")).encode(),
+        body,
+    )

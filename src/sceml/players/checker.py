@@ -21,9 +21,10 @@ from lxml import etree
 
 import scemlmodel as scm
 
-from .. import graph
+from .. import graph, params
 from ..export.names import SEPARATOR
 from ..maps import RoadMap
+from .flows import flow_steps, inlined, is_passing
 from .goals import goal_problems
 from .record import EventRun, PlayerRun
 
@@ -47,6 +48,8 @@ class NodeCheck:
     problems: list[str] = field(default_factory=list)
     #: Unfinished at the stop, but the end node did not wait for it (SPEC §3: join-one).
     pending: bool = False
+    #: Written into its successor's trigger (`players.flows.inlined`): its times are derived.
+    inlined: bool = False
 
 
 @dataclass
@@ -86,6 +89,7 @@ def check_run(
     finish: dict[str, float | None] = {}
     checks: dict[str, NodeCheck] = {}
     order, _ = graph.topological_order(flat)
+    inline = inlined(flat.nodes)
     for node in order:
         node_name = str(node.name)
         if isinstance(node, scm.RootNode):
@@ -93,21 +97,31 @@ def check_run(
             continue
         if isinstance(node, scm.EndNode):
             continue
-        first, finish_event = events_of[node_name]
-        starts = [run.events.get(e, EventRun()).start for e in events[first]]
-        end = run.events.get(finish_event, EventRun()).end
-        finish[node_name] = end if end is not None and (stop is None or end <= stop) else None
         check = NodeCheck(
             name=node_name,
             kind=node.eClass.name,
             after=[str(p.name) for p in graph.predecessors(node)],
             one=isinstance(node, scm.JoinOneFinished),
-            start=min((s for s in starts if s is not None), default=None),
-            finish=finish[node_name],
+            start=None,
+            finish=None,
+            inlined=node in inline,
         )
+        if check.inlined:
+            check.start, check.finish = _inlined_times(node, inline, events_of, run, finish)
+            first = None
+        else:
+            first, finish_event = events_of[node_name]
+            starts = [run.events.get(e, EventRun()).start for e in events[first]]
+            end = run.events.get(finish_event, EventRun()).end
+            check.start = min((s for s in starts if s is not None), default=None)
+            check.finish = end
+        if check.finish is not None and stop is not None and check.finish > stop:
+            check.finish = None
+        finish[node_name] = check.finish
         checks[node_name] = check
         _check_order(check, finish)
-        _check_cut_short(check, events[first], run)
+        if first is not None:
+            _check_cut_short(check, events[first], run)
         if run.traces and check.start is not None and check.finish is not None:
             ready = required([finish[p] for p in check.after], check.one)
             activated = check.start if ready is None else ready
@@ -129,6 +143,37 @@ def check_run(
     return RunReport(
         name, f"{run.player} {run.version}", version, list(checks.values()), ending, stop, problems
     )
+
+
+def _inlined_times(
+    node: scm.GraphElement,
+    inline: set[scm.GraphElement],
+    events_of: dict[str, tuple[str, str]],
+    run: PlayerRun,
+    finish: dict[str, float | None],
+) -> tuple[float | None, float | None]:
+    """Start and finish of a node the export wrote into its successor's trigger (it has no
+    event of its own): activated when its predecessors' finishes reach it
+    (`players.flows.flow_steps`); a join or port finishes then, a wait its duration later, and
+    a condition when its successors (whose only predecessor it is) started."""
+    one = isinstance(node, scm.JoinOneFinished)
+    reached = []
+    for before in graph.predecessors(node):
+        done = finish[str(before.name)]
+        reached.append(None if done is None else done + flow_steps(before, inline) * run.step)
+    activated = required(reached, one)
+    if activated is None:
+        return None, None
+    activated = round(activated, 9)
+    if is_passing(node):
+        return activated, activated
+    if isinstance(node, scm.TimeElapsed):
+        return activated, round(activated + float(params.concrete(node, "duration")), 9)
+    starts = [
+        run.events.get(events_of[str(successor.name)][0], EventRun()).start
+        for successor in graph.successors(node)
+    ]
+    return activated, min((s for s in starts if s is not None), default=None)
 
 
 def _events_by_node(tree: etree._ElementTree, first_events: Iterable[str]) -> dict[str, list[str]]:
@@ -160,7 +205,7 @@ def _check_order(check: NodeCheck, finish: dict[str, float | None]) -> None:
         check.problems.append(
             f"started at {check.start:.2f} s before {waits} of its predecessors finished"
         )
-    elif check.start < ready:
+    elif check.start < ready - 1e-6:
         check.problems.append(
             f"started at {check.start:.2f} s, before its activation at {ready:.2f} s"
         )

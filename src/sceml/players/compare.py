@@ -57,13 +57,23 @@ class Comparison:
 
 def player_starts(report: RunReport, step: float) -> dict[str, float]:
     """Each node's activation in the player's run, by node name: a condition's is the step
-    after its predecessors finished (`players.meaning.FLOW_DELAY_STEPS`)."""
+    after its predecessors finished (`players.meaning.FLOW_DELAY_STEPS`), or the instant,
+    after a node written into the trigger (`players.flows`); an inlined node's is derived by
+    the checker."""
     finishes = {node.name: node.finish for node in report.nodes}
+    inline = {node.name for node in report.nodes if node.inlined}
     starts: dict[str, float] = {}
     for node in report.nodes:
-        ready = required([finishes.get(name, 0.0) for name in node.after], node.one)
-        if catalog.is_kind_of(node.kind, "Condition") and ready is not None:
-            starts[node.name] = round(ready + FLOW_DELAY_STEPS * step, 9)
+        reached = []
+        for name in node.after:
+            done = finishes.get(name, 0.0)  # the root is no node of the report: 0
+            steps = 0 if name in inline else FLOW_DELAY_STEPS
+            reached.append(None if done is None else done + steps * step)
+        ready = required(reached, node.one)
+        if node.inlined and node.start is not None:
+            starts[node.name] = node.start
+        elif catalog.is_kind_of(node.kind, "Condition") and ready is not None:
+            starts[node.name] = round(ready, 9)
         elif node.start is not None:
             starts[node.name] = node.start
     return starts

@@ -25,8 +25,12 @@ from .. import catalog
 
 #: A node starts this many time steps after its predecessors finished. Players evaluate a
 #: trigger in the step after the event it waits for completed (esmini 3.6: an event's
-#: StartTrigger sees the completeState of the previous step), so every flow costs one step and
-#: a chain of n flows n steps; the preview does the same so that it keeps step with a player.
+#: StartTrigger sees the completeState of the previous step), so a flow from a node that is an
+#: event of its own costs one step. A flow out of a node the export writes into its successor's
+#: trigger (a condition, wait or join: `players.flows.inlined`) costs none: the successor starts
+#: in the step the condition holds (`players.flows.flow_steps`). The preview does the same, so
+#: that it keeps step with a player: root -> SpeedCondition -> Accelerate starts the Accelerate
+#: one step after the start, in the step the speed is reached, as the original file would.
 FLOW_DELAY_STEPS = 1
 
 # --- who controls what --------------------------------------------------------------------------

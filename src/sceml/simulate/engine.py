@@ -4,7 +4,9 @@ At t = 0 the root finishes and actors stand at their starts. A node that finishe
 successor whose incoming flows are satisfied (one predecessor finished for an ordinary node,
 all for JoinAllFinished and a join-all end, one for JoinOneFinished and a join-one end) ready;
 a ready node is activated one time step later (`players.meaning.FLOW_DELAY_STEPS`), as players
-evaluate a trigger in the step after the event it waits for completed, and is checked at once.
+evaluate a trigger in the step after the event it waits for completed, and is checked at once;
+a node after one the export writes into its trigger (`players.flows.inlined`) is activated in
+the same instant, as the player starts it in the step the condition holds.
 Each step begins by activating the nodes due at its end instant (so a maneuver acts in the
 step its node starts, as a player's action does), then all actors move, each speed decided
 from the same state, then every active node is checked. The run ends when the end node
@@ -22,7 +24,7 @@ from pyecore.ecore import EObject
 import scemlmodel as scm
 
 from ..graph import predecessors, successors
-from ..players.meaning import FLOW_DELAY_STEPS
+from ..players.flows import flow_steps, inlined
 from .behaviours import Behaviour, behaviour_for
 from .conditions import Test, condition_for
 from .run import END_NODE, MAX_DURATION, NodeRecord
@@ -48,6 +50,9 @@ class NodeState:
     behaviour: Behaviour | None = None
     test: Test | None = None
     note: str = ""
+    #: When a trigger that holds in the instant started it (`players.flows.inlined`); its
+    #: behaviour begins at the next step.
+    since: float | None = None
 
     def ready(self) -> bool:
         done = [p.finished is not None for p in self.predecessors]
@@ -69,6 +74,8 @@ class Scheduler:
         self.active: list[NodeState] = []
         #: Nodes whose predecessors have finished, with the instant they are activated at.
         self.ready: list[tuple[float, NodeState]] = []
+        #: Nodes whose outgoing flow costs no step (`players.flows.inlined`).
+        self.inline = inlined(nodes)
         self.owners: dict[tuple[str, str], NodeState] = {}
         self.ended = False
 
@@ -117,11 +124,28 @@ class Scheduler:
             for successor in state.successors:
                 waiting = any(successor is other for _, other in self.ready)
                 if successor.started is None and not waiting and successor.ready():
-                    when = round(self.world.t + FLOW_DELAY_STEPS * self.world.dt, 9)
-                    if FLOW_DELAY_STEPS == 0:
-                        queue.extend(self._activate(successor))
-                    else:
+                    when = self._activated_at(successor)
+                    if when > self.world.t + 1e-9:
                         self.ready.append((when, successor))
+                    elif isinstance(successor.node, scm.Maneuver):
+                        # Started now by a trigger that holds now: it acts from the next
+                        # step, as the player's action does (one started after a flow step
+                        # acts in the step it starts, the preview's convention).
+                        successor.since = self.world.t
+                        self.ready.append((round(self.world.t + self.world.dt, 9), successor))
+                    else:
+                        queue.extend(self._activate(successor))
+
+    def _activated_at(self, state: NodeState) -> float:
+        """When a ready node is activated: each finished predecessor's finish plus what its
+        flow costs (`players.flows.flow_steps`); the last of them, or the first for a
+        join-one."""
+        times = [
+            round(p.finished + flow_steps(p.node, self.inline) * self.world.dt, 9)
+            for p in state.predecessors
+            if p.finished is not None
+        ]
+        return max(times) if state.needs_all else min(times)
 
     def _finish(self, state: NodeState) -> None:
         state.finished = self.world.t
@@ -135,7 +159,7 @@ class Scheduler:
 
     def _activate(self, state: NodeState) -> list[NodeState]:
         """Start a node; the nodes that finish because of it (itself, superseded ones)."""
-        state.started = self.world.t
+        state.started = self.world.t if state.since is None else state.since
         node = state.node
         if isinstance(node, scm.Condition):
             state.test = condition_for(node, self.world)

@@ -1,0 +1,118 @@
+"""Which nodes the export writes into their successor's trigger (`players.flows.inlined`), and
+what it writes there: worked out by hand from SPEC §3 on small graphs built here."""
+
+from __future__ import annotations
+
+import pytest
+from lxml import etree
+
+import scemlmodel as scm
+from sceml.build import ScenarioBuilder, world
+from sceml.export import ExportError, ParameterDeclarationSpec, build_xosc
+from sceml.players.flows import inlined
+
+SIZE = {"length": 4.0, "width": 2.0}
+
+
+def built() -> tuple[ScenarioBuilder, dict[str, scm.GraphElement]]:
+    """root -> Fast -> SpeedUp -> Wait1 -> Wait2 -> Brake -> End;
+    root -> Near -> Follow -> End; root -> Short, root -> Long, both -> AnyOf -> End."""
+    b = ScenarioBuilder("inline", map="map.xodr", level="concrete", max_duration=30.0)
+    ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0, h=0.0), speed=10.0, **SIZE)
+    lead = b.actor("Car", "lead", start=world(40.0, 0.0, h=0.0), speed=8.0, **SIZE)
+    n = {
+        "Fast": b.add("SpeedCondition", ego, speed=9.0, rule="greaterThan"),
+        "SpeedUp": b.add("Accelerate", ego, targetSpeed=14.0, rate=2.0),
+        "Wait1": b.add("TimeElapsed", ego, duration=1.5),
+        "Wait2": b.add("TimeElapsed", ego, duration=0.5),
+        "Brake": b.add("Decelerate", ego, targetSpeed=6.0, rate=3.0),
+        "Near": b.add("InVehicleRadius", lead, target=ego, radius=20.0),
+        "Follow": b.add("Follow", lead, target=ego, distance=15.0),
+        "Short": b.add("TimeElapsed", ego, duration=1.0),
+        "Long": b.add("TimeElapsed", ego, duration=2.0),
+    }
+    for name, node in n.items():
+        node.name = name
+    b.chain(b.root, n["Fast"], n["SpeedUp"], n["Wait1"], n["Wait2"], n["Brake"], b.end)
+    b.chain(b.root, n["Near"], n["Follow"], b.end)
+    b.chain(b.root, n["Short"])
+    b.chain(b.root, n["Long"])
+    any_of = b.join_one(n["Short"], n["Long"])
+    any_of.name = "AnyOf"
+    n["AnyOf"] = any_of
+    b.chain(any_of, b.end)
+    return b, n
+
+
+def test_only_what_keeps_its_meaning_is_inlined() -> None:
+    b, n = built()
+    found = {str(node.name) for node in inlined(b.scenario.nodes)}
+    # Fast: its successor waits for it alone and starts one event on it. Near: Follow ANDs its
+    # activation with its gap in a finish marker, so "held once" and "holds now" would differ.
+    # The waits and the join-one stay true once true.
+    assert found == {"Fast", "Wait1", "Wait2", "Short", "Long", "AnyOf"}
+
+
+def trigger(document: etree._Element, path: str) -> list[list[tuple[str, str, str]]]:
+    """Each ConditionGroup as (kind of condition, what it refers to or its value, delay)."""
+    groups = []
+    for group in document.iterfind(f"{path}/ConditionGroup"):
+        read = []
+        for condition in group.iterfind("Condition"):
+            inner = condition.find("ByValueCondition/*")
+            if inner is None:
+                inner = condition.find(".//EntityCondition/*")
+            target = inner.get("storyboardElementRef") or inner.get("value")
+            read.append((inner.tag, str(target), str(float(condition.get("delay")))))
+        groups.append(sorted(read))
+    return sorted(groups)
+
+
+def test_the_triggers_hold_the_inlined_conditions() -> None:
+    b, _ = built()
+    document = build_xosc(b.scenario, version="1.3").tree.getroot()
+    names = {str(e.get("name")) for e in document.iter("Event")}
+    assert {"Fast", "Wait1", "Wait2", "Short", "Long", "AnyOf"}.isdisjoint(names)
+    assert "Near" in names  # a marker event: Follow waits for its completion
+    # SpeedUp: the start AND the speed condition, in the step it holds.
+    assert trigger(document, ".//Event[@name='SpeedUp']/StartTrigger") == [
+        [("SimulationTimeCondition", "0.0", "0.0"), ("SpeedCondition", "9.0", "0.0")]
+    ]
+    # Brake: SpeedUp completed, delayed by both waits: 1.5 + 0.5 s.
+    assert trigger(document, ".//Event[@name='Brake']/StartTrigger") == [
+        [("StoryboardElementStateCondition", "SpeedUp", "2.0")]
+    ]
+    assert trigger(document, ".//Event[@name='Follow']/StartTrigger") == [
+        [("StoryboardElementStateCondition", "Near", "0.0")]
+    ]
+    # The end: Brake and Follow's gap and (the join-one of the two waits, each a delay of the
+    # start) in one group each of the join-one's alternatives, or the maximum duration.
+    follow_done = "Follow__gap_reached"
+    assert trigger(document, "Storyboard/StopTrigger") == [
+        [
+            ("SimulationTimeCondition", "0.0", "1.0"),
+            ("StoryboardElementStateCondition", "Brake", "0.0"),
+            ("StoryboardElementStateCondition", follow_done, "0.0"),
+        ],
+        [
+            ("SimulationTimeCondition", "0.0", "2.0"),
+            ("StoryboardElementStateCondition", "Brake", "0.0"),
+            ("StoryboardElementStateCondition", follow_done, "0.0"),
+        ],
+        [("SimulationTimeCondition", "30.0", "0.0")],
+    ]
+
+
+def test_parameterised_waits_in_a_row_add_up_as_an_expression() -> None:
+    # Wait1 and Wait2 (1.5 s, 0.5 s) as parameters: Brake's delay is their sum, which 1.1+
+    # write as an expression and 1.0, which has none, refuses with the reason.
+    b, _ = built()
+    hook = {
+        ("Wait1", "duration"): ParameterDeclarationSpec("First", "1.5"),
+        ("Wait2", "duration"): ParameterDeclarationSpec("Second", "0.5"),
+    }
+    document = build_xosc(b.scenario, version="1.1", parameters=hook).tree.getroot()
+    (condition,) = document.iterfind(".//Event[@name='Brake']/StartTrigger//Condition")
+    assert condition.get("delay") == "${$First + $Second}"
+    with pytest.raises(ExportError, match="1.0 has no expressions"):
+        build_xosc(b.scenario, version="1.0", parameters=hook)
