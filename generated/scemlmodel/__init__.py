@@ -68,6 +68,7 @@ WorldPosition.z.eType = ParameterValue
 WorldPosition.h.eType = ParameterValue
 LanePosition.s.eType = ParameterValue
 LanePosition.offset.eType = ParameterValue
+LanePosition.h.eType = ParameterValue
 RoadPosition.s.eType = ParameterValue
 RoadPosition.t.eType = ParameterValue
 RoadPosition.h.eType = ParameterValue

@@ -357,8 +357,9 @@ class LanePosition(Position):
     laneId = EAttribute(eType=EInt, unique=True, derived=False, changeable=True)
     s = EReference(ordered=True, unique=True, containment=True, derived=False)
     offset = EReference(ordered=True, unique=True, containment=True, derived=False)
+    h = EReference(ordered=True, unique=True, containment=True, derived=False)
 
-    def __init__(self, *, roadId=None, laneId=None, s=None, offset=None, **kwargs):
+    def __init__(self, *, roadId=None, laneId=None, s=None, offset=None, h=None, **kwargs):
 
         super().__init__(**kwargs)
 
@@ -373,6 +374,9 @@ class LanePosition(Position):
 
         if offset is not None:
             self.offset = offset
+
+        if h is not None:
+            self.h = h
 
 
 class RoadPosition(Position):

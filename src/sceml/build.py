@@ -32,11 +32,20 @@ def world(
 
 
 def lane(
-    road_id: str | int, lane_id: int, s: ParameterInput, offset: ParameterInput = 0.0
+    road_id: str | int,
+    lane_id: int,
+    s: ParameterInput,
+    offset: ParameterInput = 0.0,
+    h: ParameterInput | None = None,
 ) -> scm.LanePosition:
-    """A lane position: road, lane, distance along the road and lateral offset (m)."""
+    """A lane position: road, lane, distance along the road and lateral offset (m) and, when
+    given, the heading relative to the lane's direction of traffic (rad)."""
     return scm.LanePosition(
-        roadId=str(road_id), laneId=int(lane_id), s=as_parameter(s), offset=as_parameter(offset)
+        roadId=str(road_id),
+        laneId=int(lane_id),
+        s=as_parameter(s),
+        offset=as_parameter(offset),
+        h=None if h is None else as_parameter(h),
     )
 
 

@@ -133,6 +133,8 @@ def describe_position(position: EObject | None, scope: Scope) -> str:
         text = f"road {position.roadId} lane {position.laneId} s {describe_value(position.s, 'm', scope)}"
         if position.offset is not None and not _is_zero(_resolve(position.offset, scope)):
             text += f" offset {describe_value(position.offset, 'm', scope)}"
+        if position.h is not None:
+            text += f", h {describe_value(position.h, 'rad', scope)}"
         return text
     if isinstance(position, scm.RoadPosition):
         text = f"road {position.roadId} s {describe_value(position.s, 'm', scope)}"
