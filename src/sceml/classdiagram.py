@@ -99,6 +99,17 @@ VIEWS: dict[str, tuple[str, ...]] = {
         "RelativeWorldPosition",
         "Environment",
     ),
+    "global": (
+        "RootNode",
+        "Declaration",
+        "ActionNode",
+        "Condition",
+        "GlobalAction",
+        "ParameterCondition",
+        "VariableCondition",
+        "SetParameter",
+        "SetVariable",
+    ),
     "values": (
         "ParameterValue",
         "Value",
@@ -119,6 +130,7 @@ CATEGORY_FILL = {
     "lateral": "#ff9e9e",
     "composite": "#9ee6a0",
     "condition": "#9ec9ff",
+    "global": "#d7c8f0",
 }
 ABSTRACT_FILL = "#e6e6e6"
 CONCRETE_FILL = "#ffd9b3"

@@ -68,11 +68,15 @@ def map_action(build: Build, request: Request, motion: Motion) -> scm.ActionNode
 
 def _add(build: Build, request: Request, kind: str, **values: object) -> scm.ActionNode:
     node: scm.ActionNode = getattr(scm, kind)()
-    node.referenceActor = request.actor
+    if catalog.performed_by_actor(kind):
+        node.referenceActor = request.actor
     numeric = {spec.name for spec in catalog.parameters(kind)}
     for key, value in values.items():
         if value is None:
             continue
+        enum = node.eClass.findEStructuralFeature(key).eType
+        if isinstance(value, str) and hasattr(enum, "getEEnumLiteral"):
+            value = enum.getEEnumLiteral(value)
         node.eSet(key, traced.value(value) if key in numeric else value)  # type: ignore[arg-type]
     build.add(node, request.name)
     build.report.add(
@@ -302,3 +306,10 @@ def _is_self(vertex: etree._Element, actor: scm.Actor) -> bool:
         and float(here.get("dx", "0")) == 0.0
         and float(here.get("dy", "0")) == 0.0
     )
+
+
+#: What other modules use to register and add their own kinds (global_kinds.py).
+maps = _maps
+add_node = _add
+
+from . import global_kinds  # noqa: E402, F401  (registers ParameterAction and VariableAction)

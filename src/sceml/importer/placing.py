@@ -155,7 +155,7 @@ def _same_heading(
     assert build.road_map is not None
     h = given.h.value if isinstance(given.h, scm.Value) else None
     if h is None or isinstance(h, traced.Traced):
-        return given.h  # type: ignore[no-any-return]
+        return given.h
     s = float(given.s.value)
     old = build.road_map.lane_to_world(str(given.roadId), int(given.laneId), s).heading
     new = build.road_map.lane_to_world(str(moved.roadId), int(moved.laneId), s).heading
