@@ -23,6 +23,7 @@ import scemlmodel as scm
 
 from ..graph import predecessors, successors
 from ..players.meaning import FLOW_DELAY_STEPS
+from . import global_values
 from .behaviours import Behaviour, behaviour_for
 from .conditions import Test, condition_for
 from .run import END_NODE, MAX_DURATION, NodeRecord
@@ -143,6 +144,9 @@ class Scheduler:
                 state.note = "this condition kind is not simulated: it never holds"
         elif isinstance(node, scm.Maneuver):
             return self._start_maneuver(state)
+        elif isinstance(node, scm.GlobalAction):
+            global_values.apply(node, self.world)  # players complete it in the same step
+            return [state]
         elif not isinstance(node, scm.EndNode | scm.JoiningPolicy | scm.InPort | scm.OutPort):
             state.note = f"a {state.kind} is not simulated: it finishes at once"
             return [state]
