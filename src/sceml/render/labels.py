@@ -252,7 +252,29 @@ def action_lines(node: scm.ActionNode, scope: Scope) -> list[str]:
     """The lines under an action node's kind: its actors, then `name: value` per set parameter."""
     if isinstance(node, scm.OpaqueAction):
         return [actor_line(node, scope), *opaque_lines(node)]
+    if not catalog.performed_by_actor(node):
+        return global_lines(node)
     return [actor_line(node, scope), *(f"{k}: {v}" for k, v in parameter_items(node, scope))]
+
+
+#: How a global node reads: a rule or change as its operator.
+_OPERATORS = {
+    "greaterThan": ">",
+    "lessThan": "<",
+    "equalTo": "==",
+    "set": "=",
+    "add": "+=",
+    "multiply": "*=",
+}
+
+
+def global_lines(node: scm.ActionNode) -> list[str]:
+    """`global`, then what it reads or changes: `parameter Counter > 4`, `variable Counter += 2`."""
+    word = "variable" if node.eClass.findEStructuralFeature("variable") else "parameter"
+    named = str(node.eGet(word) or "") or "(unnamed)"
+    how = node.rule if isinstance(node, scm.Condition) else node.modify
+    operator = _OPERATORS.get(getattr(how, "name", ""), "?")
+    return ["global", f"{word} {named} {operator} {node.value or ''}".rstrip()]
 
 
 def root_lines(root: scm.RootNode | None, scenario: scm.Scenario) -> list[str]:
