@@ -1140,6 +1140,38 @@ class SetVariable(GlobalAction):
             self.modify = modify
 
 
+class TrafficSignalState(GlobalAction):
+    """Switches a traffic signal of the map to a state (OpenSCENARIO's TrafficSignalStateAction)."""
+    signalId = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    state = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+
+    def __init__(self, *, signalId=None, state=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if signalId is not None:
+            self.signalId = signalId
+
+        if state is not None:
+            self.state = state
+
+
+class TrafficSignalCondition(Condition):
+    """Holds once a traffic signal of the map shows the state (OpenSCENARIO's TrafficSignalCondition). A global condition: no actor fulfils it."""
+    signalId = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    state = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+
+    def __init__(self, *, signalId=None, state=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if signalId is not None:
+            self.signalId = signalId
+
+        if state is not None:
+            self.state = state
+
+
 class TraveledDistance(Condition):
     """Holds once the reference actor's odometer reaches the distance: every metre it has moved since the simulation started, whichever way (OpenSCENARIO's TraveledDistanceCondition), not since the node's activation."""
     distance = EReference(ordered=True, unique=True, containment=True, derived=False)

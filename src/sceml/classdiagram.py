@@ -109,6 +109,8 @@ VIEWS: dict[str, tuple[str, ...]] = {
         "VariableCondition",
         "SetParameter",
         "SetVariable",
+        "TrafficSignalState",
+        "TrafficSignalCondition",
     ),
     "values": (
         "ParameterValue",

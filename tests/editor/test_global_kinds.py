@@ -12,8 +12,9 @@ from sceml.editor.palette import node_groups
 
 def test_the_palette_offers_the_global_kinds() -> None:
     groups = {group["group"]: [item["kind"] for item in group["items"]] for group in node_groups()}
-    assert groups["global"] == ["SetParameter", "SetVariable"]
-    assert {"ParameterCondition", "VariableCondition"} <= set(groups["condition"])
+    assert groups["global"] == ["SetParameter", "SetVariable", "TrafficSignalState"]
+    conditions = {"ParameterCondition", "VariableCondition", "TrafficSignalCondition"}
+    assert conditions <= set(groups["condition"])
 
 
 def test_a_global_node_is_added_and_edited_without_an_actor(uis1: EditorSession) -> None:

@@ -114,13 +114,13 @@ def test_emf_keeps_an_imported_lane_change_target(emf: Harness, tmp_path: Path) 
     assert differences(io.load(source / "lanes.xmi").root, io.load(out / "lanes.xmi").root) == []
 
 
-def test_emf_reads_and_writes_global_nodes_declarations_and_lane_headings(
+def test_emf_reads_and_writes_global_nodes_declarations_signals_and_lane_headings(
     emf: Harness, tmp_path: Path
 ) -> None:
     source, out = tmp_path / "in", tmp_path / "out"
     source.mkdir()
     out.mkdir()
-    for name in ("variables", "lane-headings"):
+    for name in ("variables", "lane-headings", "traffic-signals"):
         import_to_file(FILES / f"{name}.xosc", source / f"{name}.xmi")
         result = emf.run("roundtrip", ECORE, source, out, Path(f"{name}.xmi"))
         assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout

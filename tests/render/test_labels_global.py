@@ -15,3 +15,10 @@ def test_global_nodes_read_as_what_they_do() -> None:
     assert action_lines(raise_it, Scope()) == ["global", "variable Counter += 2"]
     assert action_lines(high, Scope()) == ["global", "parameter Counter > 4"]
     assert action_lines(carla, Scope()) == ["global", "parameter (unnamed) <"]
+
+
+def test_traffic_signal_nodes_read_as_the_state() -> None:
+    green = scm.TrafficSignalState(signalId="1", state="off;off;on")
+    red = scm.TrafficSignalCondition(signalId="1", state="on;off;off")
+    assert action_lines(green, Scope()) == ["global", "signal 1 = off;off;on"]
+    assert action_lines(red, Scope()) == ["global", "signal 1 == on;off;off"]

@@ -1,5 +1,5 @@
-"""The global kinds (no actor performs them): parameter and variable conditions and actions, and
-the declarations they read and change.
+"""The global kinds (no actor performs them): parameter and variable conditions and actions with
+the declarations they read and change, and traffic signal states and conditions.
 
 A global action is an event in the ego's maneuver group (OpenSCENARIO wants every event in one;
 the action itself names no entity); a global condition is a marker event there that fires once
@@ -55,6 +55,27 @@ def plan_value_action(ctx: Context, node: scm.ActionNode, groups: list[Group]) -
     }
     action = Action(ctx.action_name(name), "value_action", data)
     return [Event(name, ctx.ego, [action], groups)], name
+
+
+@planner("TrafficSignalState")
+def plan_signal_state(ctx: Context, node: scm.TrafficSignalState, groups: list[Group]) -> Plan:
+    """A TrafficSignalStateAction (InfrastructureAction in every version); it completes at once."""
+    name = ctx.event_names[node]
+    data = {"signal": str(node.signalId or ""), "state": str(node.state or "")}
+    action = Action(ctx.action_name(name), "signal_state", data)
+    return [Event(name, ctx.ego, [action], groups)], name
+
+
+@planner("TrafficSignalCondition")
+def plan_signal_condition(
+    ctx: Context, node: scm.TrafficSignalCondition, groups: list[Group]
+) -> Plan:
+    """A marker on TrafficSignalCondition."""
+    name = ctx.event_names[node]
+    data = {"signal": str(node.signalId or ""), "state": str(node.state or "")}
+    check = Condition(f"{name}_signal", "signal_condition", data)
+    marker = ctx.marker_action(name, name)
+    return [Event(name, ctx.ego, [marker], with_extra(groups, check))], name
 
 
 def declarations(root: scm.RootNode, variables_allowed: bool) -> dict[str, list[dict[str, Any]]]:

@@ -17,7 +17,7 @@ import scemlmodel as scm
 
 from . import traced
 from .context import Build
-from .global_kinds import value_condition
+from .global_kinds import signal_condition, value_condition
 from .opaque import opaque_node
 from .placing import place
 from .positions import number
@@ -31,6 +31,9 @@ RULES = {
     "lessOrEqual": ("lessThan", True),
 }
 _BELOW = ("lessThan", "lessOrEqual")
+
+#: The ByValueConditions no actor fulfils, read by global_kinds.py.
+GLOBAL_CONDITIONS = ("ParameterCondition", "VariableCondition", "TrafficSignalCondition")
 
 Mapper = Callable[[Build, etree._Element, scm.Actor, str], "scm.ActionNode | str"]
 _MAPPERS: dict[str, Mapper] = {}
@@ -49,7 +52,7 @@ def condition_after(
 ) -> scm.GraphElement:
     """Nodes for `condition` activated by `before`; returns the node that finishes when it holds."""
     by_value = condition.find("ByValueCondition/*")
-    if by_value is not None and by_value.tag in ("ParameterCondition", "VariableCondition"):
+    if by_value is not None and by_value.tag in GLOBAL_CONDITIONS:
         return _global(build, condition, by_value, before, wanted)
     by_entity = condition.find("ByEntityCondition")
     test = None if by_entity is None else by_entity.find("EntityCondition/*")
@@ -93,7 +96,10 @@ def _global(
     wanted: str,
 ) -> scm.GraphElement:
     """A condition no actor fulfils: ParameterCondition or VariableCondition."""
-    made = value_condition(build, test, wanted, RULES)
+    if test.tag == "TrafficSignalCondition":
+        made: scm.ActionNode | str = signal_condition(build, test, wanted)
+    else:
+        made = value_condition(build, test, wanted, RULES)
     if isinstance(made, str):
         return _opaque(build, condition, build.default_actor(), before, wanted, made)
     build.flow(before, made)

@@ -1,5 +1,5 @@
 """Parameter and variable conditions and actions to the global kinds (no actor performs them),
-with the declarations they name kept on the root node.
+with the declarations they name kept on the root node; traffic signal states and conditions.
 
 A ParameterCondition or VariableCondition becomes the node of that name, a ParameterAction or
 VariableAction (SetAction, or ModifyAction's AddValue or MultiplyByValue) SetParameter or
@@ -112,3 +112,25 @@ def _variable_action(
     build: Build, request: Request, element: etree._Element, motion: Motion
 ) -> scm.ActionNode | str:
     return _value_action(build, request, element)
+
+
+@maps("GlobalAction/InfrastructureAction/TrafficSignalAction/TrafficSignalStateAction")
+def _signal_state(
+    build: Build, request: Request, element: etree._Element, motion: Motion
+) -> scm.ActionNode | str:
+    return add_node(
+        build,
+        request,
+        "TrafficSignalState",
+        signalId=str(element.get("name", "")),
+        state=str(element.get("state", "")),
+    )
+
+
+def signal_condition(build: Build, test: etree._Element, wanted: str) -> scm.ActionNode:
+    """The node of a TrafficSignalCondition."""
+    node = scm.TrafficSignalCondition(
+        signalId=str(test.get("name", "")), state=str(test.get("state", ""))
+    )
+    build.add(node, wanted)
+    return node

@@ -49,8 +49,29 @@ def read_init(build: Build) -> list[scm.GraphElement]:
         elif item.tag == "GlobalAction" and item.find("EnvironmentAction") is not None:
             _environment(build, item.find("EnvironmentAction/Environment"))
         else:
-            kept.append(_keep(build, item, build.default_actor()))
+            kept.append(_global(build, item))
     return kept
+
+
+def _global(build: Build, element: etree._Element) -> scm.GraphElement:
+    """An Init global action as its node (a traffic signal state, a parameter set) performed at
+    the start, or an opaque node."""
+    wrapper = etree.Element("Action", name=f"init_{element.sourceline}")
+    wrapper.append(deepcopy(element))
+    request = Request(wrapper, build.default_actor(), f"Init_{_global_word(element)}")
+    made = map_action(build, request, Motion())
+    if isinstance(made, str):
+        return _keep(build, element, build.default_actor())
+    build.flow(build.root, made)
+    return made
+
+
+def _global_word(element: etree._Element) -> str:
+    """`TrafficSignalStateAction` for a GlobalAction holding one: the innermost element's tag."""
+    inner = element
+    while len(inner) and isinstance(inner[0].tag, str):
+        inner = inner[0]
+    return str(inner.tag)
 
 
 def _keep(build: Build, element: etree._Element, actor: scm.Actor) -> scm.GraphElement:

@@ -269,7 +269,11 @@ _OPERATORS = {
 
 
 def global_lines(node: scm.ActionNode) -> list[str]:
-    """`global`, then what it reads or changes: `parameter Counter > 4`, `variable Counter += 2`."""
+    """`global`, then what it reads or changes: `parameter Counter > 4`, `variable Counter += 2`,
+    `signal 1 = off;off;on` (a state set), `signal 1 == off;off;on` (a state awaited)."""
+    if isinstance(node, scm.TrafficSignalState | scm.TrafficSignalCondition):
+        operator = "==" if isinstance(node, scm.Condition) else "="
+        return ["global", f"signal {node.signalId or '(unnamed)'} {operator} {node.state or ''}"]
     word = "variable" if node.eClass.findEStructuralFeature("variable") else "parameter"
     named = str(node.eGet(word) or "") or "(unnamed)"
     how = node.rule if isinstance(node, scm.Condition) else node.modify

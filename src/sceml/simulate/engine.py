@@ -140,12 +140,15 @@ class Scheduler:
         node = state.node
         if isinstance(node, scm.Condition):
             state.test = condition_for(node, self.world)
-            if state.test is None:
+            if isinstance(node, scm.TrafficSignalCondition):
+                state.note = global_values.NO_SIGNALS.format(what="it never holds")
+            elif state.test is None:
                 state.note = "this condition kind is not simulated: it never holds"
         elif isinstance(node, scm.Maneuver):
             return self._start_maneuver(state)
         elif isinstance(node, scm.GlobalAction):
-            global_values.apply(node, self.world)  # players complete it in the same step
+            # Players complete a global action in the step it starts.
+            state.note = global_values.apply(node, self.world) or ""
             return [state]
         elif not isinstance(node, scm.EndNode | scm.JoiningPolicy | scm.InPort | scm.OutPort):
             state.note = f"a {state.kind} is not simulated: it finishes at once"

@@ -31,8 +31,15 @@ def _key(node: EObject) -> tuple[bool, str]:
     return variable, str(node.eGet(feature) or "")
 
 
-def apply(node: EObject, world: World) -> None:
-    """Perform a SetParameter or SetVariable on the store (it finishes at once)."""
+#: What the timeline says of a traffic signal node: the preview has no signal model.
+NO_SIGNALS = "the preview has no traffic signals: {what}"
+
+
+def apply(node: EObject, world: World) -> str | None:
+    """Perform a global action (it finishes at once); a note for the timeline when the preview
+    cannot (a traffic signal state)."""
+    if node.eClass.name not in _NAMED:
+        return NO_SIGNALS.format(what="not simulated, it finishes at once")
     key = _key(node)
     if key not in world.values:
         what = "variable" if key[0] else "parameter"
@@ -44,6 +51,7 @@ def apply(node: EObject, world: World) -> None:
         world.values[key] = meaning.value_after(world.values[key], node.modify.name, node.value)
     except ValueError as error:
         raise SimulationError(f"{node.name}: {error}", element=str(node.name)) from None
+    return None
 
 
 @kind("ParameterCondition")

@@ -45,8 +45,8 @@ def label(participant: EObject) -> str:
     "SCEML-A001",
     ERROR,
     "ActionNode",
-    "every maneuver and condition has a reference actor; a global kind (ParameterCondition, "
-    "SetParameter, VariableCondition, SetVariable) has none",
+    "every maneuver and condition has a reference actor; a global kind (the parameter, variable "
+    "and traffic signal nodes) has none",
 )
 def has_reference_actor(node: scm.ActionNode, context: Context) -> Iterator[Finding]:
     global_kind = not catalog.performed_by_actor(node.eClass.name)
