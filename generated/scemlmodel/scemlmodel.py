@@ -1404,6 +1404,32 @@ class Overtake(CompositeManeuver):
             self.laneChangeDistance = laneChangeDistance
 
 
+class LaneOffset(LateralManeuver):
+    """Moves the reference actor sideways within its lane to offset m left of the lane's centre (or, with a target actor, offset m left of that actor's lateral position), its lateral acceleration peaking at maxLateralAcc along shape (OpenSCENARIO's LaneOffsetAction). Finished when the offset is reached, as esmini ends the action then (continuous or not)."""
+    shape = EAttribute(eType=LaneChangeShape, unique=True, derived=False,
+                       changeable=True, default_value=LaneChangeShape.sinusoidal)
+    continuous = EAttribute(eType=EBoolean, unique=True, derived=False,
+                            changeable=True, default_value=False)
+    offset = EReference(ordered=True, unique=True, containment=True, derived=False)
+    maxLateralAcc = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, offset=None, maxLateralAcc=None, shape=None, continuous=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if shape is not None:
+            self.shape = shape
+
+        if continuous is not None:
+            self.continuous = continuous
+
+        if offset is not None:
+            self.offset = offset
+
+        if maxLateralAcc is not None:
+            self.maxLateralAcc = maxLateralAcc
+
+
 class TurnLeft(RoutedManeuver):
 
     def __init__(self, **kwargs):

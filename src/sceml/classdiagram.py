@@ -58,6 +58,7 @@ VIEWS: dict[str, tuple[str, ...]] = {
         "Follow",
         "Approach",
         "LaneChange",
+        "LaneOffset",
         "RoutedManeuver",
         "TurnLeft",
         "TurnRight",

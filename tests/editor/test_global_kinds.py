@@ -15,6 +15,7 @@ def test_the_palette_offers_the_global_kinds() -> None:
     assert groups["global"] == ["SetParameter", "SetVariable", "TrafficSignalState"]
     conditions = {"ParameterCondition", "VariableCondition", "TrafficSignalCondition"}
     assert conditions <= set(groups["condition"])
+    assert "LaneOffset" in groups["lateral"]
 
 
 def test_a_global_node_is_added_and_edited_without_an_actor(uis1: EditorSession) -> None:

@@ -20,7 +20,9 @@ def test_emf_reads_and_writes_an_imported_scenario_with_opaque_nodes(
     source, out = tmp_path / "in", tmp_path / "out"
     source.mkdir()
     out.mkdir()
-    import_to_file(FILES / "alks-lane-keeping.xosc", source / "alks.xmi")
+    # Its controller activation is kept opaque (the lane offset of alks-lane-keeping, used
+    # here before, maps now).
+    import_to_file(FILES / "cut-in.xosc", source / "alks.xmi")
     assert "OpaqueAction" in (source / "alks.xmi").read_text()
     result = emf.run("roundtrip", ECORE, source, out, Path("alks.xmi"))
     assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
@@ -120,7 +122,7 @@ def test_emf_reads_and_writes_global_nodes_declarations_signals_and_lane_heading
     source, out = tmp_path / "in", tmp_path / "out"
     source.mkdir()
     out.mkdir()
-    for name in ("variables", "lane-headings", "traffic-signals"):
+    for name in ("variables", "lane-headings", "traffic-signals", "lane-offsets"):
         import_to_file(FILES / f"{name}.xosc", source / f"{name}.xmi")
         result = emf.run("roundtrip", ECORE, source, out, Path(f"{name}.xmi"))
         assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout

@@ -426,5 +426,5 @@ def plan_ttc(ctx: Context, node: scm.TimeToCollision, groups: list[Group]) -> Pl
     return _marker(ctx, node, with_extra(groups, check), ctx.entity(node.referenceActor))
 
 
-# Registers the OpaqueAction planner of sceml import, and the parameter and variable kinds.
-from . import global_kinds, opaque  # noqa: E402, F401
+# Registers the OpaqueAction planner of sceml import, the global kinds and LaneOffset.
+from . import global_kinds, lane_offset, opaque  # noqa: E402, F401

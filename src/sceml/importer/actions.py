@@ -308,6 +308,38 @@ def _is_self(vertex: etree._Element, actor: scm.Actor) -> bool:
     )
 
 
+#: LaneOffsetAction's dynamicsShape values, the same names as LaneChangeShape's.
+_SHAPES = ("sinusoidal", "linear", "cubic", "step")
+
+
+@_maps("PrivateAction/LateralAction/LaneOffsetAction")
+def _lane_offset(
+    build: Build, request: Request, action: etree._Element, motion: Motion
+) -> scm.ActionNode | str:
+    dynamics = action.find("LaneOffsetActionDynamics")
+    absolute = action.find("LaneOffsetTarget/AbsoluteTargetLaneOffset")
+    relative = action.find("LaneOffsetTarget/RelativeTargetLaneOffset")
+    target = absolute if absolute is not None else relative
+    shape = "sinusoidal" if dynamics is None else dynamics.get("dynamicsShape", "sinusoidal")
+    if target is None or shape not in _SHAPES:
+        return f"a lane offset with this target or shape ({shape}) has no SceML form"
+    acceleration = None
+    if dynamics is not None and dynamics.get("maxLateralAcc") is not None:
+        acceleration = number(dynamics, "maxLateralAcc")
+    node = _add(
+        build,
+        request,
+        "LaneOffset",
+        offset=number(target, "value"),
+        maxLateralAcc=acceleration,  # unset: the language default, esmini's 0.5 m/s²
+        shape=shape,
+        continuous=action.get("continuous") == "true",
+    )
+    if relative is not None:
+        node.targetActor = build.actor(relative.get("entityRef"), relative)
+    return node
+
+
 #: What other modules use to register and add their own kinds (global_kinds.py).
 maps = _maps
 add_node = _add

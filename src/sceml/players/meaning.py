@@ -260,3 +260,18 @@ def value_after(current: str, modify: str, value: str) -> str:
         raise ValueError(f"cannot {modify} {value!r} to {current!r}: both must be numbers")
     result = held + by if modify == "add" else held * by
     return repr(result) if result != int(result) else str(int(result))
+
+
+# --- lane offset ---------------------------------------------------------------------------------
+
+
+def lane_offset_duration(change: float, max_lateral_acc: float, shape: str) -> float:
+    """How long a LaneOffset takes to move `change` m sideways, its lateral acceleration peaking
+    at `max_lateral_acc` (esmini 3.6's TransitionDynamics): a half sine over π√(|Δ|/2a); cubic,
+    and linear read as cubic, √(6|Δ|/a); a step at once. It finishes then, continuous or not
+    (esmini ends the action when the offset is reached)."""
+    if shape == "step" or change == 0:
+        return 0.0
+    if shape == "sinusoidal":
+        return math.pi * math.sqrt(abs(change) / (2 * max_lateral_acc))
+    return math.sqrt(6 * abs(change) / max_lateral_acc)
