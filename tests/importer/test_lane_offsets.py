@@ -7,6 +7,7 @@ sinusoidal at 2 m/s²; LeadOffset from 1.70 s to 5.95 s, sqrt(18) s as cubic at 
 
 from __future__ import annotations
 
+import shutil
 from pathlib import Path
 
 import pytest
@@ -90,3 +91,31 @@ def test_the_preview_offsets_as_esmini_does() -> None:
     ego_y = float(run.states[run.actor_index("Ego"), -1, 1])
     lead_y = float(run.states[run.actor_index("Lead"), -1, 1])
     assert (ego_y, lead_y) == pytest.approx((-0.75, -0.25), abs=1e-6)
+
+
+def test_an_init_lane_offset_runs_from_the_start_and_one_relative_to_itself_stays_opaque(
+    tmp_path: Path,
+) -> None:
+    text = OFFSETS.read_text()
+    start = '<Private entityRef="Lead">'
+    offsets = (
+        '<PrivateAction><LateralAction><LaneOffsetAction continuous="false">'
+        '<LaneOffsetActionDynamics maxLateralAcc="1" dynamicsShape="sinusoidal"/>'
+        "<LaneOffsetTarget>{}</LaneOffsetTarget></LaneOffsetAction></LateralAction></PrivateAction>"
+    )
+    added = offsets.format('<AbsoluteTargetLaneOffset value="-0.5"/>') + offsets.format(
+        '<RelativeTargetLaneOffset entityRef="Lead" value="1"/>'
+    )
+    source = tmp_path / "init-offsets.xosc"
+    source.write_text(text.replace(start, start + added))
+    shutil.copy(OFFSETS.parent / "highway.xodr", tmp_path / "highway.xodr")
+    imported = import_file(source)
+    (init,) = [
+        n
+        for n in imported.scenario.nodes
+        if n.name.startswith("Init_Lead") and n.eClass.name == "LaneOffset"
+    ]
+    assert init.offset.value == -0.5
+    assert [p.eClass.name for p in graph.predecessors(init)] == ["RootNode"]
+    (kept,) = [n for n in imported.scenario.nodes if n.eClass.name == "OpaqueAction"]
+    assert "RelativeTargetLaneOffset" in kept.xml

@@ -323,6 +323,8 @@ def _lane_offset(
     shape = "sinusoidal" if dynamics is None else dynamics.get("dynamicsShape", "sinusoidal")
     if target is None or shape not in _SHAPES:
         return f"a lane offset with this target or shape ({shape}) has no SceML form"
+    if relative is not None and last_name(str(relative.get("entityRef"))) == request.actor.name:
+        return "a lane offset relative to the actor itself has no SceML form"
     acceleration = None
     if dynamics is not None and dynamics.get("maxLateralAcc") is not None:
         acceleration = number(dynamics, "maxLateralAcc")

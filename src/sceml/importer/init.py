@@ -94,6 +94,8 @@ def _private(build: Build, actor: scm.Actor, private: etree._Element) -> bool:
         actor.startPosition = start
         build.report.add("mapped", f"{actor.name}: start position", build.where(teleport))
         return True
+    if private.find("LateralAction/LaneOffsetAction") is not None:
+        return _from_the_start(build, actor, private)
     speed = private.find("LongitudinalAction/SpeedAction")
     target = None if speed is None else speed.find("SpeedActionTarget/AbsoluteTargetSpeed")
     if speed is None or target is None:
@@ -131,6 +133,18 @@ def _gradual(
         f"is {made.name} from the start, from {before:g} m/s (it is not the initial speed)",
         build.where(speed),
     )
+    return True
+
+
+def _from_the_start(build: Build, actor: scm.Actor, private: etree._Element) -> bool:
+    """An Init action that takes time (a lane offset): its node right after the root, as
+    players run it from the start."""
+    wrapper = etree.Element("Action", name=f"Init_{actor.name}_{private.sourceline}")
+    wrapper.append(deepcopy(private))
+    made = map_action(build, Request(wrapper, actor, f"Init_{actor.name}"), Motion())
+    if isinstance(made, str):
+        return False
+    build.flow(build.root, made)
     return True
 
 
