@@ -27,6 +27,11 @@ PrecipitationType = EEnum('PrecipitationType', literals=['dry', 'rain', 'snow'])
 ActorKind = EEnum('ActorKind', literals=[
                   'Pedestrian', 'TwoWheeler', 'Bicycle', 'Motorcycle', 'FourWheeler', 'Car', 'Van', 'Truck', 'Bus'])
 
+DeclarationType = EEnum('DeclarationType', literals=[
+                        'double', 'integer', 'string', 'boolean', 'unsignedInt', 'unsignedShort', 'dateTime'])
+
+ModifyRule = EEnum('ModifyRule', literals=['set', 'add', 'multiply'])
+
 RelativeDistanceType = EEnum('RelativeDistanceType', literals=[
                              'euclidean', 'longitudinal', 'lateral'])
 
@@ -103,6 +108,34 @@ class DiagramPosition(EObject, metaclass=MetaEClass):
 
         if y is not None:
             self.y = y
+
+
+class Declaration(EObject, metaclass=MetaEClass):
+    """A parameter or variable the scenario declares for its global nodes to read and change (ParameterCondition, SetParameter, VariableCondition, SetVariable): exported as a ParameterDeclaration or (1.2+) VariableDeclaration with this initial value."""
+    name = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    type = EAttribute(eType=DeclarationType, unique=True, derived=False,
+                      changeable=True, default_value=DeclarationType.double)
+    value = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    variable = EAttribute(eType=EBoolean, unique=True, derived=False,
+                          changeable=True, default_value=False)
+
+    def __init__(self, *, name=None, type=None, value=None, variable=None):
+        # if kwargs:
+        #    raise AttributeError('unexpected arguments: {}'.format(kwargs))
+
+        super().__init__()
+
+        if name is not None:
+            self.name = name
+
+        if type is not None:
+            self.type = type
+
+        if value is not None:
+            self.value = value
+
+        if variable is not None:
+            self.variable = variable
 
 
 class RoleBinding(EObject, metaclass=MetaEClass):
@@ -357,8 +390,9 @@ class LanePosition(Position):
     laneId = EAttribute(eType=EInt, unique=True, derived=False, changeable=True)
     s = EReference(ordered=True, unique=True, containment=True, derived=False)
     offset = EReference(ordered=True, unique=True, containment=True, derived=False)
+    h = EReference(ordered=True, unique=True, containment=True, derived=False)
 
-    def __init__(self, *, roadId=None, laneId=None, s=None, offset=None, **kwargs):
+    def __init__(self, *, roadId=None, laneId=None, s=None, offset=None, h=None, **kwargs):
 
         super().__init__(**kwargs)
 
@@ -373,6 +407,9 @@ class LanePosition(Position):
 
         if offset is not None:
             self.offset = offset
+
+        if h is not None:
+            self.h = h
 
 
 class RoadPosition(Position):
@@ -559,8 +596,9 @@ class RootNode(GraphElement):
     maxDuration = EReference(ordered=True, unique=True, containment=True, derived=False)
     environment = EReference(ordered=True, unique=True, containment=True, derived=False)
     actors = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+    declarations = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
 
-    def __init__(self, *, scenarioName=None, description=None, author=None, date=None, map=None, level=None, maxDuration=None, environment=None, actors=None, **kwargs):
+    def __init__(self, *, scenarioName=None, description=None, author=None, date=None, map=None, level=None, maxDuration=None, environment=None, actors=None, declarations=None, **kwargs):
 
         super().__init__(**kwargs)
 
@@ -590,6 +628,9 @@ class RootNode(GraphElement):
 
         if actors:
             self.actors.extend(actors)
+
+        if declarations:
+            self.declarations.extend(declarations)
 
 
 class EndNode(GraphElement):
@@ -835,6 +876,15 @@ class OpaqueAction(ActionNode):
             self.sourceVersion = sourceVersion
 
 
+@abstract
+class GlobalAction(ActionNode):
+    """An action no actor performs: it changes the scenario state (a parameter, a variable, a traffic signal). It has no reference actor and finishes at once."""
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
 class JoinAllFinished(JoiningPolicy):
     """Finishes when all of its predecessors have finished."""
 
@@ -1004,6 +1054,122 @@ class TimeToCollision(Condition):
 
         if time is not None:
             self.time = time
+
+
+class ParameterCondition(Condition):
+    """Holds once the scenario's parameter compares by rule with value (OpenSCENARIO's ParameterCondition). A global condition: no actor fulfils it."""
+    parameter = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    rule = EAttribute(eType=ComparisonRule, unique=True, derived=False,
+                      changeable=True, default_value=ComparisonRule.equalTo)
+    value = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+
+    def __init__(self, *, parameter=None, rule=None, value=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if parameter is not None:
+            self.parameter = parameter
+
+        if rule is not None:
+            self.rule = rule
+
+        if value is not None:
+            self.value = value
+
+
+class VariableCondition(Condition):
+    """Holds once the scenario's variable compares by rule with value (OpenSCENARIO 1.2+'s VariableCondition). A global condition: no actor fulfils it."""
+    variable = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    rule = EAttribute(eType=ComparisonRule, unique=True, derived=False,
+                      changeable=True, default_value=ComparisonRule.equalTo)
+    value = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+
+    def __init__(self, *, variable=None, rule=None, value=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if variable is not None:
+            self.variable = variable
+
+        if rule is not None:
+            self.rule = rule
+
+        if value is not None:
+            self.value = value
+
+
+class SetParameter(GlobalAction):
+    """Sets the scenario's parameter to value, or adds value to it, or multiplies it by value (OpenSCENARIO's ParameterAction)."""
+    parameter = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    value = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    modify = EAttribute(eType=ModifyRule, unique=True, derived=False,
+                        changeable=True, default_value=ModifyRule.set)
+
+    def __init__(self, *, parameter=None, value=None, modify=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if parameter is not None:
+            self.parameter = parameter
+
+        if value is not None:
+            self.value = value
+
+        if modify is not None:
+            self.modify = modify
+
+
+class SetVariable(GlobalAction):
+    """Sets the scenario's variable to value, or adds value to it, or multiplies it by value (OpenSCENARIO 1.2+'s VariableAction)."""
+    variable = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    value = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    modify = EAttribute(eType=ModifyRule, unique=True, derived=False,
+                        changeable=True, default_value=ModifyRule.set)
+
+    def __init__(self, *, variable=None, value=None, modify=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if variable is not None:
+            self.variable = variable
+
+        if value is not None:
+            self.value = value
+
+        if modify is not None:
+            self.modify = modify
+
+
+class TrafficSignalState(GlobalAction):
+    """Switches a traffic signal of the map to a state (OpenSCENARIO's TrafficSignalStateAction)."""
+    signalId = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    state = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+
+    def __init__(self, *, signalId=None, state=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if signalId is not None:
+            self.signalId = signalId
+
+        if state is not None:
+            self.state = state
+
+
+class TrafficSignalCondition(Condition):
+    """Holds once a traffic signal of the map shows the state (OpenSCENARIO's TrafficSignalCondition). A global condition: no actor fulfils it."""
+    signalId = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    state = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+
+    def __init__(self, *, signalId=None, state=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if signalId is not None:
+            self.signalId = signalId
+
+        if state is not None:
+            self.state = state
 
 
 class TraveledDistance(Condition):
@@ -1236,6 +1402,32 @@ class Overtake(CompositeManeuver):
 
         if laneChangeDistance is not None:
             self.laneChangeDistance = laneChangeDistance
+
+
+class LaneOffset(LateralManeuver):
+    """Moves the reference actor sideways within its lane to offset m left of the lane's centre (or, with a target actor, offset m left of that actor's lateral position), its lateral acceleration peaking at maxLateralAcc along shape (OpenSCENARIO's LaneOffsetAction). Finished when the offset is reached, as esmini ends the action then (continuous or not)."""
+    shape = EAttribute(eType=LaneChangeShape, unique=True, derived=False,
+                       changeable=True, default_value=LaneChangeShape.sinusoidal)
+    continuous = EAttribute(eType=EBoolean, unique=True, derived=False,
+                            changeable=True, default_value=False)
+    offset = EReference(ordered=True, unique=True, containment=True, derived=False)
+    maxLateralAcc = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, offset=None, maxLateralAcc=None, shape=None, continuous=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if shape is not None:
+            self.shape = shape
+
+        if continuous is not None:
+            self.continuous = continuous
+
+        if offset is not None:
+            self.offset = offset
+
+        if maxLateralAcc is not None:
+            self.maxLateralAcc = maxLateralAcc
 
 
 class TurnLeft(RoutedManeuver):

@@ -58,6 +58,7 @@ VIEWS: dict[str, tuple[str, ...]] = {
         "Follow",
         "Approach",
         "LaneChange",
+        "LaneOffset",
         "RoutedManeuver",
         "TurnLeft",
         "TurnRight",
@@ -99,6 +100,19 @@ VIEWS: dict[str, tuple[str, ...]] = {
         "RelativeWorldPosition",
         "Environment",
     ),
+    "global": (
+        "RootNode",
+        "Declaration",
+        "ActionNode",
+        "Condition",
+        "GlobalAction",
+        "ParameterCondition",
+        "VariableCondition",
+        "SetParameter",
+        "SetVariable",
+        "TrafficSignalState",
+        "TrafficSignalCondition",
+    ),
     "values": (
         "ParameterValue",
         "Value",
@@ -119,6 +133,7 @@ CATEGORY_FILL = {
     "lateral": "#ff9e9e",
     "composite": "#9ee6a0",
     "condition": "#9ec9ff",
+    "global": "#d7c8f0",
 }
 ABSTRACT_FILL = "#e6e6e6"
 CONCRETE_FILL = "#ffd9b3"

@@ -70,7 +70,8 @@ def _position(position: EObject | None, heading: bool = True) -> str:
     if position is None:
         return "-"
     if isinstance(position, scm.LanePosition):
-        return f"lane({position.roadId},{position.laneId},{_number(position, 's')},{_number(position, 'offset')})"
+        turned = "" if position.h is None else f",h={_number(position, 'h')}"
+        return f"lane({position.roadId},{position.laneId},{_number(position, 's')},{_number(position, 'offset')}{turned})"
     # Trajectory vertices are written without a heading (docs/openscenario-mapping.md, issue 13),
     # so a Cross destination and FollowTrajectory waypoints come back without one.
     h = _number(position, "h") if heading else "*"

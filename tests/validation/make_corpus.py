@@ -386,6 +386,15 @@ def parameter_ref_in_scenario(out: Path) -> None:
     save(b.scenario, out, "p008-parameter-ref-in-scenario.xmi")
 
 
+@case("p009-undeclared-parameter", "SCEML-P009")
+def undeclared_parameter(out: Path) -> None:
+    b, _ = scenario()
+    b.declare("Declared", 1.0)
+    setter = b.add("SetParameter", None, parameter="Undeclared", value="2")
+    b.chain(b.root, setter, b.end)
+    save(b.scenario, out, "p009-undeclared-parameter.xmi")
+
+
 # Simultaneity --------------------------------------------------------------------------------
 
 

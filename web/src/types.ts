@@ -20,7 +20,7 @@ export type ParamType = ParamValue["type"];
 
 export type Position =
   | { type: "world"; x: ParamValue; y: ParamValue; z: ParamValue | null; h: ParamValue | null }
-  | { type: "lane"; roadId: string; laneId: number; s: ParamValue; offset: ParamValue | null }
+  | { type: "lane"; roadId: string; laneId: number; s: ParamValue; offset: ParamValue | null; h: ParamValue | null }
   | { type: "road"; roadId: string; s: ParamValue; t: ParamValue | null; h: ParamValue | null }
   | { type: "relativeLane"; entity: string; dLane: number; ds: ParamValue | null; offset: ParamValue | null }
   | { type: "relativeRoad"; entity: string; ds: ParamValue | null; dt: ParamValue | null }

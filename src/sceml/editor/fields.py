@@ -121,9 +121,12 @@ def node_fields(node: EObject) -> list[dict[str, Any]]:
     # The name first, as every panel shows it, then who performs the node; the rest in
     # metamodel order (a stable sort keeps it).
     ordered = sorted(_features(node), key=lambda feature: _FIRST.get(feature.name, len(_FIRST)))
+    performed = not isinstance(node, scm.ActionNode) or catalog.performed_by_actor(node)
     for feature in ordered:
         if feature.name == "targetActor" and not catalog.allows_target(node):
             continue
+        if feature.name == "referenceActor" and not performed:
+            continue  # a global kind (SetParameter, ...): no actor performs it
         made = feature_field(node, feature)
         if made is not None:
             fields.append(made)

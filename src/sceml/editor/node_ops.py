@@ -67,7 +67,8 @@ def add_node(ctx: EditContext, op: dict[str, Any]) -> None:
     kind = argument(op, "kind")
     require(kind in addable_kinds(), f"cannot add a node of kind {kind!r}")
     node = getattr(scm, kind)(name=naming.numbered(kind, ctx.node_names()))
-    if op.get("actor") is not None:
+    # The palette adds with the actor in view; a global kind (SetParameter, ...) takes none.
+    if op.get("actor") is not None and catalog.performed_by_actor(kind):
         require(isinstance(node, scm.ActionNode), f"a {kind} has no actor")
         node.referenceActor = ctx.participant(op["actor"])
     adopt(ctx, node)

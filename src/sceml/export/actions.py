@@ -446,4 +446,5 @@ def plan_ttc(ctx: Context, node: scm.TimeToCollision, groups: list[Group]) -> Pl
     return marker_plan(ctx, node, groups, ctx.entity(node.referenceActor), check)
 
 
-from . import opaque  # noqa: E402, F401  (registers the OpaqueAction planner of sceml import)
+# Registers the OpaqueAction planner of sceml import, the global kinds and LaneOffset.
+from . import global_kinds, lane_offset, opaque  # noqa: E402, F401

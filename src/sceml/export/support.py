@@ -27,6 +27,13 @@ CARLA_UNSUPPORTED = {
 }
 
 
+#: Kinds only OpenSCENARIO 1.2 and later can say, with the reason.
+SINCE_1_2 = {
+    "VariableCondition": "variables came with 1.2 (earlier versions have parameters only)",
+    "SetVariable": "variables came with 1.2 (earlier versions have parameters only)",
+}
+
+
 def default_version(profile: str = "generic") -> str:
     """The version written when none is asked for: CARLA's for carla, else the newest."""
     return CARLA_VERSION if profile == "carla" else VERSIONS[-1]
@@ -44,6 +51,8 @@ def unsupported_reason(kind_name: str, version: str, profile: str = "generic") -
         return None
     if kind_name not in PLANNERS:
         return f"{kind_name} has no OpenSCENARIO mapping"
+    if kind_name in SINCE_1_2 and version in ("1.0", "1.1"):
+        return f"{kind_name} needs OpenSCENARIO 1.2 or later: {SINCE_1_2[kind_name]}"
     if profile == "carla" and kind_name in CARLA_UNSUPPORTED:
         return f"{kind_name} is not supported by the carla profile: {CARLA_UNSUPPORTED[kind_name]}"
     return None

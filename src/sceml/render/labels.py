@@ -133,6 +133,8 @@ def describe_position(position: EObject | None, scope: Scope) -> str:
         text = f"road {position.roadId} lane {position.laneId} s {describe_value(position.s, 'm', scope)}"
         if position.offset is not None and not _is_zero(_resolve(position.offset, scope)):
             text += f" offset {describe_value(position.offset, 'm', scope)}"
+        if position.h is not None:
+            text += f", h {describe_value(position.h, 'rad', scope)}"
         return text
     if isinstance(position, scm.RoadPosition):
         text = f"road {position.roadId} s {describe_value(position.s, 'm', scope)}"
@@ -250,7 +252,33 @@ def action_lines(node: scm.ActionNode, scope: Scope) -> list[str]:
     """The lines under an action node's kind: its actors, then `name: value` per set parameter."""
     if isinstance(node, scm.OpaqueAction):
         return [actor_line(node, scope), *opaque_lines(node)]
+    if not catalog.performed_by_actor(node):
+        return global_lines(node)
     return [actor_line(node, scope), *(f"{k}: {v}" for k, v in parameter_items(node, scope))]
+
+
+#: How a global node reads: a rule or change as its operator.
+_OPERATORS = {
+    "greaterThan": ">",
+    "lessThan": "<",
+    "equalTo": "==",
+    "set": "=",
+    "add": "+=",
+    "multiply": "*=",
+}
+
+
+def global_lines(node: scm.ActionNode) -> list[str]:
+    """`global`, then what it reads or changes: `parameter Counter > 4`, `variable Counter += 2`,
+    `signal 1 = off;off;on` (a state set), `signal 1 == off;off;on` (a state awaited)."""
+    if isinstance(node, scm.TrafficSignalState | scm.TrafficSignalCondition):
+        operator = "==" if isinstance(node, scm.Condition) else "="
+        return ["global", f"signal {node.signalId or '(unnamed)'} {operator} {node.state or ''}"]
+    word = "variable" if node.eClass.findEStructuralFeature("variable") else "parameter"
+    named = str(node.eGet(word) or "") or "(unnamed)"
+    how = node.rule if isinstance(node, scm.Condition) else node.modify
+    operator = _OPERATORS.get(getattr(how, "name", ""), "?")
+    return ["global", f"{word} {named} {operator} {node.value or ''}".rstrip()]
 
 
 def root_lines(root: scm.RootNode | None, scenario: scm.Scenario) -> list[str]:

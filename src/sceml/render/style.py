@@ -51,6 +51,8 @@ CATEGORY_LOOKS = {
     "lateral": Look("sceml-lateral", "Lateral maneuver", _box("#f28b82", "#b3261e")),
     "composite": Look("sceml-composite", "Composite maneuver", _box("#81c995", "#2e7d32")),
     "condition": Look("sceml-condition", "Condition", _box("#8ab4f8", "#1a56b0", rounded=True)),
+    # Performed by no actor (a parameter, a variable, a traffic signal): a neutral violet.
+    "global": Look("sceml-global", "Global action", _box("#d7c8f0", "#5e35b1")),
 }
 
 #: Fill colour per category, for tests and for the report's tables.

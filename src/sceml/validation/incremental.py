@@ -145,6 +145,8 @@ READS: dict[str, Reads] = {
     "SCEML-P006": Reads(_VALUE),
     "SCEML-P007": Reads(_VALUE),
     "SCEML-P008": Reads(_VALUE, _MODULES),  # its module's parameters
+    # the root's declarations: their names and whether each is a variable
+    "SCEML-P009": Reads(_SELF, Aspect.STRUCTURE | Aspect.ATTRIBUTES),
     # plausibility.py: the performer's kind
     "SCEML-L001": Reads(_VALUE),
     "SCEML-L002": Reads(_VALUE),
