@@ -62,7 +62,8 @@ def test_signal_nodes_export_as_they_were_read(version: str, tmp_path: Path, sam
 def test_the_preview_says_it_has_no_signals() -> None:
     run = simulate(import_file(SIGNALS).scenario, SIGNALS)
     switch, red = run.node("SwitchToRed"), run.node("ShowsRed")
-    # The wait of 2 s runs from 0.05 s (root) to 2.05 s; its flow costs one step more.
-    assert switch.finished == switch.started == 2.1
+    # The wait of 2 s runs from 0.05 s (root) to 2.05 s; a wait is written into its
+    # successor's trigger, so its flow costs no step more (players.flows).
+    assert switch.finished == switch.started == 2.05
     assert "no traffic signals" in switch.note
     assert red.finished is None and "no traffic signals" in red.note

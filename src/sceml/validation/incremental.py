@@ -157,6 +157,7 @@ READS: dict[str, Reads] = {
     "SCEML-R003": Reads(_VALUE, _LEVEL),
     # A relative start reads the starts of the actors it is placed after.
     "SCEML-R004": Reads(_VALUE, _LEVEL | Aspect.CAST | Aspect.POSITIONS),
+    "SCEML-R009": Reads(_VALUE, _LEVEL | Aspect.CAST | Aspect.POSITIONS),
     "SCEML-R005": Reads(_VALUE, _LEVEL | Aspect.CAST),
     "SCEML-R006": Reads(_VALUE, _ROUTE),
     "SCEML-R007": Reads(_VALUE, _ROUTE),
