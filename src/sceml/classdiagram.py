@@ -118,6 +118,7 @@ CATEGORY_FILL = {
     "longitudinal": "#ffe680",
     "lateral": "#ff9e9e",
     "composite": "#9ee6a0",
+    "controller": "#8e7cc3",
     "condition": "#9ec9ff",
 }
 ABSTRACT_FILL = "#e6e6e6"

@@ -426,4 +426,4 @@ def plan_ttc(ctx: Context, node: scm.TimeToCollision, groups: list[Group]) -> Pl
     return _marker(ctx, node, with_extra(groups, check), ctx.entity(node.referenceActor))
 
 
-from . import opaque  # noqa: E402, F401  (registers the OpaqueAction planner of sceml import)
+from . import controller_actions, opaque  # noqa: E402, F401  (register their planners)
