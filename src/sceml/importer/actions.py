@@ -2,7 +2,8 @@
 
 Speed to Accelerate/Decelerate/Stop, longitudinal distance to Follow/Approach, a lane change by
 one lane to LaneChange, routing to TurnLeft/TurnRight/Cross (`geometry.py`), a polyline
-trajectory to FollowTrajectory (Cross for a SceML export's two-point crossing).
+trajectory to FollowTrajectory (Cross for a SceML export's two-point crossing); controller
+actions in `controllers.py`.
 """
 
 from __future__ import annotations
@@ -302,3 +303,6 @@ def _is_self(vertex: etree._Element, actor: scm.Actor) -> bool:
         and float(here.get("dx", "0")) == 0.0
         and float(here.get("dy", "0")) == 0.0
     )
+
+
+from . import controllers  # noqa: E402, F401  (registers the controller actions' mappers)
