@@ -12,6 +12,7 @@ import scemlmodel as scm
 
 from .. import catalog
 from ..traversal import features
+from .nested import attributes_of, is_nested, shown
 from .values import position_to_json, value_to_json
 
 #: Features no panel edits: graph structure, notation, and what other fields already show.
@@ -87,7 +88,10 @@ def feature_field(
 def _attribute_field(feature: EAttribute, held: object) -> dict[str, Any]:
     if isinstance(feature.eType, EEnum):
         return {"type": "enum", "options": enum_options(feature.eType), "value": _enum_value(held)}
-    if type_name(feature) in ("EBoolean", "EBooleanObject"):
+    if type_name(feature) == "EBooleanObject":
+        # Unset (null) has a meaning of its own: a controller domain left as it is.
+        return {"type": "bool", "value": None if held is None else bool(held)}
+    if type_name(feature) == "EBoolean":
         return {"type": "bool", "value": bool(held)}
     return {"type": "text", "value": held}
 
@@ -124,10 +128,21 @@ def node_fields(node: EObject) -> list[dict[str, Any]]:
     for feature in ordered:
         if feature.name == "targetActor" and not catalog.allows_target(node):
             continue
+        if isinstance(feature, EReference) and is_nested(feature):
+            fields.extend(nested_fields(node, feature))
+            continue
         made = feature_field(node, feature)
         if made is not None:
             fields.append(made)
     return fields
+
+
+def nested_fields(owner: EObject, feature: EReference) -> list[dict[str, Any]]:
+    """A contained controller's or activation's attributes as `<feature>.<attribute>` fields."""
+    held = shown(owner, feature)
+    prefix = f"{feature.name}."
+    made = (feature_field(held, attribute, prefix) for attribute in attributes_of(held))
+    return [field for field in made if field is not None]
 
 
 def root_fields(root: scm.RootNode) -> list[dict[str, Any]]:
