@@ -69,7 +69,12 @@ def test_an_actors_controller_is_set_and_removed_by_emptying_its_name(uis1: Edit
     view = uis1.apply(
         [
             {"op": "set_actor", "actor": ego, "field": "controller.name", "value": "ALKS"},
-            {"op": "set_actor", "actor": ego, "field": "controllerActivation.lateral", "value": True},
+            {
+                "op": "set_actor",
+                "actor": ego,
+                "field": "controllerActivation.lateral",
+                "value": True,
+            },
         ]
     )
     entry = next(a for a in view["actors"] if a["id"] == ego)
