@@ -112,3 +112,28 @@ def test_emf_keeps_an_imported_lane_change_target(emf: Harness, tmp_path: Path) 
     result = emf.run("roundtrip", ECORE, source, out, Path("lanes.xmi"))
     assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
     assert differences(io.load(source / "lanes.xmi").root, io.load(out / "lanes.xmi").root) == []
+
+
+def test_emf_reads_and_writes_imported_controllers(emf: Harness, tmp_path: Path) -> None:
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    names = ("controller_object", "controller_assign", "controller_override")
+    for name in names:
+        import_to_file(FILES / f"{name}.xosc", source / f"{name}.xmi")
+        result = emf.run("roundtrip", ECORE, source, out, Path(f"{name}.xmi"))
+        assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+        original = io.load(source / f"{name}.xmi").root
+        assert differences(original, io.load(out / f"{name}.xmi").root) == [], name
+    from_emf = io.load(out / "controller_override.xmi").root
+    (override,) = [n for n in from_emf.nodes if n.name == "Override"]
+    assert [(o.kind.name, o.active, o.value) for o in override.overrides] == [
+        ("throttle", True, 0.3),
+        ("steeringWheel", True, 0.05),
+        ("gear", True, 3.0),
+    ]
+    # An unset domain (EBooleanObject) stays unset through EMF, not false.
+    (assign,) = [n for n in from_emf.nodes if n.name == "Assign"]
+    assert (assign.activation.longitudinal, assign.activation.lateral) == (True, None)
+    ego = next(a for a in io.load(out / "controller_object.xmi").root.nodes[0].actors)
+    assert [(p.name, p.value) for p in ego.controller.properties][1] == ("timeGap", "2.0")
