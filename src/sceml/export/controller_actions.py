@@ -1,4 +1,8 @@
-"""The controller nodes' planners: one event each, finished when its action completes (at once)."""
+"""The controller nodes' planners: one event each, finished when its action completes.
+
+Players complete controller actions in the step they start them
+(`players.meaning.completes_at_once`), so the event is the node's finish event.
+"""
 
 from __future__ import annotations
 
@@ -6,9 +10,10 @@ from typing import Any
 
 import scemlmodel as scm
 
+from ..players.meaning import OVERRIDE_ELEMENTS
 from .actions import Plan, planner
 from .context import Action, Context, Event
-from .controllers import OVERRIDE_TAGS, activation, controller, override, released
+from .controllers import activation, controller, override, released
 from .triggers import Group
 
 
@@ -35,7 +40,7 @@ def plan_assign(ctx: Context, node: scm.AssignController, groups: list[Group]) -
 @planner("OverrideController")
 def planoverride(ctx: Context, node: scm.OverrideController, groups: list[Group]) -> Plan:
     """An OverrideControllerValueAction with the node's inputs, in the schema's order."""
-    order = list(OVERRIDE_TAGS)
+    order = list(OVERRIDE_ELEMENTS)
     chosen = sorted(node.overrides, key=lambda o: order.index(o.kind.name))
     data = {
         "overrides": [

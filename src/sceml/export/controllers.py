@@ -1,13 +1,11 @@
 """Controllers as the template writes them: Controller elements, activations, overrides.
 
 The actor's ObjectController and Init activation (`entities.py`) and the controller nodes'
-actions (`controller_actions.py`) are built from these. ActivateController, AssignController and OverrideController each become one event whose action
-players complete at once (`players.meaning.completes_at_once`), so the event is the node's
-finish event. What differs between versions is decided here and handed to the template as
-flags: 1.0 has no ControllerAction around ActivateControllerAction and requires an
-OverrideControllerValueAction with all six inputs beside every AssignControllerAction; 1.2
-added lighting, animation and controllerType. `support.unsupported_setting` refuses what a
-version cannot say before any of this runs.
+actions (`controller_actions.py`) are built from these. What differs between versions is
+decided here and handed to the template as flags: 1.0 has no ControllerAction around
+ActivateControllerAction and requires an OverrideControllerValueAction with all six inputs
+beside every AssignControllerAction; 1.2 added lighting, animation and controllerType, which
+`support.unsupported_setting` refuses for older versions before any of this runs.
 """
 
 from __future__ import annotations
@@ -16,22 +14,10 @@ from typing import Any
 
 import scemlmodel as scm
 
+from ..players.meaning import CONTROLLER_DOMAINS as DOMAINS
+from ..players.meaning import OVERRIDE_ELEMENTS
 from .context import Context
 from .values import number
-
-#: The activation domains, as OpenSCENARIO's ActivateControllerAction attributes, in its order.
-DOMAINS = ("lateral", "longitudinal", "lighting", "animation")
-#: Domains OpenSCENARIO 1.0 and 1.1 cannot switch.
-SINCE_1_2 = ("lighting", "animation")
-#: OverrideControllerValueAction's elements by ControllerOverrideKind, in the schema's order.
-OVERRIDE_TAGS = {
-    "throttle": "Throttle",
-    "brake": "Brake",
-    "clutch": "Clutch",
-    "parkingBrake": "ParkingBrake",
-    "steeringWheel": "SteeringWheel",
-    "gear": "Gear",
-}
 
 
 def _flag(value: bool | None) -> str | None:
@@ -70,13 +56,14 @@ def init_activation(ctx: Context, actor: scm.Actor) -> dict[str, Any] | None:
 
 def released() -> list[dict[str, str]]:
     """Every input released: what OpenSCENARIO 1.0 writes beside an assignment."""
-    return [override(kind, active=False, value=0.0) for kind in OVERRIDE_TAGS]
+    return [override(kind, active=False, value=0.0) for kind in OVERRIDE_ELEMENTS]
 
 
 def override(kind: str, *, active: bool, value: float) -> dict[str, str]:
+    """One input of an OverrideControllerValueAction (a ControllerOverrideKind's element)."""
     # A gear is a number of its own; the other inputs are values (pedals 0..1, wheel in rad).
     return {
-        "tag": OVERRIDE_TAGS[kind],
+        "tag": OVERRIDE_ELEMENTS[kind],
         "active": "true" if active else "false",
         "attribute": "number" if kind == "gear" else "value",
         "value": number(value),

@@ -87,6 +87,8 @@ def supported_kinds(version: str, profile: str = "generic") -> tuple[str, ...]:
 
 
 _ACTIVATE_SINCE_1_1 = ("lateral", "longitudinal")
+#: Controller domains OpenSCENARIO 1.2 added.
+_DOMAINS_SINCE_1_2 = ("lighting", "animation")
 
 
 def _controller_setting(node: object, minor: int) -> str | None:
@@ -103,7 +105,7 @@ def _controller_setting(node: object, minor: int) -> str | None:
         if controller is not None and controller.controllerType:
             return "a controller's controllerType needs OpenSCENARIO 1.2 or later"
         for holder in switches:
-            for domain in ("lighting", "animation"):
+            for domain in _DOMAINS_SINCE_1_2:
                 if getattr(holder, domain, None) is not None:
                     return f"switching the {domain} domain needs OpenSCENARIO 1.2 or later"
     activation = getattr(node, "activation", None)

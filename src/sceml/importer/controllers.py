@@ -13,20 +13,13 @@ from lxml import etree
 
 import scemlmodel as scm
 
+from ..players.meaning import CONTROLLER_DOMAINS as DOMAINS
+from ..players.meaning import OVERRIDE_ELEMENTS
 from .actions import Motion, Request, _add, _maps
 from .context import Build
 
-#: Attribute of each activation domain on ActivateControllerAction / AssignControllerAction.
-DOMAINS = ("lateral", "longitudinal", "lighting", "animation")
-#: OverrideControllerValueAction's elements, as ControllerOverrideKind literals.
-OVERRIDE_KINDS = {
-    "Throttle": "throttle",
-    "Brake": "brake",
-    "Clutch": "clutch",
-    "ParkingBrake": "parkingBrake",
-    "SteeringWheel": "steeringWheel",
-    "Gear": "gear",
-}
+#: ControllerOverrideKind of each OverrideControllerValueAction element.
+_OVERRIDE_KINDS = {element: kind for kind, element in OVERRIDE_ELEMENTS.items()}
 
 
 def flag(element: etree._Element, attribute: str) -> bool | None:
@@ -209,7 +202,7 @@ def _override(
         value = _input_value(item)
         if value is None:
             return f"an override of {item.tag} by a force or an automatic gear has no SceML form"
-        kind = scm.ControllerOverrideKind.getEEnumLiteral(OVERRIDE_KINDS[item.tag])
+        kind = scm.ControllerOverrideKind.getEEnumLiteral(_OVERRIDE_KINDS[item.tag])
         active = flag(item, "active") is True
         inputs.append(scm.ControllerOverride(kind=kind, active=active, value=value))
     node = _add(build, request, "OverrideController")

@@ -53,6 +53,19 @@ def controls(kind: str) -> tuple[str, ...]:
 #: takes its event's completion as the node's finish; it controls no part of the actor itself:
 #: what the controller then does is the player's, and SceML's preview does not run it.
 INSTANT_CATEGORIES = ("controller",)
+#: The domains an activation switches, as OpenSCENARIO's ActivateControllerAction attributes
+#: (lighting and animation from 1.2) and SceML's ControllerActivation features, in that order.
+CONTROLLER_DOMAINS = ("lateral", "longitudinal", "lighting", "animation")
+#: OpenSCENARIO's OverrideControllerValueAction element for each ControllerOverrideKind, in the
+#: schema's order.
+OVERRIDE_ELEMENTS = {
+    "throttle": "Throttle",
+    "brake": "Brake",
+    "clutch": "Clutch",
+    "parkingBrake": "ParkingBrake",
+    "steeringWheel": "SteeringWheel",
+    "gear": "Gear",
+}
 
 
 def completes_at_once(kind: str) -> bool:

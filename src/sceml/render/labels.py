@@ -21,6 +21,7 @@ from .. import catalog, params
 from ..errors import SceMLError
 from ..graph import actors, root_node
 from ..modules.resolve import resolved_definition
+from ..players.meaning import CONTROLLER_DOMAINS
 
 #: Features every action node has that labels show in other ways, or never.
 _NOT_PARAMETERS = {
@@ -280,7 +281,7 @@ def describe_controller(controller: scm.Controller) -> str:
 def describe_activation(holder: object) -> str:
     """The domains a node or an actor switches: `lateral on, longitudinal off`."""
     parts = []
-    for domain in ("lateral", "longitudinal", "lighting", "animation"):
+    for domain in CONTROLLER_DOMAINS:
         value = getattr(holder, domain, None)
         if value is not None:
             parts.append(f"{domain} {'on' if value else 'off'}")
