@@ -43,11 +43,14 @@ def test_a_controller_node_is_added_and_its_fields_set(uis1: EditorSession) -> N
     # Unset domains are null, not false: unset leaves a domain as the player has it.
     assert _field(node, "activation.lateral") == {
         "name": "activation.lateral",
-        "label": "Lateral",
+        "label": "Activation lateral",
         "type": "bool",
         "value": None,
     }
     assert _field(node, "controller.name")["value"] is None
+    # Labelled apart from the node's own name.
+    assert _field(node, "controller.name")["label"] == "Controller name"
+    assert _field(node, "controller.controllerType")["label"] == "Controller type"
     before = saved_bytes(uis1)
     view = uis1.apply(
         [

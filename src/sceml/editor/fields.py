@@ -21,7 +21,13 @@ _HIDDEN = {"incoming", "outgoing", "actors", "environment", "bindings", *catalog
 _FIRST = {"name": 0, "referenceActor": 1, "targetActor": 2}
 _HIDDEN_BY_CLASS = {"ModuleUse": {"definition", "overrides"}}
 #: Where a feature name reads badly as words: `isEgo` is shown as "Ego".
-_LABELS = {"isEgo": "Ego", "h": "Heading", "roadId": "Road", "laneId": "Lane"}
+_LABELS = {
+    "isEgo": "Ego",
+    "h": "Heading",
+    "roadId": "Road",
+    "laneId": "Lane",
+    "controllerType": "Type",
+}
 _SPEED_UNIT = "m/s"
 
 
@@ -140,9 +146,15 @@ def node_fields(node: EObject) -> list[dict[str, Any]]:
 def nested_fields(owner: EObject, feature: EReference) -> list[dict[str, Any]]:
     """A contained controller's or activation's attributes as `<feature>.<attribute>` fields."""
     held = shown(owner, feature)
-    prefix = f"{feature.name}."
-    made = (feature_field(held, attribute, prefix) for attribute in attributes_of(held))
-    return [field for field in made if field is not None]
+    prefix, title = f"{feature.name}.", label(str(feature.name))
+    fields = []
+    for attribute in attributes_of(held):
+        made = feature_field(held, attribute, prefix)
+        if made is not None:
+            # "Controller name", not a second "Name" beside the actor's own.
+            made["label"] = f"{title} {label(str(attribute.name)).lower()}"
+            fields.append(made)
+    return fields
 
 
 def root_fields(root: scm.RootNode) -> list[dict[str, Any]]:
