@@ -130,9 +130,10 @@ class Controller(EObject, metaclass=MetaEClass):
     """What drives an actor instead of the player's default (OpenSCENARIO's Controller): its name, which players use to pick an implementation (esmini: ACCController, InteractiveController, ...), an optional controllerType (1.2+: movement, lateral, longitudinal, lighting, animation, appearance, all) and its properties. SceML's own preview does not run it."""
     name = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
     controllerType = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    file = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
     properties = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
 
-    def __init__(self, *, name=None, controllerType=None, properties=None):
+    def __init__(self, *, name=None, controllerType=None, properties=None, file=None):
         # if kwargs:
         #    raise AttributeError('unexpected arguments: {}'.format(kwargs))
 
@@ -143,6 +144,9 @@ class Controller(EObject, metaclass=MetaEClass):
 
         if controllerType is not None:
             self.controllerType = controllerType
+
+        if file is not None:
+            self.file = file
 
         if properties:
             self.properties.extend(properties)

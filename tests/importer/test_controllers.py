@@ -86,6 +86,8 @@ def test_overrides_keep_each_input_with_its_state_and_value() -> None:
     assert imported.report.counts()["opaque"] == 0
     assign = _node(imported, "Assign")
     assert (assign.activation.longitudinal, assign.activation.lateral) == (True, None)
+    # The file the controller reads, as written (OpenSCENARIO's Properties File).
+    assert assign.controller.file == "external_driver.cfg"
     override = _node(imported, "Override")
     assert [(o.kind.name, o.active, o.value) for o in override.overrides] == [
         ("throttle", True, 0.3),
@@ -140,7 +142,7 @@ def _controller_elements(path: Path) -> list[tuple[str, object]]:
             if element.find("CatalogReference") is not None:
                 found.append(FROM_CATALOG)
         elif element.tag == "Controller":
-            properties = [_attributes(p) for p in element.iterfind("Properties/Property")]
+            properties = [_attributes(p) for p in element.iterfind("Properties/*")]
             found.append((element.tag, (_attributes(element), properties)))
         elif element.tag == "AssignControllerAction" and not in_init:
             found.append((element.tag, _attributes(element)))

@@ -38,6 +38,7 @@ def controller(ctx: Context, held: scm.Controller) -> dict[str, Any]:
         "name": str(held.name or "controller"),
         "type": held.controllerType if ctx.traits.controller_type else None,
         "properties": [(str(p.name or ""), str(p.value or "")) for p in held.properties],
+        "file": held.file,
     }
 
 

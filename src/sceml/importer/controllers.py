@@ -40,10 +40,13 @@ def read_controller(build: Build, element: etree._Element) -> scm.Controller | N
     for item in held.iterfind("Properties/*"):
         if item.tag == "Property":
             made.properties.append(scm.Property(name=item.get("name"), value=item.get("value")))
+        elif item.tag == "File" and made.file is None:
+            made.file = item.get("filepath")
         elif isinstance(item.tag, str):
             build.report.add(
                 "not represented",
-                f"controller {made.name!r}: its <{item.tag}> (SceML keeps name and value pairs)",
+                f"controller {made.name!r}: its <{item.tag}> (SceML keeps name and value "
+                "pairs and one file)",
                 build.where(item),
             )
     return made
