@@ -1,13 +1,13 @@
 
 from .scemlmodel import getEClassifier, eClassifiers
 from .scemlmodel import name, nsURI, nsPrefix, eClass
-from .scemlmodel import AbstractionLevel, JoinPolicy, LaneChangeDirection, ComparisonRule, CloudState, PrecipitationType, ActorKind, NamedElement, Graph, Scenario, Library, Flow, GraphElement, DiagramPosition, RootNode, EndNode, ModuleElement, ActionNode, Maneuver, LongitudinalManeuver, LateralManeuver, CompositeManeuver, Condition, Accelerate, Decelerate, Stop, KeepVelocity, DriveDistance, Follow, Approach, LaneChange, RoutedManeuver, TurnLeft, TurnRight, Cross, FollowTrajectory, Overtake, InLocationRadius, InVehicleRadius, TimeElapsed, SpeedCondition, TimeToCollision, OpaqueAction, DeclarationType, ModifyRule, Declaration, GlobalAction, ParameterCondition, VariableCondition, SetParameter, SetVariable, TrafficSignalState, TrafficSignalCondition, LaneOffset, JoiningPolicy, JoinAllFinished, JoinOneFinished, ModuleDefinition, InPort, OutPort, ModuleUse, RoleBinding, ParameterOverride, ModuleParameter, Participant, ActorRole, AllowedKind, Actor, Pedestrian, TwoWheeler, Bicycle, Motorcycle, FourWheeler, Car, Van, Truck, Bus, Position, WorldPosition, LanePosition, RoadPosition, RelativeLanePosition, RelativeRoadPosition, RelativeObjectPosition, RelativeWorldPosition, Environment, ParameterValue, Value, Range, Distribution, UniformDistribution, NormalDistribution, DiscreteDistribution, WeightedValue, ParameterRef, RelativeDistanceType, CoordinateSystem, TraveledDistance, TimeHeadway, LaneChangeShape
+from .scemlmodel import AbstractionLevel, JoinPolicy, LaneChangeDirection, ComparisonRule, CloudState, PrecipitationType, ActorKind, NamedElement, Graph, Scenario, Library, Flow, GraphElement, DiagramPosition, RootNode, EndNode, ModuleElement, ActionNode, Maneuver, LongitudinalManeuver, LateralManeuver, CompositeManeuver, Condition, Accelerate, Decelerate, Stop, KeepVelocity, DriveDistance, Follow, Approach, LaneChange, RoutedManeuver, TurnLeft, TurnRight, Cross, FollowTrajectory, Overtake, InLocationRadius, InVehicleRadius, TimeElapsed, SpeedCondition, TimeToCollision, Property, Controller, ControllerActivation, ControllerManeuver, ActivateController, AssignController, ControllerOverrideKind, ControllerOverride, OverrideController, OpaqueAction, DeclarationType, ModifyRule, Declaration, GlobalAction, ParameterCondition, VariableCondition, SetParameter, SetVariable, TrafficSignalState, TrafficSignalCondition, LaneOffset, JoiningPolicy, JoinAllFinished, JoinOneFinished, ModuleDefinition, InPort, OutPort, ModuleUse, RoleBinding, ParameterOverride, ModuleParameter, Participant, ActorRole, AllowedKind, Actor, Pedestrian, TwoWheeler, Bicycle, Motorcycle, FourWheeler, Car, Van, Truck, Bus, Position, WorldPosition, LanePosition, RoadPosition, RelativeLanePosition, RelativeRoadPosition, RelativeObjectPosition, RelativeWorldPosition, Environment, ParameterValue, Value, Range, Distribution, UniformDistribution, NormalDistribution, DiscreteDistribution, WeightedValue, ParameterRef, RelativeDistanceType, CoordinateSystem, TraveledDistance, TimeHeadway, LaneChangeShape
 
 
 from . import scemlmodel
 
-__all__ = ['AbstractionLevel', 'JoinPolicy', 'LaneChangeDirection', 'ComparisonRule', 'CloudState', 'PrecipitationType', 'ActorKind', 'NamedElement', 'Graph', 'Scenario', 'Library', 'Flow', 'GraphElement', 'DiagramPosition', 'RootNode', 'EndNode', 'ModuleElement', 'ActionNode', 'Maneuver', 'LongitudinalManeuver', 'LateralManeuver', 'CompositeManeuver', 'Condition', 'Accelerate', 'Decelerate', 'Stop', 'KeepVelocity', 'DriveDistance', 'Follow', 'Approach', 'LaneChange', 'RoutedManeuver', 'TurnLeft', 'TurnRight', 'Cross', 'FollowTrajectory', 'Overtake', 'InLocationRadius', 'InVehicleRadius', 'TimeElapsed', 'SpeedCondition', 'TimeToCollision', 'OpaqueAction', 'DeclarationType', 'ModifyRule', 'Declaration', 'GlobalAction', 'ParameterCondition', 'VariableCondition', 'SetParameter', 'SetVariable',
-           'TrafficSignalState', 'TrafficSignalCondition', 'LaneOffset', 'JoiningPolicy', 'JoinAllFinished', 'JoinOneFinished', 'ModuleDefinition', 'InPort', 'OutPort', 'ModuleUse', 'RoleBinding', 'ParameterOverride', 'ModuleParameter', 'Participant', 'ActorRole', 'AllowedKind', 'Actor', 'Pedestrian', 'TwoWheeler', 'Bicycle', 'Motorcycle', 'FourWheeler', 'Car', 'Van', 'Truck', 'Bus', 'Position', 'WorldPosition', 'LanePosition', 'RoadPosition', 'RelativeLanePosition', 'RelativeRoadPosition', 'RelativeObjectPosition', 'RelativeWorldPosition', 'Environment', 'ParameterValue', 'Value', 'Range', 'Distribution', 'UniformDistribution', 'NormalDistribution', 'DiscreteDistribution', 'WeightedValue', 'ParameterRef', 'RelativeDistanceType', 'CoordinateSystem', 'TraveledDistance', 'TimeHeadway', 'LaneChangeShape']
+__all__ = ['AbstractionLevel', 'JoinPolicy', 'LaneChangeDirection', 'ComparisonRule', 'CloudState', 'PrecipitationType', 'ActorKind', 'NamedElement', 'Graph', 'Scenario', 'Library', 'Flow', 'GraphElement', 'DiagramPosition', 'RootNode', 'EndNode', 'ModuleElement', 'ActionNode', 'Maneuver', 'LongitudinalManeuver', 'LateralManeuver', 'CompositeManeuver', 'Condition', 'Accelerate', 'Decelerate', 'Stop', 'KeepVelocity', 'DriveDistance', 'Follow', 'Approach', 'LaneChange', 'RoutedManeuver', 'TurnLeft', 'TurnRight', 'Cross', 'FollowTrajectory', 'Overtake', 'InLocationRadius', 'InVehicleRadius', 'TimeElapsed', 'SpeedCondition', 'TimeToCollision', 'Property', 'Controller', 'ControllerActivation', 'ControllerManeuver', 'ActivateController', 'AssignController', 'ControllerOverrideKind', 'ControllerOverride', 'OverrideController', 'OpaqueAction', 'DeclarationType', 'ModifyRule', 'Declaration',
+           'GlobalAction', 'ParameterCondition', 'VariableCondition', 'SetParameter', 'SetVariable', 'TrafficSignalState', 'TrafficSignalCondition', 'LaneOffset', 'JoiningPolicy', 'JoinAllFinished', 'JoinOneFinished', 'ModuleDefinition', 'InPort', 'OutPort', 'ModuleUse', 'RoleBinding', 'ParameterOverride', 'ModuleParameter', 'Participant', 'ActorRole', 'AllowedKind', 'Actor', 'Pedestrian', 'TwoWheeler', 'Bicycle', 'Motorcycle', 'FourWheeler', 'Car', 'Van', 'Truck', 'Bus', 'Position', 'WorldPosition', 'LanePosition', 'RoadPosition', 'RelativeLanePosition', 'RelativeRoadPosition', 'RelativeObjectPosition', 'RelativeWorldPosition', 'Environment', 'ParameterValue', 'Value', 'Range', 'Distribution', 'UniformDistribution', 'NormalDistribution', 'DiscreteDistribution', 'WeightedValue', 'ParameterRef', 'RelativeDistanceType', 'CoordinateSystem', 'TraveledDistance', 'TimeHeadway', 'LaneChangeShape']
 
 eSubpackages = []
 eSuperPackage = None
@@ -49,6 +49,10 @@ InVehicleRadius.radius.eType = ParameterValue
 TimeElapsed.duration.eType = ParameterValue
 SpeedCondition.speed.eType = ParameterValue
 TimeToCollision.time.eType = ParameterValue
+Controller.properties.eType = Property
+AssignController.controller.eType = Controller
+AssignController.activation.eType = ControllerActivation
+OverrideController.overrides.eType = ControllerOverride
 LaneOffset.offset.eType = ParameterValue
 LaneOffset.maxLateralAcc.eType = ParameterValue
 ModuleDefinition.roles.eType = ActorRole
@@ -65,6 +69,8 @@ Actor.initialSpeed.eType = ParameterValue
 Actor.length.eType = ParameterValue
 Actor.width.eType = ParameterValue
 Actor.height.eType = ParameterValue
+Actor.controller.eType = Controller
+Actor.controllerActivation.eType = ControllerActivation
 WorldPosition.x.eType = ParameterValue
 WorldPosition.y.eType = ParameterValue
 WorldPosition.z.eType = ParameterValue
@@ -103,8 +109,8 @@ GraphElement.incoming.eOpposite = Flow.target
 GraphElement.outgoing.eType = Flow
 GraphElement.outgoing.eOpposite = Flow.source
 
-otherClassifiers = [AbstractionLevel, JoinPolicy, LaneChangeDirection, ComparisonRule, CloudState,
-                    PrecipitationType, ActorKind, DeclarationType, ModifyRule, RelativeDistanceType, CoordinateSystem, LaneChangeShape]
+otherClassifiers = [AbstractionLevel, JoinPolicy, LaneChangeDirection, ComparisonRule, CloudState, PrecipitationType,
+                    ActorKind, ControllerOverrideKind, DeclarationType, ModifyRule, RelativeDistanceType, CoordinateSystem, LaneChangeShape]
 
 for classif in otherClassifiers:
     eClassifiers[classif.name] = classif

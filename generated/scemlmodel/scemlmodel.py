@@ -27,6 +27,9 @@ PrecipitationType = EEnum('PrecipitationType', literals=['dry', 'rain', 'snow'])
 ActorKind = EEnum('ActorKind', literals=[
                   'Pedestrian', 'TwoWheeler', 'Bicycle', 'Motorcycle', 'FourWheeler', 'Car', 'Van', 'Truck', 'Bus'])
 
+ControllerOverrideKind = EEnum('ControllerOverrideKind', literals=[
+                               'throttle', 'brake', 'clutch', 'parkingBrake', 'steeringWheel', 'gear'])
+
 DeclarationType = EEnum('DeclarationType', literals=[
                         'double', 'integer', 'string', 'boolean', 'unsignedInt', 'unsignedShort', 'dateTime'])
 
@@ -108,6 +111,101 @@ class DiagramPosition(EObject, metaclass=MetaEClass):
 
         if y is not None:
             self.y = y
+
+
+class Property(EObject, metaclass=MetaEClass):
+    """One name and value pair of a controller, as OpenSCENARIO's Property: text the player reads (e.g. esmini's timeGap or mode)."""
+    name = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    value = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+
+    def __init__(self, *, name=None, value=None):
+        # if kwargs:
+        #    raise AttributeError('unexpected arguments: {}'.format(kwargs))
+
+        super().__init__()
+
+        if name is not None:
+            self.name = name
+
+        if value is not None:
+            self.value = value
+
+
+class Controller(EObject, metaclass=MetaEClass):
+    """What drives an actor instead of the player's default (OpenSCENARIO's Controller): its name, which players use to pick an implementation (esmini: ACCController, InteractiveController, ...), an optional controllerType (1.2+: movement, lateral, longitudinal, lighting, animation, appearance, all) and its properties. SceML's own preview does not run it."""
+    name = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    controllerType = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    file = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    properties = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+
+    def __init__(self, *, name=None, controllerType=None, properties=None, file=None):
+        # if kwargs:
+        #    raise AttributeError('unexpected arguments: {}'.format(kwargs))
+
+        super().__init__()
+
+        if name is not None:
+            self.name = name
+
+        if controllerType is not None:
+            self.controllerType = controllerType
+
+        if file is not None:
+            self.file = file
+
+        if properties:
+            self.properties.extend(properties)
+
+
+class ControllerActivation(EObject, metaclass=MetaEClass):
+    """Which domains of an actor's controller are switched on (true) or off (false); unset leaves a domain as the player has it. lighting and animation exist from OpenSCENARIO 1.2."""
+    lateral = EAttribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
+    longitudinal = EAttribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
+    lighting = EAttribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
+    animation = EAttribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
+
+    def __init__(self, *, lateral=None, longitudinal=None, lighting=None, animation=None):
+        # if kwargs:
+        #    raise AttributeError('unexpected arguments: {}'.format(kwargs))
+
+        super().__init__()
+
+        if lateral is not None:
+            self.lateral = lateral
+
+        if longitudinal is not None:
+            self.longitudinal = longitudinal
+
+        if lighting is not None:
+            self.lighting = lighting
+
+        if animation is not None:
+            self.animation = animation
+
+
+class ControllerOverride(EObject, metaclass=MetaEClass):
+    """One overridden input: active or released, and its value (pedals 0..1, steering wheel in rad, a manual gear's number)."""
+    kind = EAttribute(eType=ControllerOverrideKind, unique=True, derived=False,
+                      changeable=True, default_value=ControllerOverrideKind.throttle)
+    active = EAttribute(eType=EBoolean, unique=True, derived=False,
+                        changeable=True, default_value=True)
+    value = EAttribute(eType=EDouble, unique=True, derived=False,
+                       changeable=True, default_value=0.0)
+
+    def __init__(self, *, kind=None, active=None, value=None):
+        # if kwargs:
+        #    raise AttributeError('unexpected arguments: {}'.format(kwargs))
+
+        super().__init__()
+
+        if kind is not None:
+            self.kind = kind
+
+        if active is not None:
+            self.active = active
+
+        if value is not None:
+            self.value = value
 
 
 class Declaration(EObject, metaclass=MetaEClass):
@@ -713,8 +811,10 @@ class Actor(Participant):
     length = EReference(ordered=True, unique=True, containment=True, derived=False)
     width = EReference(ordered=True, unique=True, containment=True, derived=False)
     height = EReference(ordered=True, unique=True, containment=True, derived=False)
+    controller = EReference(ordered=True, unique=True, containment=True, derived=False)
+    controllerActivation = EReference(ordered=True, unique=True, containment=True, derived=False)
 
-    def __init__(self, *, isEgo=None, model=None, startPosition=None, initialSpeed=None, length=None, width=None, height=None, **kwargs):
+    def __init__(self, *, isEgo=None, model=None, startPosition=None, initialSpeed=None, length=None, width=None, height=None, controller=None, controllerActivation=None, **kwargs):
 
         super().__init__(**kwargs)
 
@@ -738,6 +838,12 @@ class Actor(Participant):
 
         if height is not None:
             self.height = height
+
+        if controller is not None:
+            self.controller = controller
+
+        if controllerActivation is not None:
+            self.controllerActivation = controllerActivation
 
 
 class UniformDistribution(Distribution):
@@ -1054,6 +1160,15 @@ class TimeToCollision(Condition):
 
         if time is not None:
             self.time = time
+
+
+@abstract
+class ControllerManeuver(Maneuver):
+    """A change of the reference actor's controller during the run. It completes at once, as players complete controller actions; what the controller then does is the player's."""
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
 
 
 class ParameterCondition(Condition):
@@ -1402,6 +1517,58 @@ class Overtake(CompositeManeuver):
 
         if laneChangeDistance is not None:
             self.laneChangeDistance = laneChangeDistance
+
+
+class ActivateController(ControllerManeuver):
+    """Switches the domains of the actor's controller on or off (OpenSCENARIO's ActivateControllerAction); unset leaves a domain as it is."""
+    lateral = EAttribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
+    longitudinal = EAttribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
+    lighting = EAttribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
+    animation = EAttribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
+
+    def __init__(self, *, lateral=None, longitudinal=None, lighting=None, animation=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if lateral is not None:
+            self.lateral = lateral
+
+        if longitudinal is not None:
+            self.longitudinal = longitudinal
+
+        if lighting is not None:
+            self.lighting = lighting
+
+        if animation is not None:
+            self.animation = animation
+
+
+class AssignController(ControllerManeuver):
+    """Gives the actor another controller (OpenSCENARIO's AssignControllerAction); activation, when set, also switches its domains (1.1+)."""
+    controller = EReference(ordered=True, unique=True, containment=True, derived=False)
+    activation = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, controller=None, activation=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if controller is not None:
+            self.controller = controller
+
+        if activation is not None:
+            self.activation = activation
+
+
+class OverrideController(ControllerManeuver):
+    """Overrides driver inputs of the actor's controller (OpenSCENARIO's OverrideControllerValueAction): throttle, brake, clutch, parking brake, steering wheel or gear, each at most once."""
+    overrides = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+
+    def __init__(self, *, overrides=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if overrides:
+            self.overrides.extend(overrides)
 
 
 class LaneOffset(LateralManeuver):

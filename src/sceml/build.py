@@ -111,6 +111,39 @@ def relative_world(
     )
 
 
+def controller(
+    name: str, controller_type: str | None = None, properties: dict[str, str] | None = None
+) -> scm.Controller:
+    """A controller for an actor (`actor(..., controller=...)`) or an AssignController."""
+    made = scm.Controller(name=name, controllerType=controller_type)
+    for key, value in (properties or {}).items():
+        made.properties.append(scm.Property(name=key, value=value))
+    return made
+
+
+def activation(
+    *,
+    lateral: bool | None = None,
+    longitudinal: bool | None = None,
+    lighting: bool | None = None,
+    animation: bool | None = None,
+) -> scm.ControllerActivation:
+    """Which controller domains to switch on (True) or off (False); None leaves one as it is."""
+    return scm.ControllerActivation(
+        lateral=lateral, longitudinal=longitudinal, lighting=lighting, animation=animation
+    )
+
+
+def override(kind: str, value: float = 0.0, *, active: bool = True) -> scm.ControllerOverride:
+    """One input of an OverrideController: throttle, brake, clutch, parkingBrake,
+    steeringWheel or gear."""
+    literal = scm.ControllerOverrideKind.getEEnumLiteral(kind)
+    if literal is None:
+        options = ", ".join(str(item.name) for item in scm.ControllerOverrideKind.eLiterals)
+        raise BuildError(f"unknown override {kind!r}; choose one of: {options}")
+    return scm.ControllerOverride(kind=literal, value=float(value), active=active)
+
+
 def _kind_class(kind: str | type, base: str) -> type:
     name = catalog.class_name(kind)
     cls = getattr(scm, name, None)
@@ -295,11 +328,18 @@ class ScenarioBuilder(GraphBuilder):
         start: scm.Position | None = None,
         speed: ParameterInput | None = None,
         model: str | None = None,
+        controller: scm.Controller | None = None,
+        activation: scm.ControllerActivation | None = None,
         **dimensions: ParameterInput,
     ) -> scm.Actor:
-        """Add an actor of a kind (Car, Bicycle, Pedestrian, ...) to the root node."""
+        """Add an actor of a kind (Car, Bicycle, Pedestrian, ...) to the root node, optionally
+        with the controller it starts with and the domains switched on at the start."""
         cls = _kind_class(kind, "Actor")
         actor = cls(name=name, isEgo=ego, model=model)
+        if controller is not None:
+            actor.controller = detached(controller)
+        if activation is not None:
+            actor.controllerActivation = detached(activation)
         if start is not None:
             actor.startPosition = detached(start)
         if speed is not None:

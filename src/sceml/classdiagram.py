@@ -72,6 +72,11 @@ VIEWS: dict[str, tuple[str, ...]] = {
         "TimeToCollision",
         "TraveledDistance",
         "TimeHeadway",
+        "ControllerManeuver",
+        "ActivateController",
+        "AssignController",
+        "OverrideController",
+        "ControllerOverride",
         "OpaqueAction",
         "Participant",
         "Position",
@@ -98,6 +103,9 @@ VIEWS: dict[str, tuple[str, ...]] = {
         "RelativeRoadPosition",
         "RelativeObjectPosition",
         "RelativeWorldPosition",
+        "Controller",
+        "Property",
+        "ControllerActivation",
         "Environment",
     ),
     "global": (
@@ -132,8 +140,9 @@ CATEGORY_FILL = {
     "longitudinal": "#ffe680",
     "lateral": "#ff9e9e",
     "composite": "#9ee6a0",
+    "controller": "#8e7cc3",
     "condition": "#9ec9ff",
-    "global": "#d7c8f0",
+    "global": "#ffb74d",
 }
 ABSTRACT_FILL = "#e6e6e6"
 CONCRETE_FILL = "#ffd9b3"

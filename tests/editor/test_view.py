@@ -80,8 +80,15 @@ def test_a_problem_in_a_module_use_marks_the_use(uis2: EditorSession) -> None:
 def test_palette_groups_and_libraries(uis2: EditorSession) -> None:
     palette = uis2.view()["palette"]
     groups = [g["group"] for g in palette]
-    kinds = ["longitudinal", "lateral", "composite", "condition", "global", "join"]
-    assert groups[:6] == kinds
+    assert groups[:7] == [
+        "longitudinal",
+        "lateral",
+        "composite",
+        "controller",
+        "condition",
+        "global",
+        "join",
+    ]
     assert groups[6] == "library:library/sceml-library.xmi"
     longitudinal = [i["kind"] for i in palette[0]["items"]]
     assert "Accelerate" in longitudinal and "TurnLeft" not in longitudinal

@@ -139,3 +139,28 @@ def test_emf_reads_and_writes_global_nodes_declarations_signals_and_lane_heading
         a for a in io.load(out / "lane-headings.xmi").root.nodes[0].actors if a.name == "Lead"
     )
     assert lead.startPosition.h.value == 3.141593
+
+
+def test_emf_reads_and_writes_imported_controllers(emf: Harness, tmp_path: Path) -> None:
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    names = ("controller_object", "controller_assign", "controller_override")
+    for name in names:
+        import_to_file(FILES / f"{name}.xosc", source / f"{name}.xmi")
+        result = emf.run("roundtrip", ECORE, source, out, Path(f"{name}.xmi"))
+        assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+        original = io.load(source / f"{name}.xmi").root
+        assert differences(original, io.load(out / f"{name}.xmi").root) == [], name
+    from_emf = io.load(out / "controller_override.xmi").root
+    (override,) = [n for n in from_emf.nodes if n.name == "Override"]
+    assert [(o.kind.name, o.active, o.value) for o in override.overrides] == [
+        ("throttle", True, 0.3),
+        ("steeringWheel", True, 0.05),
+        ("gear", True, 3.0),
+    ]
+    # An unset domain (EBooleanObject) stays unset through EMF, not false.
+    (assign,) = [n for n in from_emf.nodes if n.name == "Assign"]
+    assert (assign.activation.longitudinal, assign.activation.lateral) == (True, None)
+    ego = next(a for a in io.load(out / "controller_object.xmi").root.nodes[0].actors)
+    assert [(p.name, p.value) for p in ego.controller.properties][1] == ("timeGap", "2.0")

@@ -83,7 +83,12 @@ def _content(obj: EObject) -> str:
     parts = []
     for feature in obj.eClass.eAllStructuralFeatures():
         name = str(feature.name)
-        if name in SKIPPED or feature.derived or feature.transient:
+        if feature.derived or feature.transient:
+            continue
+        # A controller's name picks what drives the actor, a property's names its setting.
+        if name in SKIPPED and not (
+            name == "name" and isinstance(obj, scm.Controller | scm.Property)
+        ):
             continue
         if name == "referenceActor" and isinstance(obj, scm.TimeElapsed):
             # A wait does nothing to its actor, and the export writes it as a delay in its

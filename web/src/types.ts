@@ -52,6 +52,7 @@ export type Look =
   | "longitudinal"
   | "lateral"
   | "composite"
+  | "controller"
   | "condition"
   | "root"
   | "end"

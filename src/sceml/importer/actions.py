@@ -2,7 +2,8 @@
 
 Speed to Accelerate/Decelerate/Stop, longitudinal distance to Follow/Approach, a lane change by
 one lane to LaneChange, routing to TurnLeft/TurnRight/Cross (`geometry.py`), a polyline
-trajectory to FollowTrajectory (Cross for a SceML export's two-point crossing).
+trajectory to FollowTrajectory (Cross for a SceML export's two-point crossing); controller
+actions in `controllers.py`.
 """
 
 from __future__ import annotations
@@ -346,4 +347,4 @@ def _lane_offset(
 maps = _maps
 add_node = _add
 
-from . import global_kinds  # noqa: E402, F401  (registers ParameterAction and VariableAction)
+from . import controllers, global_kinds  # noqa: E402, F401  (register their actions' mappers)

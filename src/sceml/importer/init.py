@@ -1,5 +1,5 @@
-"""Init to the root: start positions, initial speeds and the environment; any other Init
-action becomes an opaque node right after the root (it runs at the start, as it did)."""
+"""Init to the root: start positions, initial speeds, controllers and the environment; any other
+Init action becomes an opaque node right after the root (it runs at the start, as it did)."""
 
 from __future__ import annotations
 
@@ -12,6 +12,7 @@ import scemlmodel as scm
 from . import traced
 from .actions import Motion, Request, map_action
 from .context import Build
+from .controllers import init_controller
 from .opaque import opaque_node
 from .placing import place
 from .positions import number
@@ -85,7 +86,10 @@ def _keep(build: Build, element: etree._Element, actor: scm.Actor) -> scm.GraphE
 
 
 def _private(build: Build, actor: scm.Actor, private: etree._Element) -> bool:
-    """Apply a teleport or speed action to the actor; False when it is something else."""
+    """Apply a teleport, speed or controller action to the actor; False when it is something
+    else."""
+    if init_controller(build, actor, private):
+        return True
     teleport = private.find("TeleportAction")
     if teleport is not None:
         start = place(build, teleport, initial=True)

@@ -44,8 +44,37 @@ _CONTROLS = {"longitudinal": ("speed",), "lateral": ("path",), "composite": ("sp
 
 
 def controls(kind: str) -> tuple[str, ...]:
-    """The parts of its actor a maneuver of `kind` controls (none for conditions)."""
+    """The parts of its actor a maneuver of `kind` controls (none for conditions and controller
+    changes)."""
     return _CONTROLS.get(catalog.category(kind) or "", ())
+
+
+# --- controllers ----------------------------------------------------------------------------------
+
+#: Categories whose nodes finish in the step they start. A controller change (ActivateController,
+#: AssignController, OverrideController) is an instant action to players (esmini 3.6 completes
+#: the ControllerAction and ActivateControllerAction in the step it starts them), so the export
+#: takes its event's completion as the node's finish; it controls no part of the actor itself:
+#: what the controller then does is the player's, and SceML's preview does not run it.
+INSTANT_CATEGORIES = ("controller",)
+#: The domains an activation switches, as OpenSCENARIO's ActivateControllerAction attributes
+#: (lighting and animation from 1.2) and SceML's ControllerActivation features, in that order.
+CONTROLLER_DOMAINS = ("lateral", "longitudinal", "lighting", "animation")
+#: OpenSCENARIO's OverrideControllerValueAction element for each ControllerOverrideKind, in the
+#: schema's order.
+OVERRIDE_ELEMENTS = {
+    "throttle": "Throttle",
+    "brake": "Brake",
+    "clutch": "Clutch",
+    "parkingBrake": "ParkingBrake",
+    "steeringWheel": "SteeringWheel",
+    "gear": "Gear",
+}
+
+
+def completes_at_once(kind: str) -> bool:
+    """Whether a node of `kind` finishes as soon as it starts (a controller change)."""
+    return catalog.category(kind) in INSTANT_CATEGORIES
 
 
 # --- speed ----------------------------------------------------------------------------------------

@@ -21,6 +21,7 @@ from .. import catalog, params
 from ..errors import SceMLError
 from ..graph import actors, root_node
 from ..modules.resolve import resolved_definition
+from ..players.meaning import CONTROLLER_DOMAINS
 
 #: Features every action node has that labels show in other ways, or never.
 _NOT_PARAMETERS = {
@@ -254,6 +255,8 @@ def action_lines(node: scm.ActionNode, scope: Scope) -> list[str]:
         return [actor_line(node, scope), *opaque_lines(node)]
     if not catalog.performed_by_actor(node):
         return global_lines(node)
+    if isinstance(node, scm.ControllerManeuver):
+        return [actor_line(node, scope), *controller_lines(node)]
     return [actor_line(node, scope), *(f"{k}: {v}" for k, v in parameter_items(node, scope))]
 
 
@@ -281,6 +284,47 @@ def global_lines(node: scm.ActionNode) -> list[str]:
     return ["global", f"{word} {named} {operator} {node.value or ''}".rstrip()]
 
 
+def controller_lines(node: scm.ControllerManeuver) -> list[str]:
+    """A controller change: the controller assigned, the domains switched, the inputs overridden."""
+    lines = []
+    if isinstance(node, scm.AssignController) and node.controller is not None:
+        lines.append(f"controller: {describe_controller(node.controller)}")
+        lines.extend(f"  {p.name} = {p.value}" for p in node.controller.properties)
+    switched = describe_activation(
+        node.activation if isinstance(node, scm.AssignController) else node
+    )
+    if switched:
+        lines.append(f"domains: {switched}")
+    if isinstance(node, scm.OverrideController):
+        lines.extend(describe_override(o) for o in node.overrides)
+    return lines
+
+
+def describe_controller(controller: scm.Controller) -> str:
+    """`ACCController`, with its type when it has one: `ACCController (longitudinal)`."""
+    kind = f" ({controller.controllerType})" if controller.controllerType else ""
+    return f"{controller.name or '?'}{kind}"
+
+
+def describe_activation(holder: object) -> str:
+    """The domains a node or an actor switches: `lateral on, longitudinal off`."""
+    parts = []
+    for domain in CONTROLLER_DOMAINS:
+        value = getattr(holder, domain, None)
+        if value is not None:
+            parts.append(f"{domain} {'on' if value else 'off'}")
+    return ", ".join(parts)
+
+
+def describe_override(override: scm.ControllerOverride) -> str:
+    """One overridden input: `brake = 0.5` or `throttle released`."""
+    kind = override.kind.name
+    if not override.active:
+        return f"{kind} released"
+    value = f"{override.value:g}" + (" rad" if kind == "steeringWheel" else "")
+    return f"{kind} = {value}"
+
+
 def root_lines(root: scm.RootNode | None, scenario: scm.Scenario) -> list[str]:
     """The root box: level, map, duration and one line per actor."""
     if root is None:
@@ -292,7 +336,8 @@ def root_lines(root: scm.RootNode | None, scenario: scm.Scenario) -> list[str]:
     lines.append("actors:")
     for actor in actors(scenario):
         ego = ", ego" if actor.isEgo else ""
-        lines.append(f"  {actor.name}: {actor.eClass.name}{ego}")
+        driven = f", {describe_controller(actor.controller)}" if actor.controller else ""
+        lines.append(f"  {actor.name}: {actor.eClass.name}{ego}{driven}")
     return lines
 
 

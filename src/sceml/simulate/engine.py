@@ -24,6 +24,7 @@ from pyecore.ecore import EObject
 import scemlmodel as scm
 
 from ..graph import predecessors, successors
+from ..players import meaning
 from ..players.flows import flow_steps, inlined
 from . import global_values
 from .behaviours import Behaviour, behaviour_for
@@ -183,6 +184,12 @@ class Scheduler:
         return [state] if self._done(state) else []
 
     def _start_maneuver(self, state: NodeState) -> list[NodeState]:
+        if meaning.completes_at_once(state.kind):
+            state.note = (
+                f"{state.kind}, a controller change, finishes at once; the preview runs no "
+                "controller and ignores what it would do"
+            )
+            return [state]
         behaviour = behaviour_for(state.node, self.world)
         if behaviour is None:
             state.note = f"{state.kind} is not simulated: it finishes at once"

@@ -173,10 +173,16 @@ READS: dict[str, Reads] = {
     "SCEML-E003": Reads(aspects=_EXPANSION | _LEVEL),
     "SCEML-E004": Reads(_SELF),
     "SCEML-E005": Reads(_SELF),
-    # The node's own measure settings against the target version.
+    # The node's own measure or controller settings, or the actor's controller, against the
+    # target version.
     "SCEML-E008": Reads(_SELF),
     # opaque.py
     "SCEML-E006": Reads(_SELF),
+    # controllers.py: the node's or actor's own controller, activation and overrides (contents)
+    "SCEML-K001": Reads(_SELF),
+    "SCEML-K002": Reads(_SELF),
+    "SCEML-K003": Reads(_SELF),
+    "SCEML-K004": Reads(_SELF),
     "SCEML-E007": Reads(_SELF),
 }
 
