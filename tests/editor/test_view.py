@@ -89,12 +89,12 @@ def test_palette_groups_and_libraries(uis2: EditorSession) -> None:
         "global",
         "join",
     ]
-    assert groups[6] == "library:library/sceml-library.xmi"
+    assert groups[7] == "library:library/sceml-library.xmi"
     longitudinal = [i["kind"] for i in palette[0]["items"]]
     assert "Accelerate" in longitudinal and "TurnLeft" not in longitudinal
-    modules = [i["module"] for i in palette[6]["items"]]
-    assert "CrossingManeuver" in modules and palette[6]["items"][0]["kind"] == "ModuleUse"
-    crossing = next(i for i in palette[6]["items"] if i["module"] == "CrossingManeuver")
+    modules = [i["module"] for i in palette[7]["items"]]
+    assert "CrossingManeuver" in modules and palette[7]["items"][0]["kind"] == "ModuleUse"
+    crossing = next(i for i in palette[7]["items"] if i["module"] == "CrossingManeuver")
     # UIS2's actors: ego and car are Cars (FourWheelers), pedestrian a Pedestrian.
     assert crossing["roles"] == [
         {"role": "crosser", "allowedKinds": ["TwoWheeler", "Pedestrian"], "actors": ["pedestrian"]},

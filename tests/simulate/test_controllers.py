@@ -26,11 +26,14 @@ def test_a_controller_change_finishes_at_once_and_changes_no_motion() -> None:
     off = b.add("ActivateController", ego, longitudinal=False)
     b.chain(b.root, wait, take_over, brake, off, b.end)
     run = simulate(b.scenario)
-    # The wait starts one flow after the root (0.05 s) and ends 1 s later; each controller
-    # node then starts one flow after its predecessor and finishes in that same step.
+    # The wait starts one flow after the root (0.05 s) and ends 1 s later; written into the
+    # next event's trigger, it costs no step (players.flows), and the assignment it starts
+    # acts from the next step, as a player's action does (1.1 s). Each controller node after
+    # it starts one flow after its predecessor and finishes in that same step.
     starts = [run.node(str(n.name)).started for n in (take_over, brake, off)]
-    assert starts == pytest.approx([1.1, 1.15, 1.2])
-    assert [run.node(str(n.name)).finished for n in (take_over, brake, off)] == starts
+    assert starts == pytest.approx([1.05, 1.15, 1.2])
+    finishes = [run.node(str(n.name)).finished for n in (take_over, brake, off)]
+    assert finishes == pytest.approx([1.1, 1.15, 1.2])
     assert "runs no controller" in str(run.node(str(brake.name)).note)
     # A full brake the preview does not apply: the ego keeps 10 m/s to the end.
     # The end node follows one flow later.
