@@ -2,8 +2,8 @@
 
     python benchmarks/editor_browser.py [--runs 10]
 
-Starts `sceml edit` on UIS2 (examples/uis2-concrete.xmi) and on a synthetic 500-node scenario
-(built as benchmarks/editor_roundtrip.py builds it) and drives Debian's Chromium
+Starts `sceml edit` on UIS2 (examples/uis2-concrete.xmi) and on a valid 500-node scenario on the
+real map (benchmarks/scale_scenarios.py: every node kind, module uses) and drives Debian's Chromium
 (/usr/bin/chromium) with Playwright, as a user would:
 
 - first paint: from navigation start to the frame in which every top-level node is drawn, for
@@ -40,7 +40,7 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 sys.path.insert(0, str(HERE.parent / "tests"))
 from browser import CHROMIUM, CHROMIUM_ARGS  # noqa: E402
-from editor_roundtrip import synthetic  # noqa: E402
+from scale_scenarios import write  # noqa: E402
 
 SCEML = Path(sys.executable).parent / "sceml"
 URL = re.compile(r"http://127\.0\.0\.1:\d+/")
@@ -201,7 +201,7 @@ def main(argv: list[str] | None = None) -> None:
         shutil.copytree(HERE.parent / "maps", folder / "maps")
         cases = {
             "UIS2": folder / "examples" / "uis2-concrete.xmi",
-            "500 nodes": synthetic(folder, 500),
+            "500 nodes": write(500, folder / "scale"),
         }
         browser = playwright.chromium.launch(executable_path=str(CHROMIUM), args=CHROMIUM_ARGS)
         print(f"median ms in Chromium, {arguments.runs} runs; anchor: GET /api/view + JSON parse")

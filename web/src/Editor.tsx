@@ -18,7 +18,8 @@ import { useExpanded } from "./state/useExpanded";
 import { freeSpot } from "./lib/placement";
 import { useServer } from "./state/useServer";
 import { useShortcuts } from "./state/useShortcuts";
-import type { Diagnostic, Op, PaletteItem, View, ViewNode, XY } from "./types";
+import { useStable } from "./state/useStable";
+import type { Answer, Diagnostic, Op, PaletteItem, View, ViewNode, XY } from "./types";
 
 type DialogState =
   | { type: "open" }
@@ -230,6 +231,9 @@ export function Editor() {
     [editable, centre, edit, flow],
   );
 
+  const addFromPalette = useStable((item: PaletteItem) => addItem(item));
+  const stableShowProblem = useStable(showProblem);
+
   const arrange = useCallback(
     async (to: Direction = direction) => {
       const positions = await diagram.arrange(to);
@@ -302,7 +306,7 @@ export function Editor() {
   const open = useCallback(
     async (path: string, module: string) => {
       setDialog(null);
-      const attempt = async (discard: boolean): Promise<View | null> => {
+      const attempt = async (discard: boolean): Promise<Answer | null> => {
         try {
           const next = await server.enqueue(() => api.open(path, discard, module || undefined));
           return next;
@@ -425,7 +429,7 @@ export function Editor() {
         </div>
       )}
       <div className="workspace">
-        {view && !view.readOnly && <Palette view={view} onAdd={(item) => addItem(item)} />}
+        {view && !view.readOnly && <Palette palette={view.palette} style={view.style} disabled={view.readOnly} onAdd={addFromPalette} />}
         <div className="canvas" ref={canvas}>
           <Diagram
             view={view}
@@ -441,7 +445,7 @@ export function Editor() {
         </div>
         {view && <Properties view={view} node={single} selectionCount={selectedNodes.length} send={send} openDefinition={openDefinition} />}
       </div>
-      {view && <Problems diagnostics={view.diagnostics} onShow={showProblem} />}
+      {view && <Problems diagnostics={view.diagnostics} onShow={stableShowProblem} />}
       {view?.comparison && <Changes comparison={view.comparison} />}
       {view?.recovery && editable && recoveryLater !== view.recovery.path && (
         <RecoveryDialog
