@@ -1,6 +1,6 @@
 // The editor page: toolbar, palette, diagram, properties and problems around one server view.
 
-import { useReactFlow } from "@xyflow/react";
+import { useReactFlow, useStoreApi } from "@xyflow/react";
 import { useCallback, useEffect, useMemo, useRef, useState } from "react";
 import { api, ApiError } from "./api";
 import { Diagram } from "./canvas/Diagram";
@@ -49,6 +49,7 @@ export function Editor() {
   const [direction, setDirection] = useState<Direction>(storedDirection);
   const diagram = useDiagramState(view, expanded, direction);
   const flow = useReactFlow();
+  const storeApi = useStoreApi();
   const [dialog, setDialog] = useState<DialogState>(null);
   const [clipboard, setClipboard] = useState<{ count: number; pastes: number }>({ count: 0, pastes: 0 });
   const canvas = useRef<HTMLDivElement>(null);
@@ -100,8 +101,18 @@ export function Editor() {
     const duration = fittedFor.current === document ? 200 : 0;
     fittedFor.current = document;
     fitNext.current = false;
-    requestAnimationFrame(() => void flow.fitView({ padding: 0.06, maxZoom: 1.25, duration }));
-  }, [laidOut, flow]);
+    // React Flow learns its pane's size from a ResizeObserver: a fit before that (a layout
+    // known from an earlier visit is ready at once) would fit the page's first, narrow pane.
+    let frames = 0;
+    const fitOnceSized = () => {
+      const pane = canvas.current?.querySelector(".react-flow")?.getBoundingClientRect();
+      const { width, height } = storeApi.getState();
+      const sized = pane !== undefined && Math.abs(pane.width - width) < 1 && Math.abs(pane.height - height) < 1;
+      if (!sized && frames++ < 60) requestAnimationFrame(fitOnceSized);
+      else void flow.fitView({ padding: 0.06, maxZoom: 1.25, duration });
+    };
+    requestAnimationFrame(fitOnceSized);
+  }, [laidOut, flow, storeApi]);
 
   /** Where every top-level node is drawn now. */
   const drawnPositions = useCallback((): Record<string, XY> => {

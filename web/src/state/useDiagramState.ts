@@ -7,6 +7,7 @@ import { flowEdges, flowNodes, measures } from "../canvas/build";
 import type { DiagramEdge, DiagramNode } from "../canvas/types";
 import { shownGraph } from "../lib/graph";
 import { layoutGraph, remeasured, structureKey, type Direction, type Layout } from "../lib/layout";
+import { storedLayout, storeLayout } from "../lib/layoutCache";
 import type { View, XY } from "../types";
 
 export interface DiagramState {
@@ -30,6 +31,10 @@ function reuse<T extends { id: string }>(next: T[], before: Map<string, T>, same
     const old = before.get(item.id);
     return old && same(old, item) ? old : item;
   });
+}
+
+function sameItems<T>(a: T[], b: T[]): boolean {
+  return a.length === b.length && a.every((item, index) => item === b[index]);
 }
 
 function sameNode(old: DiagramNode, next: DiagramNode): boolean {
@@ -92,7 +97,11 @@ export function useDiagramState(
     const shown = shownGraph(view.nodes, view.edges, expanded);
     const key = structureKey(shown, direction);
     const last = lastLayout.current;
-    const known = last?.key === key ? remeasured(last.layout, shown, measures) : null;
+    const file = `${view.document.path}#${view.document.module ?? ""}`;
+    // The layout drawn last, or one this browser made for this file before (a reload).
+    const earlier = last?.key === key ? last.layout : storedLayout(file, key);
+    const known = earlier ? remeasured(earlier, shown, measures) : null;
+    if (earlier && known && last?.key !== key) lastLayout.current = { key, layout: earlier };
     // Read-only, an expanded use cannot make room by an Arrange step: lay it all out anew.
     const fresh = view.readOnly && shown.frames.size > 0;
     const started = performance.now();
@@ -102,7 +111,10 @@ export function useDiagramState(
       performance.measure(known ? "sceml-layout-reused" : "sceml-layout", { start: started });
       if (cancelled) return;
       // Kept with the sizes ELK saw, so that growth is measured from them, not step by step.
-      if (!known) lastLayout.current = { key, layout };
+      if (!known) {
+        lastLayout.current = { key, layout };
+        storeLayout(file, key, layout);
+      }
       const chosen = pending.current;
       pending.current = null;
       const selectedNodes = chosen ?? selection.current.nodes;
@@ -110,8 +122,10 @@ export function useDiagramState(
       // Unchanged nodes and edges keep their objects, so React Flow redraws only what changed.
       const nextNodes = reuse(flowNodes(shown, layout, view.nodes, selectedNodes, view.readOnly), drawn.current.nodes, sameNode);
       const nextEdges = reuse(flowEdges(shown, selectedEdges, view.readOnly), drawn.current.edges, sameEdge);
-      setNodes(nextNodes);
-      setEdges(nextEdges);
+      // The same list keeps its array: React Flow runs every node's and edge's selector on
+      // each update of its store, so an update that changes nothing is worth skipping.
+      setNodes((current) => (sameItems(current, nextNodes) ? current : nextNodes));
+      setEdges((current) => (sameItems(current, nextEdges) ? current : nextEdges));
       // A new object for every layout: expanding a use lays out the same view again, and the
       // page fits the view after that layout (a same-object update would not be seen).
       setLaidOut({ ...view });
