@@ -113,7 +113,9 @@ export function useDiagramState(
       // Kept with the sizes ELK saw, so that growth is measured from them, not step by step.
       if (!known) {
         lastLayout.current = { key, layout };
-        storeLayout(file, key, layout);
+        // Kept for a reload only when ELK placed something (a top-level node without a saved
+        // place, or the inside of a frame): saved places need no keeping.
+        if (shown.nodes.some((node) => (node.parent === null ? node.position === null : shown.frames.has(node.parent)))) storeLayout(file, key, layout);
       }
       const chosen = pending.current;
       pending.current = null;
