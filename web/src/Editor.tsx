@@ -102,14 +102,15 @@ export function Editor() {
     fittedFor.current = document;
     fitNext.current = false;
     // React Flow learns its pane's size from a ResizeObserver: a fit before that (a layout
-    // known from an earlier visit is ready at once) would fit the page's first, narrow pane.
+    // known from an earlier visit is ready at once) fits the page's first, narrow pane. Fit at
+    // once (what is drawn shows), and again once React Flow knows the pane's real size.
     let frames = 0;
     const fitOnceSized = () => {
       const pane = canvas.current?.querySelector(".react-flow")?.getBoundingClientRect();
       const { width, height } = storeApi.getState();
       const sized = pane !== undefined && Math.abs(pane.width - width) < 1 && Math.abs(pane.height - height) < 1;
+      if (sized || frames === 0) void flow.fitView({ padding: 0.06, maxZoom: 1.25, duration });
       if (!sized && frames++ < 60) requestAnimationFrame(fitOnceSized);
-      else void flow.fitView({ padding: 0.06, maxZoom: 1.25, duration });
     };
     requestAnimationFrame(fitOnceSized);
   }, [laidOut, flow, storeApi]);
