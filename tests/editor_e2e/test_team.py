@@ -446,3 +446,24 @@ def test_extract_asks_for_the_library_and_undo_takes_its_write_back(
         toolbar.get_by_role("button", name="Undo").click()
     expect(node(page, "Accelerate_1")).to_be_visible()
     assert not library.exists()  # Extract made the file; Undo removes it
+
+
+def test_an_edit_is_answered_with_a_patch_of_that_node(
+    page: Page, editor: object, examples_copy: Path
+) -> None:
+    url = editor(examples_copy / "uis1-concrete.xmi")  # type: ignore[operator]
+    open_editor(page, url)
+    node(page, "Accelerate_1").focus()
+    page.keyboard.press("Enter")
+    speed = page.get_by_role("region", name="Properties").get_by_label("Target speed", exact=True)
+    speed.fill("9")
+    with ops_answer(page) as answered:
+        speed.press("Enter")
+    request = answered.value.request
+    answer = answered.value.json()
+    # The page names the revision it holds, so the server sends only the edited node.
+    assert request.headers["x-sceml-revision"].isdigit()
+    assert "nodes" not in answer
+    assert [n["name"] for n in answer["patch"]["nodes"]["changed"]] == ["Accelerate_1"]
+    expect(node(page, "Accelerate_1")).to_contain_text("targetSpeed: 9 m/s")
+    expect(node(page, "Accelerate_2")).to_contain_text("targetSpeed: 4 m/s")
