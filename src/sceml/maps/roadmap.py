@@ -147,7 +147,7 @@ class RoadMap:
         if known is None:
             known = self._answers[key] = tuple(self._lanes_at(x, y, tolerance))
             if len(self._answers) > _ANSWERS_KEPT:
-                self._answers.pop(next(iter(self._answers)))
+                self._answers.pop(next(iter(self._answers)), None)
         return list(known)
 
     def _lanes_at(self, x: float, y: float, tolerance: float) -> list[LaneCoordinate]:
