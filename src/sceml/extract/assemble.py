@@ -63,8 +63,10 @@ def add_actor_graph(
     actors: dict[str, scm.Actor],
     ego: str | None,
     thresholds: Thresholds,
+    speed_changes: dict[str, list[Event]],
 ) -> list[Inferred]:
-    """Add one actor's maneuvers (with their waits) from the root to the end node."""
+    """Add one actor's maneuvers (with their waits) from the root to the end node;
+    `speed_changes` are every actor's extracted speed changes (for speed conditions)."""
     name = str(actor.name)
     own = motions[name]
     begin = _Tail(builder.root, float(own.times[0]))
@@ -86,6 +88,7 @@ def add_actor_graph(
                 ego,
                 thresholds,
                 driving=driving,
+                speed_changes=speed_changes,
             )
             condition = _condition(builder, why, actors)
             builder.chain(tail.node, condition, node)

@@ -4,8 +4,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-#: Event kinds that change the speed; the others change the path.
-LONGITUDINAL = ("Accelerate", "Decelerate", "Stop")
+#: Event kinds that change the speed; the others change the path. DriveDistance is a step of
+#: the speed (a recorded speed that jumps), the others change it at a rate.
+LONGITUDINAL = ("Accelerate", "Decelerate", "Stop", "DriveDistance")
 
 
 @dataclass
@@ -32,6 +33,8 @@ class Event:
     from_speed: float | None = None
     #: How far (rad) the heading turned, for a path change.
     turned: float = 0.0
+    #: A speed change recorded steeper than the actor kind allows, extracted at its limit.
+    limited: bool = False
 
     @property
     def longitudinal(self) -> bool:

@@ -188,18 +188,26 @@ def _ramp_integral(t: Array, t1: Array, t2: Array) -> Array:
 
 
 def within_limits(
-    events: list[Event], kind: str, acceleration: float | None, deceleration: float | None
+    events: list[Event],
+    kind: str,
+    acceleration: float | None,
+    deceleration: float | None,
+    standing: float,
 ) -> list[str]:
-    """Slow down ramps steeper than the actor kind's plausibility limits (SCEML-L002); returns
-    a note for each.
+    """Make speed changes steeper than the actor kind's plausibility limits (SCEML-L002) into
+    what they were; returns a note for each.
 
-    A speed that jumps (a player's step change) becomes a ramp at the limit with the same
-    midpoint, so the actor covers the same distance by the ramp's end; in between it is off
-    by up to (speed change)² / (8 × limit).
+    A speed that jumps (a player's step change: the preview's DriveDistance, an esmini step
+    SpeedAction) is no motion at a rate. A jump to a speed at which the actor drives on is
+    extracted as a step, a DriveDistance at the jump's midpoint (its distance is set by
+    `drive_distances`), which replays it as recorded. A jump to standing cannot be one (a
+    DriveDistance at 0 m/s never finishes): it becomes a Stop at the limit with the same
+    midpoint, so the actor covers the same distance by the ramp's end; in between it is off by
+    up to (speed change)² / (8 × limit).
     """
     notes = []
     for event in events:
-        if not event.longitudinal or event.from_speed is None:
+        if not event.longitudinal or event.from_speed is None or "rate" not in event.parameters:
             continue
         rate = float(str(event.parameters["rate"]))
         speeding_up = event.kind == "Accelerate"
@@ -207,15 +215,44 @@ def within_limits(
         if limit is None or rate <= limit:
             continue
         middle = (event.start + event.end) / 2
-        half = abs(_target(event) - event.from_speed) / limit / 2
+        target = _target(event)
+        if target > standing:
+            event.kind = "DriveDistance"
+            event.start = event.end = event.finish = middle
+            event.parameters = {"speed": round(target, 2)}
+            notes.append(
+                f"{event.actor}: the speed jumped from {event.from_speed:.2f} to {target:g} m/s "
+                f"at {middle:.2f} s ({rate:g} m/s², above the {kind} limit of {limit:g} m/s²); "
+                "it is extracted as a step of the speed, a DriveDistance"
+            )
+            continue
+        half = abs(target - event.from_speed) / limit / 2
         event.start, event.end = max(middle - half, 0.0), middle + half
         event.finish = event.end
         event.parameters["rate"] = float(limit)
+        event.limited = True
         notes.append(
             f"{event.actor}: the {event.kind} at {middle:.2f} s ran at {rate:g} m/s², above the "
             f"{kind} limit of {limit:g} m/s²; it is extracted at the limit"
         )
     return notes
+
+
+def drive_distances(events: list[Event], end: float) -> None:
+    """Give each step of the speed (DriveDistance) its distance: what the actor drove at that
+    speed until its next maneuver started, or the recording ended. The node then finishes when
+    the actor next did something, as on the recording (which shows no other end of a step),
+    and that maneuver follows it."""
+    ordered = sorted(events, key=lambda e: e.start)
+    for i, event in enumerate(ordered):
+        if event.kind != "DriveDistance":
+            continue
+        speed = float(str(event.parameters["speed"]))
+        later = [e.start for e in ordered[i + 1 :] if e.start > event.start]
+        until = later[0] if later else end
+        distance = round(max(speed * (until - event.start), 0.1), 1)
+        event.parameters["distance"] = distance
+        event.finish = event.end = event.start + distance / speed
 
 
 def _target(event: Event) -> float:

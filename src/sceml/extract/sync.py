@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from numpy.typing import NDArray
 
+from .events import Event
 from .motion import Array, Motion
 from .thresholds import Thresholds
 
@@ -62,14 +63,19 @@ def explain(
     thresholds: Thresholds,
     *,
     driving: bool,
+    speed_changes: dict[str, list[Event]] | None = None,
 ) -> Explanation:
-    """The best explanation of `actor` starting at `start` after waiting since `activation`."""
+    """The best explanation of `actor` starting at `start` after waiting since `activation`.
+
+    `speed_changes` are the speed changes extracted for each actor: a speed condition on
+    another actor is stated only at a speed its extracted change passes through.
+    """
     others = [m for name, m in motions.items() if name != actor]
     # The ego first: scenarios are written around it, so it is the likelier trigger.
     others.sort(key=lambda m: (m.name != ego, m.name))
     found = [
         *_vehicle_radius(actor, motions[actor], others, start, activation, thresholds),
-        *_speed(actor, others, start, activation, thresholds),
+        *_speed(others, start, activation, thresholds, speed_changes or {}),
         *_location(motions[actor], others, start, activation, thresholds),
     ]
     if not found:
@@ -167,7 +173,11 @@ def _vehicle_radius(
 
 
 def _speed(
-    actor: str, others: list[Motion], start: float, activation: float, thresholds: Thresholds
+    others: list[Motion],
+    start: float,
+    activation: float,
+    thresholds: Thresholds,
+    speed_changes: dict[str, list[Event]],
 ) -> list[Explanation]:
     found = []
     for other in others:
@@ -176,6 +186,8 @@ def _speed(
             continue
         speed = round(other.at(other.speed, start), 1)
         rising = other.at(acceleration, start) > 0
+        if not _passes(speed_changes.get(other.name, []), start, speed, rising, thresholds):
+            continue
         held = other.speed >= speed if rising else other.speed <= speed
         fires = _first(held, other.times, activation)
         if fires is None or abs(fires - start) > thresholds.sync_tolerance:
@@ -193,6 +205,28 @@ def _speed(
             )
         )
     return found
+
+
+def _passes(
+    changes: list[Event], start: float, speed: float, rising: bool, thresholds: Thresholds
+) -> bool:
+    """Whether one of the extracted speed changes runs at `start` (within the tolerance) and
+    passes through `speed` the same way, with a margin of the smallest speed change each side.
+
+    The smoothed speed of a noisy recording wanders by tenths of a m/s; a condition on a
+    value the extracted change never reaches (or passes long before) would never fire in the
+    scenario, and its actor would wait for ever.
+    """
+    margin = thresholds.min_speed_change / 2
+    tolerance = thresholds.sync_tolerance
+    for change in changes:
+        if change.from_speed is None or not change.start - tolerance <= start <= change.end:
+            continue
+        target = float(str(change.parameters.get("targetSpeed", change.parameters.get("speed", 0))))
+        low, high = sorted((change.from_speed, target))
+        if (target > change.from_speed) == rising and low + margin <= speed <= high - margin:
+            return True
+    return False
 
 
 def _location(
