@@ -2,11 +2,12 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import NDArray
-from scipy.signal import savgol_filter
+from scipy.signal import savgol_coeffs, savgol_filter
 
 from ..errors import LoadError
 from .recording import Track
@@ -18,7 +19,8 @@ Array = NDArray[np.float64]
 @dataclass(frozen=True)
 class Motion:
     """One actor's motion on a uniform clock: smoothed x, y (m), speed (m/s), heading (rad,
-    unwrapped; held while standing) and arc length driven (m)."""
+    unwrapped; held while standing) and arc length driven (m); `heading_error` is the standard
+    deviation (rad) that the recording's noise gives the heading (0 on a clean recording)."""
 
     name: str
     times: Array
@@ -30,6 +32,7 @@ class Motion:
     turn_rate: Array
     arc: Array
     along: Array
+    heading_error: Array
 
     @property
     def step(self) -> float:
@@ -76,6 +79,16 @@ def smooth(track: Track, thresholds: Thresholds, step: float | None = None) -> M
     vy = savgol_filter(y, window, 3, deriv=1, delta=step, mode="interp")
     speed = np.hypot(vx, vy)
     moving = _moving(xs, ys, window // 2, step, thresholds.standing_speed)
+    # The filter's first and last half windows are extrapolations of a cubic: on noisy data
+    # their speed is several times noisier than inside (a standing bike "moves" at 3 m/s).
+    # Where a straight line through the raw samples of the edge window shows no motion that
+    # noise cannot explain, the actor stands there.
+    half = window // 2
+    for edge in (slice(0, window), slice(len(times) - window, len(times))):
+        if _stands(times[edge], x[edge], y[edge], thresholds.standing_speed):
+            ends = slice(0, half) if edge.start == 0 else slice(len(times) - half, len(times))
+            speed[ends] = 0.0
+            moving[ends] = False
     heading = _heading(track, times, xs, ys, moving, window // 2)
     turn_rate = savgol_filter(heading, window, 2, deriv=1, delta=step, mode="interp")
     lengths = np.hypot(np.diff(xs), np.diff(ys))
@@ -83,7 +96,49 @@ def smooth(track: Track, thresholds: Thresholds, step: float | None = None) -> M
     lengths[~(moving[1:] | moving[:-1])] = 0.0
     arc = np.concatenate([[0.0], np.cumsum(lengths)])
     along = _along(x, y, xs, ys, arc, heading, thresholds.standing_speed, speed)
-    return Motion(track.name, times, xs, ys, speed, moving, heading, turn_rate, arc, along)
+    error = _heading_error(x, y, xs, ys, window)
+    return Motion(track.name, times, xs, ys, speed, moving, heading, turn_rate, arc, along, error)
+
+
+def _heading_error(x: Array, y: Array, xs: Array, ys: Array, window: int) -> Array:
+    """The standard deviation (rad) of the heading, the direction of the chord across the
+    window, that position noise gives it.
+
+    The noise's standard deviation s is estimated from the residuals of the filter: they keep
+    1 - h of its variance, where h is the filter's weight on the sample itself (for a
+    least-squares filter the sum of its squared weights, so a smoothed point keeps h of the
+    variance). The chord's two ends lie a window apart, so its error across is s * sqrt(2 h),
+    and the heading's that over the chord's length.
+    """
+    half = window // 2
+    weight = float(savgol_coeffs(window, 3)[half])
+    residual = np.concatenate([x - xs, y - ys])[half:-half] if len(x) > 2 * half else x - xs
+    noise = float(np.sqrt(np.mean(residual**2) / (1 - weight)))
+    chord = np.hypot(
+        _shifted(xs, half) - _shifted(xs, -half), _shifted(ys, half) - _shifted(ys, -half)
+    )
+    return noise * math.sqrt(2 * weight) / np.maximum(chord, 1e-9)
+
+
+#: How many standard errors a fitted speed must exceed to show motion rather than noise.
+_SIGNIFICANT_SPEED = 3.0
+
+
+def _stands(times: Array, x: Array, y: Array, standing: float) -> bool:
+    """Whether an actor stands over these raw samples: the slope of a straight line fitted to
+    x and to y (least squares) is below the standing speed, or within what the noise about
+    the line (estimated from the residuals) makes of a standing actor's slope."""
+    if len(times) < 4:
+        return False
+    t = times - times.mean()
+    spread = float((t**2).sum())
+    speeds, errors = [], []
+    for values in (x, y):
+        slope = float((t * (values - values.mean())).sum() / spread)
+        residual = values - values.mean() - slope * t
+        errors.append(float(np.sqrt((residual**2).sum() / (len(t) - 2) / spread)))
+        speeds.append(slope)
+    return bool(math.hypot(*speeds) < max(standing, _SIGNIFICANT_SPEED * math.hypot(*errors)))
 
 
 def _shifted(values: Array, by: int) -> Array:
