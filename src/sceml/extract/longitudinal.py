@@ -198,12 +198,15 @@ def within_limits(
     what they were; returns a note for each.
 
     A speed that jumps (a player's step change: the preview's DriveDistance, an esmini step
-    SpeedAction) is no motion at a rate. A jump to a speed at which the actor drives on is
-    extracted as a step, a DriveDistance at the jump's midpoint (its distance is set by
-    `drive_distances`), which replays it as recorded. A jump to standing cannot be one (a
-    DriveDistance at 0 m/s never finishes): it becomes a Stop at the limit with the same
+    SpeedAction) is no motion at a rate. A jump from standing to a speed is extracted as a
+    step, a DriveDistance at the jump's midpoint (its distance is set by `drive_distances`),
+    which replays it as recorded. Other jumps become a ramp at the limit with the same
     midpoint, so the actor covers the same distance by the ramp's end; in between it is off by
-    up to (speed change)² / (8 × limit).
+    up to (speed change)² / (8 × limit). A DriveDistance to standing never finishes; one of an
+    actor that moved before is warned about for the carla profile (scenario_runner counts its
+    distance from the act's start, SCEML-Y003); and under
+    noise a steep ramp of a moving actor is often fitted as a near-jump, which a step would
+    then make worse.
     """
     notes = []
     for event in events:
@@ -216,13 +219,13 @@ def within_limits(
             continue
         middle = (event.start + event.end) / 2
         target = _target(event)
-        if target > standing:
+        if target > standing and event.from_speed <= standing:
             event.kind = "DriveDistance"
             event.start = event.end = event.finish = middle
             event.parameters = {"speed": round(target, 2)}
             notes.append(
-                f"{event.actor}: the speed jumped from {event.from_speed:.2f} to {target:g} m/s "
-                f"at {middle:.2f} s ({rate:g} m/s², above the {kind} limit of {limit:g} m/s²); "
+                f"{event.actor}: the speed jumped from standing to {target:g} m/s at "
+                f"{middle:.2f} s ({rate:g} m/s², above the {kind} limit of {limit:g} m/s²); "
                 "it is extracted as a step of the speed, a DriveDistance"
             )
             continue
