@@ -49,14 +49,17 @@ def speed_events(motion: Motion, thresholds: Thresholds) -> list[Event]:
         )
         if fitted is None:
             continue
-        t1, t2, v0, v1 = fitted
+        t1, t2, v0, v1, starts = fitted
         if t1 < thresholds.min_wait:
             t1 = float(motion.times[0])  # a change from the first moments: from the start
+            starts = None
         if abs(v1 - v0) < thresholds.min_speed_change:
             continue
         if v1 < v0 and t1 <= motion.times[0] and not motion.moving[0]:
             continue  # slowing down from the start of an actor that stands: the filter's edge
-        events.append(_event(motion.name, t1, t2, v0, v1, thresholds))
+        event = _event(motion.name, t1, t2, v0, v1, thresholds)
+        event.start_range = starts
+        events.append(event)
     return events
 
 
@@ -101,9 +104,10 @@ def _fit_ramp(
     after: int,
     step: float,
     anchor: float,
-) -> tuple[float, float, float, float] | None:
+) -> tuple[float, float, float, float, tuple[float, float] | None] | None:
     """Least-squares fit of the distance driven over [before, after]: speed v0 until t1, a
-    linear change to v1 at t2, then v1.
+    linear change to v1 at t2, then v1; and on a noisy recording the range of starts that
+    fit as well (`_start_range`), else None.
 
     For fixed t1 and t2 the distance is linear in (s0, v0, v1), so each candidate pair is one
     small linear least-squares problem (solved together, by their normal equations); the pairs
@@ -135,7 +139,38 @@ def _fit_ramp(
         anchored = _best_ramp(window, values, np.array([times[0]]), coarse[1] + fine)
         if anchored is not None and anchored[4] - error <= 6 * variance:
             t1, t2, v0, v1, error = anchored
-    return t1, t2, max(v0, 0.0), max(v1, 0.0)
+            return t1, t2, max(v0, 0.0), max(v1, 0.0), None
+    starts_range = _start_range(window, values, t1, t2, step, error, variance)
+    return t1, t2, max(v0, 0.0), max(v1, 0.0), starts_range
+
+
+#: A ramp whose squared error exceeds the best one's by less than this many times the noise's
+#: variance fits as well (the 95 % bound of a likelihood-ratio test for one parameter: the
+#: start, with the midpoint held).
+_AS_WELL = 3.84
+#: Below this spread (m²) of the residuals per sample a recording is clean: its starts are exact.
+_CLEAN_VARIANCE = 1e-4
+
+
+def _start_range(
+    window: Array, values: Array, t1: float, t2: float, step: float, error: float, variance: float
+) -> tuple[float, float] | None:
+    """The earliest and latest start of ramps with the midpoint of (t1, t2) that fit as well
+    as the best (squared `error`) within the noise's `variance`: how well the noise lets the
+    start be told. None on a clean recording, whose start is as fitted."""
+    if variance < _CLEAN_VARIANCE:
+        return None
+    bound = error + _AS_WELL * variance
+    middle = (t1 + t2) / 2
+    starts = np.arange(max(window[0], middle - 4.0), middle - step / 4, step / 4)
+    kept = []
+    for start in starts:
+        fitted = _best_ramp(window, values, np.array([start]), np.array([2 * middle - start]))
+        if fitted is not None and fitted[4] <= bound:
+            kept.append(float(start))
+    if not kept:
+        return None
+    return min(kept[0], t1), max(kept[-1], t1)
 
 
 #: How many times the noise's variance a ramp must explain beyond a steady speed to count
@@ -215,10 +250,16 @@ def within_limits(
         rate = float(str(event.parameters["rate"]))
         speeding_up = event.kind == "Accelerate"
         limit = acceleration if speeding_up else deceleration
-        if limit is None or rate <= limit:
-            continue
         middle = (event.start + event.end) / 2
         target = _target(event)
+        if limit is None or rate <= limit:
+            if limit is not None and event.start_range is not None:
+                # Only starts that keep the rate within the limit.
+                latest = middle - abs(target - event.from_speed) / (2 * limit)
+                low, high = event.start_range
+                event.start_range = (low, min(high, max(latest, event.start)))
+            continue
+        event.start_range = None
         if target > standing and event.from_speed <= standing:
             event.kind = "DriveDistance"
             event.start = event.end = event.finish = middle
