@@ -157,7 +157,7 @@ def _actor(
         thresholds.standing_speed,
     )
     events = sorted(speeds + path_events(motion, kind, thresholds, road_map), key=lambda e: e.start)
-    drive_distances(events, float(motion.times[-1]))
+    drive_distances(events, motion)
     speed = _initial_speed(motion, events, thresholds.standing_speed)
     length = spec.length if spec and spec.length else track.length
     width = spec.width if spec and spec.width else track.width
