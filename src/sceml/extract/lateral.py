@@ -133,7 +133,8 @@ def _lane_change(motion: Motion, first: int, last: int, thresholds: Thresholds) 
     # Sideways is judged against the heading before the change; but within the smoothing's
     # first half window that heading already shows the change (its chord reaches into it),
     # so there the heading after it is taken: a lane change ends heading as it began.
-    if first >= reach // 2:
+    # So is a heading the noise leaves unsure (an actor setting off, whose chord is short).
+    if first >= reach // 2 and motion.heading_error[first] <= _HEADING_ERROR:
         h0 = float(motion.heading[first])
     else:
         h0 = float(np.median(motion.heading[last : last + reach + 1]))
