@@ -107,19 +107,22 @@ def _classify(
 def _turned(motion: Motion, first: int, last: int, span: int) -> float:
     """How far the heading turned from before `first` to after `last`: the medians over `span`
     samples either side, which noise moves less than single samples. Samples where the actor
-    moves with a heading the noise leaves unsure (starting off slowly) are left out when there
-    are others: those where it moves surely, else those where it stands (its heading held)."""
+    moves with a heading the noise leaves unsure (setting off slowly) are left out: those where
+    it moves surely count, else those where it stands (its heading held); with neither on a
+    side, nothing is known to have turned (0)."""
     sure = motion.moving & (motion.heading_error <= _HEADING_ERROR)
     usable = sure | ~motion.moving
 
-    def median(lo: int, hi: int) -> float:
+    def median(lo: int, hi: int) -> float | None:
         values = motion.heading[lo:hi]
         for mask in (sure[lo:hi], usable[lo:hi]):
             if mask.any():
                 return float(np.median(values[mask]))
-        return float(np.median(values))
+        return None
 
-    return median(last, last + span + 1) - median(max(first - span, 0), first + 1)
+    after = median(last, last + span + 1)
+    before = median(max(first - span, 0), first + 1)
+    return 0.0 if after is None or before is None else after - before
 
 
 def _lane_change(motion: Motion, first: int, last: int, thresholds: Thresholds) -> Event | None:

@@ -7,6 +7,8 @@ then each one's start and end are refined by least squares against the profile a
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 from numpy.typing import NDArray
 from scipy.signal import savgol_filter
@@ -16,8 +18,25 @@ from .motion import Array, Motion
 from .thresholds import Thresholds
 
 
-def speed_events(motion: Motion, thresholds: Thresholds) -> list[Event]:
-    """The actor's speed changes as Accelerate, Decelerate and Stop events, in time order."""
+@dataclass(frozen=True)
+class RateLimits:
+    """The most an actor kind can accelerate and brake (m/s²; None: no limit), and the speed
+    (m/s) below which it stands."""
+
+    acceleration: float | None
+    deceleration: float | None
+    standing: float
+
+
+def speed_events(
+    motion: Motion, thresholds: Thresholds, limits: RateLimits | None = None
+) -> list[Event]:
+    """The actor's speed changes as Accelerate, Decelerate and Stop events, in time order.
+
+    With `limits`, a change of an actor already moving is fitted among the ramps its kind can
+    drive (a constrained least-squares fit); one from standing may still fit as a jump, which
+    `within_limits` makes a step.
+    """
     step = motion.step
     window = max(5, int(round(thresholds.smoothing_window / step)) | 1)
     acceleration = savgol_filter(
@@ -28,7 +47,7 @@ def speed_events(motion: Motion, thresholds: Thresholds) -> list[Event]:
     events = []
     bounds = [0, *[k for span in spans for k in span], len(motion.times) - 1]
     # The plateaus either side weigh in up to this many samples: enough to pin v0 and v1.
-    margin = int(3.0 / step)
+    margin = int(6.0 / step)
     edge = len(motion.times) - max(1, int(thresholds.smoothing_window / step))
     for i, (a, b) in enumerate(spans):
         if a >= edge:
@@ -46,6 +65,7 @@ def speed_events(motion: Motion, thresholds: Thresholds) -> list[Event]:
             # Only a ramp of an actor already moving is taken back to the start: a standing
             # actor's start is an event of its own, whose time a condition may explain.
             thresholds.smoothing_window if motion.moving[0] else 0.0,
+            limits,
         )
         if fitted is None:
             continue
@@ -104,6 +124,7 @@ def _fit_ramp(
     after: int,
     step: float,
     anchor: float,
+    limits: RateLimits | None = None,
 ) -> tuple[float, float, float, float, tuple[float, float] | None] | None:
     """Least-squares fit of the distance driven over [before, after]: speed v0 until t1, a
     linear change to v1 at t2, then v1; and on a noisy recording the range of starts that
@@ -122,11 +143,11 @@ def _fit_ramp(
     reach = (max(b - a, 4) + 6) * step
     starts = np.arange(max(times[before], times[a] - reach), min(times[a] + reach, times[b]), step)
     ends = np.arange(max(times[a], times[b] - reach), min(times[b] + reach, times[after]), step)
-    coarse = _best_ramp(window, values, starts, ends)
+    coarse = _best_ramp(window, values, starts, ends, limits)
     if coarse is None:
         return None
     fine = np.arange(-step, step + 1e-9, step / 4)
-    refined = _best_ramp(window, values, coarse[0] + fine, coarse[1] + fine)
+    refined = _best_ramp(window, values, coarse[0] + fine, coarse[1] + fine, limits)
     t1, t2, v0, v1, error = refined or coarse
     variance = error / max(len(window) - 5, 1)
     if _steady_error(window, values) - error <= _SIGNIFICANT * variance:
@@ -136,7 +157,7 @@ def _fit_ramp(
         # with a short plateau that follows the noise. It is taken from the start when that
         # fits as well as noise allows: within a few times the noise's variance, which the
         # free fit's residual estimates (as in a likelihood-ratio test for one parameter more).
-        anchored = _best_ramp(window, values, np.array([times[0]]), coarse[1] + fine)
+        anchored = _best_ramp(window, values, np.array([times[0]]), coarse[1] + fine, limits)
         if anchored is not None and anchored[4] - error <= 6 * variance:
             t1, t2, v0, v1, error = anchored
             return t1, t2, max(v0, 0.0), max(v1, 0.0), None
@@ -186,9 +207,10 @@ def _steady_error(window: Array, values: Array) -> float:
 
 
 def _best_ramp(
-    window: Array, values: Array, starts: Array, ends: Array
+    window: Array, values: Array, starts: Array, ends: Array, limits: RateLimits | None = None
 ) -> tuple[float, float, float, float, float] | None:
-    """The (t1, t2, v0, v1, squared error) of the candidate pairs that fits `values` best."""
+    """The (t1, t2, v0, v1, squared error) of the candidate pairs that fits `values` best;
+    with `limits`, of those a moving actor can drive (when there are any)."""
     t1, t2 = (grid.ravel() for grid in np.meshgrid(starts, ends, indexing="ij"))
     keep = (t2 > t1 + 1e-9) & (t1 >= window[0]) & (t2 <= window[-1])
     t1, t2 = t1[keep], t2[keep]
@@ -202,6 +224,13 @@ def _best_ramp(
     solution = np.linalg.solve(normal + 1e-9 * np.eye(3), right[..., None])[..., 0]
     fitted = np.einsum("pni,pi->pn", design, solution)
     errors = ((fitted - values) ** 2).sum(axis=1)
+    if limits is not None:
+        v0, v1 = solution[:, 1], solution[:, 2]
+        rate = np.abs(v1 - v0) / (t2 - t1)
+        allowed = np.where(v1 > v0, limits.acceleration or np.inf, limits.deceleration or np.inf)
+        possible = (v0 <= limits.standing) | (rate <= allowed * (1 + 1e-6))
+        if possible.any():
+            errors = np.where(possible, errors, np.inf)
     best = int(np.argmin(errors))
     return (
         float(t1[best]),

@@ -19,7 +19,7 @@ from .actors import ActorSpec, actor_kind, start_position
 from .assemble import Inferred, add_actor_graph
 from .events import Event
 from .lateral import path_events
-from .longitudinal import drive_distances, speed_events, within_limits
+from .longitudinal import RateLimits, drive_distances, speed_events, within_limits
 from .motion import Motion, sample_step, smooth
 from .recording import Recording, Track
 from .replay import ReplayFit, replay
@@ -148,13 +148,14 @@ def _actor(
 ) -> tuple[ExtractedActor, scm.Actor, list[str]]:
     """One actor: its kind, maneuvers, start and speed, added to the scenario; and notes."""
     kind = actor_kind(track, motion, spec, ego=track.name == ego)
-    speeds = speed_events(motion, thresholds)
-    notes = within_limits(
-        speeds,
-        kind,
+    rates = RateLimits(
         limits.limit(kind, "max_acceleration"),
         limits.limit(kind, "max_deceleration"),
         thresholds.standing_speed,
+    )
+    speeds = speed_events(motion, thresholds, rates)
+    notes = within_limits(
+        speeds, kind, rates.acceleration, rates.deceleration, thresholds.standing_speed
     )
     events = sorted(speeds + path_events(motion, kind, thresholds, road_map), key=lambda e: e.start)
     drive_distances(events, motion)
