@@ -95,25 +95,36 @@ def smooth(track: Track, thresholds: Thresholds, step: float | None = None) -> M
     # Standing still, the smoothed noise would add up to a distance never driven.
     lengths[~(moving[1:] | moving[:-1])] = 0.0
     arc = np.concatenate([[0.0], np.cumsum(lengths)])
-    along = _along(x, y, xs, ys, arc, heading, thresholds.standing_speed, speed)
-    error = _heading_error(x, y, xs, ys, window)
+    noise = _noise(x, y, xs, ys, window)
+    along = _along(x, y, xs, ys, arc, heading, thresholds.standing_speed, speed, noise)
+    error = _heading_error(xs, ys, window, noise)
     return Motion(track.name, times, xs, ys, speed, moving, heading, turn_rate, arc, along, error)
 
 
-def _heading_error(x: Array, y: Array, xs: Array, ys: Array, window: int) -> Array:
-    """The standard deviation (rad) of the heading, the direction of the chord across the
-    window, that position noise gives it.
+def _noise(x: Array, y: Array, xs: Array, ys: Array, window: int) -> float:
+    """The standard deviation (m) of the position noise, from the residuals of the filter.
 
-    The noise's standard deviation s is estimated from the residuals of the filter: they keep
-    1 - h of its variance, where h is the filter's weight on the sample itself (for a
-    least-squares filter the sum of its squared weights, so a smoothed point keeps h of the
-    variance). The chord's two ends lie a window apart, so its error across is s * sqrt(2 h),
-    and the heading's that over the chord's length.
+    They keep 1 - h of the noise's variance, h being the filter's weight on a sample itself.
+    The spread is taken robustly (1.4826 times the median absolute residual, which is the
+    standard deviation for Gaussian noise): a clean recording of a sudden start has large
+    residuals only about the start, where the cubic rings, and stays clean.
     """
     half = window // 2
     weight = float(savgol_coeffs(window, 3)[half])
-    residual = np.concatenate([x - xs, y - ys])[half:-half] if len(x) > 2 * half else x - xs
-    noise = float(np.sqrt(np.mean(residual**2) / (1 - weight)))
+    inside = slice(half, len(x) - half) if len(x) > 2 * half else slice(None)
+    residual = np.concatenate([(x - xs)[inside], (y - ys)[inside]])
+    return float(1.4826 * np.median(np.abs(residual)) / math.sqrt(1 - weight))
+
+
+def _heading_error(xs: Array, ys: Array, window: int, noise: float) -> Array:
+    """The standard deviation (rad) that position noise gives the heading, the direction of
+    the chord across the window. The chord's two ends lie a window apart, each keeping h of
+    the noise's variance (the filter's weight on a sample itself: for a least-squares filter
+    the sum of its squared weights), so its error across is noise * sqrt(2 h), and the
+    heading's that over the chord's length.
+    """
+    half = window // 2
+    weight = float(savgol_coeffs(window, 3)[half])
     chord = np.hypot(
         _shifted(xs, half) - _shifted(xs, -half), _shifted(ys, half) - _shifted(ys, -half)
     )
@@ -185,7 +196,7 @@ def _heading(
     return heading
 
 
-#: Below this spread (m) of the raw positions about the smoothed path a recording is clean.
+#: Below this noise (m, `_noise`) a recording is clean.
 _CLEAN = 0.02
 
 
@@ -198,6 +209,7 @@ def _along(
     heading: Array,
     standing: float,
     speed: Array,
+    noise: float,
 ) -> Array:
     """Each raw sample's distance along the path.
 
@@ -206,7 +218,7 @@ def _along(
     is placed along the smoothed path instead: the smoothed arc plus its offset along the
     heading, which cuts tight corners by a few centimetres.
     """
-    if float(np.sqrt(np.mean((x - xs) ** 2 + (y - ys) ** 2))) < _CLEAN:
+    if noise < _CLEAN:
         lengths = np.hypot(np.diff(x), np.diff(y))
         lengths[(speed[1:] + speed[:-1]) / 2 <= standing / 10] = 0.0
         return np.concatenate([[0.0], np.cumsum(lengths)])
