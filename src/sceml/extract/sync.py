@@ -238,9 +238,12 @@ def _location(
     for other in others:
         if other.at(other.speed, start) <= thresholds.standing_speed:
             continue
-        # The place is `radius` further on along the other's path, so that it enters the
-        # circle about that place at the start.
-        ahead = other.at(other.arc, start) + radius
+        # The place is `radius` further on along the other's path, less half a step's travel,
+        # so that it enters the circle about that place at the start, half a step clear of the
+        # boundary either side (a place right on it fires a step late or early in a replay,
+        # by the rounding of its coordinates).
+        margin = other.at(other.speed, start) * other.step / 2
+        ahead = other.at(other.arc, start) + radius - margin
         when = float(np.interp(ahead, other.arc, other.times))
         x, y = other.position(when)
         heading = other.at(other.heading, when)
