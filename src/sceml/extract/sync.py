@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from numpy.typing import NDArray
 
+from ..simulate import DEFAULT_STEP
 from .events import Event
 from .motion import Array, Motion
 from .thresholds import Thresholds
@@ -238,11 +239,11 @@ def _location(
     for other in others:
         if other.at(other.speed, start) <= thresholds.standing_speed:
             continue
-        # The place is `radius` further on along the other's path, less half a step's travel,
-        # so that it enters the circle about that place at the start, half a step clear of the
-        # boundary either side (a place right on it fires a step late or early in a replay,
-        # by the rounding of its coordinates).
-        margin = other.at(other.speed, start) * other.step / 2
+        # The place is `radius` further on along the other's path, less half a replay step's
+        # travel, so that it enters the circle about that place at the start, half a step
+        # clear of the boundary either side (a place right on it fires a step late or early
+        # in a replay, by the rounding of its coordinates).
+        margin = other.at(other.speed, start) * DEFAULT_STEP / 2
         ahead = other.at(other.arc, start) + radius - margin
         when = float(np.interp(ahead, other.arc, other.times))
         x, y = other.position(when)
