@@ -18,8 +18,8 @@ from __future__ import annotations
 
 import argparse
 from collections.abc import Callable
-from typing import TypeAlias
 from pathlib import Path
+from typing import TypeAlias
 
 from lxml import etree
 
