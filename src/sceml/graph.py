@@ -21,6 +21,18 @@ def successors(node: scm.GraphElement) -> list[scm.GraphElement]:
     return [flow.target for flow in node.outgoing if flow.target is not None]
 
 
+def finishes_with_first(node: object) -> bool:
+    """Whether `node` goes on once its first predecessor has finished, not all of them.
+
+    True for a JoinOneFinished and for an end node with the joinOne policy; every other node
+    waits for all its predecessors. The one statement of that rule: export, simulation, the
+    diagrams, the editor and the player check all read it from here.
+    """
+    if isinstance(node, scm.EndNode):
+        return node.policy is scm.JoinPolicy.joinOne
+    return isinstance(node, scm.JoinOneFinished)
+
+
 def nodes_of(graph: scm.Graph, kind: type[N]) -> list[N]:
     """The nodes of a graph that are instances of `kind`."""
     return [node for node in graph.nodes if isinstance(node, kind)]

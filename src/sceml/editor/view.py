@@ -14,6 +14,7 @@ import scemlmodel as scm
 
 from .. import catalog
 from ..diagnostics import Diagnostic
+from ..graph import finishes_with_first
 from ..modules import naming
 from ..render.flow import inner_scope
 from ..render.labels import (
@@ -58,7 +59,7 @@ def look(node: EObject) -> str:
         return catalog.category(node) or "longitudinal"
     if isinstance(node, scm.ModuleUse):
         return "module" if loaded_definition(node) is not None else "brokenModule"
-    if isinstance(node, scm.EndNode) and node.policy is not None and node.policy.name == "joinOne":
+    if isinstance(node, scm.EndNode) and finishes_with_first(node):
         return "endOne"
     return _LOOKS.get(node.eClass.name, "longitudinal")
 

@@ -181,9 +181,7 @@ def _needed(end: scm.EndNode, finish: dict[str, float | None]) -> set[str]:
     while stack:
         node = stack.pop()
         before = [p for p in graph.predecessors(node) if not isinstance(p, scm.RootNode)]
-        one = isinstance(node, scm.JoinOneFinished) or (
-            isinstance(node, scm.EndNode) and node.policy is scm.JoinPolicy.joinOne
-        )
+        one = graph.finishes_with_first(node)
         done = [p for p in before if finish.get(str(p.name)) is not None]
         if one and done:
             before = [min(done, key=lambda p: finish[str(p.name)] or 0.0)]

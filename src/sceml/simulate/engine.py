@@ -21,7 +21,7 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
-from ..graph import predecessors, successors
+from ..graph import finishes_with_first, predecessors, successors
 from ..players.meaning import FLOW_DELAY_STEPS
 from .behaviours import Behaviour, behaviour_for
 from .conditions import Test, condition_for
@@ -178,9 +178,7 @@ class Scheduler:
 
 def _state(node: EObject) -> NodeState:
     actor = getattr(node, "referenceActor", None)
-    needs_all = not isinstance(node, scm.JoinOneFinished) and not (
-        isinstance(node, scm.EndNode) and getattr(node.policy, "name", "joinAll") == "joinOne"
-    )
+    needs_all = not finishes_with_first(node)
     return NodeState(
         node,
         str(node.name),

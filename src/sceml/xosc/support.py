@@ -1,0 +1,99 @@
+"""Which node kinds each OpenSCENARIO version and profile can express, and why not when not."""
+
+from __future__ import annotations
+
+from ..schema import SUPPORTED_VERSIONS as VERSIONS
+from .profiles import CARLA_VERSION, PROFILES, default_version
+
+__all__ = [
+    "CARLA_VERSION",
+    "MAPPED_KINDS",
+    "PROFILES",
+    "default_version",
+    "unsupported_reason",
+    "unsupported_setting",
+]
+
+#: The node kinds the exporter maps (each has a planner in `sceml.export.actions`, which refuses
+#: to register one for a kind not listed here; a test checks that every kind listed has one).
+MAPPED_KINDS = frozenset(
+    {
+        "Accelerate",
+        "Approach",
+        "Cross",
+        "Decelerate",
+        "DriveDistance",
+        "Follow",
+        "FollowTrajectory",
+        "InLocationRadius",
+        "InPort",
+        "InVehicleRadius",
+        "JoinAllFinished",
+        "JoinOneFinished",
+        "KeepVelocity",
+        "LaneChange",
+        "OpaqueAction",
+        "OutPort",
+        "Overtake",
+        "SpeedCondition",
+        "Stop",
+        "TimeElapsed",
+        "TimeHeadway",
+        "TimeToCollision",
+        "TraveledDistance",
+        "TurnLeft",
+        "TurnRight",
+    }
+)
+
+#: Node kinds that never become events: the root starts the act, the end feeds the StopTrigger,
+#: module uses are flattened away before mapping.
+STRUCTURAL = ("RootNode", "EndNode", "ModuleUse")
+
+#: Kinds scenario_runner cannot run faithfully, with the reason (see docs/openscenario-mapping.md).
+CARLA_UNSUPPORTED = {
+    "TimeElapsed": "scenario_runner starts a condition delay when the act starts, not when the "
+    "node is activated, so a duration after activation cannot be expressed",
+    "KeepVelocity": "its duration is a condition delay, which scenario_runner starts when the act "
+    "starts, not when the node is activated",
+}
+
+
+def unsupported_reason(kind_name: str, version: str, profile: str = "generic") -> str | None:
+    """Why `kind_name` cannot be exported to `version` under `profile`; None when it can."""
+    if profile not in PROFILES:
+        return f"unknown export profile {profile!r}; use one of {', '.join(PROFILES)}"
+    if version not in VERSIONS:
+        return f"OpenSCENARIO {version} is not supported; use one of {', '.join(VERSIONS)}"
+    if profile == "carla" and version != CARLA_VERSION:
+        return f"the carla profile writes OpenSCENARIO {CARLA_VERSION} only (scenario_runner reads no other)"
+    if kind_name in STRUCTURAL:
+        return None
+    if kind_name not in MAPPED_KINDS:
+        return f"{kind_name} has no OpenSCENARIO mapping"
+    if profile == "carla" and kind_name in CARLA_UNSUPPORTED:
+        return f"{kind_name} is not supported by the carla profile: {CARLA_UNSUPPORTED[kind_name]}"
+    return None
+
+
+#: Node settings OpenSCENARIO 1.0 has no attribute for: (feature, the value 1.0 always means).
+#: 1.1 added relativeDistanceType and coordinateSystem to the measuring conditions.
+_SINCE_1_1 = (("relativeDistanceType", "euclidean"), ("coordinateSystem", "entity"))
+
+
+def unsupported_setting(node: object, version: str) -> str | None:
+    """Why a node's settings (not its kind) cannot be said in `version`; None when they can."""
+    if version != "1.0":
+        return None
+    for feature, plain in _SINCE_1_1:
+        held = getattr(node, feature, None)
+        if held is not None and held.name != plain:
+            return (
+                f"{feature} {held.name} needs OpenSCENARIO 1.1 or later (1.0 measures {plain} only)"
+            )
+    return None
+
+
+def supported_kinds(version: str, profile: str = "generic") -> tuple[str, ...]:
+    """The action, join and port kinds that map for a version and profile."""
+    return tuple(k for k in sorted(MAPPED_KINDS) if unsupported_reason(k, version, profile) is None)
