@@ -91,6 +91,17 @@ def test_export_writes_xsd_valid_openscenario(client: TestClient, examples_copy:
     assert schema.validate_tree(schema.parse_file(target), "1.2") == []
 
 
+def test_export_without_a_version_writes_the_profiles_default(
+    client: TestClient, examples_copy: Path
+) -> None:
+    # The carla profile reads 1.0 only: the editor, like the CLI, must not default to 1.3 there.
+    target = examples_copy / "uis1-carla.xosc"
+    body = {"profile": "carla", "path": str(target)}
+    answer = client.post("/api/export", json=body)
+    assert answer.status_code == 200 and answer.json() == {"path": str(target), "version": "1.0"}
+    assert schema.parse_file(target).getroot().find("FileHeader").get("revMinor") == "0"
+
+
 def test_a_refused_export_is_422_with_diagnostics(examples_copy: Path) -> None:
     client = client_for(examples_copy / "uis1-logical.xmi")
     answer = client.post("/api/export", json={"path": str(examples_copy / "x.xosc")})

@@ -168,3 +168,11 @@ def test_world_positions_and_every_maneuver_export(tmp_path: Path) -> None:
         tree = export(b.scenario, version=version)
         names = [event.get("name") for event in tree.iter("Event")]
         assert "Overtake_1__back" in names and "Follow_1__gap_reached" in names
+
+
+def test_the_kinds_support_lists_are_exactly_those_with_a_planner() -> None:
+    # Validation reads MAPPED_KINDS without loading the exporter; the planners must agree.
+    from sceml.export.actions import PLANNERS
+    from sceml.xosc.support import MAPPED_KINDS
+
+    assert set(PLANNERS) == MAPPED_KINDS

@@ -9,12 +9,12 @@ import click
 
 from ..diagnostics import Diagnostic, Severity
 from ..errors import LoadError
-from ..export.profiles import PROFILES
 from ..io import Document, load
 from ..report import FileReport, exit_code, render
 from ..schema import SUPPORTED_VERSIONS
 from ..validation import OLDER_RELEASE, Limits, load_limits
 from ..validation import validate as validate_model
+from ..xosc.profiles import PROFILES
 from .common import ReportsMigrations, allow_option, emit_report, file_progress, report_options
 
 

@@ -22,6 +22,7 @@ from ..modules.library import definition_named
 from ..render.labels import loaded_definition
 from ..render.style import style_data
 from ..validation.incremental import IncrementalValidator
+from ..xosc.profiles import default_version
 from . import operations, palette, view
 from .changes import Recorder
 from .clipboard import copy_nodes
@@ -401,13 +402,14 @@ class EditorSession:
         return self.view()
 
     def export(
-        self, version: str = "1.3", profile: str = "generic", path: str | Path | None = None
+        self, version: str | None = None, profile: str = "generic", path: str | Path | None = None
     ) -> Path:
         """Export the scenario to OpenSCENARIO; a refusal is an ExportRefused with diagnostics."""
         if not isinstance(self.graph, scm.Scenario):
             raise OperationError("only a scenario can be exported, not a module")
-        _check_choice(version, "'version'")
         _check_choice(profile, "'profile'")
+        version = default_version(profile) if version is None else version
+        _check_choice(version, "'version'")
         target = self.path.with_suffix(".xosc") if path is None else self.allowed(path, "'path'")
         try:
             return export_to_file(

@@ -14,6 +14,7 @@ from typing import Any
 import scemlmodel as scm
 
 from ..players import meaning
+from ..xosc.support import MAPPED_KINDS
 from .context import Action, Context, Event
 from .entities import performance_of
 from .speeds import speed_dynamics
@@ -27,10 +28,12 @@ PLANNERS: dict[str, Planner] = {}
 
 
 def planner(*kinds: str) -> Callable[[Planner], Planner]:
-    """Register a planner for node kinds."""
+    """Register a planner for node kinds; each must be listed in `support.MAPPED_KINDS`."""
 
     def register(function: Planner) -> Planner:
         for kind in kinds:
+            if kind not in MAPPED_KINDS:
+                raise AssertionError(f"{kind} has a planner but is not in MAPPED_KINDS")
             PLANNERS[kind] = function
         return function
 

@@ -14,6 +14,7 @@ import scemlmodel as scm
 
 from .. import graph
 from ..errors import SceMLError
+from ..xosc.profiles import DEFAULT_VERSION
 from .actions import PLANNERS
 from .context import Context, Event, node_name
 from .entities import entity, init_actions
@@ -32,7 +33,7 @@ class MappingError(SceMLError):
 class Options:
     """What the caller decided: version, profile, header date, map text, parameter hook."""
 
-    version: str = "1.3"
+    version: str = DEFAULT_VERSION
     profile: str = "generic"
     date: str = "1970-01-01T00:00:00"
     logic_file: str = ""
@@ -92,7 +93,9 @@ def build_view(scenario: scm.Scenario, options: Options) -> View:
     story = names.claim(sanitize(root.scenarioName, "Scenario"))
     act = names.claim(f"{story}_Act")
     groups = _groups(ctx, actors, events)
-    stop = activation([finishes.get(p) for p in graph.predecessors(end)], _is_one(end), "End")
+    stop = activation(
+        [finishes.get(p) for p in graph.predecessors(end)], graph.finishes_with_first(end), "End"
+    )
     max_duration = ctx.values.text(root, "maxDuration")
     stop = _unique(names, [*stop, [simulation_time_over(max_duration, "End")]])
     env = environment(ctx, root, options.date)
@@ -117,12 +120,6 @@ def build_view(scenario: scm.Scenario, options: Options) -> View:
     )
 
 
-def _is_one(node: scm.GraphElement) -> bool:
-    if isinstance(node, scm.EndNode):
-        return node.policy is scm.JoinPolicy.joinOne
-    return isinstance(node, scm.JoinOneFinished)
-
-
 def _plan(ctx: Context, nodes: list[scm.GraphElement]) -> tuple[list[Event], dict[Any, str]]:
     """Events of every node in topological order, and each node's finish event."""
     finishes: dict[Any, str] = {}
@@ -134,7 +131,7 @@ def _plan(ctx: Context, nodes: list[scm.GraphElement]) -> tuple[list[Event], dic
             raise MappingError(f"{kind} has no OpenSCENARIO mapping", element=str(node.name))
         before = [finishes.get(p) for p in graph.predecessors(node)]
         node_events, finish = planner(
-            ctx, node, activation(before, _is_one(node), ctx.event_names[node])
+            ctx, node, activation(before, graph.finishes_with_first(node), ctx.event_names[node])
         )
         events.extend(node_events)
         finishes[node] = finish

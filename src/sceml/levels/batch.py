@@ -50,6 +50,7 @@ from .. import io
 from ..errors import SaveError, SceMLError
 from ..executors import Deferred, Executor, open_executor
 from ..safefiles import read_input
+from ..xosc.profiles import DEFAULT_VERSION
 from .apply import FlatTemplate, copy_scenario, set_level
 from .checks import SampleChecker
 from .manifest import SampleRecord
@@ -68,7 +69,7 @@ class BatchConfig:
     out_dir: Path
     paths: tuple[str, ...]
     formats: tuple[str, ...] = ("xosc",)
-    osc_version: str = "1.3"
+    osc_version: str = DEFAULT_VERSION
     stem: str = "sample"
     width: int = 5
     #: More folders the logical scenario's references may reach (see io.reading_roots).

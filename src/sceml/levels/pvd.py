@@ -32,6 +32,7 @@ import scemlmodel as scm
 
 from .. import io, schema
 from ..graph import root_node
+from ..xosc.profiles import DEFAULT_VERSION
 from .apply import FlatTemplate
 from .paths import LevelArgumentError, LevelError
 from .space import Dimension, ParameterSpace, parameter_space
@@ -58,7 +59,7 @@ def export_distribution(
     logical: Path,
     out_dir: Path,
     *,
-    version: str = "1.3",
+    version: str = DEFAULT_VERSION,
     mode: str = "auto",
     runs: int = 100,
     seed: int = 0,

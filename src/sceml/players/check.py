@@ -18,13 +18,13 @@ from ..export import build_xosc
 from ..maps import RoadMap, load_map
 from ..maps.reference import map_reference
 from ..modules import flatten
+from ..xosc.profiles import DEFAULT_VERSION
 from . import esmini
 from .checker import RunReport, check_run
 from .record import PlayerRun
 
 #: Readers of each player's log and trace files: (log, trace or None) -> PlayerRun.
 READERS: dict[str, Callable[[Path, Path | None], PlayerRun]] = {esmini.NAME: esmini.read}
-DEFAULT_VERSION = "1.3"
 
 
 def check_player_run(
