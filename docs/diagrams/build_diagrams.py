@@ -19,7 +19,8 @@ import graphviz
 from sceml.io import load, write_atomically
 from sceml.render import diagram, legend_graph, to_bytes
 from sceml.render.mapview import map_view
-from sceml.render.report import build_report, report_figures
+from sceml.review.figures import report_figures
+from sceml.review.page import build_report
 from sceml.validation import validate
 
 HERE = Path(__file__).resolve().parent

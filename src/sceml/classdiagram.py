@@ -8,7 +8,7 @@ from dataclasses import dataclass
 from functools import cache
 
 import graphviz
-from pyecore.ecore import EAttribute, EClass, EEnum, EReference
+from pyecore.ecore import EAttribute, EClass, EReference
 from pyecore.resources import URI, ResourceSet
 
 from . import catalog
@@ -219,13 +219,3 @@ def class_diagram(view: str) -> graphviz.Digraph:
         for edge in _edges(classes[name], show):
             graph.edge(edge.tail, edge.head, label=edge.label, **edge.style)
     return graph
-
-
-def enum_table() -> list[tuple[str, list[str]]]:
-    """Each enumeration with its literals, for the documentation."""
-    package = next(iter(_metamodel_classes().values())).ePackage
-    return [
-        (e.name, [literal.name for literal in e.eLiterals])
-        for e in package.eClassifiers
-        if isinstance(e, EEnum)
-    ]

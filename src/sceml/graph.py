@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from collections import deque
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Iterable, Sequence
 from typing import Any, Protocol, TypeVar
 
 import scemlmodel as scm
@@ -117,11 +117,3 @@ def topological_order(graph: scm.Graph) -> tuple[list[scm.GraphElement], set[scm
                 if indegree[successor] == 0:
                     queue.append(successor)
     return order, members - set(order)
-
-
-def all_graphs(root: scm.Scenario | scm.Library) -> Iterator[scm.Graph]:
-    """The scenario itself, or every module definition of a library."""
-    if isinstance(root, scm.Library):
-        yield from root.modules
-    else:
-        yield root

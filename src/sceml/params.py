@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Sequence
+from collections.abc import Sequence
 from typing import TypeAlias
 
 from pyecore.ecore import EObject
@@ -105,14 +105,6 @@ def describe(parameter: scm.ParameterValue | None, unit: str = "") -> str:
 def is_single_value(parameter: scm.ParameterValue | None) -> bool:
     """Unset or a Value: what a concrete scenario may hold."""
     return parameter is None or isinstance(parameter, scm.Value)
-
-
-def parameter_slots(
-    owner: EObject,
-) -> Iterator[tuple[catalog.ParameterSpec, scm.ParameterValue | None]]:
-    """Each numeric parameter of an object with what it holds (None when unset)."""
-    for spec in catalog.parameters(owner):
-        yield spec, owner.eGet(spec.name)
 
 
 def concrete(owner: EObject, name: str) -> float:

@@ -9,11 +9,11 @@ import graphviz
 import pytest
 from click.testing import CliRunner
 
-import sceml.render.report as report_module
+import sceml.review.page as report_module
 from sceml import io
 from sceml.cli import cli
 from sceml.render import DiagramTooLargeError, diagram, drawn_nodes
-from sceml.render.report import build_report
+from sceml.review.page import build_report
 
 REPO = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(REPO / "benchmarks"))

@@ -15,7 +15,8 @@ from sceml import io
 from sceml.build import ScenarioBuilder
 from sceml.diagnostics import Diagnostic, Severity
 from sceml.params import span
-from sceml.render.report import TEMPLATE, Figure, build_report
+from sceml.review.figure import Figure
+from sceml.review.page import TEMPLATE, build_report
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 

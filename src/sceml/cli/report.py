@@ -10,7 +10,8 @@ import click
 from ..diagnostics import Severity
 from ..io import load, write_atomically
 from ..render.flow import Modules
-from ..render.report import build_report, report_figures
+from ..review.figures import report_figures
+from ..review.page import build_report
 from ..validation import validate
 from .common import SceMLCommand, allow_option
 

@@ -73,10 +73,6 @@ def behaviour_for(node: EObject, world: World) -> Behaviour | None:
     return cls(node, world) if cls is not None else None
 
 
-def known_kinds() -> tuple[str, ...]:
-    return tuple(_KINDS)
-
-
 # --- longitudinal ---------------------------------------------------------------------------
 
 

@@ -21,10 +21,11 @@ from .. import catalog, params
 from ..diagnostics import Diagnostic, Severity
 from ..graph import actors, root_node
 from ..io import Document
+from ..render import MAX_DIAGRAM_NODES, labels, to_bytes
+from ..render.flow import Modules, flow_diagram
 from ..safexml import hardened_parser
 from ..templating import template
-from . import MAX_DIAGRAM_NODES, labels, to_bytes
-from .flow import Modules, flow_diagram
+from .figure import Figure
 
 _SVG_NAMESPACE = "http://www.w3.org/2000/svg"
 TEMPLATE = "report.html.j2"
@@ -47,21 +48,6 @@ class DiagnosticRow:
         diagnostic = self.diagnostic
         where = Path(diagnostic.file).name if diagnostic.file else ""
         return where + (f":{diagnostic.line}" if diagnostic.line else "")
-
-
-@dataclass(frozen=True)
-class Figure:
-    """An extra figure of the report, shown after the diagram under its own heading.
-
-    `svg` is an inline SVG element as text (trusted: made by sceml, never by the input file),
-    or empty when there is no picture; `note` is shown with it (e.g. why there is no picture);
-    `anchor` is the HTML id of the figure's box, so a page can link to it.
-    """
-
-    title: str
-    anchor: str
-    svg: str
-    note: str = ""
 
 
 @dataclass(frozen=True)
@@ -124,19 +110,6 @@ def build_report(
         actors=[_actor_row(actor) for actor in (actors(scenario) if scenario else [])],
         nodes=list(_node_rows(root, diagram.ids)),
     )
-
-
-def report_figures(document: Document) -> list[Figure]:
-    """The figures `sceml report` adds after the diagram: a scenario's map view (or why none),
-    and for a concrete scenario the preview run's timeline and metrics."""
-    if not isinstance(document.root, scm.Scenario):
-        return []
-    # matplotlib is loaded only when a scenario's report is made.
-    from ..simulate.report import report_figure as preview_figure
-    from .mapview import report_figure
-
-    preview = preview_figure(document)
-    return [report_figure(document), *([preview] if preview is not None else [])]
 
 
 def _title(document: Document) -> str:

@@ -9,10 +9,10 @@ import scemlmodel as scm
 from ..errors import SceMLError
 from ..graph import root_node
 from ..io import Document
-from ..render.report import Figure
-from .preview import simulate
-from .run import Run
-from .timeline import LABEL, ROW, WIDTH, timeline_svg
+from ..simulate.preview import simulate
+from ..simulate.run import Run
+from ..simulate.timeline import LABEL, ROW, WIDTH, timeline_svg
+from .figure import Figure
 
 TITLE = "Preview run"
 ANCHOR = "preview-run"
