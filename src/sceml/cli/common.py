@@ -188,6 +188,42 @@ def locate(
     return replace(diagnostic, file=where, line=line)
 
 
+def input_file(name: str = "file") -> Callable[[F], F]:
+    """The existing file a command reads, as a Path argument named `name`."""
+    return click.argument(name, type=click.Path(exists=True, dir_okay=False, path_type=Path))
+
+
+def output_file(help: str, *, metavar: str | None = None) -> Callable[[F], F]:
+    """-o/--output, required: the one file a command writes."""
+    return click.option(
+        "-o",
+        "--output",
+        required=True,
+        type=click.Path(dir_okay=False, path_type=Path),
+        metavar=metavar,
+        help=help,
+    )
+
+
+def output_folder(help: str) -> Callable[[F], F]:
+    """-o/--output DIR, required: the folder a command writes its files into (as `out_dir`)."""
+    return click.option(
+        "-o",
+        "--output",
+        "out_dir",
+        type=click.Path(file_okay=False, path_type=Path),
+        metavar="DIR",
+        required=True,
+        help=help,
+    )
+
+
+#: --seed, on every command that draws random numbers.
+seed_option = click.option(
+    "--seed", type=click.IntRange(min=0), default=0, show_default=True, help="Seed."
+)
+
+
 def allow_option(command: F) -> F:
     """--allow, on every command that reads a model: one more folder references may reach."""
     return click.option(

@@ -14,11 +14,11 @@ from ..levels.checks import validate_model
 from ..levels.concretize import concretize as make_concrete
 from ..levels.concretize import parse_assignment
 from ..reach import unreadable_from
-from .common import Parsed, SceMLCommand, allow_option, echo_diagnostics
+from .common import Parsed, SceMLCommand, allow_option, echo_diagnostics, input_file, output_file
 
 
 @click.command(cls=SceMLCommand)
-@click.argument("file", type=click.Path(exists=True, dir_okay=False, path_type=Path))
+@input_file()
 @click.option(
     "--set",
     "assignments",
@@ -27,14 +27,7 @@ from .common import Parsed, SceMLCommand, allow_option, echo_diagnostics
     help="Give a parameter a value in SI units, e.g. ego.Accelerate_1.targetSpeed=12. Repeatable. "
     "Paths are listed when an unknown one is given (see docs/levels.md).",
 )
-@click.option(
-    "-o",
-    "--output",
-    type=click.Path(dir_okay=False, path_type=Path),
-    metavar="OUT",
-    required=True,
-    help="Where to write the concrete scenario (.xmi); written atomically.",
-)
+@output_file("Where to write the concrete scenario (.xmi); written atomically.", metavar="OUT")
 @allow_option
 def concretize(
     file: Path, assignments: tuple[tuple[str, float], ...], output: Path, allow: tuple[Path, ...]

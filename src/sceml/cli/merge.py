@@ -10,7 +10,7 @@ import scemlmodel as scm
 
 from .. import io
 from ..diff.merge import merge as merge_models
-from .common import SceMLCommand
+from .common import SceMLCommand, output_file
 
 
 def _scenario_file() -> click.Path:
@@ -27,14 +27,10 @@ def _scenario(path: Path) -> scm.Scenario:
 @click.argument("base", type=_scenario_file())
 @click.argument("ours", type=_scenario_file())
 @click.argument("theirs", type=_scenario_file())
-@click.option(
-    "-o",
-    "--output",
-    required=True,
-    type=click.Path(dir_okay=False, path_type=Path),
-    metavar="OUT",
-    help="Where to write the merged scenario (atomically; may be OURS itself, as git's merge "
+@output_file(
+    "Where to write the merged scenario (atomically; may be OURS itself, as git's merge "
     "driver does). Nothing is written when there is a conflict.",
+    metavar="OUT",
 )
 @click.option(
     "--name",

@@ -10,12 +10,12 @@ from .. import io
 from ..levels.paths import UnknownPathError
 from ..levels.promote import load_ranges
 from ..levels.promote import promote as make_logical
-from .common import SceMLCommand, allow_option
+from .common import SceMLCommand, allow_option, input_file, output_file
 from .concretize import report_validation
 
 
 @click.command(cls=SceMLCommand)
-@click.argument("file", type=click.Path(exists=True, dir_okay=False, path_type=Path))
+@input_file()
 @click.option(
     "--ranges",
     "ranges_file",
@@ -25,14 +25,7 @@ from .concretize import report_validation
     help="YAML (or .json) file mapping parameter paths to values, ranges, distributions or "
     "positions; see examples/uis1-ranges.yaml and docs/levels.md.",
 )
-@click.option(
-    "-o",
-    "--output",
-    type=click.Path(dir_okay=False, path_type=Path),
-    metavar="OUT",
-    required=True,
-    help="Where to write the logical scenario (.xmi); written atomically.",
-)
+@output_file("Where to write the logical scenario (.xmi); written atomically.", metavar="OUT")
 @allow_option
 def promote(file: Path, ranges_file: Path, output: Path, allow: tuple[Path, ...]) -> None:
     """Promote FILE to the logical level with the ranges and distributions in RANGES.

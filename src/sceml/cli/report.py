@@ -13,18 +13,12 @@ from ..render.flow import Modules
 from ..review.figures import report_figures
 from ..review.page import build_report
 from ..validation import validate
-from .common import SceMLCommand, allow_option
+from .common import SceMLCommand, allow_option, input_file, output_file
 
 
 @click.command(cls=SceMLCommand)
-@click.argument("file", type=click.Path(exists=True, dir_okay=False, path_type=Path))
-@click.option(
-    "-o",
-    "--output",
-    required=True,
-    type=click.Path(dir_okay=False, path_type=Path),
-    help="HTML file to write (.html).",
-)
+@input_file()
+@output_file("HTML file to write (.html).")
 @click.option(
     "--modules",
     type=click.Choice(["collapsed", "expanded"]),

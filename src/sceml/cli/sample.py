@@ -28,7 +28,16 @@ from ..levels.sampling import STRATEGIES, plan_for, values_at
 from ..levels.space import parameter_space
 from ..schema import SUPPORTED_VERSIONS
 from ..validation import validate
-from .common import Parsed, SceMLCommand, allow_option, echo_diagnostics, executor_options
+from .common import (
+    Parsed,
+    SceMLCommand,
+    allow_option,
+    echo_diagnostics,
+    executor_options,
+    input_file,
+    output_folder,
+    seed_option,
+)
 
 _FORMATS = {"xmi": ("xmi",), "xosc": ("xosc",), "both": ("xosc", "xmi")}
 
@@ -42,7 +51,7 @@ atexit.register(gc.freeze)
 
 
 @click.command(cls=SceMLCommand)
-@click.argument("logical", type=click.Path(exists=True, dir_okay=False, path_type=Path))
+@input_file("logical")
 @click.option(
     "--strategy",
     type=click.Choice(STRATEGIES),
@@ -58,16 +67,8 @@ atexit.register(gc.freeze)
     help="Number of samples (required for random and lhs; caps the grid): 1000, 1e6 or 2^20. "
     "A count that this machine's free memory or the output's disk cannot hold is refused.",
 )
-@click.option("--seed", type=click.IntRange(min=0), default=0, show_default=True, help="Seed.")
-@click.option(
-    "-o",
-    "--output",
-    "out_dir",
-    type=click.Path(file_okay=False, path_type=Path),
-    metavar="DIR",
-    required=True,
-    help="Folder for the sampled files and manifest.csv / manifest.json.",
-)
+@seed_option
+@output_folder("Folder for the sampled files and manifest.csv / manifest.json.")
 @click.option(
     "--format",
     "file_format",
