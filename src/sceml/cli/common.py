@@ -110,10 +110,11 @@ class LazySceMLGroup(SceMLGroup):
 
     def format_commands(self, ctx: click.Context, formatter: click.HelpFormatter) -> None:
         """The list of commands, from their summaries: nothing is imported to show it."""
-        from .summaries import SUMMARIES
+        from .summaries import summaries
 
         names = self.list_commands(ctx)
-        if any(name not in SUMMARIES and name not in self.commands for name in names):
+        known = summaries(self.lazy_commands)
+        if any(name not in known and name not in self.commands for name in names):
             super().format_commands(ctx, formatter)  # a command without a summary: import all
             return
         limit = formatter.width - 6 - max(len(name) for name in names)
@@ -121,7 +122,7 @@ class LazySceMLGroup(SceMLGroup):
         for name in names:
             command = self.commands.get(name)
             if command is None:  # shortened by click's own rule, as the command would be
-                command = click.Command(name, help=SUMMARIES[name])
+                command = click.Command(name, help=known[name])
             if not command.hidden:
                 rows.append((name, command.get_short_help_str(limit)))
         with formatter.section("Commands"):
