@@ -16,7 +16,8 @@ from pathlib import Path
 
 import graphviz
 
-from sceml.io import load, write_atomically
+from sceml.files.writing import write_atomically
+from sceml.model.loading import load
 from sceml.render import diagram, legend_graph, to_bytes
 from sceml.render.mapview import map_view
 from sceml.review.figures import report_figures

@@ -7,13 +7,14 @@ from pathlib import Path
 import pytest
 from starlette.testclient import TestClient
 
-from sceml import io, schema
-from sceml.compare import differences
 from sceml.diagnostics import Severity
 from sceml.editor import EditorSession, SessionOptions
 from sceml.editor import app as app_module
 from sceml.editor.app import create_app
+from sceml.model.compare import differences
+from sceml.model.loading import load, load_library
 from sceml.validation import validate
+from sceml.xosc import schema
 
 
 def client_for(path: Path, **options: object) -> TestClient:
@@ -76,8 +77,8 @@ def test_save_writes_a_file_that_loads_back_equal_and_valid(
     saved = client.post("/api/save", json={"path": str(target)})
     assert saved.status_code == 200 and saved.json()["dirty"] is False
     assert saved.json()["document"]["name"] == "uis1-edited.xmi"
-    document = io.load(target)
-    original = io.load(examples_copy / "uis1-concrete.xmi")
+    document = load(target)
+    original = load(examples_copy / "uis1-concrete.xmi")
     changes = differences(original.root, document.root)
     assert changes and all("diagramPosition" in line for line in changes)
     found = validate(document.root, document=document)
@@ -141,7 +142,7 @@ def test_open_definition_edits_the_module_in_its_library(examples_copy: Path) ->
     }
     assert client.post("/api/ops", json={"ops": [op]}).status_code == 200
     assert client.post("/api/save", json={}).status_code == 200
-    library = io.load_library(examples_copy / "library" / "sceml-library.xmi").root
+    library = load_library(examples_copy / "library" / "sceml-library.xmi").root
     crossing = next(m for m in library.modules if m.name == "CrossingManeuver")
     moved = next(n for n in crossing.nodes if n.eClass.name == "Accelerate")
     assert moved.targetSpeed.parameter.name == "triggerRadius"

@@ -18,7 +18,7 @@ from editor.servers import Server, start
 from editor_e2e.test_editor import node, open_editor, ops_answer
 from playwright.sync_api import Browser, Page, expect
 
-from sceml import io
+from sceml.model.loading import load
 
 pytestmark = pytest.mark.skipif(
     not CHROMIUM.exists() and not os.environ.get("CI"),
@@ -27,7 +27,7 @@ pytestmark = pytest.mark.skipif(
 
 
 def names_in(path: Path) -> set[str]:
-    return {str(n.name) for n in io.load(path).root.nodes}
+    return {str(n.name) for n in load(path).root.nodes}
 
 
 def status(page: Page):  # noqa: ANN201 - a Playwright Locator

@@ -5,9 +5,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from sceml import io
-from sceml.compare import differences
 from sceml.importer import import_to_file
+from sceml.model.compare import differences
+from sceml.model.loading import load
 
 from .conftest import ECORE, REPO, Harness
 
@@ -24,7 +24,7 @@ def test_emf_reads_and_writes_an_imported_scenario_with_opaque_nodes(
     assert "OpaqueAction" in (source / "alks.xmi").read_text()
     result = emf.run("roundtrip", ECORE, source, out, Path("alks.xmi"))
     assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
-    original, from_emf = io.load(source / "alks.xmi"), io.load(out / "alks.xmi")
+    original, from_emf = load(source / "alks.xmi"), load(out / "alks.xmi")
     assert differences(original.root, from_emf.root) == []
 
 
@@ -38,7 +38,7 @@ def test_emf_reads_and_writes_an_imported_scenario_with_road_positions(
     assert (source / "road.xmi").read_text().count('xsi:type="scemlmodel:RoadPosition"') == 3
     result = emf.run("roundtrip", ECORE, source, out, Path("road.xmi"))
     assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
-    original, from_emf = io.load(source / "road.xmi"), io.load(out / "road.xmi")
+    original, from_emf = load(source / "road.xmi"), load(out / "road.xmi")
     assert differences(original.root, from_emf.root) == []
     lead = next(a for a in from_emf.root.nodes[0].actors if a.name == "Lead")
     assert lead.startPosition.h.value == 0.05
@@ -53,7 +53,7 @@ def test_emf_reads_and_writes_relative_positions_naming_their_actors(
     import_to_file(FILES / "relative-positions.xosc", source / "relative.xmi")
     result = emf.run("roundtrip", ECORE, source, out, Path("relative.xmi"))
     assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
-    original, from_emf = io.load(source / "relative.xmi"), io.load(out / "relative.xmi")
+    original, from_emf = load(source / "relative.xmi"), load(out / "relative.xmi")
     assert differences(original.root, from_emf.root) == []
     actors = {a.name: a for a in from_emf.root.nodes[0].actors}
     lead = actors["Lead"].startPosition
@@ -70,8 +70,8 @@ def test_emf_keeps_how_an_imported_time_to_collision_measures(emf: Harness, tmp_
     assert 'freespace="false"' in written and 'relativeDistanceType="longitudinal"' in written
     result = emf.run("roundtrip", ECORE, source, out, Path("ttc.xmi"))
     assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
-    from_emf = io.load(out / "ttc.xmi").root
-    assert differences(io.load(source / "ttc.xmi").root, from_emf) == []
+    from_emf = load(out / "ttc.xmi").root
+    assert differences(load(source / "ttc.xmi").root, from_emf) == []
     (ttc,) = [n for n in from_emf.nodes if n.eClass.name == "TimeToCollision"]
     assert (ttc.freespace, ttc.relativeDistanceType.name) == (False, "longitudinal")
 
@@ -84,9 +84,7 @@ def test_emf_reads_and_writes_an_imported_traveled_distance(emf: Harness, tmp_pa
     assert "scemlmodel:TraveledDistance" in (source / "traveled.xmi").read_text()
     result = emf.run("roundtrip", ECORE, source, out, Path("traveled.xmi"))
     assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
-    assert (
-        differences(io.load(source / "traveled.xmi").root, io.load(out / "traveled.xmi").root) == []
-    )
+    assert differences(load(source / "traveled.xmi").root, load(out / "traveled.xmi").root) == []
 
 
 def test_emf_keeps_how_an_imported_time_headway_measures(emf: Harness, tmp_path: Path) -> None:
@@ -97,9 +95,7 @@ def test_emf_keeps_how_an_imported_time_headway_measures(emf: Harness, tmp_path:
     assert 'coordinateSystem="lane"' in (source / "headway.xmi").read_text()
     result = emf.run("roundtrip", ECORE, source, out, Path("headway.xmi"))
     assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
-    assert (
-        differences(io.load(source / "headway.xmi").root, io.load(out / "headway.xmi").root) == []
-    )
+    assert differences(load(source / "headway.xmi").root, load(out / "headway.xmi").root) == []
 
 
 def test_emf_keeps_an_imported_lane_change_target(emf: Harness, tmp_path: Path) -> None:
@@ -111,4 +107,4 @@ def test_emf_keeps_an_imported_lane_change_target(emf: Harness, tmp_path: Path) 
     assert 'targetLane="-3"' in written and 'shape="cubic"' in written
     result = emf.run("roundtrip", ECORE, source, out, Path("lanes.xmi"))
     assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
-    assert differences(io.load(source / "lanes.xmi").root, io.load(out / "lanes.xmi").root) == []
+    assert differences(load(source / "lanes.xmi").root, load(out / "lanes.xmi").root) == []

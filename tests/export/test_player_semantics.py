@@ -16,10 +16,11 @@ import pytest
 from lxml import etree
 
 import scemlmodel as scm
-from sceml import graph, io
-from sceml.build import ScenarioBuilder, lane, world
 from sceml.export import build_xosc
 from sceml.export.names import SEPARATOR
+from sceml.model import graph
+from sceml.model.build import ScenarioBuilder, lane, world
+from sceml.model.loading import load_scenario
 from sceml.modules import flatten
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
@@ -69,7 +70,7 @@ def every_kind() -> scm.Scenario:
 
 
 def example(name: str) -> scm.Scenario:
-    return io.load_scenario(EXAMPLES / f"{name}-concrete.xmi").root
+    return load_scenario(EXAMPLES / f"{name}-concrete.xmi").root
 
 
 SCENARIOS = {

@@ -16,9 +16,10 @@ from lxml import etree
 from strategies import scenarios
 
 import scemlmodel as scm
-from sceml import graph, io
 from sceml.export import build_xosc
 from sceml.export.names import SEPARATOR, sanitize
+from sceml.model import graph
+from sceml.model.loading import load_scenario
 from sceml.modules.flatten import flatten
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
@@ -96,4 +97,4 @@ def test_triggers_rebuild_the_predecessor_structure(scenario: scm.Scenario, vers
 
 def test_round_trip_holds_for_the_flattened_examples() -> None:
     for name in ("uis1", "uis2"):
-        check_round_trip(io.load_scenario(EXAMPLES / f"{name}-concrete.xmi").root, "1.3")
+        check_round_trip(load_scenario(EXAMPLES / f"{name}-concrete.xmi").root, "1.3")

@@ -21,9 +21,9 @@ import pytest
 from pyecore.ecore import EAttribute, EObject, EReference
 
 import scemlmodel as scm
-from sceml import catalog, graph, params
 from sceml.export.names import sanitize
 from sceml.levels.space import dimension
+from sceml.model import catalog, graph, params
 
 #: Not behaviour: where the file is (map), what the header says (date, description, author),
 #: how the editor draws it (diagramPosition), the name.

@@ -6,7 +6,7 @@ import math
 
 import pytest
 
-from sceml.players import meaning
+from sceml.xosc import meaning
 
 
 def test_drive_distance_lasts_distance_over_speed() -> None:

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 import scemlmodel as scm
-from sceml.build import ScenarioBuilder, world
+from sceml.model.build import ScenarioBuilder, world
 from sceml.simulate import END_NODE, MAX_DURATION, simulate
 from sceml.simulate.geometry import Boxes, time_to_collision
 

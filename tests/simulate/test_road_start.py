@@ -10,10 +10,10 @@ from pathlib import Path
 import pytest
 
 import scemlmodel as scm
-from sceml.build import road
 from sceml.importer import import_file
 from sceml.maps import RoadMap, load_map
-from sceml.params import value
+from sceml.model.build import road
+from sceml.model.params import value
 from sceml.render.labels import describe_position
 from sceml.simulate import simulate
 from sceml.simulate.setup import make_actor

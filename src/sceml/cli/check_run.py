@@ -8,7 +8,7 @@ from pathlib import Path
 import click
 
 from ..players.check import READERS, check_player_run, format_report
-from ..schema import SUPPORTED_VERSIONS
+from ..xosc.schema import SUPPORTED_VERSIONS
 from .common import SceMLCommand, allow_option, input_file
 
 

@@ -14,7 +14,9 @@ import click
 
 from ..diagnostics import Diagnostic
 from ..errors import ArgumentError, SceMLError
-from ..io import Document, migration_notices, write_atomically
+from ..files.writing import write_atomically
+from ..model.documents import Document
+from ..model.xmiresource import migration_notices
 
 F = TypeVar("F", bound=Callable[..., Any])
 

@@ -10,10 +10,12 @@ from typing import TYPE_CHECKING
 import click
 
 from ..executors import Executor, check, open_executor
-from ..io import Document, load_scenario, make_folder, remove_folders, write_atomically
+from ..files.outputset import output_set
+from ..files.writing import make_folder, remove_folders, write_atomically
 from ..levels.counts import parse_count
-from ..outputset import output_set
-from ..schema import SUPPORTED_VERSIONS
+from ..model.documents import Document
+from ..model.loading import load_scenario
+from ..xosc.schema import SUPPORTED_VERSIONS
 from .common import (
     Parsed,
     SceMLCommand,

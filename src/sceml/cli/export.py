@@ -10,7 +10,7 @@ from ..errors import SceMLError
 from ..export import ExportError, export_to_file
 from ..export.versions import VERSIONS
 from ..export.writer import header_date
-from ..io import load_scenario
+from ..model.loading import load_scenario
 from ..xosc.profiles import PROFILES, default_version
 from .common import Parsed, SceMLCommand, allow_option, echo_diagnostics, input_file, output_file
 

@@ -8,7 +8,7 @@ import click
 
 from ..export.writer import header_date
 from ..levels.pvd import MODES, export_distribution
-from ..schema import DISTRIBUTION_VERSIONS
+from ..xosc.schema import DISTRIBUTION_VERSIONS
 from .common import Parsed, SceMLCommand, allow_option, input_file
 
 

@@ -11,7 +11,8 @@ import click
 
 from ..diagnostics import Severity
 from ..errors import ArgumentError
-from ..io import load_scenario, save
+from ..model.loading import load_scenario
+from ..model.saving import save
 from ..validation import validate
 from .common import Parsed, SceMLCommand, echo_diagnostics, input_file, output_file
 

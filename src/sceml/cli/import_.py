@@ -8,8 +8,9 @@ from pathlib import Path
 import click
 
 from ..diagnostics import Severity
+from ..files.safefiles import reading_roots
 from ..importer import import_to_file
-from ..io import load_scenario, reading_roots
+from ..model.loading import load_scenario
 from ..validation import validate
 from .common import SceMLCommand, allow_option, echo_diagnostics, input_file, output_file
 

@@ -8,8 +8,8 @@ from pathlib import Path
 
 import click
 
-from ..info import Summary, summarize
-from ..io import broken_references, load
+from ..model.info import Summary, summarize
+from ..model.loading import broken_references, load
 from .common import SceMLCommand, allow_option, exit_if_broken, input_file
 
 

@@ -8,8 +8,9 @@ import click
 
 import scemlmodel as scm
 
-from .. import io
 from ..diff.merge import merge as merge_models
+from ..model.loading import load_scenario
+from ..model.saving import save
 from .common import SceMLCommand, output_file
 
 
@@ -18,7 +19,7 @@ def _scenario_file() -> click.Path:
 
 
 def _scenario(path: Path) -> scm.Scenario:
-    root = io.load_scenario(path).root
+    root = load_scenario(path).root
     assert isinstance(root, scm.Scenario)
     return root
 
@@ -64,5 +65,5 @@ def merge(
             click.echo(f"{label}: conflict: {conflict}", err=True)
         click.echo(f"{label}: {len(result.conflicts)} conflict(s); nothing written", err=True)
         raise click.exceptions.Exit(1)
-    io.save(result.scenario, output, origin=ours)
+    save(result.scenario, output, origin=ours)
     click.echo(f"{label}: merged ({len(result.taken)} change(s) from THEIRS) into {output}")

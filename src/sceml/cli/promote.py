@@ -6,10 +6,11 @@ from pathlib import Path
 
 import click
 
-from .. import io
 from ..levels.paths import UnknownPathError
 from ..levels.promote import load_ranges
 from ..levels.promote import promote as make_logical
+from ..model.loading import load_scenario
+from ..model.saving import save
 from .common import SceMLCommand, allow_option, input_file, output_file
 from .concretize import report_validation
 
@@ -34,12 +35,12 @@ def promote(file: Path, ranges_file: Path, output: Path, allow: tuple[Path, ...]
     result is validated and written to OUT.
     """
     ranges = load_ranges(ranges_file)
-    document = io.load_scenario(file, allow=allow)
+    document = load_scenario(file, allow=allow)
     try:
         result = make_logical(document.root, ranges, source=ranges_file)
     except UnknownPathError as error:
         error.file = error.file or str(ranges_file)
         raise
-    io.save(result, output, origin=file)
+    save(result, output, origin=file)
     click.echo(f"wrote {output}")
     report_validation(result, output)

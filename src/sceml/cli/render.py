@@ -10,14 +10,10 @@ import click
 import scemlmodel as scm
 
 from ..errors import SceMLError
-from ..io import (
-    Document,
-    broken_references,
-    load,
-    model_path,
-    unresolved_references,
-    write_atomically,
-)
+from ..files.writing import write_atomically
+from ..model.documents import Document
+from ..model.loading import broken_references, load, unresolved_references
+from ..model.locating import model_path
 from ..render import FORMATS, MAX_DIAGRAM_NODES, ModuleChoiceError, View, diagram, to_bytes
 from ..render.flow import Modules
 from .common import SceMLCommand, allow_option, exit_if_broken, input_file, output_file

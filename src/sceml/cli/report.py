@@ -8,7 +8,8 @@ from typing import cast
 import click
 
 from ..diagnostics import Severity
-from ..io import load, write_atomically
+from ..files.writing import write_atomically
+from ..model.loading import load
 from ..render.flow import Modules
 from ..review.figures import report_figures
 from ..review.page import build_report

@@ -15,19 +15,20 @@ import numpy as np
 
 import scemlmodel as scm
 
-from .. import io
 from ..diagnostics import Severity
 from ..errors import ArgumentError, SceMLError
 from ..executors import check, open_executor
-from ..graph import root_node
 from ..levels.batch import BatchConfig, BatchResult, Rows, run_batch
 from ..levels.counts import SAMPLE_MEMORY_BYTES, check_count, parse_count
 from ..levels.manifest import SampleRecord, write_manifest
 from ..levels.paths import LevelError
 from ..levels.sampling import STRATEGIES, plan_for, values_at
 from ..levels.space import parameter_space
-from ..schema import SUPPORTED_VERSIONS
+from ..model.documents import Document
+from ..model.graph import root_node
+from ..model.loading import load_scenario
 from ..validation import validate
+from ..xosc.schema import SUPPORTED_VERSIONS
 from .common import (
     Parsed,
     SceMLCommand,
@@ -123,7 +124,7 @@ def sample(
     """
     check(executor, scheduler)
     try:
-        document = io.load_scenario(logical, allow=allow)
+        document = load_scenario(logical, allow=allow)
         scenario = document.root
         _require_logical(scenario, logical)
         _require_valid(document, logical)
@@ -244,7 +245,7 @@ def _require_logical(scenario: scm.Scenario, file: Path) -> None:
         raise LevelError(f"only logical scenarios are sampled; this one is {level}", file=file)
 
 
-def _require_valid(document: io.Document, file: Path) -> None:
+def _require_valid(document: Document, file: Path) -> None:
     # Samples only change numbers: rules about structure, actors and modules are checked once here.
     found = validate(document.root, document=document)
     errors = [d for d in found if d.severity >= Severity.ERROR]

@@ -10,8 +10,9 @@ from pathlib import Path
 
 import click
 
-from ..io import load_scenario, write_atomically
-from ..outputset import output_set
+from ..files.outputset import output_set
+from ..files.writing import write_atomically
+from ..model.loading import load_scenario
 from ..simulate import DEFAULT_STEP, Run, simulate
 from ..simulate.outputs import summary, trajectories_csv
 from ..simulate.timeline import shown_nodes

@@ -8,10 +8,10 @@ from pathlib import Path
 import click
 
 from ..report import exit_code, render
-from ..schema import SUPPORTED_VERSIONS
 from ..validation import Limits, load_limits
 from ..validation.files import validate_file
 from ..xosc.profiles import PROFILES
+from ..xosc.schema import SUPPORTED_VERSIONS
 from .common import ReportsMigrations, allow_option, emit_report, file_progress, report_options
 
 

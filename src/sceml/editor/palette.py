@@ -8,10 +8,10 @@ from typing import Any
 
 import scemlmodel as scm
 
-from .. import catalog
+from ..model import catalog
 from ..render import style
-from ..schema import SUPPORTED_VERSIONS
 from ..validation.context import is_kind
+from ..xosc.schema import SUPPORTED_VERSIONS
 from .fields import actor_kind_names, enum_options
 from .node_ops import JOIN_KINDS
 

@@ -12,9 +12,9 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
-from .. import catalog
 from ..diagnostics import Diagnostic
-from ..graph import finishes_with_first
+from ..model import catalog
+from ..model.graph import finishes_with_first
 from ..modules import naming
 from ..render.flow import inner_scope
 from ..render.labels import (

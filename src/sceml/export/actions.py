@@ -13,7 +13,7 @@ from typing import Any
 
 import scemlmodel as scm
 
-from ..players import meaning
+from ..xosc import meaning
 from ..xosc.support import MAPPED_KINDS
 from .context import Action, Context, Event
 from .entities import performance_of

@@ -13,7 +13,7 @@ from markupsafe import Markup
 
 import scemlmodel as scm
 
-from ..safexml import hardened_parser
+from ..files.safexml import hardened_parser
 from .actions import Plan, planner
 from .context import Action, Context, Event
 from .triggers import Condition, Group, with_extra

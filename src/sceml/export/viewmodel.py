@@ -12,8 +12,8 @@ from typing import Any
 
 import scemlmodel as scm
 
-from .. import graph
 from ..errors import SceMLError
+from ..model import graph
 from ..xosc.profiles import DEFAULT_VERSION
 from .actions import PLANNERS
 from .context import Context, Event, node_name

@@ -11,12 +11,13 @@ from lxml import etree
 
 import scemlmodel as scm
 
-from .. import graph, schema
 from ..diagnostics import Diagnostic
 from ..errors import ArgumentError, SceMLError
-from ..io import write_atomically
+from ..files.writing import write_atomically
 from ..maps.reference import is_town_name
+from ..model import graph
 from ..modules.flatten import expand
+from ..xosc import schema
 from ..xosc.profiles import DEFAULT_VERSION
 from ..xosc.support import unsupported_reason
 from . import checks

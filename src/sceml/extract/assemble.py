@@ -23,10 +23,10 @@ from typing import Any, cast
 
 import scemlmodel as scm
 
-from ..build import ScenarioBuilder, world
-from ..params import value
-from ..players.meaning import FLOW_DELAY_STEPS
+from ..model.build import ScenarioBuilder, world
+from ..model.params import value
 from ..simulate import DEFAULT_STEP
+from ..xosc.meaning import FLOW_DELAY_STEPS
 from .events import Event
 from .motion import Motion
 from .sync import Explanation, explain

@@ -16,7 +16,7 @@ from lxml import etree
 
 import scemlmodel as scm
 
-from .. import catalog
+from ..model import catalog
 from .actions import Motion, Request, _add
 from .context import Build, last_name
 from .positions import number

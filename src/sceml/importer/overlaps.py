@@ -14,7 +14,7 @@ from collections import deque
 
 import scemlmodel as scm
 
-from .. import catalog
+from ..model import catalog
 from .context import Build
 
 _AXES = {

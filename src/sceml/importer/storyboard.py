@@ -13,7 +13,7 @@ from lxml import etree
 
 import scemlmodel as scm
 
-from .. import params
+from ..model import params
 from . import markers, traced
 from .actions import Motion, Request, map_action
 from .context import Build, last_name

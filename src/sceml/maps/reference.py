@@ -6,7 +6,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..safefiles import reading_roots
+from ..files.safefiles import reading_roots
 
 
 def is_town_name(map_text: str) -> bool:

@@ -18,7 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..safefiles import check_inside
+from ..files.safefiles import check_inside
 from .model import (
     Junction,
     LaneBand,

@@ -21,9 +21,9 @@ from lxml import etree
 
 import scemlmodel as scm
 
-from .. import graph
 from ..export.names import SEPARATOR
 from ..maps import RoadMap
+from ..model import graph
 from .goals import goal_problems
 from .record import EventRun, PlayerRun
 

@@ -14,10 +14,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .. import catalog
+from ..model import catalog
 from ..simulate.run import Run
+from ..xosc.meaning import FLOW_DELAY_STEPS
 from .checker import RunReport, required
-from .meaning import FLOW_DELAY_STEPS
 from .record import PlayerRun
 
 #: What counts as agreeing (issue 25): node starts within this many seconds, positions within

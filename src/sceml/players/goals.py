@@ -14,8 +14,8 @@ from pyecore.ecore import EObject
 
 from ..maps import RoadMap
 from ..maps.positions import centre
-from ..params import concrete
-from . import meaning
+from ..model.params import concrete
+from ..xosc import meaning
 from .record import PlayerRun, Trace
 
 #: How far a speed may be off its goal at the finish (m/s): one step of a typical rate.

@@ -28,7 +28,7 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
-from ..graph import (
+from ..model.graph import (
     finishes_with_first,
     predecessors,
     reachable,

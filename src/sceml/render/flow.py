@@ -17,10 +17,10 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
-from .. import catalog
 from ..errors import SceMLError
-from ..graph import finishes_with_first
-from ..io import uri_fragment
+from ..model import catalog
+from ..model.graph import finishes_with_first
+from ..model.locating import uri_fragment
 from . import style
 from .labels import (
     Scope,

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import scemlmodel as scm
 
-from ..io import Document
+from ..model.documents import Document
 from .figure import Figure
 
 

@@ -6,8 +6,8 @@ from pathlib import Path
 
 import scemlmodel as scm
 
-from ..io import Document
 from ..maps import MapError
+from ..model.documents import Document
 from ..render.mapscene import MapViewError, build_scene
 from ..render.mapview import draw, inline_svg, to_bytes
 from .figure import Figure as ReportFigure

@@ -17,13 +17,13 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
-from .. import catalog, params
 from ..diagnostics import Diagnostic, Severity
-from ..graph import actors, root_node
-from ..io import Document
+from ..files.safexml import hardened_parser
+from ..model import catalog, params
+from ..model.documents import Document
+from ..model.graph import actors, root_node
 from ..render import MAX_DIAGRAM_NODES, labels, to_bytes
 from ..render.flow import Modules, flow_diagram
-from ..safexml import hardened_parser
 from ..templating import template
 from .figure import Figure
 

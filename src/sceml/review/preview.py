@@ -7,8 +7,8 @@ from html import escape
 import scemlmodel as scm
 
 from ..errors import SceMLError
-from ..graph import root_node
-from ..io import Document
+from ..model.documents import Document
+from ..model.graph import root_node
 from ..simulate.preview import simulate
 from ..simulate.run import Run
 from ..simulate.timeline import LABEL, ROW, WIDTH, timeline_svg

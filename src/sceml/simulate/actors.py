@@ -11,7 +11,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Protocol
 
-from ..players.meaning import GapLimits, gap_acceleration
+from ..xosc.meaning import GapLimits, gap_acceleration
 from .paths import Path
 
 

@@ -21,8 +21,8 @@ import scemlmodel as scm
 
 from ..export.entities import performance_of
 from ..maps import RoadMap
-from ..params import concrete
-from ..players import meaning
+from ..model.params import concrete
+from ..xosc import meaning
 from . import lanes
 from .actors import Actor, GapKeeping, Hold, Ramp, Shift
 from .paths import LaneSpot, Path, joined, straight

@@ -14,8 +14,8 @@ from collections.abc import Callable
 from pyecore.ecore import EObject
 
 from ..maps.resolve import is_relative
-from ..params import concrete
-from ..players import meaning
+from ..model.params import concrete
+from ..xosc import meaning
 from .actors import Actor
 from .geometry import free_distance_now
 from .world import World

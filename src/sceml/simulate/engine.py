@@ -21,8 +21,8 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
-from ..graph import finishes_with_first, predecessors, successors
-from ..players.meaning import FLOW_DELAY_STEPS
+from ..model.graph import finishes_with_first, predecessors, successors
+from ..xosc.meaning import FLOW_DELAY_STEPS
 from .behaviours import Behaviour, behaviour_for
 from .conditions import Test, condition_for
 from .run import END_NODE, MAX_DURATION, NodeRecord

@@ -10,7 +10,8 @@ from pathlib import Path
 
 from ..diagnostics import Diagnostic, Severity
 from ..errors import LoadError
-from ..io import Document, load
+from ..model.documents import Document
+from ..model.loading import load
 from ..report import FileReport
 from .engine import OLDER_RELEASE
 from .engine import validate as validate_model

@@ -22,9 +22,9 @@ from pathlib import Path
 
 import scemlmodel as scm
 
-from .. import catalog
-from ..config import load_config
 from ..errors import LoadError, SceMLError
+from ..files.config import load_config
+from ..model import catalog
 
 #: The limit names a table may use, with what each bounds.
 LIMIT_KEYS = {

@@ -9,9 +9,9 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
-from .. import catalog
 from ..diagnostics import Severity
-from ..params import describe
+from ..model import catalog
+from ..model.params import describe
 from .context import Context, is_kind
 from .registry import Finding, constraint
 

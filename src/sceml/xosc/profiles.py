@@ -6,7 +6,7 @@ the list of versions loaded.
 
 from __future__ import annotations
 
-from ..schema import SUPPORTED_VERSIONS
+from .schema import SUPPORTED_VERSIONS
 
 PROFILES = ("generic", "carla")
 #: The one OpenSCENARIO version scenario_runner reads.

@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-from ..schema import SUPPORTED_VERSIONS as VERSIONS
 from .profiles import CARLA_VERSION, PROFILES, default_version
+from .schema import SUPPORTED_VERSIONS as VERSIONS
 
 __all__ = [
     "CARLA_VERSION",

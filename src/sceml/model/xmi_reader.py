@@ -2,7 +2,7 @@
 
 pyecore's decoder (`XMIResource._decode_eobject` and `_decode_ereferences`) builds each object
 through its generic setters; this reader walks the same lxml tree and writes the same end state
-with `sceml.fastobjects`: the same objects in the same order, attribute values converted by the
+with `sceml.model.fastobjects`: the same objects in the same order, attribute values converted by the
 same `from_string`, references resolved the same way (cross-file ones as lazy `EProxy`s), the same
 `uuid_dict`, `_isset` order, containers, opposite ends and `_inverse_rels`.
 

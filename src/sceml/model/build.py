@@ -16,9 +16,9 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
+from ..errors import BuildError
 from . import catalog
 from .copying import detached
-from .errors import BuildError
 from .params import ParameterInput, as_parameter
 
 
@@ -139,7 +139,7 @@ class GraphBuilder:
     ) -> scm.ActionNode:
         """Add a maneuver or condition performed by `actor`.
 
-        Numeric parameters take numbers or parameter values (see `sceml.params`); positions take
+        Numeric parameters take numbers or parameter values (see `sceml.model.params`); positions take
         `world(...)` or `lane(...)`; other attributes (e.g. `direction="right"`) take their literal.
         """
         cls = _kind_class(kind, "ActionNode")

@@ -9,7 +9,7 @@ from pathlib import Path
 
 import yaml
 
-from .errors import LoadError
+from ..errors import LoadError
 from .safefiles import read_input
 
 #: Configuration files (limits, ranges) are small; anything bigger is a mistake or an attack.

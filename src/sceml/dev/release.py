@@ -6,7 +6,7 @@ import shutil
 from pathlib import Path
 
 from ..errors import SceMLError
-from . import ecore
+from ..migrations import ecore
 
 #: What is exported from each concrete example when a release is kept: (version, profile).
 EXPORTS = (("1.0", "generic"), ("1.3", "generic"), ("1.0", "carla"))
@@ -14,8 +14,8 @@ EXPORTS = (("1.0", "generic"), ("1.3", "generic"), ("1.0", "carla"))
 
 def keep_release(root: Path) -> Path:
     """Copy the current release's metamodel and material into the history; the new folder."""
-    from .. import io
     from ..export.writer import ExportError, export_to_file
+    from ..model.loading import load_scenario
 
     current = ecore.read(root / "metamodel" / "scemlmodel.ecore")
     folder = root / "metamodel" / "history" / current.version
@@ -32,7 +32,7 @@ def keep_release(root: Path) -> Path:
             shutil.copyfile(library, folder / "examples" / "library" / library.name)
         shutil.copyfile(root / "maps" / "intersection.xodr", folder / "maps" / "intersection.xodr")
         for example in sorted((folder / "examples").glob("*-concrete.xmi")):
-            document = io.load_scenario(example)
+            document = load_scenario(example)
             for version, profile in EXPORTS:
                 suffix = version if profile == "generic" else profile
                 target = folder / "exports" / f"{example.stem}-{suffix}.xosc"

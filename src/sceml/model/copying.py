@@ -61,7 +61,7 @@ class Copier:
     copies' non-containment references at the copies of their targets, or at the original target
     when it was not copied (e.g. an actor outside a copied node).
 
-    Copies are built with `sceml.fastobjects`, which leaves the state pyecore's setters would;
+    Copies are built with `sceml.model.fastobjects`, which leaves the state pyecore's setters would;
     what it does not cover (a proxy being copied, a reference set before `copy_references`, the
     opposite end of a reference to an object that was not copied) goes through those setters.
     With `direct = False` everything does, as `SetterCopier` below.

@@ -6,8 +6,10 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
 
-from .. import io
-from .report import Report
+from ..files.writing import write_atomically
+from ..migrations.report import Report
+from .loading import load
+from .saving import save
 
 
 @dataclass(frozen=True)
@@ -31,9 +33,9 @@ def migrate_file(
 
     A file already of the current release is left alone when rewritten in place. With `backup`,
     the original bytes are kept beside it as `FILE.<release>.bak` before it is replaced. The
-    file is read and written through sceml.io (the same safety and atomic write as every save).
+    file is read and written through sceml.model (the same safety and atomic write as every save).
     """
-    document = io.load(source, allow=allow)
+    document = load(source, allow=allow)
     report = document.migration
     target = output if output is not None else source
     if report is None and output is None:
@@ -41,6 +43,6 @@ def migrate_file(
     kept = None
     if backup and output is None and report is not None:
         kept = source.with_name(f"{source.name}.{report.from_release}.bak")
-        io.write_atomically(kept, source.read_bytes())
-    io.save(document.root, target, origin=source)
+        write_atomically(kept, source.read_bytes())
+    save(document.root, target, origin=source)
     return Outcome(source, target, report, kept)

@@ -35,8 +35,8 @@ from lxml import etree
 
 from sceml.diagnostics import Diagnostic, Severity
 from sceml.errors import LoadError, SceMLError
-from sceml.safefiles import read_input
-from sceml.safexml import doctype_line, hardened_parser, has_dtd
+from sceml.files.safefiles import read_input
+from sceml.files.safexml import doctype_line, hardened_parser, has_dtd
 
 if TYPE_CHECKING:
     import xmlschema
@@ -262,7 +262,7 @@ def parse_file(path: str | os.PathLike[str]) -> etree._ElementTree:
     Raises UnsafeXMLError for documents with a DOCTYPE (checked before parsing, so entity
     bombs are never expanded and external entities never fetched) and XMLParseError for
     malformed XML; both carry ``file`` and ``line`` and print gcc-style as ``file:line: ...``.
-    Files above ``sceml.safexml.max_bytes_limit()`` (64 MiB, or $SCEML_MAX_BYTES), and anything
+    Files above ``sceml.files.safexml.max_bytes_limit()`` (64 MiB, or $SCEML_MAX_BYTES), and anything
     but a regular file (a FIFO, a device), raise SchemaError unread. OSError propagates for
     missing or unreadable files.
     """

@@ -17,8 +17,8 @@ The bundle is ``asam-qc-openscenarioxml`` (module ``qc_openscenario``, CLI
   generated "N issue(s) are found." suffix, which the in-process mode does not add.
 
 Before handing a file to the bundle (whose parser is lxml's default one) the file and a
-literal RoadNetwork/LogicFile are screened with :mod:`sceml.schema`'s hardened reader, so
-documents with a DOCTYPE raise :class:`sceml.schema.UnsafeXMLError`.
+literal RoadNetwork/LogicFile are screened with :mod:`sceml.xosc.schema`'s hardened reader, so
+documents with a DOCTYPE raise :class:`sceml.xosc.schema.UnsafeXMLError`.
 
 By design the bundle only applies its 1.2.0 rules (references, parameters, data types) to
 OpenSCENARIO >= 1.2; for older files only the basic XML and schema checks run and
@@ -45,9 +45,9 @@ from typing import Any, Final, cast
 
 from lxml import etree
 
-from sceml import schema
 from sceml.diagnostics import Diagnostic, Severity
 from sceml.errors import SceMLError
+from sceml.xosc import schema
 
 __all__ = [
     "CheckerStatus",

@@ -4,7 +4,7 @@ Reading: regular files only (a FIFO would block, a device such as /dev/zero neve
 the allowed folders when the caller names them, and never more than a byte limit, counted while
 reading: a special file's reported size means nothing (/dev/zero reports 0).
 
-Writing: an output replaces a regular file (atomically, in `sceml.io`) or creates a new one. A
+Writing: an output replaces a regular file (atomically, in `sceml.model`) or creates a new one. A
 device, FIFO or socket is refused, never replaced or written through; a symbolic link is
 followed to the regular file it names, which is replaced, and the link is left as it was.
 """
@@ -17,7 +17,7 @@ import stat
 from collections.abc import Iterable
 from pathlib import Path
 
-from .errors import LoadError, SaveError
+from ..errors import LoadError, SaveError
 from .safexml import MAX_BYTES_VARIABLE, max_bytes_limit, size_problem
 
 # Enough for one read of a typical model; a regular file is read in one call of its own size.

@@ -6,12 +6,12 @@ from __future__ import annotations
 from collections.abc import Iterable
 from pathlib import Path
 
+from ..diagnostics import Diagnostic, Severity
+from ..errors import SceMLError
+from ..report import FileReport
 from . import schema
-from .diagnostics import Diagnostic, Severity
-from .errors import SceMLError
+from .mapcheck import map_diagnostics
 from .qualitychecker import quality_diagnostics
-from .report import FileReport
-from .xosc_map import map_diagnostics
 
 #: The largest file ASAM's Quality Checker is run on by default. The bundle is far slower than
 #: our own checks on large files (a 20 MB file took 144 s, where the XSD and map checks took
@@ -30,7 +30,7 @@ def check_file(
     passes its XSD and whose map could be read, up to `quality_max_bytes` (above, an info says it
     was skipped). A file that cannot be read at all is reported as unreadable, not raised. Its
     LogicFile is read from its folder, its project root and `allow` only
-    (`sceml.safefiles.reading_roots`)."""
+    (`sceml.files.safefiles.reading_roots`)."""
     try:
         tree = schema.parse_file(path)
         version = schema.declared_version(tree)

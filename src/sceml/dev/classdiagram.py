@@ -11,7 +11,7 @@ import graphviz
 from pyecore.ecore import EAttribute, EClass, EReference
 from pyecore.resources import URI, ResourceSet
 
-from . import catalog
+from ..model import catalog
 
 #: The metamodel split into views a person can read; a class may appear in several.
 VIEWS: dict[str, tuple[str, ...]] = {

@@ -17,7 +17,7 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
 
-from .errors import SaveError
+from ..errors import SaveError
 from .safefiles import output_target
 
 

@@ -15,7 +15,7 @@ from pyecore.ecore import EClass, EObject
 
 import scemlmodel as scm
 
-from .safexml import hardened_parser
+from ..files.safexml import hardened_parser
 
 NODE_ANNOTATION = "http://sceml.org/node"
 PARAMETER_ANNOTATION = "http://sceml.org/parameter"

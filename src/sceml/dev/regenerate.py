@@ -7,7 +7,7 @@ import shutil
 import tempfile
 from pathlib import Path
 
-from .errors import SceMLError
+from ..errors import SceMLError
 
 
 def project_root() -> Path:

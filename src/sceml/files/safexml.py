@@ -1,6 +1,6 @@
 """What every XML reader of SceML shares: a size limit, a hardened parser, and refusing DTDs.
 
-Scenario and library XMI (`sceml.io`), OpenSCENARIO files (`sceml.schema`), OpenDRIVE maps
+Scenario and library XMI (`sceml.model`), OpenSCENARIO files (`sceml.xosc.schema`), OpenDRIVE maps
 (`sceml.maps`), and the XML SceML makes itself (the export's text, Graphviz's SVG) are all parsed
 with `hardened_parser`: it is the only place that builds an lxml parser. Each reader keeps its
 own error types and messages.
@@ -13,7 +13,7 @@ import os
 
 from lxml import etree
 
-from .errors import LoadError
+from ..errors import LoadError
 
 #: Files larger than this (64 MiB) are refused before parsing; a 50,000-node scenario is ~15 MB.
 DEFAULT_MAX_BYTES = 64 * 1024 * 1024

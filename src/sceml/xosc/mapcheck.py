@@ -16,13 +16,13 @@ from typing import TYPE_CHECKING, Final
 
 from lxml import etree
 
-from .diagnostics import Diagnostic, Severity
-from .maps import MapError
-from .maps.reference import is_town_name
-from .safefiles import reading_roots
+from ..diagnostics import Diagnostic, Severity
+from ..files.safefiles import reading_roots
+from ..maps import MapError
+from ..maps.reference import is_town_name
 
 if TYPE_CHECKING:
-    from .maps.roadmap import RoadMap
+    from ..maps.roadmap import RoadMap
 
 MAP_CODE: Final = "XOSC-MAP"
 MAP_SKIPPED_CODE: Final = "XOSC-MAP-SKIPPED"
@@ -52,7 +52,7 @@ def map_diagnostics(
                 line=logic.sourceline if logic is not None else None,
             )
         ]
-    from .maps.roadmap import load_map  # numpy and pyclothoids only when there is a map
+    from ..maps.roadmap import load_map  # numpy and pyclothoids only when there is a map
 
     map_path = (path.resolve().parent / text).resolve()
     try:

@@ -1,5 +1,5 @@
 """Which files a model names (module libraries, its map), and which of them a copy written
-into another folder could no longer read by the reading rule (`sceml.safefiles.reading_roots`).
+into another folder could no longer read by the reading rule (`sceml.files.safefiles.reading_roots`).
 
 `concretize` writes where it is told; a library or map that the new file's folder and project
 root do not hold is refused when the file is read back, unless `--allow` names its folder. The
@@ -14,9 +14,9 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
+from ..files.safefiles import is_inside, reading_roots
+from ..maps.reference import map_reference
 from .graph import root_node
-from .maps.reference import map_reference
-from .safefiles import is_inside, reading_roots
 from .traversal import all_contents
 
 
