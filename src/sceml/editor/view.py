@@ -273,15 +273,14 @@ class Lister:
 
 
 def diagnostic_json(diagnostic: Diagnostic, node: str | None, actor: str | None) -> dict[str, Any]:
-    """A Diagnostic as the protocol's JSON."""
+    """A Diagnostic as the protocol's JSON: Diagnostic.to_json's fields the page shows, and the
+    node or actor it is about."""
+    shown = diagnostic.to_json()
     return {
-        "severity": str(diagnostic.severity),
-        "code": diagnostic.code,
-        "message": diagnostic.message,
-        "path": diagnostic.path,
+        **{key: shown[key] for key in ("severity", "code", "message", "path")},
         "node": node,
         "actor": actor,
-        "line": diagnostic.line,
+        "line": shown["line"],
     }
 
 
