@@ -92,6 +92,22 @@ def test_export_writes_xsd_valid_openscenario(client: TestClient, examples_copy:
     assert schema.validate_tree(schema.parse_file(target), "1.2") == []
 
 
+def test_the_view_offers_the_exporters_versions_and_profiles(client: TestClient) -> None:
+    # The page types none of them: the export dialog's selects are filled from these.
+    choices = client.get("/api/view").json()["choices"]
+    assert choices["oscVersions"] == ["1.0", "1.1", "1.2", "1.3"]
+    assert choices["profiles"] == ["generic", "carla"]
+
+
+def test_export_with_an_empty_version_writes_the_profiles_default(
+    client: TestClient, examples_copy: Path
+) -> None:
+    # What the page sends when "the profile's default" is chosen.
+    target = examples_copy / "uis1-generic.xosc"
+    answer = client.post("/api/export", json={"version": "", "path": str(target)})
+    assert answer.status_code == 200 and answer.json() == {"path": str(target), "version": "1.3"}
+
+
 def test_export_without_a_version_writes_the_profiles_default(
     client: TestClient, examples_copy: Path
 ) -> None:

@@ -11,6 +11,7 @@ import scemlmodel as scm
 from ..model import catalog
 from ..render import style
 from ..validation.context import is_kind
+from ..xosc.profiles import PROFILES
 from ..xosc.schema import SUPPORTED_VERSIONS
 from .fields import actor_kind_names, enum_options
 from .node_ops import JOIN_KINDS
@@ -113,6 +114,7 @@ def choices() -> dict[str, list[str]]:
         "cloudStates": enum_options(scm.CloudState),
         "precipitationTypes": enum_options(scm.PrecipitationType),
         "oscVersions": list(SUPPORTED_VERSIONS),
+        "profiles": list(PROFILES),
     }
 
 
