@@ -74,10 +74,16 @@ def _unit(value: EObject) -> str:
         return ""
 
 
+#: The values a concrete scenario may not hold (SCEML-P001); the editor offers the others.
+SPREAD_KINDS = ("Range", "Distribution")
+#: The values only a module definition may hold (SCEML-P008).
+MODULE_ONLY_KINDS = ("ParameterRef",)
+
+
 @constraint(
     "SCEML-P001",
     ERROR,
-    ("Range", "Distribution"),
+    SPREAD_KINDS,
     "a concrete scenario holds single values: no range or distribution",
     paper_rule="2",
     through_modules=True,
@@ -207,7 +213,7 @@ def values_physically_meaningful(value: EObject, context: Context) -> Iterator[F
 @constraint(
     "SCEML-P008",
     ERROR,
-    "ParameterRef",
+    MODULE_ONLY_KINDS,
     "a parameter reference sits inside a module definition and names one of its parameters",
 )
 def parameter_ref_in_its_module(ref: scm.ParameterRef, context: Context) -> Iterator[Finding]:
