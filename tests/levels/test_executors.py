@@ -188,7 +188,7 @@ def test_ctrl_c_while_files_are_written_finishes_them_first(tmp_path: Path, monk
             os.kill(os.getpid(), signal.SIGINT)  # as a terminal's Ctrl-C, mid-write
         real(path, data)
 
-    monkeypatch.setattr(batch.io, "write_atomically", ctrl_c_then_write)
+    monkeypatch.setattr(batch, "write_atomically", ctrl_c_then_write)
     space, indices, rows = _uis2_rows(40)
     with open_executor("local") as executor:
         result = run_batch(
