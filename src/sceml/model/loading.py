@@ -12,9 +12,7 @@ from pyecore.resources.xmi import XMIResource
 import scemlmodel as scm
 
 from ..errors import LoadError, SceMLError
-from ..files.safefiles import (
-    reading_roots,
-)
+from ..files.safefiles import reading_roots
 from .documents import Document, new_resource_set
 from .locating import model_path
 from .traversal import all_contents, cross_references, stored

@@ -7,7 +7,8 @@ from pyecore.ecore import EObject
 from pyecore.resources.xmi import XMIResource
 
 
-def _line_in(resource: XMIResource, obj: EObject) -> int | None:
+def line_in(resource: XMIResource, obj: EObject) -> int | None:
+    """The line of the element `obj` was read from in `resource`'s file, if known."""
     element = _element_of(resource, obj)
     return element.sourceline if element is not None else None
 

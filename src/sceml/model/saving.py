@@ -18,7 +18,7 @@ from ..files.writing import write_atomically
 from .documents import new_resource_set
 from .loading import unresolved_references
 from .locating import model_path
-from .xmiresource import _FLOAT_TYPES, _INT_RANGE, _INT_TYPES
+from .xmiresource import FLOAT_TYPES, INT_RANGE, INT_TYPES
 
 
 def save(root: EObject, path: str | Path, *, origin: str | Path | None = None) -> Path:
@@ -83,15 +83,15 @@ def _refuse_unreadable_values(root: EObject, path: Path) -> None:
     for obj in [root, *root.eAllContents()]:
         for attribute in obj.eClass.eAllAttributes():
             name = attribute.eType.name
-            if name not in _FLOAT_TYPES and name not in _INT_TYPES:
+            if name not in FLOAT_TYPES and name not in INT_TYPES:
                 continue
             value = obj.eGet(attribute)
             for item in list(value) if attribute.many else [value]:
                 if item is None:
                     continue
-                if name in _FLOAT_TYPES and not math.isfinite(item):
+                if name in FLOAT_TYPES and not math.isfinite(item):
                     problem = f"{attribute.name} is {item}, which EMF cannot read"
-                elif name in _INT_TYPES and not _INT_RANGE[0] <= item <= _INT_RANGE[1]:
+                elif name in INT_TYPES and not INT_RANGE[0] <= item <= INT_RANGE[1]:
                     problem = f"{attribute.name}={item} does not fit a 32-bit int"
                 else:
                     continue

@@ -28,7 +28,7 @@ from ..files.safexml import (
 )
 from . import xmi_reader
 from .collector import collector_paused
-from .locating import _line_in
+from .locating import line_in
 from .traversal import all_contents
 
 # Deeper documents are refused by libxml2 itself (its limit without huge_tree is 256 levels), so
@@ -42,10 +42,10 @@ _MODULE_REPR = re.compile(r"<module '([\w.]+)' from '[^']*'>")
 # float() would also take "1_000", "inf" and "nan", which EMF refuses when it reads the file back.
 _DECIMAL = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?")
 _INTEGER = re.compile(r"[+-]?\d+")
-_INT_RANGE = (-(2**31), 2**31 - 1)  # EInt is a Java int
-_FLOAT_TYPES = frozenset({"EDouble", "EDoubleObject", "EFloat", "EFloatObject"})
-_INT_TYPES = frozenset({"EInt", "EIntegerObject", "EShort", "EShortObject", "EByte", "EByteObject"})
-_BOOLEAN_TYPES = frozenset({"EBoolean", "EBooleanObject"})
+INT_RANGE = (-(2**31), 2**31 - 1)  # EInt is a Java int
+FLOAT_TYPES = frozenset({"EDouble", "EDoubleObject", "EFloat", "EFloatObject"})
+INT_TYPES = frozenset({"EInt", "EIntegerObject", "EShort", "EShortObject", "EByte", "EByteObject"})
+BOOLEAN_TYPES = frozenset({"EBoolean", "EBooleanObject"})
 
 
 def parse_xml_safely(path: Path, max_bytes: int | None = None) -> etree._ElementTree:
@@ -146,7 +146,7 @@ class SafeXMIResource(XMIResource):  # type: ignore[misc]  # pyecore is untyped
         # the lines as it goes; pyecore's decoder leaves them to be read off the tree.
         if getattr(self, "sceml_lines", None) is None:
             self.sceml_lines = {
-                obj: _line_in(self, obj)
+                obj: line_in(self, obj)
                 for root in self.contents
                 for obj in (root, *all_contents(root))
             }
@@ -225,7 +225,7 @@ class SafeXMIResource(XMIResource):  # type: ignore[misc]  # pyecore is untyped
                     ValueError(
                         f"reference {hrefs} does not resolve to a suitable element ({error})"
                     ),
-                    _line_in(self, holder),
+                    line_in(self, holder),
                 ) from None
         self._later = []
 
@@ -377,15 +377,15 @@ def _check_literal(attribute: EAttribute, text: str) -> None:
             if kind.getEEnumLiteral(word) is None:
                 options = ", ".join(literal.name for literal in kind.eLiterals)
                 raise ValueError(f"{attribute.name}={word!r} is not one of: {options}")
-        elif name in _FLOAT_TYPES:
+        elif name in FLOAT_TYPES:
             if not _DECIMAL.fullmatch(word):
                 raise ValueError(f"{attribute.name}={word!r} is not a finite decimal number")
-        elif name in _INT_TYPES:
+        elif name in INT_TYPES:
             if not _INTEGER.fullmatch(word):
                 raise ValueError(f"{attribute.name}={word!r} is not a whole number")
-            if not _INT_RANGE[0] <= int(word) <= _INT_RANGE[1]:
+            if not INT_RANGE[0] <= int(word) <= INT_RANGE[1]:
                 raise ValueError(f"{attribute.name}={word} does not fit a 32-bit int")
-        elif name in _BOOLEAN_TYPES and word.lower() not in ("true", "false"):
+        elif name in BOOLEAN_TYPES and word.lower() not in ("true", "false"):
             raise ValueError(f"{attribute.name}={word!r} is neither true nor false")
 
 
