@@ -261,7 +261,7 @@ FLOOR_SCRIPT = textwrap.dedent(
     import multiprocessing, sys
     from pathlib import Path
     from lxml import etree
-    from sceml import schema
+    from sceml.xosc import schema
 
     source, out, workers = Path(sys.argv[1]), Path(sys.argv[2]), int(sys.argv[3])
     files = sorted(source.glob("*.xosc"))

@@ -5,7 +5,7 @@ nodes: parallel chains merged by joins), saves it as the base, and two edited ve
 (parameters of 1% of the nodes changed, some renamed, some moved) and theirs (other nodes'
 parameters, nodes added with their flows). Then, in one run, the best of `--repeat`:
 
-- anchors: loading the two files alone (sceml.io.load), and `sceml --version` as a process start;
+- anchors: loading the two files alone (sceml.model.loading.load), and `sceml --version` as a process start;
 - diff: load both and compare (what `sceml diff` does before printing), and the comparison alone;
 - merge: load the three and merge without validation, and with it (as `sceml merge` does).
 
@@ -31,9 +31,11 @@ from pathlib import Path
 from xmi_load import build
 
 import scemlmodel as scm
-from sceml import io, params
 from sceml.diff import compare_files, compare_models
 from sceml.diff.merge import merge
+from sceml.model import params
+from sceml.model.loading import load_scenario
+from sceml.model.saving import save
 
 REPO = Path(__file__).resolve().parents[1]
 SCEML = Path(sys.executable).with_name("sceml")
@@ -52,7 +54,7 @@ def best_of(repeat: int, run: Callable[[], object]) -> float:
 
 
 def scenario(path: Path) -> scm.Scenario:
-    root = io.load_scenario(path).root
+    root = load_scenario(path).root
     assert isinstance(root, scm.Scenario)
     return root
 
@@ -60,7 +62,7 @@ def scenario(path: Path) -> scm.Scenario:
 def edit_copy(base: Path, name: str, edit: Callable[[scm.Scenario], None]) -> Path:
     model = scenario(base)
     edit(model)
-    return io.save(model, base.with_name(name))
+    return save(model, base.with_name(name))
 
 
 def actions(model: scm.Scenario) -> list[scm.ActionNode]:
@@ -143,7 +145,7 @@ def main() -> int:
         work = Path(folder)
         base = work / "large.xmi"
         builder = build(options.nodes)
-        io.save(builder.scenario, base)
+        save(builder.scenario, base)
         large = (
             base,
             edit_copy(base, "ours.xmi", ours_edit),

@@ -28,8 +28,9 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-from sceml import io
 from sceml.editor import EditorSession
+from sceml.model.loading import load_library
+from sceml.model.saving import save
 from sceml.validation import validate
 from sceml.validation.incremental import IncrementalValidator
 
@@ -120,9 +121,9 @@ def timed(run: Callable[[], object]) -> tuple[object, float]:
 def synthetic(folder: Path, nodes: int) -> Path:
     """A saved scenario of about `nodes` nodes using a library module (see validate_scale)."""
     library_file = folder / "library.xmi"
-    io.save(build_library(), library_file)
-    pause = io.load_library(library_file).root.modules[0]
-    return io.save(build_scenario(nodes, pause), folder / f"scale-{nodes}.xmi")
+    save(build_library(), library_file)
+    pause = load_library(library_file).root.modules[0]
+    return save(build_scenario(nodes, pause), folder / f"scale-{nodes}.xmi")
 
 
 def main(argv: list[str] | None = None) -> None:

@@ -21,13 +21,13 @@ from pathlib import Path
 
 import numpy as np
 
-from sceml import io
 from sceml.extract import extract
 from sceml.extract.closedloop import recording_of, replays_closely, signature
 from sceml.levels.apply import FlatTemplate
 from sceml.levels.sampling import design, plan_for
 from sceml.levels.space import parameter_space
 from sceml.maps import load_map
+from sceml.model.loading import load_scenario
 from sceml.simulate import simulate
 
 REPO = Path(__file__).resolve().parents[1]
@@ -41,7 +41,7 @@ def main() -> None:
     road_map = load_map(REPO / "maps" / "intersection.xodr")
     for name in ("uis1-logical.xmi", "uis2-logical.xmi"):
         path = REPO / "examples" / name
-        logical = io.load_scenario(path).root
+        logical = load_scenario(path).root
         space = parameter_space(logical)
         template = FlatTemplate(logical, space.paths)
         tallies = {

@@ -29,11 +29,11 @@ from lxml import etree
 from numpy.typing import NDArray
 from osc_generator_repair import repair
 
-from sceml import io
 from sceml.extract import extract, read_recording
 from sceml.extract.recording import Recording, Track
 from sceml.maps import load_map
-from sceml.schema import validate_file
+from sceml.model.saving import save
+from sceml.xosc.schema import validate_file
 
 REPO = Path(__file__).resolve().parents[1]
 HERE = Path(__file__).resolve().parent
@@ -109,7 +109,7 @@ def main() -> None:
             for name in our_names
         }
         ours_xmi = folder / "ours.xmi"
-        io.save(found.scenario, ours_xmi)
+        save(found.scenario, ours_xmi)
         ours_xosc = folder / "ours-1.0.xosc"
         _run(
             [

@@ -40,12 +40,12 @@ from pathlib import Path
 
 from lxml import etree
 
-from sceml import io
 from sceml.diagnostics import Severity
 from sceml.errors import SceMLError
 from sceml.export.names import sanitize
+from sceml.files.safexml import hardened_parser
 from sceml.importer import import_to_file
-from sceml.safexml import hardened_parser
+from sceml.model.loading import load_scenario
 from sceml.validation import validate
 
 STEP = 0.05
@@ -323,7 +323,7 @@ def measure(path: Path, work: Path, options: argparse.Namespace) -> Row:
         return row
     row.writes = True
     row.opaque = imported.report.counts()["opaque"]
-    document = io.load_scenario(model, allow=options.allowed)
+    document = load_scenario(model, allow=options.allowed)
     errors = [d for d in validate(document.root, document=document) if d.severity is Severity.ERROR]
     row.exit0 = row.clean = not errors
     if errors:

@@ -5,7 +5,7 @@
 On a `scale_scenarios.py` scenario of `--nodes` nodes (the real map, every node kind, valid),
 in fresh processes:
 
-- ours: `sceml.io.load` of the file, peak resident memory (VmHWM, Linux) of the process;
+- ours: `sceml.model.loading.load` of the file, peak resident memory (VmHWM, Linux) of the process;
 - the anchor: the same file parsed with lxml, peak resident memory of that process;
 - each less what its process holds after its imports alone (the load's and the parse's own).
 
@@ -27,7 +27,7 @@ from pathlib import Path
 
 from scale_scenarios import write
 
-from sceml import io
+from sceml.model.loading import load
 
 # VmHWM, not ru_maxrss: a child's ru_maxrss starts from its parent's (this process's) peak.
 PEAK = (
@@ -38,7 +38,7 @@ PROGRAMS = {
     "python + lxml import": PEAK.format(body="import lxml.etree"),
     "python + sceml.io import": PEAK.format(body="from sceml import io"),
     "lxml parse (anchor)": PEAK.format(body="from lxml import etree; etree.parse(sys.argv[1])"),
-    "sceml.io.load (ours)": PEAK.format(body="from sceml import io; io.load(sys.argv[1])"),
+    "sceml.model.loading.load (ours)": PEAK.format(body="from sceml import io; load(sys.argv[1])"),
 }
 
 
@@ -62,14 +62,14 @@ def main(argv: list[str] | None = None) -> None:
         peaks = {name: peak_megabytes(program, path) for name, program in PROGRAMS.items()}
         for name, megabytes in peaks.items():
             print(f"  peak RSS {name:<24} {megabytes:8.1f} MB")
-        ours = peaks["sceml.io.load (ours)"] - peaks["python + sceml.io import"]
+        ours = peaks["sceml.model.loading.load (ours)"] - peaks["python + sceml.io import"]
         anchor = peaks["lxml parse (anchor)"] - peaks["python + lxml import"]
         print(
             f"  above the imports: ours {ours:.1f} MB, lxml {anchor:.1f} MB, {ours / anchor:.2f}x"
         )
 
         tracemalloc.start(1)
-        document = io.load(path)
+        document = load(path)
         gc.collect()
         snapshot = tracemalloc.take_snapshot()
         tracemalloc.stop()

@@ -20,8 +20,8 @@ import tempfile
 import time
 from pathlib import Path
 
-from sceml import io
 from sceml.export import build_xosc
+from sceml.model.loading import load_scenario
 from sceml.players import esmini
 from sceml.players.check import check_scenario_run
 from sceml.players.compare import compare
@@ -37,7 +37,7 @@ STEP = 0.05
 
 def row(path: Path, version: str, binary: str, folder: Path) -> tuple[str, bool]:
     """One line of the table for a scenario at a version, and whether it is clean."""
-    scenario = io.load_scenario(path).root
+    scenario = load_scenario(path).root
     xosc = folder / f"{path.stem}-{version}.xosc"
     xosc.write_bytes(build_xosc(scenario, version=version, source_path=path, output_path=xosc).data)
     began = time.perf_counter()

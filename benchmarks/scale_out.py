@@ -40,12 +40,12 @@ def timed_run(
     executor, n: int, chunk_size: int | None = None, base: str | None = None
 ) -> tuple[float, int, int]:  # type: ignore[no-untyped-def]
     """Seconds, files and bytes of one sampling run of n samples on `executor`."""
-    from sceml import io
     from sceml.levels.batch import BatchConfig, run_batch
     from sceml.levels.sampling import Plan, values_at
     from sceml.levels.space import parameter_space
+    from sceml.model.loading import load_scenario
 
-    space = parameter_space(io.load_scenario(LOGICAL).root)
+    space = parameter_space(load_scenario(LOGICAL).root)
     indices = np.arange(n)
     rows = values_at(space, Plan("random", n, seed=7), indices)
     with tempfile.TemporaryDirectory(prefix="sceml-scale-", dir=base) as folder:
@@ -69,7 +69,7 @@ def noop_tasks(executor, count: int) -> float:  # type: ignore[no-untyped-def]
 
 def write_floor(n: int, size: int, base: str | None = None) -> float:
     """Seconds to write n files of `size` bytes atomically, as the caller does."""
-    from sceml.io import write_atomically
+    from sceml.files.writing import write_atomically
 
     data = b"x" * size
     with tempfile.TemporaryDirectory(prefix="sceml-write-", dir=base) as folder:

@@ -18,9 +18,10 @@ import sys
 from pathlib import Path
 
 import scemlmodel as scm
-from sceml import io
-from sceml.build import ScenarioBuilder, lane, world
 from sceml.diagnostics import Severity
+from sceml.model.build import ScenarioBuilder, lane, world
+from sceml.model.loading import load, load_library
+from sceml.model.saving import save
 from sceml.validation import validate
 
 REPO = Path(__file__).resolve().parents[1]
@@ -107,9 +108,9 @@ def write(nodes: int, folder: Path) -> Path:
     (folder / "library").mkdir(exist_ok=True)
     shutil.copy(MAP, folder / "maps" / MAP.name)
     shutil.copy(LIBRARY, folder / "library" / LIBRARY.name)
-    crossing = io.load_library(folder / "library" / LIBRARY.name).root.modules[0]
-    path = io.save(build(nodes, crossing), folder / f"scale-{nodes}.xmi")
-    document = io.load(path)
+    crossing = load_library(folder / "library" / LIBRARY.name).root.modules[0]
+    path = save(build(nodes, crossing), folder / f"scale-{nodes}.xmi")
+    document = load(path)
     errors = [d for d in validate(document.root, document=document) if d.severity is Severity.ERROR]
     if errors:
         shown = "\n".join(str(d) for d in errors[:8])

@@ -14,7 +14,7 @@ import argparse
 import time
 from pathlib import Path
 
-from sceml import io
+from sceml.model.loading import load_scenario
 from sceml.modules import flatten
 from sceml.simulate import DEFAULT_STEP, simulate
 
@@ -39,7 +39,7 @@ def main() -> None:
     parser.add_argument("--repeat", type=int, default=200)
     parser.add_argument("--step", type=float, default=DEFAULT_STEP)
     options = parser.parse_args()
-    scenario = io.load_scenario(UIS2).root
+    scenario = load_scenario(UIS2).root
     for label, subject in (
         ("simulate(), module use flattened per call", scenario),
         ("player on the flattened scenario", flatten(scenario)),

@@ -28,7 +28,7 @@ from pathlib import Path
 from scale_scenarios import write
 from side_by_side import interleaved, median
 
-from sceml import io
+from sceml.model.loading import load
 from sceml.modules.expansion import expansion
 from sceml.validation import validate
 
@@ -41,7 +41,7 @@ def in_process(path: Path, rounds: int) -> tuple[float, float, float]:
     loads, validations, expansions = [], [], []
     for _ in range(rounds):
         started = time.perf_counter()
-        document = io.load(path)
+        document = load(path)
         loaded = time.perf_counter()
         validate(document.root, document=document)
         validated = time.perf_counter()
@@ -73,7 +73,7 @@ def main(argv: list[str] | None = None) -> None:
             }
             seconds = interleaved(commands, arguments.rounds, env)
             ours, anchor = median(seconds["ours"]), median(seconds["anchor"])
-            nodes = len(io.load(path).root.nodes)
+            nodes = len(load(path).root.nodes)
             load_s, validate_s, expansion_s = in_process(path, arguments.rounds)
             megabytes = path.stat().st_size / 1e6
             print(

@@ -8,9 +8,9 @@ of the schemes rotates every round and each figure is the median of the rounds, 
 disk of a shared machine is noisy. Schemes:
 
 - plain: open, write, close; nothing guards against a half-written file (the floor's write).
-- atomic: `sceml.io.write_atomically`: a temporary file beside the target (mkstemp), chmod,
+- atomic: `sceml.files.writing.write_atomically`: a temporary file beside the target (mkstemp), chmod,
   rename; what every SceML command writes with.
-- staged: `sceml.io.write_staged`: a file of the target's name in a staging folder inside the
+- staged: `sceml.files.writing.write_staged`: a file of the target's name in a staging folder inside the
   output folder, then a rename into place; what the batch's worker processes write with.
 - tmpfile: Linux `O_TMPFILE` (a file with no name until it is complete) and `linkat` through
   /proc/self/fd. It cannot replace an existing file, so a batch would still need a second
@@ -28,7 +28,7 @@ import time
 from collections.abc import Callable
 from pathlib import Path
 
-from sceml import io
+from sceml.files.writing import write_atomically, write_staged
 
 Scheme = Callable[[Path, int, bytes], None]
 
@@ -39,11 +39,11 @@ def plain(folder: Path, index: int, data: bytes) -> None:
 
 
 def atomic(folder: Path, index: int, data: bytes) -> None:
-    io.write_atomically(folder / f"f_{index:06d}.xosc", data)
+    write_atomically(folder / f"f_{index:06d}.xosc", data)
 
 
 def staged(folder: Path, index: int, data: bytes) -> None:
-    io.write_staged(folder / f"f_{index:06d}.xosc", data, folder / ".staging")
+    write_staged(folder / f"f_{index:06d}.xosc", data, folder / ".staging")
 
 
 def tmpfile(folder: Path, index: int, data: bytes) -> None:

@@ -2,9 +2,9 @@
 
 Builds each scenario with the builder API (many actors, forks into parallel chains, joins; every
 node with its parameters, so the file is valid, which is checked before anything is timed) and
-saves it with sceml.io. Then, side by side in one run:
+saves it with sceml.model. Then, side by side in one run:
 
-- cold, whole process: a fresh `python -c "sceml.io.load(FILE)"` against a fresh `java EmfLoad
+- cold, whole process: a fresh `python -c "sceml.model.loading.load(FILE)"` against a fresh `java EmfLoad
   ECORE FILE 1` (benchmarks/java/EmfLoad.java: EMF's XMI resource, the metamodel registered
   first), the runs interleaved, medians; and the load alone inside those same processes (each
   prints its own load time), without the interpreter's or the JVM's start;
@@ -36,10 +36,13 @@ import time
 from collections.abc import Callable
 from pathlib import Path
 
-from sceml import io
-from sceml.build import ScenarioBuilder, lane
-from sceml.collector import collector_paused
-from sceml.copying import Copier, SetterCopier
+from sceml.model.build import ScenarioBuilder, lane
+from sceml.model.collector import collector_paused
+from sceml.model.copying import Copier, SetterCopier
+from sceml.model.documents import Document
+from sceml.model.loading import load
+from sceml.model.saving import save
+from sceml.model.xmiresource import SafeXMIResource
 
 REPO = Path(__file__).resolve().parents[1]
 EMF_LOAD = REPO / "benchmarks" / "java" / "EmfLoad.java"
@@ -55,9 +58,9 @@ KINDS: list[tuple[str, dict[str, float]]] = [
 ]
 # Ends as `sceml` ends (sceml.cli.end_now): without the interpreter's collection of the model.
 PYTHON_LOAD = (
-    "import sys, time; from pathlib import Path; from sceml import io; "
+    "import sys, time; from pathlib import Path; from sceml.model.loading import load; "
     "from sceml.cli import end_now; "
-    "t = time.perf_counter(); io.load(Path(sys.argv[1])); print(time.perf_counter() - t); "
+    "t = time.perf_counter(); load(Path(sys.argv[1])); print(time.perf_counter() - t); "
     "end_now(0)"
 )
 SCEML = Path(sys.executable).with_name("sceml")
@@ -103,7 +106,7 @@ def saved_valid(nodes: int, path: Path) -> Path:
     errors = [d for d in validate(scenario) if d.severity is Severity.ERROR]
     if errors:
         raise SystemExit(f"the {nodes}-node scenario has {len(errors)} errors, e.g. {errors[0]}")
-    return io.save(scenario, path)
+    return save(scenario, path)
 
 
 def best_of(repeat: int, run: Callable[[], object]) -> float:
@@ -119,13 +122,13 @@ def best_of(repeat: int, run: Callable[[], object]) -> float:
     return min(times)
 
 
-def load_with(path: Path, fast: bool) -> io.Document:
+def load_with(path: Path, fast: bool) -> Document:
     """Load `path` through the fast reader or through pyecore's decoder."""
-    io.SafeXMIResource.fast_decoding = fast
+    SafeXMIResource.fast_decoding = fast
     try:
-        return io.load(path)
+        return load(path)
     finally:
-        io.SafeXMIResource.fast_decoding = True
+        SafeXMIResource.fast_decoding = True
 
 
 def emf_loads(path: Path, classpath: str, times: int) -> tuple[int, list[float]]:
@@ -161,7 +164,7 @@ def cold(path: Path, classpath: str, rounds: int) -> dict[str, float]:
     return figures
 
 
-def copy_with(make: type[Copier], document: io.Document) -> object:
+def copy_with(make: type[Copier], document: Document) -> object:
     """A deep copy of the loaded model, references mapped into the copy, with the collector
     paused as flattening pauses it."""
     with collector_paused():

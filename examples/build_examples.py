@@ -21,9 +21,9 @@ from collections.abc import Callable
 from pathlib import Path
 
 import scemlmodel as scm
-from sceml import io
-from sceml.build import LibraryBuilder, ScenarioBuilder, lane, world
-from sceml.params import ParameterInput, discrete, normal, span, uniform
+from sceml.model.build import LibraryBuilder, ScenarioBuilder, lane, world
+from sceml.model.params import ParameterInput, discrete, normal, span, uniform
+from sceml.model.saving import save
 
 HERE = Path(__file__).resolve().parent
 POSITIONS = HERE.parent / "maps" / "positions.json"
@@ -372,16 +372,14 @@ def build_all(out: Path) -> list[Path]:
     """Build and save every example under `out`; returns the files written."""
     where = positions()
     library = build_library()
-    written = [io.save(library, out / LIBRARY_FILE)]
+    written = [save(library, out / LIBRARY_FILE)]
     for level in LEVELS:
-        written.append(io.save(build_uis1(level, where["uis1"]), out / f"uis1-{level}.xmi"))
-        written.append(
-            io.save(build_uis2(level, where["uis2"], library), out / f"uis2-{level}.xmi")
-        )
+        written.append(save(build_uis1(level, where["uis1"]), out / f"uis1-{level}.xmi"))
+        written.append(save(build_uis2(level, where["uis2"], library), out / f"uis2-{level}.xmi"))
     east = where["map"]["arms"]["east"]
     for level in LEVELS:
         written.append(
-            io.save(build_overtaking(level, east, library), out / f"overtaking-{level}.xmi")
+            save(build_overtaking(level, east, library), out / f"overtaking-{level}.xmi")
         )
     return written
 

@@ -45,9 +45,9 @@ from pathlib import Path
 from hypothesis import strategies as st
 
 import scemlmodel as scm
-from sceml import catalog
-from sceml.build import ScenarioBuilder, lane, world
-from sceml.params import normal, span, uniform
+from sceml.model import catalog
+from sceml.model.build import ScenarioBuilder, lane, world
+from sceml.model.params import normal, span, uniform
 
 POSITIONS = Path(__file__).resolve().parents[1] / "maps" / "positions.json"
 MAP = "../maps/intersection.xodr"

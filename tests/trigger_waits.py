@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 import scemlmodel as scm
-from sceml import graph
 from sceml.export.names import sanitize
+from sceml.model import graph
 
 ROOT = "Root"
 

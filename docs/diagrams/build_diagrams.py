@@ -16,10 +16,12 @@ from pathlib import Path
 
 import graphviz
 
-from sceml.io import load, write_atomically
+from sceml.files.writing import write_atomically
+from sceml.model.loading import load
 from sceml.render import diagram, legend_graph, to_bytes
 from sceml.render.mapview import map_view
-from sceml.render.report import build_report, report_figures
+from sceml.review.figures import report_figures
+from sceml.review.page import build_report
 from sceml.validation import validate
 
 HERE = Path(__file__).resolve().parent

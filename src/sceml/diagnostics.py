@@ -36,7 +36,20 @@ class Diagnostic:
     line: int | None = None
     element: EObject | None = field(default=None, compare=False, repr=False)
 
+    def to_json(self) -> dict[str, object]:
+        """The diagnostic as a JSON object (docs/validation-json.md; the editor sends a subset)."""
+        return {
+            "severity": str(self.severity),
+            "code": self.code,
+            "message": self.message,
+            "file": self.file,
+            "line": self.line,
+            "fragment": self.fragment,
+            "path": self.path,
+        }
+
     def __str__(self) -> str:
+        """The one text form, gcc style: `file:line: severity[CODE] message (path)`."""
         where = (self.file or "<model>") + (f":{self.line}" if self.line else "")
         suffix = f" ({self.path})" if self.path else ""
         return f"{where}: {self.severity}[{self.code}] {self.message}{suffix}"

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import json
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from lxml import etree
 
@@ -44,9 +44,8 @@ def exit_code(reports: Sequence[FileReport], strict: bool = False) -> int:
 
 
 def _line(diagnostic: Diagnostic, file: str) -> str:
-    where = (diagnostic.file or file) + (f":{diagnostic.line}" if diagnostic.line else "")
-    suffix = f" ({diagnostic.path})" if diagnostic.path else ""
-    return f"{where}: {diagnostic.severity}[{diagnostic.code}] {diagnostic.message}{suffix}"
+    # Diagnostic's own text form, placed in the report's file when it names none itself.
+    return str(replace(diagnostic, file=diagnostic.file or file))
 
 
 def format_text(reports: Sequence[FileReport]) -> str:
@@ -83,19 +82,6 @@ def _status(report: FileReport) -> str:
     return "invalid" if report.count(Severity.ERROR) else "valid"
 
 
-def diagnostic_dict(diagnostic: Diagnostic) -> dict[str, object]:
-    """One diagnostic as a JSON object (see docs/validation-json.md)."""
-    return {
-        "severity": str(diagnostic.severity),
-        "code": diagnostic.code,
-        "message": diagnostic.message,
-        "file": diagnostic.file,
-        "line": diagnostic.line,
-        "fragment": diagnostic.fragment,
-        "path": diagnostic.path,
-    }
-
-
 def format_json(reports: Sequence[FileReport], tool: str = "sceml validate") -> str:
     """The documented JSON report: a summary and, per file, its status and diagnostics."""
     from . import __version__  # read from the package metadata: only when a report is written
@@ -110,7 +96,7 @@ def format_json(reports: Sequence[FileReport], tool: str = "sceml validate") -> 
                 "file": report.file,
                 "status": _status(report),
                 "unreadable": report.unreadable,
-                "diagnostics": [diagnostic_dict(d) for d in report.diagnostics],
+                "diagnostics": [d.to_json() for d in report.diagnostics],
             }
             for report in reports
         ],

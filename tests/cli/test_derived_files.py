@@ -10,8 +10,10 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner, Result
 
-from sceml import io
 from sceml.cli import cli
+from sceml.files.safefiles import reading_roots
+from sceml.model.loading import load
+from sceml.model.saving import save
 
 UIS2_VALUES = [
     "ego.initialSpeed=5",
@@ -134,7 +136,7 @@ def test_sampled_and_promoted_files_are_read_back(examples_copy: Path) -> None:
 def test_commands_on_logical_files_take_allow(examples_copy: Path, arguments: list[str]) -> None:
     (examples_copy.parent / ".sceml-root").unlink()  # no project: only the file's folder
     logical = examples_copy / "sub" / "uis2-logical.xmi"
-    io.save(io.load(examples_copy / "uis2-logical.xmi").root, logical)  # refers to ../library
+    save(load(examples_copy / "uis2-logical.xmi").root, logical)  # refers to ../library
     command, *options = arguments
     out = examples_copy.parent / "out" / ("c.xmi" if command == "concretize" else "")
     denied = sceml(command, logical, *options, "-o", out)
@@ -148,7 +150,7 @@ def test_reading_roots_is_the_one_rule(tmp_path: Path) -> None:
     (tmp_path / ".git").mkdir()
     file = tmp_path / "a" / "b" / "s.xmi"
     extra = tmp_path.parent
-    assert io.reading_roots(file, [extra]) == [file.parent, tmp_path, extra]
+    assert reading_roots(file, [extra]) == [file.parent, tmp_path, extra]
     (tmp_path / "a" / ".sceml-root").parent.mkdir(parents=True)
     (tmp_path / "a" / ".sceml-root").touch()
-    assert io.reading_roots(file) == [file.parent, tmp_path / "a"]
+    assert reading_roots(file) == [file.parent, tmp_path / "a"]

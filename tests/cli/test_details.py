@@ -9,8 +9,9 @@ import click
 import pytest
 from click.testing import CliRunner, Result
 
-from sceml import io, safexml
 from sceml.cli import cli, commands
+from sceml.files import safexml
+from sceml.model.loading import load
 from sceml.render import diagram, to_bytes
 
 from ..render.svgtools import groups, parse, text_of
@@ -90,7 +91,7 @@ def test_help_names_only_arguments_and_options_the_command_has(
 
 
 def test_the_behavior_tree_legend_explains_the_behavior_tree() -> None:
-    scenario = io.load(EXAMPLES / "uis1-concrete.xmi").root
+    scenario = load(EXAMPLES / "uis1-concrete.xmi").root
     svg = parse(to_bytes(diagram(scenario, view="bt", legend=True), "svg"))
     assert len(groups(svg, "sceml-legend")) == 1
     text = " ".join(text_of(g) for g in groups(svg, "sceml-legend-caption"))
@@ -101,7 +102,7 @@ def test_the_behavior_tree_legend_explains_the_behavior_tree() -> None:
 
 @pytest.mark.parametrize("view", ["flow", "bt"])
 def test_boxes_show_kind_and_name(view: str) -> None:
-    scenario = io.load(EXAMPLES / "uis1-concrete.xmi").root
+    scenario = load(EXAMPLES / "uis1-concrete.xmi").root
     svg = parse(to_bytes(diagram(scenario, view=view), "svg"))  # type: ignore[arg-type]
     texts = [text_of(g) for g in groups(svg, "sceml-node")]
     assert any("Accelerate" in t and "Accelerate_1" in t for t in texts), texts

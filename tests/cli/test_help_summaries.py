@@ -10,7 +10,9 @@ import click
 import pytest
 
 from sceml.cli import COMMANDS, commands
-from sceml.cli.summaries import SUMMARIES
+from sceml.cli.summaries import summaries
+
+SUMMARIES = summaries(COMMANDS)
 
 
 @pytest.mark.parametrize("name", list(COMMANDS))
@@ -18,7 +20,9 @@ def test_the_summary_is_the_commands_own(name: str) -> None:
     command = commands()[name]
     assert not command.short_help and not command.hidden and not command.deprecated
     own = " ".join((command.help or "").split("\n\n")[0].split())
-    assert SUMMARIES.get(name) == own, f"put {own!r} for {name!r} in sceml/cli/summaries.py"
+    assert SUMMARIES.get(name) == own, (
+        f"the summary read from the source of {name!r} is not {own!r}"
+    )
     for limit in range(10, 160):  # the terminal's width decides the limit
         shown = click.Command(name, help=SUMMARIES[name]).get_short_help_str(limit)
         assert shown == command.get_short_help_str(limit)

@@ -9,7 +9,7 @@ import weakref
 import pytest
 
 import scemlmodel as scm
-from sceml import catalog
+from sceml.model import catalog
 
 
 @pytest.mark.parametrize(

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from sceml import catalog
-from sceml.build import ScenarioBuilder, lane
+from sceml.model import catalog
+from sceml.model.build import ScenarioBuilder, lane
 from sceml.validation import validate
 
 KINDS = [c.__name__ for c in (*catalog.action_node_kinds(), *catalog.actor_kinds())]

@@ -13,7 +13,7 @@ import pytest
 from pyecore.ecore import EClass, EReference
 from pyecore.resources import URI, ResourceSet
 
-from sceml import catalog
+from sceml.model import catalog
 
 ECORE = Path(__file__).resolve().parents[2] / "metamodel" / "scemlmodel.ecore"
 

@@ -6,8 +6,8 @@ from pathlib import Path
 
 from lxml import etree
 
-from sceml import catalog
-from sceml.classdiagram import VIEWS, class_diagram
+from sceml.dev.classdiagram import VIEWS, class_diagram
+from sceml.model import catalog
 
 DOCS = Path(__file__).resolve().parents[2] / "docs"
 

@@ -1,4 +1,4 @@
-"""sceml.copying.Copier's direct copies equal the copies pyecore's setters make (SetterCopier).
+"""sceml.model.copying.Copier's direct copies equal the copies pyecore's setters make (SetterCopier).
 
 Whole models, partial copies whose references leave the copy, module definitions, proxies,
 references set before `copy_references`, and flattening: the copies, the `copies` mapping and the
@@ -18,8 +18,9 @@ from pyecore.ecore import EObject, EProxy
 from strategies import scenarios
 
 import scemlmodel as scm
-from sceml import io
-from sceml.copying import Copier, SetterCopier, copy_tree
+from sceml.model.copying import Copier, SetterCopier, copy_tree
+from sceml.model.loading import load
+from sceml.model.saving import save
 from sceml.modules.flatten import FlattenError, flatten
 
 from .model_state import difference, model_state, paths, value
@@ -64,7 +65,7 @@ def compare(path: Path, copying: Copying) -> None:
     """Copy the model of `path` both ways; copies, mappings and originals must be the same."""
     states = []
     for make in (SetterCopier, Copier):
-        document = io.load(path)
+        document = load(path)
         copier = make()
         copies = copying(copier, document.root)
         roots = {"original": document.root, **{f"copy{i}": c for i, c in enumerate(copies)}}
@@ -109,7 +110,7 @@ def test_random_scenarios_copy_the_same_both_ways(scenario: scm.Scenario, copyin
 
 def test_proxies_resolved_or_not_and_references_set_before() -> None:
     def copied(make: type[Copier], resolve: bool) -> dict[str, Any]:
-        document = io.load(EXAMPLES / "uis2-concrete.xmi")
+        document = load(EXAMPLES / "uis2-concrete.xmi")
         use = next(n for n in document.root.nodes if isinstance(n, scm.ModuleUse))
         if resolve:
             use.definition.force_resolve()
@@ -136,12 +137,12 @@ def test_flattening_gives_the_same_model_both_ways(
         for direct in (False, True):
             monkeypatch.setattr(Copier, "direct", direct)
             try:
-                flat: Any = flatten(io.load(path).root)
+                flat: Any = flatten(load(path).root)
             except FlattenError as error:
                 results.append(str(error))
                 continue
             results.append(model_state({"flat": flat}))
-            results.append(io.save(flat, tmp_path / f"{direct}.xmi", origin=path).read_bytes())
+            results.append(save(flat, tmp_path / f"{direct}.xmi", origin=path).read_bytes())
         assert difference(results[: len(results) // 2], results[len(results) // 2 :]) is None
 
 
@@ -156,7 +157,7 @@ def test_copy_tree_of_a_detached_value() -> None:
 
 def test_every_sceml_class_is_copied_directly() -> None:
     # Otherwise the comparisons above would compare pyecore with itself.
-    from sceml.copying import _shape
+    from sceml.model.copying import _shape
 
     classes = [c for c in scm.eClassifiers.values() if isinstance(c, type)]
     assert all(_shape(cls).direct for cls in classes if not cls.eClass.abstract)

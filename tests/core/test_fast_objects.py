@@ -1,4 +1,4 @@
-"""sceml.fastobjects leaves exactly the state pyecore's own constructors and setters leave."""
+"""sceml.model.fastobjects leaves exactly the state pyecore's own constructors and setters leave."""
 
 from __future__ import annotations
 
@@ -8,8 +8,8 @@ import pytest
 from pyecore.ecore import EObject, EProxy
 
 import scemlmodel as scm
-from sceml import fastobjects
-from sceml.fastobjects import add_child, new, set_reference, set_value, slot
+from sceml.model import fastobjects
+from sceml.model.fastobjects import add_child, new, set_reference, set_value, slot
 
 from .model_state import difference, model_state
 

@@ -1,4 +1,4 @@
-"""The fast XMI reader (sceml.xmi_reader) builds exactly what pyecore's decoder builds, or declines.
+"""The fast XMI reader (sceml.model.xmi_reader) builds exactly what pyecore's decoder builds, or declines.
 
 Every `.xmi` file of the repository and random scenarios are loaded both ways and compared object
 by object (tests/core/model_state.py), with their resources, their saved bytes and the lines of
@@ -20,12 +20,18 @@ import pytest
 from editor.test_random_edits import draw_op
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
+from pyecore.resources import URI
 from strategies import scenarios
 
 import scemlmodel as scm
-from sceml import io, xmi_reader
 from sceml.editor import EditorSession, OperationError
 from sceml.errors import LoadError, SaveError
+from sceml.model import xmi_reader
+from sceml.model import xmi_reader as io_xmi_reader
+from sceml.model.documents import Document, new_resource_set
+from sceml.model.loading import load, unresolved_references
+from sceml.model.saving import save
+from sceml.model.xmiresource import SafeXMIResource, _check_literal, parse_xml_safely
 
 from .model_state import difference, model_state, paths, resource_state
 
@@ -42,34 +48,34 @@ WRITTEN_BY_SCEML = [
 def decoding(fast: bool) -> Iterator[list[bool]]:
     """Load with or without the fast reader; yields what the reader answered, file by file."""
     answers: list[bool] = []
-    original_flag = io.SafeXMIResource.fast_decoding
+    original_flag = SafeXMIResource.fast_decoding
     original_decode = xmi_reader.decode
 
     def spy(*args: Any) -> bool:
         answers.append(original_decode(*args))
         return answers[-1]
 
-    io.SafeXMIResource.fast_decoding = fast
-    io.xmi_reader.decode = spy  # type: ignore[attr-defined]
+    SafeXMIResource.fast_decoding = fast
+    io_xmi_reader.decode = spy  # type: ignore[attr-defined]
     try:
         yield answers
     finally:
-        io.SafeXMIResource.fast_decoding = original_flag
-        io.xmi_reader.decode = original_decode  # type: ignore[attr-defined]
+        SafeXMIResource.fast_decoding = original_flag
+        io_xmi_reader.decode = original_decode  # type: ignore[attr-defined]
 
 
-def outcome(path: Path, fast: bool) -> tuple[io.Document | None, str | None, list[bool]]:
+def outcome(path: Path, fast: bool) -> tuple[Document | None, str | None, list[bool]]:
     """The document `path` loads to, or the error it gives, and the reader's answers."""
     with decoding(fast) as answers:
         try:
-            return io.load(path), None, answers
+            return load(path), None, answers
         except LoadError as error:
             # pyecore's messages may show an object's address, which differs from run to run.
             message = re.sub(r"0x[0-9a-f]+", "0x...", str(error))
             return None, f"{message} (line {error.line})", answers
 
 
-def whole_state(document: io.Document) -> dict[str, Any]:
+def whole_state(document: Document) -> dict[str, Any]:
     """The model, every other file loaded into its resource set, and the resources."""
     roots = {"root": document.root}
     resources = list(document.resource_set.resources.values())
@@ -84,7 +90,7 @@ def whole_state(document: io.Document) -> dict[str, Any]:
     }
 
 
-def lines(document: io.Document) -> list[int | None]:
+def lines(document: Document) -> list[int | None]:
     """The line of every element, as Document.line_of finds it."""
     return [document.line_of(obj) for obj in [document.root, *document.root.eAllContents()]]
 
@@ -92,14 +98,14 @@ def lines(document: io.Document) -> list[int | None]:
 _UUID = re.compile(rb"[0-9a-f]{8}-[0-9a-f]{4}-[0-9a-f]{4}-[0-9a-f]{4}-[0-9a-f]{12}")
 
 
-def saved(document: io.Document, path: Path) -> bytes | str:
+def saved(document: Document, path: Path) -> bytes | str:
     """The bytes the model saves to, or the error saving gives.
 
     A file with xmi:ids gets new random ids for the objects that had none: they are numbered
     in order of appearance instead.
     """
     try:
-        data = io.save(document.root, path).read_bytes()
+        data = save(document.root, path).read_bytes()
     except SaveError as error:
         return str(error).replace(str(path), "OUT")
     numbers: dict[bytes, bytes] = {}
@@ -119,8 +125,8 @@ def assert_same(path: Path, tmp: Path) -> list[bool]:
     assert difference(whole_state(slow), whole_state(fast)) is None
     assert lines(fast) == lines(slow)
     # Cross-file references resolve, lazily, to the same objects (or fail the same way).
-    slow_links = [(h.name, href, why) for h, href, why in io.unresolved_references(slow.root)]
-    fast_links = [(h.name, href, why) for h, href, why in io.unresolved_references(fast.root)]
+    slow_links = [(h.name, href, why) for h, href, why in unresolved_references(slow.root)]
+    fast_links = [(h.name, href, why) for h, href, why in unresolved_references(fast.root)]
     assert fast_links == slow_links
     assert difference(whole_state(slow), whole_state(fast)) is None
     assert saved(fast, tmp / "fast.xmi") == saved(slow, tmp / "slow.xmi")
@@ -147,7 +153,7 @@ def test_the_files_are_there() -> None:
 )
 def test_random_scenarios_load_the_same_both_ways(scenario: scm.Scenario) -> None:
     with tempfile.TemporaryDirectory() as folder:
-        path = io.save(scenario, Path(folder) / "model.xmi")
+        path = save(scenario, Path(folder) / "model.xmi")
         assert assert_same(path, Path(folder)) == [True]
 
 
@@ -261,20 +267,20 @@ def test_a_declined_file_leaves_nothing_behind(tmp_path: Path) -> None:
     # The dangling reference is found last, after every object was made.
     path = tmp_path / "dangling.xmi"
     path.write_text(UIS1.replace('target="//@nodes.1"', 'target="//@nodes.99"'))
-    resource = io.new_resource_set().create_resource(io.URI(str(path)))
-    tree = io.parse_xml_safely(path)
+    resource = new_resource_set().create_resource(URI(str(path)))
+    tree = parse_xml_safely(path)
     resource.prefixes.update(tree.getroot().nsmap)
     resource.xsitype = xmi_reader.XSI_TYPE
     resource.xmiid = "{http://www.omg.org/XMI}id"
     flows_before = sum(1 for obj in scm.Flow.eClass.allInstances() if type(obj) is scm.Flow)
-    assert xmi_reader.decode(resource, tree.getroot(), io._check_literal) is False
+    assert xmi_reader.decode(resource, tree.getroot(), _check_literal) is False
     flows_after = sum(1 for obj in scm.Flow.eClass.allInstances() if type(obj) is scm.Flow)
     assert flows_after == flows_before
     assert resource.contents == [] and resource.uuid_dict == {}
 
 
 def test_pyecore_edits_a_fast_loaded_model_as_one_it_built(tmp_path: Path) -> None:
-    def edited(fast: bool) -> io.Document:
+    def edited(fast: bool) -> Document:
         document, _, _ = outcome(EXAMPLES / "uis2-concrete.xmi", fast)
         assert document is not None
         root = document.root

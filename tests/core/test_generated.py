@@ -5,7 +5,7 @@ from __future__ import annotations
 import shutil
 from pathlib import Path
 
-from sceml.regenerate import generate
+from sceml.dev.regenerate import generate
 
 REPO = Path(__file__).resolve().parents[2]
 

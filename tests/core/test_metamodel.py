@@ -8,7 +8,7 @@ import pytest
 from pyecore.ecore import EAttribute, EClass, EEnum, EReference
 from pyecore.resources import URI, ResourceSet
 
-from sceml import catalog
+from sceml.model import catalog
 
 ECORE = Path(__file__).resolve().parents[2] / "metamodel" / "scemlmodel.ecore"
 

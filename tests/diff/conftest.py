@@ -8,7 +8,8 @@ from pathlib import Path
 import pytest
 
 import scemlmodel as scm
-from sceml import io
+from sceml.model.loading import load_scenario
+from sceml.model.saving import save
 
 Edit = Callable[[scm.Scenario], None]
 
@@ -25,10 +26,10 @@ def edited(uis2: Path) -> Callable[..., Path]:
 
     def make(edit: Edit, name: str = "new.xmi", base: Path | None = None) -> Path:
         source = base or uis2
-        document = io.load_scenario(source)
+        document = load_scenario(source)
         assert isinstance(document.root, scm.Scenario)
         edit(document.root)
-        return io.save(document.root, source.with_name(name))
+        return save(document.root, source.with_name(name))
 
     return make
 

@@ -10,8 +10,8 @@ from diff.conftest import actor, node
 from lxml import etree
 
 import scemlmodel as scm
-from sceml import params
 from sceml.cli import cli
+from sceml.model import params
 
 
 def run(*arguments: str | Path) -> tuple[int, str]:

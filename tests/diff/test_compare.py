@@ -10,9 +10,11 @@ from pathlib import Path
 from diff.conftest import actor, node
 
 import scemlmodel as scm
-from sceml import io, params
 from sceml.diff import compare_files
 from sceml.diff.words import describe
+from sceml.model import params
+from sceml.model.loading import load_scenario
+from sceml.model.saving import save
 
 
 def lines(old: Path, new: Path) -> list[str]:
@@ -154,8 +156,8 @@ def test_a_file_of_an_older_metamodel_release_is_compared_after_migration(
     old = examples_copy / "uis2-release-1.0.xmi"
     old.write_bytes((kept / "uis2-logical.xmi").read_bytes())
     assert "metamodel/1.0" in old.read_text()
-    current = io.load_scenario(old).root  # migrated in memory
+    current = load_scenario(old).root  # migrated in memory
     node(current, "TurnLeft_1").tolerance = params.value(5.0)
-    new = io.save(current, examples_copy / "uis2-current.xmi")
+    new = save(current, examples_copy / "uis2-current.xmi")
     assert "metamodel/1.0" not in new.read_text()
     assert lines(old, new) == ["~ TurnLeft_1.tolerance: 3 -> 5 m"]

@@ -8,10 +8,11 @@ from click.testing import CliRunner
 from diff.conftest import actor, node
 
 import scemlmodel as scm
-from sceml import io, params
 from sceml.cli import cli
 from sceml.diff import compare_files
 from sceml.diff.words import describe
+from sceml.model import params
+from sceml.model.loading import load_scenario
 
 
 def merge(base: Path, ours: Path, theirs: Path, out: Path) -> tuple[int, str]:
@@ -45,7 +46,7 @@ def test_changes_to_different_things_merge(uis2: Path, edited) -> None:
         "~ pedestrian renamed to walker (Pedestrian)",
     ]
     # The module use still binds the renamed actor: one object, renamed, not a copy.
-    merged = io.load_scenario(out).root
+    merged = load_scenario(out).root
     use = node(merged, "CrossingManeuver_1")
     assert next(b for b in use.bindings if b.role == "crosser").actor is actor(merged, "walker")
 
@@ -81,7 +82,7 @@ def test_an_added_node_and_its_flows_come_across(uis2: Path, edited) -> None:
         "- DriveDistance_1 -> End (flow) removed",
         "~ DriveDistance_1.distance: 60 -> 70 m",
     ]
-    merged = io.load_scenario(out).root
+    merged = load_scenario(out).root
     assert node(merged, "Stop_1").referenceActor is actor(merged, "car")
 
 
@@ -202,7 +203,7 @@ def test_a_binding_and_an_override_of_one_module_use_merge(uis2: Path, edited) -
     out = uis2.with_name("merged.xmi")
     code, shown = merge(uis2, edited(ours_edit, "ours.xmi"), edited(theirs_edit, "theirs.xmi"), out)
     assert code == 0, shown
-    merged = io.load_scenario(out).root
+    merged = load_scenario(out).root
     use = node(merged, "CrossingManeuver_1")
     assert next(b for b in use.bindings if b.role == "trigger").actor is actor(merged, "ego")
     override = next(o for o in use.overrides if o.parameter == "destinationX")
@@ -226,7 +227,7 @@ def test_an_added_actor_and_a_node_of_it_come_across_together(uis2: Path, edited
         uis2, edited(_longer_drive, "ours.xmi"), edited(theirs_edit, "theirs.xmi"), out
     )
     assert code == 0, shown
-    merged = io.load_scenario(out).root
+    merged = load_scenario(out).root
     assert node(merged, "KeepVelocity_1").referenceActor is actor(merged, "truck")
     assert actor(merged, "truck").initialSpeed.value == 8.0
 
@@ -244,7 +245,7 @@ def test_an_actor_removed_by_theirs_goes_with_its_references(uis2: Path, edited)
         uis2, edited(_wider_turn, "ours.xmi"), edited(theirs_edit, "theirs.xmi"), out
     )
     assert code == 0, shown
-    merged = io.load_scenario(out).root
+    merged = load_scenario(out).root
     assert [a.name for a in node(merged, "Root").actors] == ["ego", "pedestrian"]
     assert node(merged, "DriveDistance_1").referenceActor is actor(merged, "ego")
     assert node(merged, "TurnLeft_1").tolerance.value == 5.0

@@ -24,11 +24,12 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import scemlmodel as scm
-from sceml import io
-from sceml.compare import differences
 from sceml.diff import Change, compare_files
 from sceml.diff.merge import merge
 from sceml.editor import EditorSession, OperationError
+from sceml.model.compare import differences
+from sceml.model.loading import load_scenario
+from sceml.model.saving import save
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 MAPS = EXAMPLES.parent / "maps"
@@ -361,7 +362,7 @@ def edited_copy(base: Path, name: str, *plans: Plan) -> Path:
 
 
 def loaded(path: Path) -> scm.Scenario:
-    root = io.load_scenario(path).root
+    root = load_scenario(path).root
     assert isinstance(root, scm.Scenario)
     return root
 
@@ -398,7 +399,7 @@ def test_independent_edits_merge_to_both_applied(data: st.DataObject) -> None:
         # Random edits may break rules on either side; here only the joining is under test.
         result = merge(loaded(base), loaded(ours), loaded(theirs), validate=False)
         assert result.conflicts == []
-        merged = io.save(result.scenario, base.with_name("merged.xmi"))
+        merged = save(result.scenario, base.with_name("merged.xmi"))
         assert differences(flows_in_order(loaded(merged)), flows_in_order(loaded(both))) == []
 
 

@@ -2,15 +2,15 @@
 
 from __future__ import annotations
 
-from sceml import io
 from sceml.editor import EditorSession
+from sceml.model.saving import save
 
 
 def saved_bytes(session: EditorSession) -> bytes:
     """What the session's model saves to (beside the file, so relative references stay)."""
     assert session.document is not None
     target = session.path.with_name(".snapshot.xmi")
-    io.save(session.document.root, target)
+    save(session.document.root, target)
     return target.read_bytes()
 
 

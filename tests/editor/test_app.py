@@ -7,13 +7,14 @@ from pathlib import Path
 import pytest
 from starlette.testclient import TestClient
 
-from sceml import io, schema
-from sceml.compare import differences
 from sceml.diagnostics import Severity
 from sceml.editor import EditorSession, SessionOptions
 from sceml.editor import app as app_module
 from sceml.editor.app import create_app
+from sceml.model.compare import differences
+from sceml.model.loading import load, load_library
 from sceml.validation import validate
+from sceml.xosc import schema
 
 
 def client_for(path: Path, **options: object) -> TestClient:
@@ -76,8 +77,8 @@ def test_save_writes_a_file_that_loads_back_equal_and_valid(
     saved = client.post("/api/save", json={"path": str(target)})
     assert saved.status_code == 200 and saved.json()["dirty"] is False
     assert saved.json()["document"]["name"] == "uis1-edited.xmi"
-    document = io.load(target)
-    original = io.load(examples_copy / "uis1-concrete.xmi")
+    document = load(target)
+    original = load(examples_copy / "uis1-concrete.xmi")
     changes = differences(original.root, document.root)
     assert changes and all("diagramPosition" in line for line in changes)
     found = validate(document.root, document=document)
@@ -89,6 +90,33 @@ def test_export_writes_xsd_valid_openscenario(client: TestClient, examples_copy:
     answer = client.post("/api/export", json={"version": "1.2", "path": str(target)})
     assert answer.status_code == 200 and answer.json() == {"path": str(target), "version": "1.2"}
     assert schema.validate_tree(schema.parse_file(target), "1.2") == []
+
+
+def test_the_view_offers_the_exporters_versions_and_profiles(client: TestClient) -> None:
+    # The page types none of them: the export dialog's selects are filled from these.
+    choices = client.get("/api/view").json()["choices"]
+    assert choices["oscVersions"] == ["1.0", "1.1", "1.2", "1.3"]
+    assert choices["profiles"] == ["generic", "carla"]
+
+
+def test_export_with_an_empty_version_writes_the_profiles_default(
+    client: TestClient, examples_copy: Path
+) -> None:
+    # What the page sends when "the profile's default" is chosen.
+    target = examples_copy / "uis1-generic.xosc"
+    answer = client.post("/api/export", json={"version": "", "path": str(target)})
+    assert answer.status_code == 200 and answer.json() == {"path": str(target), "version": "1.3"}
+
+
+def test_export_without_a_version_writes_the_profiles_default(
+    client: TestClient, examples_copy: Path
+) -> None:
+    # The carla profile reads 1.0 only: the editor, like the CLI, must not default to 1.3 there.
+    target = examples_copy / "uis1-carla.xosc"
+    body = {"profile": "carla", "path": str(target)}
+    answer = client.post("/api/export", json=body)
+    assert answer.status_code == 200 and answer.json() == {"path": str(target), "version": "1.0"}
+    assert schema.parse_file(target).getroot().find("FileHeader").get("revMinor") == "0"
 
 
 def test_a_refused_export_is_422_with_diagnostics(examples_copy: Path) -> None:
@@ -130,7 +158,7 @@ def test_open_definition_edits_the_module_in_its_library(examples_copy: Path) ->
     }
     assert client.post("/api/ops", json={"ops": [op]}).status_code == 200
     assert client.post("/api/save", json={}).status_code == 200
-    library = io.load_library(examples_copy / "library" / "sceml-library.xmi").root
+    library = load_library(examples_copy / "library" / "sceml-library.xmi").root
     crossing = next(m for m in library.modules if m.name == "CrossingManeuver")
     moved = next(n for n in crossing.nodes if n.eClass.name == "Accelerate")
     assert moved.targetSpeed.parameter.name == "triggerRadius"

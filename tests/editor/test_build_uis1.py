@@ -5,11 +5,11 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-from sceml import io
-from sceml.compare import differences
 from sceml.editor import EditorSession, SessionOptions
 from sceml.editor.values import position_to_json, value_to_json
-from sceml.traversal import features
+from sceml.model.compare import differences
+from sceml.model.loading import load
+from sceml.model.traversal import features
 
 _SKIPPED = {"name", "referenceActor", "targetActor", "incoming", "outgoing", "diagramPosition"}
 
@@ -87,7 +87,7 @@ def build_root(session: EditorSession, example: Any) -> None:
 
 
 def test_uis1_from_an_empty_scenario(examples_copy: Path) -> None:
-    example = io.load(examples_copy / "uis1-concrete.xmi").root
+    example = load(examples_copy / "uis1-concrete.xmi").root
     session = EditorSession(SessionOptions(level="concrete"))
     target = examples_copy / "uis1-built.xmi"
     session.open(target)
@@ -114,6 +114,6 @@ def test_uis1_from_an_empty_scenario(examples_copy: Path) -> None:
         )
     view = session.save()
     assert view["summary"]["errors"] == 0
-    built = io.load(target).root
+    built = load(target).root
     # Where the nodes are drawn is notation, not part of the scenario the example defines.
     assert [d for d in differences(example, built) if "/diagramPosition" not in d] == []

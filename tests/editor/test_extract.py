@@ -7,8 +7,8 @@ from pathlib import Path
 import pytest
 from editor.helpers import node_id, saved_bytes
 
-from sceml import io
 from sceml.editor import EditorSession, OperationError
+from sceml.model.loading import load_library
 
 
 def test_extract_writes_the_library_and_undo_restores_the_nodes(uis1: EditorSession) -> None:
@@ -23,7 +23,7 @@ def test_extract_writes_the_library_and_undo_restores_the_nodes(uis1: EditorSess
     top = {n["name"] for n in after["nodes"] if n["parent"] is None}
     assert not top & {"Accelerate_2", "Cross_1"}
     assert after["summary"]["errors"] == 0
-    library = io.load_library(uis1.path.parent / "library" / "mine.xmi").root
+    library = load_library(uis1.path.parent / "library" / "mine.xmi").root
     assert [m.name for m in library.modules] == ["BikeGo"]
     undone = uis1.undo()
     assert saved_bytes(uis1) == before
@@ -31,7 +31,7 @@ def test_extract_writes_the_library_and_undo_restores_the_nodes(uis1: EditorSess
     assert not (uis1.path.parent / "library" / "mine.xmi").exists(), "undo removes the new file"
     uis1.redo()
     assert any(n["kind"] == "ModuleUse" for n in uis1.view()["nodes"])
-    library = io.load_library(uis1.path.parent / "library" / "mine.xmi").root
+    library = load_library(uis1.path.parent / "library" / "mine.xmi").root
     assert [m.name for m in library.modules] == ["BikeGo"]
 
 

@@ -11,10 +11,10 @@ from pathlib import Path
 import pytest
 from starlette.testclient import TestClient
 
-from sceml import io
 from sceml.editor import EditorSession, SessionOptions
 from sceml.editor.app import create_app
 from sceml.editor.bodies import MAX_BODY_BYTES
+from sceml.model.loading import load
 
 POST_ROUTES = [
     "/api/ops",
@@ -139,7 +139,7 @@ def test_names_and_texts_have_a_length_limit(client: TestClient, examples_copy: 
     longest = {"op": "set", "node": node, "field": "name", "value": "N" * 200}
     assert client.post("/api/ops", json={"ops": [longest]}).status_code == 200
     assert client.post("/api/save", json={}).status_code == 200
-    names = {n.name for n in io.load(examples_copy / "uis1-concrete.xmi").root.nodes}
+    names = {n.name for n in load(examples_copy / "uis1-concrete.xmi").root.nodes}
     assert "N" * 200 in names
 
 

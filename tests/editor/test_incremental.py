@@ -18,10 +18,11 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import scemlmodel as scm
-from sceml import io
-from sceml.build import ScenarioBuilder, lane, world
 from sceml.diagnostics import Diagnostic
 from sceml.editor import EditorSession, OperationError
+from sceml.model.build import ScenarioBuilder, lane, world
+from sceml.model.loading import load_library
+from sceml.model.saving import save
 from sceml.validation import REGISTRY, Registry, validate
 from sceml.validation.edits import Aspect, Change, aspects_of
 from sceml.validation.incremental import READS, IncrementalValidator, through_modules_reads
@@ -132,7 +133,7 @@ def copied_examples() -> Iterator[Path]:
 def generated(folder: Path, segments: int = 4) -> Path:
     """A larger scenario on the intersection map: four actors, turns, crossings, joins and uses
     of CrossingManeuver, saved beside the examples (about 30 nodes per segment)."""
-    crossing = io.load_library(folder / LIBRARY).root.modules[0]
+    crossing = load_library(folder / LIBRARY).root.modules[0]
     b = ScenarioBuilder("Generated", map="../maps/intersection.xodr", level="concrete")
     b.environment()
     ego = b.actor("Car", "ego", ego=True, start=lane(3, 1, 30.0), speed=5.0)
@@ -173,7 +174,7 @@ def generated(folder: Path, segments: int = 4) -> Path:
         join = b.join_all(previous[0], previous[1])
         previous[0] = previous[1] = join
     b.chain(b.join_one(*previous), b.end)
-    return io.save(b.scenario, folder / "generated.xmi")
+    return save(b.scenario, folder / "generated.xmi")
 
 
 def top_nodes(view: dict[str, Any]) -> list[dict[str, Any]]:
@@ -411,7 +412,7 @@ def big_scenario(folder: Path, nodes: int) -> Path:
             b.chain(previous, *chain)
             previous = chain[-1]
         b.flow(previous, b.end)
-    return io.save(b.scenario, folder / "big.xmi")
+    return save(b.scenario, folder / "big.xmi")
 
 
 def test_one_parameter_edit_in_500_nodes_runs_a_few_checks(tmp_path: Path) -> None:

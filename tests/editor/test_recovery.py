@@ -11,13 +11,13 @@ from pathlib import Path
 import pytest
 from editor.servers import Server, start
 
-from sceml import io
 from sceml.editor import EditorSession, SessionOptions
 from sceml.editor.journal import Journal
+from sceml.model.loading import load
 
 
 def node_names(path: Path) -> set[str]:
-    return {str(node.name) for node in io.load(path).root.nodes}
+    return {str(node.name) for node in load(path).root.nodes}
 
 
 @pytest.mark.parametrize("sig", [signal.SIGINT, signal.SIGTERM, signal.SIGHUP])

@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+import pytest
 from editor.helpers import node_id
 
 from sceml.editor import EditorSession
+from sceml.editor.palette import value_types
 from sceml.render.style import CATEGORY_FILLS
 
 
@@ -136,3 +138,19 @@ def test_new_scenario_from_a_missing_file(tmp_path) -> None:
     assert [n["kind"] for n in view["nodes"]] == ["RootNode", "EndNode"]
     assert view["nodes"][0]["title"] == "cut-in" and view["level"] == "logical"
     assert not view["dirty"]
+
+
+@pytest.mark.parametrize(
+    ("level", "in_module", "expected"),
+    [
+        ("functional", False, ["value", "range", "uniform", "normal", "discrete"]),
+        ("logical", False, ["value", "range", "uniform", "normal", "discrete"]),
+        ("concrete", False, ["value"]),
+        ("concrete", True, ["value", "range", "uniform", "normal", "discrete", "ref"]),
+    ],
+)
+def test_value_types_are_what_the_parameter_rules_accept(
+    level: str, in_module: bool, expected: list[str]
+) -> None:
+    # Read from SCEML-P001's and P008's kinds: no spread in a concrete scenario, refs in modules.
+    assert value_types(level, in_module) == expected

@@ -10,8 +10,8 @@ import pytest
 from browser import CHROMIUM
 from playwright.sync_api import Locator, Page, Response, expect
 
-from sceml import io
 from sceml.diagnostics import Severity
+from sceml.model.loading import load
 from sceml.validation import validate
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
@@ -49,7 +49,7 @@ def canonical(obj: object) -> object:
 
 
 def scenario_form(path: Path) -> dict[str, object]:
-    root = io.load(path).root
+    root = load(path).root
     return {
         "nodes": {node.name: canonical(node) for node in root.nodes},
         "flows": sorted((flow.source.name, flow.target.name) for flow in root.flows),
@@ -242,7 +242,7 @@ def test_build_uis1_with_mouse_and_keyboard(
         connect(page, source, target_name)
     save(page)
 
-    document = io.load(target)
+    document = load(target)
     errors = [d for d in validate(document.root) if d.severity is Severity.ERROR]
     assert errors == []
     assert scenario_form(target) == scenario_form(EXAMPLES / "uis1-concrete.xmi")
@@ -287,7 +287,7 @@ def test_place_crossing_maneuver_for_uis2(page: Page, editor: object, examples_c
     connect(page, "CrossingManeuver_1", "End")
     save(page)
 
-    use = next(n for n in io.load(target).root.nodes if n.name == "CrossingManeuver_1")
+    use = next(n for n in load(target).root.nodes if n.name == "CrossingManeuver_1")
     assert {b.role: b.actor.name for b in use.bindings} == {
         "crosser": "pedestrian",
         "trigger": "car",
@@ -295,7 +295,7 @@ def test_place_crossing_maneuver_for_uis2(page: Page, editor: object, examples_c
     assert {o.parameter: o.value.value for o in use.overrides} == {
         name: float(text) for name, text in overrides.items()
     }
-    errors = [d for d in validate(io.load(target).root) if d.severity is Severity.ERROR]
+    errors = [d for d in validate(load(target).root) if d.severity is Severity.ERROR]
     assert errors == []
     assert scenario_form(target) == scenario_form(EXAMPLES / "uis2-concrete.xmi")
 

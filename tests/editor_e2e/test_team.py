@@ -18,7 +18,7 @@ from editor.servers import Server, start
 from editor_e2e.test_editor import commit, node, open_editor, ops_answer
 from playwright.sync_api import Browser, Page, expect
 
-from sceml import io
+from sceml.model.loading import load, load_library
 
 pytestmark = pytest.mark.skipif(
     not CHROMIUM.exists() and not os.environ.get("CI"),
@@ -27,7 +27,7 @@ pytestmark = pytest.mark.skipif(
 
 
 def names_in(path: Path) -> set[str]:
-    return {str(n.name) for n in io.load(path).root.nodes}
+    return {str(n.name) for n in load(path).root.nodes}
 
 
 def status(page: Page):  # noqa: ANN201 - a Playwright Locator
@@ -441,7 +441,7 @@ def test_extract_asks_for_the_library_and_undo_takes_its_write_back(
     with ops_answer(page):
         dialog.get_by_label("Library").press("Enter")
     expect(node(page, "Accelerate_1")).to_have_count(0)
-    assert [str(m.name) for m in io.load_library(library).root.modules] == ["Turning"]
+    assert [str(m.name) for m in load_library(library).root.modules] == ["Turning"]
     with page.expect_response(lambda r: r.url.endswith("/api/undo")):
         toolbar.get_by_role("button", name="Undo").click()
     expect(node(page, "Accelerate_1")).to_be_visible()

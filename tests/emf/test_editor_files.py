@@ -5,9 +5,9 @@ from __future__ import annotations
 import shutil
 from pathlib import Path
 
-from sceml import io
-from sceml.compare import differences
 from sceml.editor import EditorSession
+from sceml.model.compare import differences
+from sceml.model.loading import load
 
 from .conftest import ECORE, Harness
 
@@ -42,5 +42,5 @@ def test_emf_reads_what_the_editor_saved(emf: Harness, examples_copy: Path, tmp_
     assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
     # What EMF wrote back reads in SceML equal to what the editor saved.
     shutil.copytree(examples_copy / "library", out / "library", dirs_exist_ok=True)
-    from_emf = io.load(out / "uis2-concrete.xmi", allowed_roots=[tmp_path, examples_copy.parent])
-    assert differences(io.load(saved).root, from_emf.root) == []
+    from_emf = load(out / "uis2-concrete.xmi", allowed_roots=[tmp_path, examples_copy.parent])
+    assert differences(load(saved).root, from_emf.root) == []

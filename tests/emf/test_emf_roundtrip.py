@@ -7,8 +7,9 @@ from pathlib import Path
 
 import pytest
 
-from sceml import io
-from sceml.compare import differences
+from sceml.model.compare import differences
+from sceml.model.loading import load, unresolved_references
+from sceml.model.saving import save
 
 from .conftest import ECORE, REPO, Harness
 
@@ -53,10 +54,10 @@ def test_emf_saved_every_example_and_the_library(emf_written: Path) -> None:
 
 @pytest.mark.parametrize("name", EXAMPLE_FILES, ids=str)
 def test_emf_written_file_reads_back_equal_in_sceml(emf_written: Path, name: Path) -> None:
-    original = io.load(EXAMPLES / name)
-    from_emf = io.load(emf_written / name)
+    original = load(EXAMPLES / name)
+    from_emf = load(emf_written / name)
     assert differences(original.root, from_emf.root) == []
-    assert list(io.unresolved_references(from_emf.root)) == []
+    assert list(unresolved_references(from_emf.root)) == []
 
 
 @pytest.mark.parametrize("name", EXAMPLE_FILES, ids=str)
@@ -64,13 +65,13 @@ def test_sceml_rewrite_of_emf_file_reads_back_equal_in_emf(
     emf: Harness, emf_written: Path, tmp_path: Path, name: Path
 ) -> None:
     # EMF wrote it, pyecore reads and writes it, EMF reads both and compares them. Both folders
-    # sit side by side, so the relative map path (rebased by io.save) reads the same in both.
+    # sit side by side, so the relative map path (rebased by save) reads the same in both.
     source, rewritten = tmp_path / "emf", tmp_path / "rewritten"
     shutil.copytree(emf_written, source)
     for library in (source / "library").glob("*.xmi"):
-        io.save(io.load(library).root, rewritten / "library" / library.name)
-    document = io.load(source / name, allowed_roots=[source])
-    io.save(document.root, rewritten / name)
+        save(load(library).root, rewritten / "library" / library.name)
+    document = load(source / name, allowed_roots=[source])
+    save(document.root, rewritten / name)
     result = emf.run("compare", ECORE, source / name, rewritten / name)
     assert result.stdout.strip() == "EQUAL"
 

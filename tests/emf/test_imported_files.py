@@ -5,9 +5,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from sceml import io
-from sceml.compare import differences
 from sceml.importer import import_to_file
+from sceml.model.compare import differences
+from sceml.model.loading import load
 
 from .conftest import ECORE, REPO, Harness
 
@@ -26,7 +26,7 @@ def test_emf_reads_and_writes_an_imported_scenario_with_opaque_nodes(
     assert "OpaqueAction" in (source / "alks.xmi").read_text()
     result = emf.run("roundtrip", ECORE, source, out, Path("alks.xmi"))
     assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
-    original, from_emf = io.load(source / "alks.xmi"), io.load(out / "alks.xmi")
+    original, from_emf = load(source / "alks.xmi"), load(out / "alks.xmi")
     assert differences(original.root, from_emf.root) == []
 
 
@@ -40,7 +40,7 @@ def test_emf_reads_and_writes_an_imported_scenario_with_road_positions(
     assert (source / "road.xmi").read_text().count('xsi:type="scemlmodel:RoadPosition"') == 3
     result = emf.run("roundtrip", ECORE, source, out, Path("road.xmi"))
     assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
-    original, from_emf = io.load(source / "road.xmi"), io.load(out / "road.xmi")
+    original, from_emf = load(source / "road.xmi"), load(out / "road.xmi")
     assert differences(original.root, from_emf.root) == []
     lead = next(a for a in from_emf.root.nodes[0].actors if a.name == "Lead")
     assert lead.startPosition.h.value == 0.05
@@ -55,7 +55,7 @@ def test_emf_reads_and_writes_relative_positions_naming_their_actors(
     import_to_file(FILES / "relative-positions.xosc", source / "relative.xmi")
     result = emf.run("roundtrip", ECORE, source, out, Path("relative.xmi"))
     assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
-    original, from_emf = io.load(source / "relative.xmi"), io.load(out / "relative.xmi")
+    original, from_emf = load(source / "relative.xmi"), load(out / "relative.xmi")
     assert differences(original.root, from_emf.root) == []
     actors = {a.name: a for a in from_emf.root.nodes[0].actors}
     lead = actors["Lead"].startPosition
@@ -72,8 +72,8 @@ def test_emf_keeps_how_an_imported_time_to_collision_measures(emf: Harness, tmp_
     assert 'freespace="false"' in written and 'relativeDistanceType="longitudinal"' in written
     result = emf.run("roundtrip", ECORE, source, out, Path("ttc.xmi"))
     assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
-    from_emf = io.load(out / "ttc.xmi").root
-    assert differences(io.load(source / "ttc.xmi").root, from_emf) == []
+    from_emf = load(out / "ttc.xmi").root
+    assert differences(load(source / "ttc.xmi").root, from_emf) == []
     (ttc,) = [n for n in from_emf.nodes if n.eClass.name == "TimeToCollision"]
     assert (ttc.freespace, ttc.relativeDistanceType.name) == (False, "longitudinal")
 
@@ -86,9 +86,7 @@ def test_emf_reads_and_writes_an_imported_traveled_distance(emf: Harness, tmp_pa
     assert "scemlmodel:TraveledDistance" in (source / "traveled.xmi").read_text()
     result = emf.run("roundtrip", ECORE, source, out, Path("traveled.xmi"))
     assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
-    assert (
-        differences(io.load(source / "traveled.xmi").root, io.load(out / "traveled.xmi").root) == []
-    )
+    assert differences(load(source / "traveled.xmi").root, load(out / "traveled.xmi").root) == []
 
 
 def test_emf_keeps_how_an_imported_time_headway_measures(emf: Harness, tmp_path: Path) -> None:
@@ -99,9 +97,7 @@ def test_emf_keeps_how_an_imported_time_headway_measures(emf: Harness, tmp_path:
     assert 'coordinateSystem="lane"' in (source / "headway.xmi").read_text()
     result = emf.run("roundtrip", ECORE, source, out, Path("headway.xmi"))
     assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
-    assert (
-        differences(io.load(source / "headway.xmi").root, io.load(out / "headway.xmi").root) == []
-    )
+    assert differences(load(source / "headway.xmi").root, load(out / "headway.xmi").root) == []
 
 
 def test_emf_keeps_an_imported_lane_change_target(emf: Harness, tmp_path: Path) -> None:
@@ -113,7 +109,7 @@ def test_emf_keeps_an_imported_lane_change_target(emf: Harness, tmp_path: Path) 
     assert 'targetLane="-3"' in written and 'shape="cubic"' in written
     result = emf.run("roundtrip", ECORE, source, out, Path("lanes.xmi"))
     assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
-    assert differences(io.load(source / "lanes.xmi").root, io.load(out / "lanes.xmi").root) == []
+    assert differences(load(source / "lanes.xmi").root, load(out / "lanes.xmi").root) == []
 
 
 def test_emf_reads_and_writes_global_nodes_declarations_signals_and_lane_headings(
@@ -126,18 +122,16 @@ def test_emf_reads_and_writes_global_nodes_declarations_signals_and_lane_heading
         import_to_file(FILES / f"{name}.xosc", source / f"{name}.xmi")
         result = emf.run("roundtrip", ECORE, source, out, Path(f"{name}.xmi"))
         assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
-        original, from_emf = io.load(source / f"{name}.xmi"), io.load(out / f"{name}.xmi")
+        original, from_emf = load(source / f"{name}.xmi"), load(out / f"{name}.xmi")
         assert differences(original.root, from_emf.root) == []
-    globals_back = io.load(out / "variables.xmi").root
+    globals_back = load(out / "variables.xmi").root
     kinds = {n.eClass.name for n in globals_back.nodes}
     assert {"SetVariable", "VariableCondition"} <= kinds
     assert [(d.name, d.variable) for d in globals_back.nodes[0].declarations] == [
         ("Counter", True),
         ("Mood", True),
     ]
-    lead = next(
-        a for a in io.load(out / "lane-headings.xmi").root.nodes[0].actors if a.name == "Lead"
-    )
+    lead = next(a for a in load(out / "lane-headings.xmi").root.nodes[0].actors if a.name == "Lead")
     assert lead.startPosition.h.value == 3.141593
 
 
@@ -150,9 +144,9 @@ def test_emf_reads_and_writes_imported_controllers(emf: Harness, tmp_path: Path)
         import_to_file(FILES / f"{name}.xosc", source / f"{name}.xmi")
         result = emf.run("roundtrip", ECORE, source, out, Path(f"{name}.xmi"))
         assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
-        original = io.load(source / f"{name}.xmi").root
-        assert differences(original, io.load(out / f"{name}.xmi").root) == [], name
-    from_emf = io.load(out / "controller_override.xmi").root
+        original = load(source / f"{name}.xmi").root
+        assert differences(original, load(out / f"{name}.xmi").root) == [], name
+    from_emf = load(out / "controller_override.xmi").root
     (override,) = [n for n in from_emf.nodes if n.name == "Override"]
     assert [(o.kind.name, o.active, o.value) for o in override.overrides] == [
         ("throttle", True, 0.3),
@@ -162,5 +156,5 @@ def test_emf_reads_and_writes_imported_controllers(emf: Harness, tmp_path: Path)
     # An unset domain (EBooleanObject) stays unset through EMF, not false.
     (assign,) = [n for n in from_emf.nodes if n.name == "Assign"]
     assert (assign.activation.longitudinal, assign.activation.lateral) == (True, None)
-    ego = next(a for a in io.load(out / "controller_object.xmi").root.nodes[0].actors)
+    ego = next(a for a in load(out / "controller_object.xmi").root.nodes[0].actors)
     assert [(p.name, p.value) for p in ego.controller.properties][1] == ("timeGap", "2.0")

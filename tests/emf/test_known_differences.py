@@ -1,5 +1,5 @@
 """Where pyecore 0.15.2 and EMF disagree: each trap shown on a scratch metamodel, and each shown
-avoided by the SceML metamodel or by sceml.io."""
+avoided by the SceML metamodel or by sceml.model."""
 
 from __future__ import annotations
 
@@ -22,9 +22,9 @@ from pyecore.ecore import (
 from pyecore.resources import URI, ResourceSet
 
 import scemlmodel as scm
-from sceml import io
-from sceml.build import ScenarioBuilder, lane
 from sceml.errors import SaveError
+from sceml.model.build import ScenarioBuilder, lane
+from sceml.model.saving import save
 
 from .conftest import ECORE, Harness
 
@@ -215,14 +215,14 @@ def test_io_save_refuses_numbers_emf_cannot_read(
     target = tmp_path / "s.xmi"
     target.write_bytes(b"good")
     with pytest.raises(SaveError) as caught:
-        io.save(_scenario_with(speed, lane_id), target)
+        save(_scenario_with(speed, lane_id), target)
     assert message in caught.value.message
     assert caught.value.element in ("Root/ego/initialSpeed", "Root/ego/startPosition")
     assert target.read_bytes() == b"good"
 
 
 def test_io_save_accepts_the_extremes_of_int_and_double(emf: Harness, tmp_path: Path) -> None:
-    path = io.save(_scenario_with(1.7976931348623157e308, -(2**31)), tmp_path / "edge.xmi")
+    path = save(_scenario_with(1.7976931348623157e308, -(2**31)), tmp_path / "edge.xmi")
     result = emf.run("features", ECORE, path)
     assert "laneId=-2147483648" in result.stdout and "value=1.7976931348623157E308" in result.stdout
 
@@ -242,7 +242,7 @@ def test_trap_package_without_ns_prefix_is_written_as_none(emf: Harness, tmp_pat
 
 def test_sceml_package_has_a_prefix_and_files_use_it(tmp_path: Path) -> None:
     assert METAMODEL.getroot().get("nsPrefix") == scm.nsPrefix == "scemlmodel"
-    text = io.save(_scenario_with(5.0, 1), tmp_path / "s.xmi").read_text()
+    text = save(_scenario_with(5.0, 1), tmp_path / "s.xmi").read_text()
     assert 'xsi:type="scemlmodel:RootNode"' in text and "None:" not in text
 
 

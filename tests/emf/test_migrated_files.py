@@ -6,9 +6,9 @@ from __future__ import annotations
 import shutil
 from pathlib import Path
 
-from sceml import io
-from sceml.compare import differences
-from sceml.migrations.files import migrate_file
+from sceml.model.compare import differences
+from sceml.model.loading import load
+from sceml.model.migrating import migrate_file
 
 from .conftest import ECORE, REPO, Harness
 
@@ -27,7 +27,7 @@ def test_emf_reads_migrated_files_of_every_release(emf: Harness, tmp_path: Path)
         result = emf.run("roundtrip", ECORE, source, out, *files)
         assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
         for name in files:
-            assert differences(io.load(source / name).root, io.load(out / name).root) == []
+            assert differences(load(source / name).root, load(out / name).root) == []
 
 
 def test_emf_refuses_an_unmigrated_older_file(emf: Harness, tmp_path: Path) -> None:

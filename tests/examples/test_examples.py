@@ -8,8 +8,8 @@ from pathlib import Path
 import pytest
 
 import scemlmodel as scm
-from sceml import io
-from sceml.graph import actors, predecessors, root_node
+from sceml.model.graph import actors, predecessors, root_node
+from sceml.model.loading import load
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
@@ -32,12 +32,12 @@ def test_committed_examples_equal_the_script_output(tmp_path: Path) -> None:
 @pytest.mark.parametrize("level", ["functional", "logical", "concrete"])
 def test_levels_are_declared(level: str) -> None:
     for name in ("uis1", "uis2", "overtaking"):
-        root = root_node(io.load(EXAMPLES / f"{name}-{level}.xmi").root)
+        root = root_node(load(EXAMPLES / f"{name}-{level}.xmi").root)
         assert root.level.name == level
 
 
 def test_uis1_structure() -> None:
-    scenario = io.load(EXAMPLES / "uis1-concrete.xmi").root
+    scenario = load(EXAMPLES / "uis1-concrete.xmi").root
     assert [(a.name, a.eClass.name, a.isEgo) for a in actors(scenario)] == [
         ("ego", "Car", True),
         ("bike", "Bicycle", False),
@@ -54,7 +54,7 @@ def test_uis1_structure() -> None:
 
 
 def test_uis2_uses_crossing_maneuver_with_pedestrian_and_car() -> None:
-    scenario = io.load(EXAMPLES / "uis2-concrete.xmi").root
+    scenario = load(EXAMPLES / "uis2-concrete.xmi").root
     assert {a.name: a.eClass.name for a in actors(scenario)} == {
         "ego": "Car",
         "car": "Car",
@@ -72,19 +72,19 @@ def test_uis2_uses_crossing_maneuver_with_pedestrian_and_car() -> None:
 
 
 def test_functional_examples_hold_no_parameters() -> None:
-    scenario = io.load(EXAMPLES / "uis1-functional.xmi").root
+    scenario = load(EXAMPLES / "uis1-functional.xmi").root
     values = [o for o in scenario.eAllContents() if isinstance(o, scm.ParameterValue)]
     assert values == []
 
 
 def test_logical_examples_hold_ranges_and_distributions() -> None:
-    scenario = io.load(EXAMPLES / "uis2-logical.xmi").root
+    scenario = load(EXAMPLES / "uis2-logical.xmi").root
     kinds = {type(o).__name__ for o in scenario.eAllContents() if isinstance(o, scm.ParameterValue)}
     assert {"Range", "NormalDistribution", "UniformDistribution", "DiscreteDistribution"} <= kinds
 
 
 def test_overtaking_uses_a_module_three_deep() -> None:
-    scenario = io.load(EXAMPLES / "overtaking-concrete.xmi").root
+    scenario = load(EXAMPLES / "overtaking-concrete.xmi").root
     use = next(n for n in scenario.nodes if isinstance(n, scm.ModuleUse))
     assert use.definition.name == "Overtaking"
     assert {b.role: b.actor.name for b in use.bindings} == {
@@ -103,7 +103,7 @@ def test_overtaking_uses_a_module_three_deep() -> None:
 
 def test_overtaking_starts_on_the_lanes_of_one_straight_arm() -> None:
     # East arm, road 2: outbound lane -1 runs along s, inbound lane 1 is the oncoming lane.
-    scenario = io.load(EXAMPLES / "overtaking-concrete.xmi").root
+    scenario = load(EXAMPLES / "overtaking-concrete.xmi").root
     starts = {
         a.name: (a.startPosition.roadId, a.startPosition.laneId, a.startPosition.s.value)
         for a in actors(scenario)

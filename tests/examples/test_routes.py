@@ -15,10 +15,10 @@ import pytest
 from lxml import etree
 
 import scemlmodel as scm
-from sceml import io
-from sceml.graph import actors
+from sceml.model.graph import actors
+from sceml.model.loading import load
+from sceml.model.params import concrete
 from sceml.modules import flatten
-from sceml.params import concrete
 from sceml.validation import validate
 
 REPO = Path(__file__).resolve().parents[2]
@@ -70,7 +70,7 @@ def _r006(scenario_text: str, tmp_path: Path, name: str) -> list[str]:
             (library / file.name).write_bytes(file.read_bytes())
     copy.write_text(scenario_text, encoding="utf-8")
     (tmp_path / ".sceml-root").touch()  # one project, as the repository is
-    document = io.load(copy)
+    document = load(copy)
     return [d.message for d in validate(document.root, document=document) if d.code == "SCEML-R006"]
 
 
@@ -95,7 +95,7 @@ def test_every_turn_follows_a_junction_connection_that_turns_that_way(
 
 
 def test_the_oncoming_car_can_drive_straight_through_for_its_distance() -> None:
-    scenario = flatten(io.load(REPO / "examples" / "uis2-concrete.xmi").root)
+    scenario = flatten(load(REPO / "examples" / "uis2-concrete.xmi").root)
     car = next(a for a in actors(scenario) if a.name == "car")
     drive = next(n for n in scenario.nodes if isinstance(n, scm.DriveDistance))
     start = car.startPosition

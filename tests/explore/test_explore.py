@@ -9,9 +9,9 @@ import pytest
 from click.testing import CliRunner
 from conftest import EXAMPLES
 
-from sceml import io
 from sceml.cli import cli
 from sceml.explore import ExploreError, explore
+from sceml.model.loading import load_scenario
 from sceml.simulate import simulate
 
 UIS1 = EXAMPLES / "uis1-logical.xmi"
@@ -47,13 +47,13 @@ def test_explore_finds_collisions_of_ego_and_bike_that_simulate_again_as_collisi
     for rank in (1, 2, 3):
         concrete = tmp_path / f"uis1_critical_{rank:02d}.xmi"
         assert concrete.with_suffix(".xosc").exists()
-        document = io.load_scenario(concrete, allow=[UIS1.parent.parent / "maps"])
+        document = load_scenario(concrete, allow=[UIS1.parent.parent / "maps"])
         run = simulate(document.root, concrete)  # the saved file, read back, on its map
         assert run.pair("ego", "bike").collision
 
 
 def test_refinement_finds_more_collisions_than_the_design() -> None:
-    scenario = io.load_scenario(UIS1).root
+    scenario = load_scenario(UIS1).root
     found = explore(scenario, UIS1, metric="collision", budget=80, seed=2)
     share = {
         phase: sum(e.run is not None and e.run.collided for e in runs) / len(runs)
@@ -64,7 +64,7 @@ def test_refinement_finds_more_collisions_than_the_design() -> None:
 
 
 def test_the_same_seed_gives_the_same_runs_and_another_seed_others() -> None:
-    scenario = io.load_scenario(UIS1).root
+    scenario = load_scenario(UIS1).root
 
     def runs(seed: int) -> list[tuple[tuple[float, ...], float]]:
         found = explore(scenario, UIS1, metric="min-ttc", budget=24, seed=seed)
@@ -77,4 +77,4 @@ def test_the_same_seed_gives_the_same_runs_and_another_seed_others() -> None:
 def test_a_concrete_scenario_has_nothing_to_explore() -> None:
     concrete = EXAMPLES / "uis1-concrete.xmi"
     with pytest.raises(ExploreError, match="varies no parameter"):
-        explore(io.load_scenario(concrete).root, concrete, metric="pet", budget=10)
+        explore(load_scenario(concrete).root, concrete, metric="pet", budget=10)

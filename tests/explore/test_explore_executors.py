@@ -15,12 +15,12 @@ from click.testing import CliRunner
 from conftest import EXAMPLES
 from distributed import LocalCluster
 
-from sceml import io
 from sceml.cli import cli
 from sceml.executors import EXECUTORS, LocalExecutor, Outcome
 from sceml.explore import explore
 from sceml.explore.workers import make_search_payload, setup_search, simulate_chunk
 from sceml.levels.space import parameter_space
+from sceml.model.loading import load_scenario
 from sceml.simulate import Run
 
 UIS1 = EXAMPLES / "uis1-logical.xmi"
@@ -68,7 +68,7 @@ class _Shuffled(LocalExecutor):
 
 
 def test_runs_keep_the_order_of_their_candidates_not_of_their_results() -> None:
-    scenario = io.load_scenario(UIS1).root
+    scenario = load_scenario(UIS1).root
     plain = explore(scenario, UIS1, metric="min-ttc", budget=20, seed=3)
     shuffled = explore(scenario, UIS1, metric="min-ttc", budget=20, seed=3, executor=_Shuffled())
     assert [e.index for e in shuffled.evaluations] == list(range(20))
@@ -80,7 +80,7 @@ def test_runs_keep_the_order_of_their_candidates_not_of_their_results() -> None:
 
 def test_a_worker_needs_only_the_payload_not_the_callers_files(examples_copy: Path) -> None:
     logical = examples_copy / "uis1-logical.xmi"
-    scenario = io.load_scenario(logical).root
+    scenario = load_scenario(logical).root
     paths = parameter_space(scenario).paths
     payload = make_search_payload(scenario, logical, paths, step=0.05)
     shutil.rmtree(examples_copy)

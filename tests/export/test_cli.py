@@ -8,9 +8,9 @@ from pathlib import Path
 
 from click.testing import CliRunner
 
-from sceml import schema
 from sceml.cli.check_xosc import check_xosc
 from sceml.cli.export import export
+from sceml.xosc import schema
 
 GOLDEN = Path(__file__).resolve().parent / "golden"
 

@@ -9,8 +9,8 @@ import pytest
 from lxml import etree
 
 import scemlmodel as scm
-from sceml.build import ScenarioBuilder, activation, controller, lane, override
 from sceml.export import export
+from sceml.model.build import ScenarioBuilder, activation, controller, lane, override
 
 
 def _scenario(*, overrides: bool = True, typed: bool = False) -> scm.Scenario:

@@ -7,9 +7,11 @@ from pathlib import Path
 
 import pytest
 
-from sceml import io, schema
 from sceml.export import build_xosc
-from sceml.qualitychecker import run_quality_checker
+from sceml.files.writing import write_atomically
+from sceml.model.loading import load_scenario
+from sceml.xosc import schema
+from sceml.xosc.qualitychecker import run_quality_checker
 
 REPO = Path(__file__).resolve().parents[2]
 EXAMPLES = REPO / "examples"
@@ -31,7 +33,7 @@ def exported(name: str, version: str, profile: str) -> bytes:
     source = EXAMPLES / f"{name}-concrete.xmi"
     town = "Town03" if profile == "carla" else None
     document = build_xosc(
-        io.load_scenario(source).root,
+        load_scenario(source).root,
         version=version,
         profile=profile,
         source_path=source,
@@ -46,7 +48,7 @@ def test_export_matches_golden(name: str, version: str, profile: str, update_gol
     path = golden_path(name, version, profile)
     data = exported(name, version, profile)
     if update_golden:
-        io.write_atomically(path, data)
+        write_atomically(path, data)
     expected = path.read_text(encoding="utf-8").splitlines(keepends=True)
     actual = data.decode("utf-8").splitlines(keepends=True)
     diff = "".join(difflib.unified_diff(expected, actual, str(path), "exported", n=2))

@@ -1,4 +1,4 @@
-"""Which nodes the export writes into their successor's trigger (`players.flows.inlined`), and
+"""Which nodes the export writes into their successor's trigger (`xosc.flows.inlined`), and
 what it writes there: worked out by hand from SPEC §3 on small graphs built here."""
 
 from __future__ import annotations
@@ -7,9 +7,9 @@ import pytest
 from lxml import etree
 
 import scemlmodel as scm
-from sceml.build import ScenarioBuilder, world
 from sceml.export import ExportError, ParameterDeclarationSpec, build_xosc
-from sceml.players.flows import inlined
+from sceml.model.build import ScenarioBuilder, world
+from sceml.xosc.flows import inlined
 
 SIZE = {"length": 4.0, "width": 2.0}
 

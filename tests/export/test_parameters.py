@@ -4,14 +4,14 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from sceml import io
 from sceml.export import ParameterDeclarationSpec, export
+from sceml.model.loading import load_scenario
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
 def test_hooked_values_become_parameter_references() -> None:
-    scenario = io.load_scenario(EXAMPLES / "uis2-concrete.xmi").root
+    scenario = load_scenario(EXAMPLES / "uis2-concrete.xmi").root
     hook = {
         ("Root/ego", "initialSpeed"): ParameterDeclarationSpec("EgoSpeed", "6.0"),
         ("CrossingManeuver_1.InVehicleRadius_1", "radius"): ParameterDeclarationSpec(

@@ -17,12 +17,13 @@ from lxml import etree
 from trigger_waits import ROOT, expected_groups
 
 import scemlmodel as scm
-from sceml import graph, io
-from sceml.build import ScenarioBuilder, lane, world
 from sceml.export import build_xosc
 from sceml.export.names import SEPARATOR, sanitize
+from sceml.model import graph
+from sceml.model.build import ScenarioBuilder, lane, world
+from sceml.model.loading import load_scenario
 from sceml.modules import flatten
-from sceml.players.flows import inlined
+from sceml.xosc.flows import inlined
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 VERSIONS = ("1.0", "1.1", "1.2", "1.3")
@@ -71,7 +72,7 @@ def every_kind() -> scm.Scenario:
 
 
 def example(name: str) -> scm.Scenario:
-    return io.load_scenario(EXAMPLES / f"{name}-concrete.xmi").root
+    return load_scenario(EXAMPLES / f"{name}-concrete.xmi").root
 
 
 SCENARIOS = {
@@ -143,7 +144,7 @@ def test_every_event_starts_after_its_nodes_predecessors_finished(
 ) -> None:
     """Each group of each event's StartTrigger names the finish events of all predecessors
     (join-all, ordinary nodes) or of one (join-one, one group each), or an earlier event of the
-    same node; a predecessor written into the trigger (`players.flows.inlined`) stands there as
+    same node; a predecessor written into the trigger (`xosc.flows.inlined`) stands there as
     what it waits for and its own condition. completeState stays true, which is what makes
     that exact."""
     flat, document, events_of = exported(name, version, profile)
@@ -197,7 +198,7 @@ def test_stop_trigger_waits_for_the_end_nodes_predecessors(
 @pytest.mark.parametrize("version", VERSIONS)
 def test_distance_keeping_drives_within_the_actors_limits(version: str) -> None:
     """Without DynamicConstraints esmini moves the actor to the gap in one step (teleports).
-    The limits are gap keeping's (players.meaning): at most 3 m/s2 up and 6 m/s2 down, within
+    The limits are gap keeping's (xosc.meaning): at most 3 m/s2 up and 6 m/s2 down, within
     the car's 10 m/s2 either way, and the car's top speed."""
     _, document, _ = exported("every-kind", version, "generic")
     actions = list(document.iter("LongitudinalDistanceAction"))

@@ -7,8 +7,6 @@ from pathlib import Path
 import pytest
 
 import scemlmodel as scm
-from sceml import io
-from sceml.build import ScenarioBuilder, lane, world
 from sceml.export import (
     ExportError,
     InvalidOutputError,
@@ -17,6 +15,9 @@ from sceml.export import (
     unsupported_reason,
     writer,
 )
+from sceml.model.build import ScenarioBuilder, lane, world
+from sceml.model.loading import load_scenario
+from sceml.model.locating import uri_fragment
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
@@ -38,7 +39,7 @@ def codes(error: ExportError) -> set[str]:
 
 @pytest.mark.parametrize("level", ["functional", "logical"])
 def test_functional_and_logical_examples_are_refused_naming_the_level(level: str) -> None:
-    scenario = io.load_scenario(EXAMPLES / f"uis1-{level}.xmi").root
+    scenario = load_scenario(EXAMPLES / f"uis1-{level}.xmi").root
     with pytest.raises(ExportError, match=f"a {level} scenario cannot be exported") as caught:
         export(scenario)
     assert codes(caught.value) == {"SCEML-X001"}
@@ -52,16 +53,16 @@ def test_invalid_model_is_refused_with_validation_diagnostics() -> None:
 
 
 def test_a_refused_node_of_a_module_is_placed_at_the_use_in_the_input() -> None:
-    document = io.load_scenario(EXAMPLES / "overtaking-concrete.xmi")
+    document = load_scenario(EXAMPLES / "overtaking-concrete.xmi")
     plain, use = document.root.nodes[2], document.root.nodes[3]
     with pytest.raises(ExportError) as caught:
         export(document.root, version="1.0", profile="carla", town="Town03")
     placed = {d.path: d for d in caught.value.diagnostics}
     inner = placed["Overtaking_1.PassVehicle_1.ChangeLaneRight_1.TimeElapsed_1"]
     assert inner.code == "SCEML-E003"
-    assert inner.element is use and inner.fragment == io.uri_fragment(use)
+    assert inner.element is use and inner.fragment == uri_fragment(use)
     assert placed["KeepVelocity_1"].element is plain
-    assert placed["KeepVelocity_1"].fragment == io.uri_fragment(plain)
+    assert placed["KeepVelocity_1"].fragment == uri_fragment(plain)
 
 
 @pytest.mark.parametrize("kind", ["TimeElapsed", "KeepVelocity"])
@@ -113,7 +114,7 @@ def test_export_checks_are_the_registrys_rules() -> None:
 
 
 def test_every_kind_maps_in_every_version_of_the_generic_profile() -> None:
-    from sceml import catalog
+    from sceml.model import catalog
 
     # Variables came with OpenSCENARIO 1.2.
     since_1_2 = {"VariableCondition", "SetVariable"}
@@ -136,7 +137,7 @@ def test_every_kind_maps_in_every_version_of_the_generic_profile() -> None:
 def test_refused_export_keeps_the_existing_file(tmp_path: Path) -> None:
     target = tmp_path / "out.xosc"
     target.write_text("good", encoding="utf-8")
-    logical = io.load_scenario(EXAMPLES / "uis2-logical.xmi").root
+    logical = load_scenario(EXAMPLES / "uis2-logical.xmi").root
     with pytest.raises(ExportError):
         export_to_file(logical, target)
     assert target.read_text(encoding="utf-8") == "good"
@@ -183,7 +184,7 @@ def test_world_positions_and_every_maneuver_export(tmp_path: Path) -> None:
 
 
 def test_controller_settings_a_version_cannot_say_are_refused_naming_the_holder() -> None:
-    from sceml.build import activation, controller
+    from sceml.model.build import activation, controller
 
     b = ScenarioBuilder("Ctl", map="map.xodr", level="concrete", date="2026-01-01T00:00:00")
     ego = b.actor(
@@ -217,3 +218,11 @@ def test_controller_settings_a_version_cannot_say_are_refused_naming_the_holder(
     ego.controller.controllerType = None
     ego.controllerActivation = None
     assert export(b.scenario, version="1.1") is not None
+
+
+def test_the_kinds_support_lists_are_exactly_those_with_a_planner() -> None:
+    # Validation reads MAPPED_KINDS without loading the exporter; the planners must agree.
+    from sceml.export.actions import PLANNERS
+    from sceml.xosc.support import MAPPED_KINDS
+
+    assert set(PLANNERS) == MAPPED_KINDS

@@ -17,11 +17,12 @@ from strategies import scenarios
 from trigger_waits import ROOT, Structure, expected_groups
 
 import scemlmodel as scm
-from sceml import graph, io
 from sceml.export import build_xosc
 from sceml.export.names import SEPARATOR, sanitize
+from sceml.model import graph
+from sceml.model.loading import load_scenario
 from sceml.modules.flatten import flatten
-from sceml.players.flows import inlined
+from sceml.xosc.flows import inlined
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
@@ -94,4 +95,4 @@ def test_triggers_rebuild_the_predecessor_structure(scenario: scm.Scenario, vers
 
 def test_round_trip_holds_for_the_flattened_examples() -> None:
     for name in ("uis1", "uis2"):
-        check_round_trip(io.load_scenario(EXAMPLES / f"{name}-concrete.xmi").root, "1.3")
+        check_round_trip(load_scenario(EXAMPLES / f"{name}-concrete.xmi").root, "1.3")

@@ -9,8 +9,8 @@ from pathlib import Path
 from click.testing import CliRunner
 from conftest import EXAMPLES, REPO
 
-from sceml import io
 from sceml.cli import cli
+from sceml.model.loading import load_scenario
 from sceml.simulate import simulate
 from sceml.simulate.outputs import trajectories_csv
 
@@ -20,7 +20,7 @@ DATA = Path(__file__).resolve().parent / "data"
 def uis1_csv(tmp_path: Path) -> Path:
     """The preview's recording of UIS1, as `sceml simulate --csv` writes it."""
     path = EXAMPLES / "uis1-concrete.xmi"
-    run = simulate(io.load_scenario(path).root, path)
+    run = simulate(load_scenario(path).root, path)
     recording = tmp_path / "uis1.csv"
     recording.write_text(trajectories_csv(run), encoding="utf-8")
     return recording
@@ -47,7 +47,7 @@ def test_extract_writes_a_clean_scenario_and_reports_why_the_bike_started(tmp_pa
     assert result.exit_code == 0, result.output
     assert "InVehicleRadius(bike and ego; radius=12)" in result.output
     assert "inferred conditions; replay within" in result.output
-    root = io.load_scenario(out).root
+    root = load_scenario(out).root
     assert root.nodes[0].map == "../maps/intersection.xodr"
     kinds = {str(a.name): a.eClass.name for a in root.nodes[0].actors}
     assert kinds == {"ego": "Car", "bike": "Bicycle"}

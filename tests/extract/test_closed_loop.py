@@ -17,7 +17,6 @@ import pytest
 from conftest import EXAMPLES, REPO
 
 import scemlmodel as scm
-from sceml import io
 from sceml.diagnostics import Severity
 from sceml.extract import Extraction, extract
 from sceml.extract.closedloop import allowed_error, recording_of, replays_closely, signature
@@ -25,6 +24,8 @@ from sceml.levels.apply import FlatTemplate
 from sceml.levels.sampling import design, plan_for
 from sceml.levels.space import parameter_space
 from sceml.maps import RoadMap, load_map
+from sceml.model.loading import load_scenario
+from sceml.model.saving import save
 from sceml.simulate import Run, simulate
 from sceml.validation import validate
 
@@ -37,7 +38,7 @@ def road_map() -> RoadMap:
 
 
 def original(path: Path) -> tuple[scm.Scenario, Run]:
-    scenario = io.load_scenario(path).root
+    scenario = load_scenario(path).root
     return scenario, simulate(scenario, path, road_map=road_map())
 
 
@@ -74,8 +75,8 @@ def test_uis1_gives_back_the_trigger_radius_and_a_clean_scenario(tmp_path: Path)
     (tmp_path / "maps" / "intersection.xodr").write_bytes(
         (REPO / "maps" / "intersection.xodr").read_bytes()
     )
-    saved = io.save(found.scenario, tmp_path / "out" / "uis1.xmi")
-    document = io.load_scenario(saved, allow=[tmp_path / "maps"])
+    saved = save(found.scenario, tmp_path / "out" / "uis1.xmi")
+    document = load_scenario(saved, allow=[tmp_path / "maps"])
     problems = [
         d for d in validate(document.root, document=document) if d.severity >= Severity.WARNING
     ]
@@ -96,7 +97,7 @@ def test_overtaking_comes_back_with_its_lane_changes() -> None:
 def samples(name: str, n: int, seed: int) -> Iterator[tuple[int, scm.Scenario, Run]]:
     """Each sample with its run; the template is filled in place, so use one before the next."""
     path = EXAMPLES / name
-    logical = io.load_scenario(path).root
+    logical = load_scenario(path).root
     space = parameter_space(logical)
     template = FlatTemplate(logical, space.paths)
     for index, row in enumerate(design(space, plan_for(space, "random", n, seed))):

@@ -11,12 +11,12 @@ import pytest
 from click.testing import CliRunner
 from conftest import REPO
 
-from sceml import io
 from sceml.cli import cli
 from sceml.editor.session import EditorSession
 from sceml.extract import extract, read_recording
 from sceml.extract.closedloop import allowed_error
 from sceml.maps import load_map
+from sceml.model.saving import save
 
 DATA = Path(__file__).resolve().parent / "data"
 
@@ -67,7 +67,7 @@ def test_the_extracted_scenario_renders_exports_and_opens_in_the_editor(tmp_path
         load_map(REPO / "maps" / "intersection.xodr"),
         map_reference="maps/intersection.xodr",
     )
-    saved = io.save(found.scenario, tmp_path / "uis2.xmi")
+    saved = save(found.scenario, tmp_path / "uis2.xmi")
     runner = CliRunner()
     drawn = runner.invoke(cli, ["render", str(saved), "-o", str(tmp_path / "uis2.svg")])
     assert drawn.exit_code == 0, drawn.output

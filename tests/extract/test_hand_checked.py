@@ -14,9 +14,9 @@ import scemlmodel as scm
 from sceml.diagnostics import Severity
 from sceml.extract import Recording, Track, extract
 from sceml.maps import load_map
-from sceml.players.meaning import FLOW_DELAY_STEPS
 from sceml.simulate import DEFAULT_STEP
 from sceml.validation import validate
+from sceml.xosc.meaning import FLOW_DELAY_STEPS
 
 STEP = 0.05
 #: What a flow costs in the replay (s): a node starts a step after its predecessor finished.

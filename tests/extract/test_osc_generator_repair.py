@@ -11,7 +11,7 @@ from pathlib import Path
 from conftest import REPO
 from lxml import etree
 
-from sceml.schema import validate_tree
+from sceml.xosc.schema import validate_tree
 
 ORIGINAL = Path(__file__).resolve().parent / "data" / "overtaking-osc-generator.xosc"
 

@@ -16,10 +16,11 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
-from sceml import io
 from sceml.cli import cli
 from sceml.cli import commands as cli_commands
 from sceml.errors import LoadError
+from sceml.files.safexml import MAX_BYTES_VARIABLE
+from sceml.model.loading import load, unresolved_references
 from sceml.modules.flatten import FlattenError, flatten
 
 from .make_corpus import CORPUS, READERS, cases, manifest
@@ -167,14 +168,14 @@ def test_every_xmi_case_is_a_load_error_or_a_located_reference_problem() -> None
         if not name.endswith(".xmi") or code == "0" or "sample" in readers.split(","):
             continue
         try:
-            document = io.load(CORPUS / name)
+            document = load(CORPUS / name)
         except LoadError as error:
             assert error.file == str(CORPUS / name) and code == "2"
             assert error.line == (None if line == "-" else int(line)), name
             continue
         if name.startswith("self_use"):
             continue
-        broken = list(io.unresolved_references(document.root))
+        broken = list(unresolved_references(document.root))
         assert len(broken) == 1 and document.line_of(broken[0][0]) == int(line), name
 
 
@@ -183,7 +184,7 @@ def test_every_xmi_case_is_a_load_error_or_a_located_reference_problem() -> None
 )
 def test_module_using_itself_loads_and_flatten_reports_it(name: str) -> None:
     with deadline():
-        document = io.load(CORPUS / name)
+        document = load(CORPUS / name)
         with pytest.raises(FlattenError, match="module uses itself"):
             flatten(document.root)
 
@@ -214,11 +215,11 @@ def test_a_100_mb_file_is_refused_by_size_before_reading(
 
 
 def test_the_size_limit_is_configurable(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setenv(io.MAX_BYTES_VARIABLE, "1000")
+    monkeypatch.setenv(MAX_BYTES_VARIABLE, "1000")
     exit_code, output = run(["info", str(EXAMPLES / "uis1-concrete.xmi")])
     assert exit_code == 2 and "above the 1000-byte limit" in output
-    assert io.load(EXAMPLES / "uis1-concrete.xmi", max_bytes=10**6).root is not None
-    monkeypatch.setenv(io.MAX_BYTES_VARIABLE, "lots")
+    assert load(EXAMPLES / "uis1-concrete.xmi", max_bytes=10**6).root is not None
+    monkeypatch.setenv(MAX_BYTES_VARIABLE, "lots")
     exit_code, output = run(["info", str(EXAMPLES / "uis1-concrete.xmi")])
     assert exit_code == 2 and "SCEML_MAX_BYTES='lots'" in output
 
@@ -240,7 +241,7 @@ def test_utf16_dtd_is_refused(tmp_path: Path) -> None:
         (CORPUS / "billion_laughs.xmi").read_text().replace("UTF-8", "UTF-16").encode("utf-16")
     )
     with pytest.raises(LoadError, match="DTDs"):
-        io.load(bomb)
+        load(bomb)
 
 
 _MEASURE = """

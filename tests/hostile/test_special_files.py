@@ -13,8 +13,10 @@ from pathlib import Path
 
 import pytest
 
-from sceml import io, safefiles
 from sceml.errors import LoadError, SaveError
+from sceml.files import safefiles
+from sceml.files.writing import write_atomically, write_staged
+from sceml.model.loading import load
 from sceml.modules.store import save_together
 
 from .confined import sceml
@@ -236,11 +238,11 @@ def test_every_writer_follows_the_rule(tmp_path: Path) -> None:
     staging = tmp_path / "staging"
     staging.mkdir()
     with pytest.raises(SaveError, match="FIFO"):
-        io.write_atomically(target, b"data")
+        write_atomically(target, b"data")
     with pytest.raises(SaveError, match="FIFO"):
-        io.write_staged(target, b"data", staging)
+        write_staged(target, b"data", staging)
     examples = Path(__file__).resolve().parents[2] / "examples"
-    model = io.load(examples / "uis1-concrete.xmi").root
+    model = load(examples / "uis1-concrete.xmi").root
     with pytest.raises(SaveError, match="FIFO"):
         save_together([(model, target)])
     assert stat.S_ISFIFO(os.lstat(target).st_mode)

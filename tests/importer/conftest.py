@@ -21,9 +21,9 @@ import pytest
 from pyecore.ecore import EAttribute, EObject, EReference
 
 import scemlmodel as scm
-from sceml import catalog, graph, params
 from sceml.export.names import sanitize
 from sceml.levels.space import dimension
+from sceml.model import catalog, graph, params
 
 #: Not behaviour: where the file is (map), what the header says (date, description, author),
 #: how the editor draws it (diagramPosition), the name.
@@ -92,7 +92,7 @@ def _content(obj: EObject) -> str:
             continue
         if name == "referenceActor" and isinstance(obj, scm.TimeElapsed):
             # A wait does nothing to its actor, and the export writes it as a delay in its
-            # successor's trigger (`players.flows.inlined`), which names no actor.
+            # successor's trigger (`xosc.flows.inlined`), which names no actor.
             continue
         held = obj.eGet(feature)
         if name in numeric:
@@ -141,7 +141,7 @@ def _waits_for_one(node: EObject) -> bool:
 def _merged(node: EObject) -> bool:
     """A join that only feeds one node waiting the same way (all, or one, of its inputs): it
     means nothing of its own. The export writes it into that node's trigger
-    (`players.flows.inlined`), so the import reads its inputs as the node's own; the two
+    (`xosc.flows.inlined`), so the import reads its inputs as the node's own; the two
     graphs mean the same (SPEC §3) and compare equal."""
     after = graph.successors(node)
     if len(after) != 1:

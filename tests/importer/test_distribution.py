@@ -12,12 +12,13 @@ import pytest
 from click.testing import CliRunner
 
 import scemlmodel as scm
-from sceml import io
 from sceml.cli import cli
 from sceml.diagnostics import Severity
 from sceml.importer import XoscImportError, import_file
+from sceml.model.loading import load, load_scenario
+from sceml.model.params import value
+from sceml.model.saving import save
 from sceml.modules import flatten
-from sceml.params import value
 from sceml.validation import validate
 
 REPO = Path(__file__).resolve().parents[2]
@@ -142,7 +143,7 @@ def test_the_exported_distribution_imports_as_the_logical_scenario(
     pvd = _export_distribution(logical, tmp_path / "out")
     imported = import_file(pvd, allow=[REPO / "maps"])
     assert imported.scenario.nodes[0].level is scm.AbstractionLevel.logical
-    same(flatten(io.load(logical).root), imported.scenario)
+    same(flatten(load(logical).root), imported.scenario)
     # A SceML export maps completely; only the run count and seed have no place in the model.
     assert imported.report.counts()["opaque"] == 0
     assert imported.report.counts()["guessed"] == 0
@@ -163,7 +164,7 @@ def test_the_exported_distribution_imports_as_the_logical_scenario(
 def test_the_comparison_sees_a_changed_distribution(tmp_path: Path, canonical) -> None:
     logical = EXAMPLES / "uis1-logical.xmi"
     pvd = _export_distribution(logical, tmp_path / "out")
-    original = canonical(flatten(io.load(logical).root))
+    original = canonical(flatten(load(logical).root))
     for change in ("mean", "weight", "kind"):
         imported = import_file(pvd).scenario
         nodes = _nodes(imported)
@@ -190,7 +191,7 @@ def test_the_import_validates_and_samples(tmp_path: Path) -> None:
         "CrossingManeuver_1_Accelerate_1.targetSpeed = $CrossingManeuver_1_crossingSpeed: U(1, 2)"
         in (result.output)
     )
-    document = io.load_scenario(output, allow=[EXAMPLES.parent / "maps"])
+    document = load_scenario(output, allow=[EXAMPLES.parent / "maps"])
     errors = [d for d in validate(document.root, document=document) if d.severity is Severity.ERROR]
     assert errors == []
     samples = tmp_path / "samples"
@@ -221,17 +222,17 @@ def test_the_import_validates_and_samples(tmp_path: Path) -> None:
 
 def test_a_deterministic_distribution_comes_back_as_ranges_with_steps(tmp_path: Path, same) -> None:
     # UIS1 with its two distributions fixed leaves two ranges with steps: a deterministic sweep.
-    logical = io.load_scenario(EXAMPLES / "uis1-logical.xmi")
+    logical = load_scenario(EXAMPLES / "uis1-logical.xmi")
     nodes = _nodes(logical.root)
     nodes["Accelerate_1"].targetSpeed = value(8)
     nodes["Accelerate_2"].targetSpeed = value(4)
     grid_only = tmp_path / "uis1-logical.xmi"
     root = logical.root.nodes[0]
     root.map = str((EXAMPLES / root.map).resolve())
-    io.save(logical.root, grid_only)
+    save(logical.root, grid_only)
     pvd = _export_distribution(grid_only, tmp_path / "out", "--mode", "deterministic")
     imported = import_file(pvd)
-    same(flatten(io.load(grid_only).root), imported.scenario)
+    same(flatten(load(grid_only).root), imported.scenario)
     radius = _nodes(imported.scenario)["InVehicleRadius_1"].radius
     assert isinstance(radius, scm.Range)
     assert (radius.min, radius.max, radius.step) == (8.0, 16.0, 4.0)

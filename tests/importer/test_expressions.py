@@ -44,7 +44,7 @@ def test_whole_numbers_are_written_without_a_fraction() -> None:
 
 
 def test_a_broken_opaque_node_is_a_validation_error() -> None:
-    from sceml.build import ScenarioBuilder, world
+    from sceml.model.build import ScenarioBuilder, world
 
     builder = ScenarioBuilder("x", map="Town01", level="concrete")
     ego = builder.actor("Car", "ego", ego=True, start=world(0, 0))

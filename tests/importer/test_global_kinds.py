@@ -10,10 +10,12 @@ from pathlib import Path
 import pytest
 from lxml import etree
 
-from sceml import graph, io, schema
 from sceml.export import ExportError, export_to_file
 from sceml.importer import import_file, import_to_file
 from sceml.importer.markers import MARKER
+from sceml.model import graph
+from sceml.model.loading import load
+from sceml.xosc import schema
 
 FILES = Path(__file__).parent / "files"
 PARAMETERS = FILES / "parameters.xosc"
@@ -84,7 +86,7 @@ def test_global_nodes_export_as_they_were_read(
     model = tmp_path / "imported.xmi"
     import_to_file(source, model)
     exported = tmp_path / "exported.xosc"
-    export_to_file(io.load(model).root, exported, version=version, source_path=model)
+    export_to_file(load(model).root, exported, version=version, source_path=model)
     assert schema.validate_file(exported, version) == []
     assert global_elements(exported) == global_elements(source)
     names = {"Counter", "Mood"}
@@ -104,5 +106,5 @@ def test_variables_are_refused_before_1_2(version: str, tmp_path: Path) -> None:
     import_to_file(VARIABLES, model)
     target = tmp_path / "out.xosc"
     with pytest.raises(ExportError, match="SetVariable needs OpenSCENARIO 1.2 or later"):
-        export_to_file(io.load(model).root, target, version=version, source_path=model)
+        export_to_file(load(model).root, target, version=version, source_path=model)
     assert not target.exists()

@@ -10,14 +10,15 @@ from pathlib import Path
 import pytest
 
 import scemlmodel as scm
-from sceml import io, schema
-from sceml.build import lane
 from sceml.export import export_to_file
 from sceml.importer import import_file, import_to_file
 from sceml.maps import load_map
 from sceml.maps.resolve import resolve
+from sceml.model.build import lane
+from sceml.model.loading import load
 from sceml.render.labels import describe_position
 from sceml.simulate.setup import make_actor
+from sceml.xosc import schema
 
 from .test_positions_kept import VERSIONS
 
@@ -69,7 +70,7 @@ def test_lane_headings_export_back_as_relative_orientations(version: str, tmp_pa
     model = tmp_path / "lane-headings.xmi"
     import_to_file(HEADINGS, model)
     exported = tmp_path / "lane-headings.xosc"
-    export_to_file(io.load(model).root, exported, version=version, source_path=model)
+    export_to_file(load(model).root, exported, version=version, source_path=model)
     assert schema.validate_file(exported, version) == []
     again = import_file(exported)
     back = {a.name: a.startPosition for a in again.scenario.nodes[0].actors}

@@ -13,11 +13,13 @@ from pathlib import Path
 import pytest
 from lxml import etree
 
-from sceml import graph, io, schema
 from sceml.export import export_to_file
 from sceml.importer import import_file, import_to_file
-from sceml.players.meaning import lane_offset_duration
+from sceml.model import graph
+from sceml.model.loading import load
 from sceml.simulate import simulate
+from sceml.xosc import schema
+from sceml.xosc.meaning import lane_offset_duration
 
 OFFSETS = Path(__file__).parent / "files" / "lane-offsets.xosc"
 
@@ -63,7 +65,7 @@ def test_lane_offsets_export_as_they_were_read(version: str, tmp_path: Path, sam
     model = tmp_path / "offsets.xmi"
     import_to_file(OFFSETS, model)
     exported = tmp_path / "offsets.xosc"
-    export_to_file(io.load(model).root, exported, version=version, source_path=model)
+    export_to_file(load(model).root, exported, version=version, source_path=model)
     assert schema.validate_file(exported, version) == []
     # The unset maxLateralAcc is written as its default, esmini's own 0.5 m/s².
     original = [

@@ -11,9 +11,10 @@ from pathlib import Path
 import pytest
 from lxml import etree
 
-from sceml import graph, schema
 from sceml.export import ExportError, export_to_file
 from sceml.importer import import_file
+from sceml.model import graph
+from sceml.xosc import schema
 
 FILES = Path(__file__).parent / "files"
 TTC = FILES / "ttc-measured.xosc"

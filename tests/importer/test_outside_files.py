@@ -12,13 +12,13 @@ import pytest
 from scenariogeneration import xosc
 
 import scemlmodel as scm
-from sceml import io
 from sceml.diagnostics import Severity
 from sceml.export import export_to_file
 from sceml.importer import import_file, import_to_file
+from sceml.model.loading import load_scenario
 from sceml.render import diagram, to_bytes
 from sceml.validation import validate
-from sceml.xosc_check import check_file
+from sceml.xosc.check import check_file
 
 FILES = Path(__file__).resolve().parent / "files"
 
@@ -43,7 +43,7 @@ def round_trip(source: Path, tmp_path: Path, version: str) -> Path:
     """Import, validate, draw, export back at `version`; returns the exported file."""
     model = tmp_path / f"{source.stem}.xmi"
     import_to_file(source, model)
-    document = io.load_scenario(model, allow=map_folders(source))
+    document = load_scenario(model, allow=map_folders(source))
     errors = [d for d in validate(document.root, document=document) if d.severity is Severity.ERROR]
     assert errors == []
     for view in ("flow", "bt"):

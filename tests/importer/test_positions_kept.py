@@ -10,9 +10,10 @@ import pytest
 from lxml import etree
 
 import scemlmodel as scm
-from sceml import io, schema
 from sceml.export import export_to_file
 from sceml.importer import import_file, import_to_file
+from sceml.model.loading import load
+from sceml.xosc import schema
 
 FILES = Path(__file__).resolve().parent / "files"
 VERSIONS = ("1.0", "1.1", "1.2", "1.3")
@@ -86,7 +87,7 @@ def test_road_positions_export_back_as_they_were(version: str, tmp_path: Path) -
     model = tmp_path / "road-positions.xmi"
     import_to_file(FILES / "road-positions.xosc", model)
     exported = tmp_path / "road-positions.xosc"
-    export_to_file(io.load(model).root, exported, version=version, source_path=model)
+    export_to_file(load(model).root, exported, version=version, source_path=model)
     assert schema.validate_file(exported, version) == []
     original = positions(FILES / "road-positions.xosc")
     again = positions(exported)
@@ -129,7 +130,7 @@ def test_relative_positions_export_back_as_they_were(version: str, tmp_path: Pat
     model = tmp_path / "relative-positions.xmi"
     import_to_file(FILES / "relative-positions.xosc", model)
     exported = tmp_path / "relative-positions.xosc"
-    export_to_file(io.load(model).root, exported, version=version, source_path=model)
+    export_to_file(load(model).root, exported, version=version, source_path=model)
     assert schema.validate_file(exported, version) == []
     original, again = positions(FILES / "relative-positions.xosc"), positions(exported)
     # The export writes dz="0" where the original left it to its default, and each destination

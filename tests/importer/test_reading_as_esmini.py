@@ -16,11 +16,11 @@ import pytest
 from click.testing import CliRunner
 
 import scemlmodel as scm
-from sceml import io
 from sceml.cli import cli
 from sceml.importer import XoscImportError, import_file
 from sceml.maps import load_map
 from sceml.maps.resolve import start_poses
+from sceml.model.loading import load_scenario
 
 FILES = Path(__file__).resolve().parent / "files"
 
@@ -144,7 +144,7 @@ def test_catalog_path_finds_what_catalog_locations_do_not(tmp_path: Path) -> Non
     assert refused.exit_code == 2 and "catalog 'VehicleCatalog' not found" in refused.output
     found = runner.invoke(cli, ["import", str(path), "-o", out, "--catalog-path", str(elsewhere)])
     assert found.exit_code == 0, found.output
-    model = io.load_scenario(out).root
+    model = load_scenario(out).root
     assert [type(a).__name__ for a in actors(model)] == ["Car"]
 
 

@@ -8,12 +8,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from sceml import io
 from sceml.export import export_to_file
 from sceml.importer import import_file, import_to_file
 from sceml.levels.apply import FlatTemplate
 from sceml.levels.sampling import plan_for, values_at
 from sceml.levels.space import parameter_space
+from sceml.model.loading import load, load_scenario
 from sceml.modules import flatten
 
 REPO = Path(__file__).resolve().parents[2]
@@ -27,7 +27,7 @@ SAMPLES_PER_EXAMPLE = 12
 def test_every_example_survives_export_then_import(
     example: Path, version: str, tmp_path: Path, same
 ) -> None:
-    scenario = io.load(example).root
+    scenario = load(example).root
     exported = tmp_path / f"{example.stem}.xosc"
     export_to_file(scenario, exported, version=version, source_path=example)
     # The map stays in the repository, outside the export's folder: allowed, so it is read.
@@ -42,11 +42,11 @@ def test_every_example_survives_export_then_import(
 @pytest.mark.parametrize("example", EXAMPLES, ids=lambda p: p.stem)
 def test_the_import_exports_to_the_same_bytes(example: Path, version: str, tmp_path: Path) -> None:
     first = tmp_path / "first.xosc"
-    export_to_file(io.load(example).root, first, version=version, source_path=example)
+    export_to_file(load(example).root, first, version=version, source_path=example)
     model = tmp_path / "imported.xmi"
     import_to_file(first, model)
     second = tmp_path / "second.xosc"
-    export_to_file(io.load(model).root, second, version=version, source_path=model)
+    export_to_file(load(model).root, second, version=version, source_path=model)
     assert second.read_bytes() == first.read_bytes()
 
 
@@ -59,7 +59,7 @@ def sampled() -> dict[str, list]:
     """Concrete scenarios sampled (random, seed 7) from the logical UIS1 and UIS2."""
     found = {}
     for name in ("uis1", "uis2"):
-        logical = io.load_scenario(REPO / "examples" / f"{name}-logical.xmi").root
+        logical = load_scenario(REPO / "examples" / f"{name}-logical.xmi").root
         space = parameter_space(logical)
         rows = values_at(
             space, plan_for(space, "random", SAMPLES_PER_EXAMPLE, 7), np.arange(SAMPLES_PER_EXAMPLE)
@@ -84,9 +84,9 @@ def test_sampled_scenarios_survive_export_then_import(
 
 def test_the_comparison_sees_a_changed_value_actor_and_flow(tmp_path: Path, canonical) -> None:
     path = REPO / "examples" / "uis2-concrete.xmi"
-    original = flatten(io.load(path).root)
+    original = flatten(load(path).root)
     exported = tmp_path / "uis2.xosc"
-    export_to_file(io.load(path).root, exported, version="1.3", source_path=path)
+    export_to_file(load(path).root, exported, version="1.3", source_path=path)
     for change in ("value", "actor", "flow"):
         imported = import_file(exported).scenario
         drive = next(n for n in imported.nodes if n.eClass.name == "DriveDistance")

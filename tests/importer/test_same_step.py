@@ -1,6 +1,6 @@
 """Triggers read from a file start their events in the same step after the round trip (issue 24,
 "same run"): a condition the import makes a node is written back into the StartTrigger of the
-event that waits for it (`players.flows.inlined`), not as a marker event a step before it.
+event that waits for it (`xosc.flows.inlined`), not as a marker event a step before it.
 
 `files/triggers-in-step.xosc` is written by hand; every expectation below is read off it."""
 
@@ -12,10 +12,10 @@ import pytest
 from lxml import etree
 
 import scemlmodel as scm
-from sceml import graph
-from sceml.build import ScenarioBuilder, world
 from sceml.export import build_xosc
 from sceml.importer import import_file
+from sceml.model import graph
+from sceml.model.build import ScenarioBuilder, world
 
 FILES = Path(__file__).parent / "files"
 SOURCE = FILES / "triggers-in-step.xosc"

@@ -14,9 +14,10 @@ from pathlib import Path
 from importer.test_reading_as_esmini import actor, scenario
 
 import scemlmodel as scm
-from sceml import io
 from sceml.export import export
 from sceml.importer import import_file
+from sceml.model.loading import load
+from sceml.model.saving import save
 from sceml.validation import validate
 
 VERTEX = '<Vertex time="{t}"><Position><WorldPosition x="{x}" y="{y}" h="0"/></Position></Vertex>'
@@ -82,9 +83,9 @@ def test_a_scene_graph_without_roads_is_the_map_and_exports_back(tmp_path: Path)
     imported = import_file(path)
     root = next(n for n in imported.scenario.nodes if isinstance(n, scm.RootNode))
     assert root.map == "models/lot.osgb"
-    io.save(imported.scenario, tmp_path / "lot.xmi")
+    save(imported.scenario, tmp_path / "lot.xmi")
     (tmp_path / ".sceml-root").touch()
-    document = io.load(tmp_path / "lot.xmi")
+    document = load(tmp_path / "lot.xmi")
     found = {d.code: d.message for d in validate(document.root, document=document)}
     assert set(found) == {"SCEML-R002"}
     assert "scene graph with no roads" in found["SCEML-R002"]

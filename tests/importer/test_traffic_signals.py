@@ -9,10 +9,12 @@ from pathlib import Path
 import pytest
 from lxml import etree
 
-from sceml import graph, io, schema
 from sceml.export import export_to_file
 from sceml.importer import import_file, import_to_file
+from sceml.model import graph
+from sceml.model.loading import load
 from sceml.simulate import simulate
+from sceml.xosc import schema
 
 SIGNALS = Path(__file__).parent / "files" / "traffic-signals.xosc"
 
@@ -49,7 +51,7 @@ def test_signal_nodes_export_as_they_were_read(version: str, tmp_path: Path, sam
     model = tmp_path / "signals.xmi"
     import_to_file(SIGNALS, model)
     exported = tmp_path / "signals.xosc"
-    export_to_file(io.load(model).root, exported, version=version, source_path=model)
+    export_to_file(load(model).root, exported, version=version, source_path=model)
     assert schema.validate_file(exported, version) == []
     assert signal_elements(exported) == signal_elements(SIGNALS)
     first, again = import_file(SIGNALS), import_file(exported)
@@ -63,7 +65,7 @@ def test_the_preview_says_it_has_no_signals() -> None:
     run = simulate(import_file(SIGNALS).scenario, SIGNALS)
     switch, red = run.node("SwitchToRed"), run.node("ShowsRed")
     # The wait of 2 s runs from 0.05 s (root) to 2.05 s; a wait is written into its
-    # successor's trigger, so its flow costs no step more (players.flows).
+    # successor's trigger, so its flow costs no step more (xosc.flows).
     assert switch.finished == switch.started == 2.05
     assert "no traffic signals" in switch.note
     assert red.finished is None and "no traffic signals" in red.note

@@ -6,12 +6,12 @@ from pathlib import Path
 
 import pytest
 
-from sceml import io
 from sceml.export import build_xosc
 from sceml.levels.apply import apply
 from sceml.levels.batch import BatchConfig, Worker
 from sceml.levels.sampling import Plan, design
 from sceml.levels.space import parameter_space
+from sceml.model.loading import load_scenario
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
@@ -23,7 +23,7 @@ def test_fast_path_bytes_equal_a_full_export_of_apply(
     # UIS2's DriveDistance finishes distance / speed after it starts, a delay the export derives
     # from the sampled speed: the fast path must write that too.
     logical_path = EXAMPLES / f"{name}-logical.xmi"
-    logical = io.load_scenario(logical_path).root
+    logical = load_scenario(logical_path).root
     space = parameter_space(logical)
     config = BatchConfig(logical_path, tmp_path, space.paths, ("xosc",), "1.2", name, 5)
     worker = Worker(config)
@@ -42,7 +42,7 @@ def test_fast_path_bytes_equal_a_full_export_of_apply(
 
 def test_the_derived_delay_is_distance_over_the_sampled_speed(tmp_path: Path) -> None:
     logical_path = EXAMPLES / "uis2-logical.xmi"
-    space = parameter_space(io.load_scenario(logical_path).root)
+    space = parameter_space(load_scenario(logical_path).root)
     worker = Worker(BatchConfig(logical_path, tmp_path, space.paths, ("xosc",), "1.2"))
     assert worker.fast is not None
     speed = space.paths.index("DriveDistance_1.speed")
@@ -57,7 +57,7 @@ def test_the_derived_delay_is_distance_over_the_sampled_speed(tmp_path: Path) ->
 
 def test_samples_breaking_a_rule_are_skipped_with_a_reason(tmp_path: Path) -> None:
     logical_path = EXAMPLES / "uis2-logical.xmi"
-    space = parameter_space(io.load_scenario(logical_path).root)
+    space = parameter_space(load_scenario(logical_path).root)
     worker = Worker(BatchConfig(logical_path, tmp_path, space.paths, ("xosc",)))
     row = [5.0, 7.0, -1.0, 10.0, 15.0, 1.5]  # InLocationRadius_2.radius below zero
     record = worker.run(0, row)

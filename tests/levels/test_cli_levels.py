@@ -11,13 +11,14 @@ from click.testing import CliRunner
 from lxml import etree
 
 import scemlmodel as scm
-from sceml import io, schema
 from sceml.cli.concretize import concretize
 from sceml.cli.export_logical import export_distribution_command
 from sceml.cli.promote import promote
 from sceml.cli.sample import sample
-from sceml.compare import differences
 from sceml.levels.manifest import read_manifest
+from sceml.model.compare import differences
+from sceml.model.loading import load_scenario
+from sceml.xosc import schema
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
@@ -42,8 +43,8 @@ def test_concretize_reproduces_the_concrete_example(examples_copy: Path, tmp_pat
         args += ["--set", value]
     result = _invoke(concretize, args)
     assert result.exit_code == 0, result.output
-    mine = io.load_scenario(out).root
-    reference = io.load_scenario(examples_copy / "uis2-concrete.xmi").root
+    mine = load_scenario(out).root
+    reference = load_scenario(examples_copy / "uis2-concrete.xmi").root
     assert differences(mine, reference) == []
 
 
@@ -82,8 +83,8 @@ def test_promote_uis1_functional_gives_the_logical_example(examples_copy: Path) 
         ],
     )
     assert result.exit_code == 0, result.output
-    promoted = io.load_scenario(out).root
-    assert differences(promoted, io.load_scenario(examples_copy / "uis1-logical.xmi").root) == []
+    promoted = load_scenario(out).root
+    assert differences(promoted, load_scenario(examples_copy / "uis1-logical.xmi").root) == []
 
 
 def test_promote_reports_what_the_ranges_file_misses(tmp_path: Path) -> None:
@@ -157,7 +158,7 @@ def test_sample_random_writes_valid_files_and_a_true_manifest(tmp_path: Path, wo
         assert schema.validate_file(xosc) == []
         for path, value in _numbers_in(xosc).items():
             assert value == row["values"][path]
-        concrete = io.load_scenario(out / xmi_name).root
+        concrete = load_scenario(out / xmi_name).root
         assert concrete.nodes[0].level == scm.AbstractionLevel.concrete
         assert concrete.nodes[0].actors[0].initialSpeed.value == row["values"]["ego.initialSpeed"]
         override = {o.parameter: o.value.value for o in concrete.nodes[-1].overrides}

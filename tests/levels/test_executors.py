@@ -19,14 +19,15 @@ import pytest
 from click.testing import CliRunner
 from distributed import Client, LocalCluster
 
-from sceml import io
 from sceml.cli.sample import sample
 from sceml.executors import EXECUTORS, Outcome, open_executor
+from sceml.files.writing import write_atomically
 from sceml.levels import batch
 from sceml.levels.batch import BatchConfig, run_batch
 from sceml.levels.manifest import read_manifest
 from sceml.levels.sampling import Plan, values_at
 from sceml.levels.space import ParameterSpace, parameter_space
+from sceml.model.loading import load_scenario
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 UIS2 = EXAMPLES / "uis2-logical.xmi"
@@ -54,7 +55,7 @@ def _sample(out: Path, *extra: str, n: int = 24, file_format: str = "both") -> s
 
 
 def _uis2_rows(n: int) -> tuple[ParameterSpace, np.ndarray, np.ndarray]:
-    space = parameter_space(io.load_scenario(UIS2).root)
+    space = parameter_space(load_scenario(UIS2).root)
     indices = np.arange(n)
     return space, indices, values_at(space, Plan("random", n, seed=3), indices)
 
@@ -178,7 +179,7 @@ def test_ctrl_c_cancels_the_rest_and_leaves_only_recorded_files(
 
 
 def test_ctrl_c_while_files_are_written_finishes_them_first(tmp_path: Path, monkeypatch) -> None:  # type: ignore[no-untyped-def]
-    real = io.write_atomically
+    real = write_atomically
     sent = []
 
     def ctrl_c_then_write(path: Path, data: bytes) -> None:
@@ -187,7 +188,7 @@ def test_ctrl_c_while_files_are_written_finishes_them_first(tmp_path: Path, monk
             os.kill(os.getpid(), signal.SIGINT)  # as a terminal's Ctrl-C, mid-write
         real(path, data)
 
-    monkeypatch.setattr(batch.io, "write_atomically", ctrl_c_then_write)
+    monkeypatch.setattr(batch, "write_atomically", ctrl_c_then_write)
     space, indices, rows = _uis2_rows(40)
     with open_executor("local") as executor:
         result = run_batch(

@@ -7,16 +7,16 @@ from pathlib import Path
 import pytest
 
 import scemlmodel as scm
-from sceml import io
 from sceml.levels.paths import UnknownPathError, resolve, slots
 from sceml.levels.space import grid_levels, parameter_space
+from sceml.model.loading import load_scenario
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
 @pytest.fixture
 def uis2() -> scm.Scenario:
-    return io.load_scenario(EXAMPLES / "uis2-logical.xmi").root
+    return load_scenario(EXAMPLES / "uis2-logical.xmi").root
 
 
 def test_paths_cover_nodes_actors_positions_and_module_parameters(uis2: scm.Scenario) -> None:

@@ -8,11 +8,13 @@ from pathlib import Path
 import pytest
 from lxml import etree
 
-from sceml import io, schema
 from sceml.levels.paths import LevelError
 from sceml.levels.pvd import distribution_kind, export_distribution
 from sceml.levels.space import parameter_space
-from sceml.qualitychecker import run_quality_checker
+from sceml.model.loading import load_scenario
+from sceml.model.saving import save
+from sceml.xosc import schema
+from sceml.xosc.qualitychecker import run_quality_checker
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
@@ -62,13 +64,13 @@ def test_uis2_distribution_passes_xsd_and_qc(tmp_path: Path, version: str, mode:
 @pytest.mark.parametrize("version", ["1.1", "1.2", "1.3"])
 def test_deterministic_distribution_of_a_grid_only_scenario(tmp_path: Path, version: str) -> None:
     # UIS1 with its two distributions fixed leaves two ranges with steps: a deterministic sweep.
-    logical = io.load_scenario(EXAMPLES / "uis1-logical.xmi")
+    logical = load_scenario(EXAMPLES / "uis1-logical.xmi")
     nodes = {n.name: n for n in logical.root.nodes}
     nodes["Accelerate_1"].targetSpeed = _value(8)
     nodes["Accelerate_2"].targetSpeed = _value(4)
     source = EXAMPLES / "uis1-logical.xmi"
     grid_only = tmp_path / "uis1-logical.xmi"
-    io.save(logical.root, grid_only)
+    save(logical.root, grid_only)
     _copy_map(source, grid_only)
     files = export_distribution(grid_only, tmp_path / "out", version=version)
     assert files.kind == "deterministic"
@@ -87,19 +89,19 @@ def test_deterministic_distribution_of_a_grid_only_scenario(tmp_path: Path, vers
 
 
 def test_deterministic_mode_refuses_distributions() -> None:
-    space = parameter_space(io.load_scenario(EXAMPLES / "uis2-logical.xmi").root)
+    space = parameter_space(load_scenario(EXAMPLES / "uis2-logical.xmi").root)
     with pytest.raises(LevelError, match="Accelerate_1.targetSpeed"):
         distribution_kind(space, "deterministic")
 
 
 def _value(number: float):  # type: ignore[no-untyped-def]
-    from sceml.params import value
+    from sceml.model.params import value
 
     return value(number)
 
 
 def _copy_map(source: Path, target: Path) -> None:
     """The map path is relative: make it resolve from the temporary folder too."""
-    scenario = io.load_scenario(target)
+    scenario = load_scenario(target)
     scenario.root.nodes[0].map = str((target.parent / scenario.root.nodes[0].map).resolve())
-    io.save(scenario.root, target)
+    save(scenario.root, target)

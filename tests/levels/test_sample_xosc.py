@@ -8,11 +8,12 @@ from pathlib import Path
 import pytest
 from lxml import etree
 
-from sceml import io, schema
 from sceml.levels import xosc
 from sceml.levels.batch import BatchConfig, Worker
 from sceml.levels.sampling import Plan, design
 from sceml.levels.space import parameter_space
+from sceml.model.loading import load_scenario
+from sceml.xosc import schema
 
 #: UIS1 (tests/levels/test_batch.py covers UIS2's derived delay on the same path).
 LOGICAL = Path(__file__).resolve().parents[2] / "examples" / "uis1-logical.xmi"
@@ -20,7 +21,7 @@ LOGICAL = Path(__file__).resolve().parents[2] / "examples" / "uis1-logical.xmi"
 
 @pytest.fixture(scope="module")
 def worker(tmp_path_factory: pytest.TempPathFactory) -> Worker:
-    space = parameter_space(io.load_scenario(LOGICAL).root)
+    space = parameter_space(load_scenario(LOGICAL).root)
     config = BatchConfig(LOGICAL, tmp_path_factory.mktemp("out"), space.paths, ("xosc",), "1.3")
     return Worker(config)
 
@@ -32,7 +33,7 @@ def _parsed_verdict(data: bytes) -> str:
 
 
 def _rows() -> list[list[float]]:
-    space = parameter_space(io.load_scenario(LOGICAL).root)
+    space = parameter_space(load_scenario(LOGICAL).root)
     drawn = [[float(v) for v in row] for row in design(space, Plan("random", 40, seed=5))]
     odd = [float("nan"), float("inf"), -0.0, 1e300, 5e-324, -2.5]
     # Numbers the XSD refuses (nan, inf: it spells them NaN and INF) or that look unusual.

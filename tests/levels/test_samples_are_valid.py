@@ -8,9 +8,9 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
-from sceml import io
 from sceml.cli import cli
 from sceml.diagnostics import Severity
+from sceml.model.loading import load
 from sceml.validation import validate
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
@@ -40,7 +40,7 @@ def test_every_sample_of_a_clean_logical_example_validates(tmp_path: Path, logic
     samples = sorted(tmp_path.glob("*.xmi"))
     assert len(samples) == 3
     for path in samples:
-        document = io.load(path, allow=[EXAMPLES, EXAMPLES.parent / "maps"])
+        document = load(path, allow=[EXAMPLES, EXAMPLES.parent / "maps"])
         errors = [
             d for d in validate(document.root, document=document) if d.severity >= Severity.ERROR
         ]

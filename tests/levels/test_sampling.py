@@ -8,17 +8,17 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from sceml import io
 from sceml.levels.paths import LevelError
 from sceml.levels.sampling import Plan, design, plan_for, sample_row, values_at
 from sceml.levels.space import Dimension, ParameterSpace, parameter_space
+from sceml.model.loading import load_scenario
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
 @pytest.fixture(scope="module")
 def space() -> ParameterSpace:
-    return parameter_space(io.load_scenario(EXAMPLES / "uis2-logical.xmi").root)
+    return parameter_space(load_scenario(EXAMPLES / "uis2-logical.xmi").root)
 
 
 def test_grid_is_the_full_factorial(space: ParameterSpace) -> None:

@@ -15,13 +15,15 @@ import numpy as np
 import pytest
 from click.testing import CliRunner
 
-from sceml import io
 from sceml.cli.sample import sample
 from sceml.errors import SaveError
 from sceml.executors import Deferred, open_executor
+from sceml.files.writing import write_staged
+from sceml.levels import batch
 from sceml.levels.batch import BatchConfig, run_batch
 from sceml.levels.sampling import Plan, values_at
 from sceml.levels.space import parameter_space
+from sceml.model.loading import load_scenario
 
 UIS2 = Path(__file__).resolve().parents[2] / "examples" / "uis2-logical.xmi"
 
@@ -38,7 +40,7 @@ def test_write_staged_replaces_the_file_and_leaves_nothing_staged(tmp_path: Path
     target.write_bytes(b"old")
     previous = os.umask(0o077)
     try:
-        io.write_staged(target, b"new", staging)
+        write_staged(target, b"new", staging)
     finally:
         os.umask(previous)
     assert target.read_bytes() == b"new"
@@ -59,7 +61,7 @@ def test_write_staged_that_fails_keeps_the_old_file(
 
     monkeypatch.setattr(os, "replace", refuse)
     with pytest.raises(SaveError) as raised:
-        io.write_staged(target, b"new", staging)
+        write_staged(target, b"new", staging)
     assert raised.value.file == str(target)
     assert raised.value.message == "cannot write: No space left on device"
     assert target.read_bytes() == b"old" and list(staging.iterdir()) == []
@@ -108,15 +110,15 @@ def test_a_worker_that_cannot_write_makes_the_command_fail_cleanly(
 def test_a_worker_lost_mid_chunk_leaves_only_the_files_of_written_samples(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    real = io.write_staged
+    real = write_staged
 
     def die_on_the_third_file_of_sample_seven(path: Path, data: bytes, staging: Path) -> None:
         if path.name == "uis2_00007.xosc":
             os.kill(os.getpid(), signal.SIGKILL)  # files of samples 5 and 6 are in place
         real(path, data, staging)
 
-    monkeypatch.setattr(io, "write_staged", die_on_the_third_file_of_sample_seven)
-    space = parameter_space(io.load_scenario(UIS2).root)
+    monkeypatch.setattr(batch, "write_staged", die_on_the_third_file_of_sample_seven)
+    space = parameter_space(load_scenario(UIS2).root)
     indices = np.arange(40)
     rows = values_at(space, Plan("random", 40, seed=3), indices)
     config = BatchConfig(UIS2, tmp_path, space.paths, ("xosc",), stem="uis2")

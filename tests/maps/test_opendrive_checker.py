@@ -1,6 +1,6 @@
 """ASAM's OpenDRIVE checker (`asam-qc-opendrive`) on our map, on broken copies and on a built map.
 
-The bundle is run in-process as `sceml.qualitychecker` runs the OpenSCENARIO one: its own
+The bundle is run in-process as `sceml.xosc.qualitychecker` runs the OpenSCENARIO one: its own
 `run_checks(config, result)`, which is what its CLI `main()` calls, without writing a result file.
 It is not in the `test` extra: asam-qc-opendrive 1.0.0 requires pyclothoids < 0.2, numpy < 2 and
 xmlschema < 4, and SceML pins pyclothoids 0.2.0, so pip cannot install both. Installed with

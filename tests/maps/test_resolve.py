@@ -8,11 +8,11 @@ from pathlib import Path
 
 import pytest
 
-from sceml.build import lane, road, world
 from sceml.maps import PositionError, RoadMap, WorldPose, load_map
 from sceml.maps.positions import centre, is_concrete, locate
 from sceml.maps.resolve import resolve, road_pose, road_to_lane
-from sceml.params import span
+from sceml.model.build import lane, road, world
+from sceml.model.params import span
 
 HIGHWAY = Path(__file__).resolve().parents[1] / "importer" / "files" / "highway.xodr"
 

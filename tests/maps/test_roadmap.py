@@ -17,12 +17,12 @@ from numpy.polynomial import Polynomial
 import scemlmodel as scm
 from maps import sg_networks as sg
 from maps import test_intersection_map as evaluator
-from sceml.build import lane, world
 from sceml.maps import MapError, PositionError, RoadMap, load_map, wrap_angle
 from sceml.maps.positions import centre, is_concrete, locate, nominal, spread
 from sceml.maps.reader import parse_opendrive
 from sceml.maps.routes import routes_from
-from sceml.params import discrete, normal, span, uniform, value
+from sceml.model.build import lane, world
+from sceml.model.params import discrete, normal, span, uniform, value
 
 CM = 0.01  # m: the agreement every conversion must reach
 

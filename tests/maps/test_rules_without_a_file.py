@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from sceml.build import ScenarioBuilder, lane
+from sceml.model.build import ScenarioBuilder, lane
 from sceml.validation import validate
 
 REPO = Path(__file__).resolve().parents[2]

@@ -6,8 +6,8 @@ from pathlib import Path
 
 import pytest
 
-from sceml.xosc_check import check_file
-from sceml.xosc_map import MAP_CODE, MAP_SKIPPED_CODE
+from sceml.xosc.check import check_file
+from sceml.xosc.mapcheck import MAP_CODE, MAP_SKIPPED_CODE
 
 REPO = Path(__file__).resolve().parents[2]
 GOLDEN = REPO / "tests" / "export" / "golden"

@@ -9,11 +9,12 @@ import pytest
 from metamodel_releases import METAMODEL, REPO
 
 import scemlmodel as scm
-from sceml import io
-from sceml.compare import differences
+from sceml.errors import LoadError
 from sceml.export.writer import export_to_file
 from sceml.migrations import check_release, installed
-from sceml.migrations.files import migrate_file
+from sceml.model.compare import differences
+from sceml.model.loading import load, load_scenario
+from sceml.model.migrating import migrate_file
 from sceml.validation import validate
 from sceml.validation.engine import Severity
 
@@ -45,7 +46,7 @@ def test_the_current_release_is_newer_than_1_0_and_the_package_says_which() -> N
 
 @pytest.mark.parametrize("path", MATERIAL, ids=_id)
 def test_old_files_load_migrated_and_validate_clean(path: Path) -> None:
-    document = io.load(path)
+    document = load(path)
     if 'metamodel/1.1"' not in path.read_text():
         report = document.migration
         assert report is not None and report.to_release == "1.1"
@@ -64,7 +65,7 @@ EXPORTS = [
 
 def _export(source: Path, target: Path, suffix: str) -> bytes:
     version, profile = ("1.0", "carla") if suffix == "carla" else (suffix, "generic")
-    document = io.load_scenario(source)
+    document = load_scenario(source)
     written = export_to_file(
         document.root, target, version=version, profile=profile, source_path=source
     )
@@ -92,8 +93,8 @@ def test_a_migrated_example_exports_as_the_current_release_does(
     shutil.copytree(REPO / "maps", new / "maps")
     for project in (old, new):
         (project / ".sceml-root").touch()
-    migrated = io.load_scenario(old / "examples" / source.name)
-    current = io.load_scenario(new / "examples" / source.name)
+    migrated = load_scenario(old / "examples" / source.name)
+    current = load_scenario(new / "examples" / source.name)
     if differences(migrated.root, current.root):
         pytest.skip(
             f"examples/{source.name} changed since release {migrated.migration.from_release}"
@@ -124,7 +125,7 @@ def test_migrate_writes_current_files_that_load_without_migration(tmp_path: Path
         assert outcome.backup is not None and outcome.backup.read_bytes().count(b"metamodel/1.0")
     for path in sorted(examples.rglob("*.xmi")):
         assert b'xmlns:scemlmodel="https://sceml.org/metamodel/1.1"' in path.read_bytes()
-        document = io.load(path)
+        document = load(path)
         assert document.migrations() == []
 
 
@@ -145,8 +146,8 @@ def test_a_newer_release_than_this_sceml_is_refused(tmp_path: Path) -> None:
         .read_text()
         .replace("metamodel/1.1", "metamodel/7.0")
     )
-    with pytest.raises(io.LoadError, match="release 7.0, newer than this SceML's 1.1") as caught:
-        io.load(newer)
+    with pytest.raises(LoadError, match="release 7.0, newer than this SceML's 1.1") as caught:
+        load(newer)
     assert caught.value.line == 2
 
 
@@ -157,5 +158,5 @@ def test_an_unknown_old_release_is_refused(tmp_path: Path) -> None:
         .read_text()
         .replace("metamodel/1.1", "metamodel/0.9")
     )
-    with pytest.raises(io.LoadError, match="release 0.9, which no SceML released"):
-        io.load(odd)
+    with pytest.raises(LoadError, match="release 0.9, which no SceML released"):
+        load(odd)

@@ -10,7 +10,7 @@ import pytest
 from pyecore.ecore import EAttribute, EObject
 
 import scemlmodel as scm
-from sceml.graph import predecessors
+from sceml.model.graph import predecessors
 
 
 def _content(obj: EObject) -> str:

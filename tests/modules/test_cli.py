@@ -8,9 +8,10 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
-from sceml import io
 from sceml.cli.flatten import flatten
 from sceml.cli.module import module
+from sceml.model.loading import load
+from sceml.model.saving import save
 from sceml.validation import validate
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
@@ -77,7 +78,7 @@ def test_flatten_writes_a_file_without_uses(tmp_path: Path) -> None:
     result = run(flatten, EXAMPLES / "overtaking-concrete.xmi", "-o", out)
     assert result.exit_code == 0, result.output
     assert result.output.startswith(f"{out}: 11 nodes; 4 module uses expanded (Overtaking_1, ")
-    names = {n.name for n in io.load(out).root.nodes}
+    names = {n.name for n in load(out).root.nodes}
     assert "Overtaking_1.PassVehicle_1.ChangeLaneLeft_1.LaneChange_1" in names
 
 
@@ -86,9 +87,9 @@ def test_flatten_into_another_folder_keeps_the_map_reachable(tmp_path: Path) -> 
     out.parent.mkdir(parents=True)
     result = run(flatten, EXAMPLES / "uis2-concrete.xmi", "-o", out)
     assert result.exit_code == 0, result.output
-    root = next(n for n in io.load(out).root.nodes if n.eClass.name == "RootNode")
+    root = next(n for n in load(out).root.nodes if n.eClass.name == "RootNode")
     assert (out.parent / root.map).resolve() == (EXAMPLES.parent / "maps/intersection.xodr")
-    document = io.load(out, allow=[EXAMPLES.parent / "maps"])  # reachable, and allowed
+    document = load(out, allow=[EXAMPLES.parent / "maps"])  # reachable, and allowed
     found = validate(document.root, document=document)
     assert not [d for d in found if d.code.startswith("SCEML-R")], found
 
@@ -112,7 +113,7 @@ def test_flatten_library_outside_the_folder_needs_allow(
     (examples_copy.parent / ".sceml-root").unlink()  # no project: only the file's folder
     scenario = examples_copy / "uis2-concrete.xmi"
     moved = examples_copy / "sub" / "uis2-concrete.xmi"
-    io.save(io.load(scenario).root, moved)  # refers to ../library/ now
+    save(load(scenario).root, moved)  # refers to ../library/ now
     denied = run(flatten, moved, "-o", tmp_path / "a.xmi")
     assert denied.exit_code == 1
     assert "reference leaves the allowed folders" in denied.output

@@ -12,9 +12,9 @@ from pathlib import Path
 
 from pyecore.ecore import EObject
 
-from sceml import io
+from sceml.model.loading import load
+from sceml.model.traversal import all_contents
 from sceml.modules import expand
-from sceml.traversal import all_contents
 from sceml.validation import validate
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
@@ -26,7 +26,7 @@ def _links(*roots: EObject) -> int:
 
 
 def test_repeated_validation_records_nothing_in_the_scenario_or_its_library() -> None:
-    document = io.load(EXAMPLES / "overtaking-concrete.xmi")  # a module used three deep
+    document = load(EXAMPLES / "overtaking-concrete.xmi")  # a module used three deep
     validate(document.root, document=document)  # loads the library
     library = next(
         r for r in document.resource_set.resources.values() if r is not document.resource
@@ -38,7 +38,7 @@ def test_repeated_validation_records_nothing_in_the_scenario_or_its_library() ->
 
 
 def test_repeated_flattening_records_nothing_in_the_scenario_or_its_library() -> None:
-    document = io.load(EXAMPLES / "uis2-concrete.xmi")
+    document = load(EXAMPLES / "uis2-concrete.xmi")
     expand(document.root)
     library = next(
         r for r in document.resource_set.resources.values() if r is not document.resource

@@ -8,11 +8,12 @@ from pathlib import Path
 import pytest
 
 import scemlmodel as scm
-from sceml import io
-from sceml.build import ScenarioBuilder
-from sceml.compare import differences
 from sceml.errors import SaveError
-from sceml.graph import predecessors, successors
+from sceml.model.build import ScenarioBuilder
+from sceml.model.compare import differences
+from sceml.model.graph import predecessors, successors
+from sceml.model.loading import load
+from sceml.model.saving import save
 from sceml.modules import (
     ExtractError,
     RoleSpec,
@@ -21,6 +22,7 @@ from sceml.modules import (
     flatten,
     list_definitions,
     parse_role,
+    store,
 )
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
@@ -28,7 +30,7 @@ BIKE_BRANCH = ["InVehicleRadius_1", "Accelerate_2", "Cross_1", "InLocationRadius
 
 
 def uis1(level: str = "concrete") -> scm.Scenario:
-    return io.load(EXAMPLES / f"uis1-{level}.xmi").root
+    return load(EXAMPLES / f"uis1-{level}.xmi").root
 
 
 @pytest.mark.parametrize("level", ["functional", "logical", "concrete"])
@@ -199,9 +201,9 @@ def test_extract_file_creates_the_library_and_rewrites_the_scenario(
     report = extract_file(path, BIKE_BRANCH, "BikeCrossing", library_path)
     assert report.created_library and report.use == "BikeCrossing_1"
     assert 'href="lib/new.xmi#BikeCrossing"' in path.read_text()
-    reloaded = io.load(path).root
+    reloaded = load(path).root
     assert canonical(flatten(reloaded)) == canonical(uis1("logical"))
-    assert [s.name for s in list_definitions(io.load(library_path).root)] == ["BikeCrossing"]
+    assert [s.name for s in list_definitions(load(library_path).root)] == ["BikeCrossing"]
 
 
 def test_extract_file_adds_to_an_existing_library_and_can_write_elsewhere(
@@ -221,10 +223,10 @@ def test_extract_file_adds_to_an_existing_library_and_can_write_elsewhere(
     text = out.read_text()
     assert 'href="../library/sceml-library.xmi#CrossingManeuver"' in text
     assert 'href="../library/sceml-library.xmi#CarGoesStraight"' in text
-    names = [s.name for s in list_definitions(io.load(library_path).root)]
+    names = [s.name for s in list_definitions(load(library_path).root)]
     assert names[0] == "CrossingManeuver" and names[-1] == "CarGoesStraight"
-    expected = canonical(flatten(io.load(examples_copy / "uis2-concrete.xmi").root))
-    assert canonical(flatten(io.load(out, allowed_roots=[examples_copy]).root)) == expected
+    expected = canonical(flatten(load(examples_copy / "uis2-concrete.xmi").root))
+    assert canonical(flatten(load(out, allowed_roots=[examples_copy]).root)) == expected
 
 
 def test_a_duplicate_name_is_refused_and_no_file_changes(examples_copy: Path) -> None:
@@ -244,7 +246,7 @@ def test_a_failed_save_leaves_both_files_as_they_were(examples_copy: Path, monke
         examples_copy / "library" / "sceml-library.xmi",
     )
     before = (path.read_bytes(), library_path.read_bytes())
-    real_save = io.save
+    real_save = save
     calls = []
 
     def failing_second_save(root, target):
@@ -253,7 +255,7 @@ def test_a_failed_save_leaves_both_files_as_they_were(examples_copy: Path, monke
             raise SaveError("disk full", file=target)
         return real_save(root, target)
 
-    monkeypatch.setattr(io, "save", failing_second_save)
+    monkeypatch.setattr(store, "save", failing_second_save)
     with pytest.raises(SaveError, match="disk full"):
         extract_file(path, BIKE_BRANCH, "BikeCrossing", library_path)
     assert (path.read_bytes(), library_path.read_bytes()) == before

@@ -10,8 +10,7 @@ import pytest
 from pyecore.resources import URI
 
 import scemlmodel as scm
-from sceml import io
-from sceml.build import (
+from sceml.model.build import (
     GraphBuilder,
     LibraryBuilder,
     ScenarioBuilder,
@@ -20,10 +19,13 @@ from sceml.build import (
     relative_object,
     world,
 )
-from sceml.compare import differences
-from sceml.graph import end_node, predecessors, root_node
+from sceml.model.compare import differences
+from sceml.model.documents import new_resource_set
+from sceml.model.graph import end_node, predecessors, root_node
+from sceml.model.loading import load
+from sceml.model.params import span, uniform
+from sceml.model.saving import save
 from sceml.modules import FlattenError, depth, expand, flatten, list_definitions
-from sceml.params import span, uniform
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
@@ -35,7 +37,7 @@ CROSSING_VALUES = {
 
 
 def hand_inlined_uis2(level: str) -> scm.Scenario:
-    scenario = io.load(EXAMPLES / f"uis2-{level}.xmi").root
+    scenario = load(EXAMPLES / f"uis2-{level}.xmi").root
     use = next(n for n in scenario.nodes if isinstance(n, scm.ModuleUse))
     for flow in [*use.incoming, *use.outgoing]:
         flow.source = flow.target = None
@@ -54,13 +56,13 @@ def hand_inlined_uis2(level: str) -> scm.Scenario:
 
 @pytest.mark.parametrize("level", ["concrete", "logical"])
 def test_flattened_uis2_behaves_like_hand_inlined_uis2(level: str, canonical) -> None:
-    flat = flatten(io.load(EXAMPLES / f"uis2-{level}.xmi").root)
+    flat = flatten(load(EXAMPLES / f"uis2-{level}.xmi").root)
     assert canonical(flat) == canonical(hand_inlined_uis2(level))
     assert not any(isinstance(n, scm.ModuleUse) for n in flat.nodes)
 
 
 def test_expanded_nodes_are_named_after_their_use() -> None:
-    flat = flatten(io.load(EXAMPLES / "uis2-concrete.xmi").root)
+    flat = flatten(load(EXAMPLES / "uis2-concrete.xmi").root)
     names = {str(n.name) for n in flat.nodes}
     assert {
         "CrossingManeuver_1.InVehicleRadius_1",
@@ -77,18 +79,18 @@ def test_expanded_nodes_are_named_after_their_use() -> None:
 def test_flatten_leaves_the_input_untouched_and_saves_a_self_contained_file(
     examples_copy: Path, tmp_path: Path
 ) -> None:
-    document = io.load(examples_copy / "uis2-logical.xmi")
+    document = load(examples_copy / "uis2-logical.xmi")
     flat = flatten(document.root)
-    assert differences(document.root, io.load(examples_copy / "uis2-logical.xmi").root) == []
+    assert differences(document.root, load(examples_copy / "uis2-logical.xmi").root) == []
     target = tmp_path / "out" / "flat.xmi"
-    io.save(flat, target)
+    save(flat, target)
     assert "href=" not in target.read_text()
-    reloaded = io.load(target, allowed_roots=[target.parent])
+    reloaded = load(target, allowed_roots=[target.parent])
     assert differences(flat, reloaded.root) == []
 
 
 def test_a_scenario_without_uses_flattens_to_an_equal_copy() -> None:
-    scenario = io.load(EXAMPLES / "uis1-concrete.xmi").root
+    scenario = load(EXAMPLES / "uis1-concrete.xmi").root
     assert differences(scenario, flatten(scenario)) == []
 
 
@@ -108,7 +110,7 @@ OVERTAKING_NAMES = {
 
 
 def test_nesting_three_deep_flattens_with_scoped_names_roles_and_parameters() -> None:
-    result = expand(io.load(EXAMPLES / "overtaking-concrete.xmi").root)
+    result = expand(load(EXAMPLES / "overtaking-concrete.xmi").root)
     assert result.expanded == [
         "Overtaking_1",
         "Overtaking_1.PassVehicle_1",
@@ -137,7 +139,7 @@ def test_nesting_three_deep_flattens_with_scoped_names_roles_and_parameters() ->
 
 
 def test_provenance_names_the_use_chain_and_the_definition_element_three_deep() -> None:
-    document = io.load(EXAMPLES / "overtaking-concrete.xmi")
+    document = load(EXAMPLES / "overtaking-concrete.xmi")
     result = expand(document.root)
     by_name = {n.name: n for n in result.scenario.nodes}
     outer = next(n for n in document.root.nodes if n.name == "Overtaking_1")
@@ -164,7 +166,7 @@ def test_provenance_names_the_use_chain_and_the_definition_element_three_deep() 
 
 
 def test_provenance_traces_substituted_values_to_the_override_or_default() -> None:
-    document = io.load(EXAMPLES / "overtaking-concrete.xmi")
+    document = load(EXAMPLES / "overtaking-concrete.xmi")
     result = expand(document.root)
     by_name = {n.name: n for n in result.scenario.nodes}
     prefix = "Overtaking_1.PassVehicle_1."
@@ -180,14 +182,14 @@ def test_provenance_traces_substituted_values_to_the_override_or_default() -> No
 
 
 def test_every_element_of_the_flat_scenario_has_an_origin_except_rewired_flows() -> None:
-    result = expand(io.load(EXAMPLES / "overtaking-logical.xmi").root)
+    result = expand(load(EXAMPLES / "overtaking-logical.xmi").root)
     missing = [o for o in result.scenario.eAllContents() if result.origin(o) is None]
     assert missing and all(isinstance(o, scm.Flow) for o in missing)
     assert all(result.origin(n) is not None for n in result.scenario.nodes)
 
 
 def test_an_override_reaches_the_innermost_node_at_the_logical_level() -> None:
-    flat = flatten(io.load(EXAMPLES / "overtaking-logical.xmi").root)
+    flat = flatten(load(EXAMPLES / "overtaking-logical.xmi").root)
     speed_up = next(n for n in flat.nodes if n.name == "Overtaking_1.PassVehicle_1.Accelerate_1")
     assert isinstance(speed_up.targetSpeed, scm.UniformDistribution)
     assert (speed_up.targetSpeed.min, speed_up.targetSpeed.max) == (12.0, 14.0)
@@ -195,12 +197,12 @@ def test_an_override_reaches_the_innermost_node_at_the_logical_level() -> None:
 
 def test_a_library_change_is_seen_when_flattening(examples_copy: Path) -> None:
     path = examples_copy / "library" / "sceml-library.xmi"
-    library = io.load(path)
+    library = load(path)
     crossing = next(m for m in library.root.modules if m.name == "CrossingManeuver")
     arrival = next(p for p in crossing.parameters if p.name == "arrivalRadius")
     arrival.default.value = 3.5
-    io.save(library.root, path)
-    flat = flatten(io.load(examples_copy / "uis2-concrete.xmi").root)
+    save(library.root, path)
+    flat = flatten(load(examples_copy / "uis2-concrete.xmi").root)
     arrived = next(n for n in flat.nodes if n.name == "CrossingManeuver_1.InLocationRadius_1")
     assert arrived.radius.value == 3.5
 
@@ -211,24 +213,24 @@ def test_moving_scenario_and_library_together_keeps_flattening(
     moved = tmp_path / "elsewhere" / "deeper"
     shutil.copytree(examples_copy, moved)
     shutil.rmtree(examples_copy)
-    names = {n.name for n in flatten(io.load(moved / "overtaking-logical.xmi").root).nodes}
+    names = {n.name for n in flatten(load(moved / "overtaking-logical.xmi").root).nodes}
     assert names == OVERTAKING_NAMES
 
 
 def _save_libraries(libraries: dict[Path, scm.Library]) -> None:
     # Every library needs its file before any is saved, so cross-file references come out right.
-    resource_set = io.new_resource_set()
+    resource_set = new_resource_set()
     for path, library in libraries.items():
         resource_set.create_resource(URI(str(path))).append(library)
     for path, library in libraries.items():
-        io.save(library, path)
+        save(library, path)
 
 
 def _scenario_using(definition: scm.ModuleDefinition, path: Path) -> Path:
     b = ScenarioBuilder("Uses", level="functional")
     car = b.actor("Car", "ego", ego=True)
     b.chain(b.root, b.use(definition, {"driver": car}), b.end)
-    io.save(b.scenario, path)
+    save(b.scenario, path)
     return path
 
 
@@ -246,7 +248,7 @@ def test_direct_recursion_is_an_error(tmp_path: Path) -> None:
     _save_libraries({tmp_path / "lib.xmi": library.library})
     scenario = _scenario_using(looping.definition, tmp_path / "scenario.xmi")
     with pytest.raises(FlattenError, match="module uses itself: Loop -> Loop") as caught:
-        flatten(io.load(scenario).root)
+        flatten(load(scenario).root)
     assert caught.value.exit_code == 1
     assert caught.value.file == str(tmp_path / "lib.xmi")  # where the looping use is written
     assert caught.value.line is not None
@@ -263,8 +265,8 @@ def test_transitive_recursion_across_files_is_an_error(tmp_path: Path) -> None:
     assert 'href="sub/second.xmi#B"' in (tmp_path / "first.xmi").read_text()
     scenario = _scenario_using(a.definition, tmp_path / "scenario.xmi")
     with pytest.raises(FlattenError, match="module uses itself: A -> B -> A"):
-        flatten(io.load(scenario).root)
-    reloaded = io.load(tmp_path / "first.xmi").root
+        flatten(load(scenario).root)
+    reloaded = load(tmp_path / "first.xmi").root
     with pytest.raises(FlattenError, match="A -> B -> A"):
         depth(reloaded.modules[0])
     (summary,) = list_definitions(reloaded)
@@ -282,7 +284,7 @@ def _edit(path: Path, old: str, new: str) -> Path:
 def test_unresolved_library_file_names_the_path_tried(examples_copy: Path) -> None:
     path = _edit(examples_copy / "uis2-concrete.xmi", "library/sceml-library.xmi", "lib/x.xmi")
     with pytest.raises(FlattenError) as caught:
-        flatten(io.load(path).root)
+        flatten(load(path).root)
     message = str(caught.value)
     assert "'lib/x.xmi#CrossingManeuver' cannot be loaded" in message
     assert f"{examples_copy / 'lib' / 'x.xmi'}: no such file" in message
@@ -294,11 +296,11 @@ def test_unresolved_library_file_names_the_path_tried(examples_copy: Path) -> No
 def test_unresolved_module_name_lists_the_modules_there_are(examples_copy: Path) -> None:
     path = _edit(examples_copy / "uis2-concrete.xmi", "#CrossingManeuver", "#Crossing")
     with pytest.raises(FlattenError, match=r"has no module 'Crossing' \(it has: CrossingManeuver,"):
-        flatten(io.load(path).root)
+        flatten(load(path).root)
 
 
 def test_library_outside_the_allowed_folders_is_reported(examples_copy: Path) -> None:
-    document = io.load(examples_copy / "uis2-concrete.xmi", allowed_roots=[examples_copy / "none"])
+    document = load(examples_copy / "uis2-concrete.xmi", allowed_roots=[examples_copy / "none"])
     with pytest.raises(FlattenError, match="reference leaves the allowed folders"):
         flatten(document.root)
 
@@ -312,7 +314,7 @@ def test_unbound_role_is_an_error(examples_copy: Path) -> None:
     with pytest.raises(
         FlattenError, match="role 'trigger' of module 'CrossingManeuver' is not bound"
     ):
-        flatten(io.load(path).root)
+        flatten(load(path).root)
 
 
 def test_unknown_override_is_an_error(examples_copy: Path) -> None:
@@ -320,7 +322,7 @@ def test_unknown_override_is_an_error(examples_copy: Path) -> None:
         examples_copy / "uis2-concrete.xmi", 'parameter="crossingSpeed"', 'parameter="pace"'
     )
     with pytest.raises(FlattenError, match="module 'CrossingManeuver' has no parameter 'pace'"):
-        flatten(io.load(path).root)
+        flatten(load(path).root)
 
 
 def test_unwired_port_is_an_error(tmp_path: Path) -> None:
@@ -330,7 +332,7 @@ def test_unwired_port_is_an_error(tmp_path: Path) -> None:
     _save_libraries({tmp_path / "lib.xmi": library.library})
     scenario = _scenario_using(broken.definition, tmp_path / "scenario.xmi")
     with pytest.raises(FlattenError, match="module 'Broken': port 'In' is not wired"):
-        flatten(io.load(scenario).root)
+        flatten(load(scenario).root)
 
 
 def test_a_module_passing_activation_straight_through_keeps_the_flow(tmp_path: Path) -> None:
@@ -359,8 +361,8 @@ def test_a_relative_position_naming_a_role_names_the_bound_actor_once_flattened(
         "InLocationRadius", mover, position=relative_object(leader, 10.0, 0.0, h=0.1), radius=2.0
     )
     module.chain(module.in_port, drive, near, module.out_port)
-    library_file = io.save(lib.library, tmp_path / "lib.xmi")
-    definition = io.load(library_file).root.modules[0]
+    library_file = save(lib.library, tmp_path / "lib.xmi")
+    definition = load(library_file).root.modules[0]
     b = ScenarioBuilder("Uses", map="../maps/intersection.xodr", level="concrete")
     ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0))
     car = b.actor("Car", "car", start=world(10.0, 0.0))

@@ -7,16 +7,16 @@ from pathlib import Path
 import pytest
 
 import scemlmodel as scm
-from sceml import io
-from sceml.build import ScenarioBuilder
 from sceml.errors import BuildError
+from sceml.model.build import ScenarioBuilder
+from sceml.model.loading import load_library
 from sceml.modules import UnknownModuleError, definition_named, instantiate, list_definitions, show
 
 LIBRARY = Path(__file__).resolve().parents[2] / "examples" / "library" / "sceml-library.xmi"
 
 
 def library() -> scm.Library:
-    return io.load_library(LIBRARY).root
+    return load_library(LIBRARY).root
 
 
 def test_list_gives_roles_parameters_and_size_of_every_definition() -> None:

@@ -12,8 +12,9 @@ import pytest
 from click.testing import CliRunner, Result
 from lxml import etree
 
-from sceml import io, schema
 from sceml.cli import cli
+from sceml.files.writing import write_atomically
+from sceml.xosc import schema
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 GOOD = b"<good>previous output</good>\n"
@@ -192,6 +193,6 @@ def test_an_interrupt_during_an_atomic_write_removes_the_temporary_file(
 
     monkeypatch.setattr(os, "replace", interrupted)
     with pytest.raises(KeyboardInterrupt):
-        io.write_atomically(output, b"new")
+        write_atomically(output, b"new")
     assert output.read_bytes() == GOOD
     assert temporaries(tmp_path) == []

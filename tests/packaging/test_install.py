@@ -18,7 +18,7 @@ sys.path_importer_cache.clear()
 sys.path.insert(0, sys.argv[1])
 import importlib.resources as resources
 import sceml, scemlmodel
-from sceml import catalog
+from sceml.model import catalog
 assert sceml.__file__.startswith(sys.argv[1]), sceml.__file__
 assert scemlmodel.__file__.startswith(sys.argv[1]), scemlmodel.__file__
 assert (resources.files("sceml.metamodel") / "scemlmodel.ecore").is_file()
@@ -64,7 +64,7 @@ def test_editable_install_provides_the_same(tmp_path: Path) -> None:
         [
             sys.executable,
             "-c",
-            "import importlib.resources as r, scemlmodel, sceml.catalog as c;"
+            "import importlib.resources as r, scemlmodel, sceml.model.catalog as c;"
             "print(scemlmodel.__file__);"
             "print((r.files('sceml.metamodel') / 'scemlmodel.ecore').is_file())",
         ],

@@ -31,8 +31,8 @@ import os
 from pathlib import Path
 
 import scemlmodel as scm
-from sceml import io
-from sceml.build import LibraryBuilder, ScenarioBuilder, lane, world
+from sceml.model.build import LibraryBuilder, ScenarioBuilder, lane, world
+from sceml.model.saving import save
 
 HERE = Path(__file__).resolve().parent
 MAP = HERE.parent.parent / "maps" / "intersection.xodr"
@@ -286,7 +286,7 @@ def build_all(out: Path) -> list[Path]:
     # Relative to the committed folder, so that a build elsewhere (the test's) is the same bytes.
     map_text = Path(os.path.relpath(MAP, OUT)).as_posix()
     library = build_library()
-    written = [io.save(library, out / "library" / "players-library.xmi")]
+    written = [save(library, out / "library" / "players-library.xmi")]
     scenarios = {
         "longitudinal.xmi": build_longitudinal(map_text),
         "junction.xmi": build_junction(map_text),
@@ -299,7 +299,7 @@ def build_all(out: Path) -> list[Path]:
         "parallel.xmi": build_parallel(map_text),
     }
     for name, scenario in scenarios.items():
-        written.append(io.save(scenario, out / name))
+        written.append(save(scenario, out / name))
     return written
 
 

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from sceml import io
+from sceml.model.loading import load_scenario
 from sceml.players import esmini
 from sceml.players.check import check_scenario_run
 from sceml.players.compare import POSITION_AGREEMENT, START_AGREEMENT, compare
@@ -27,7 +27,7 @@ def comparison(stem: str, scenario: str, recording):  # type: ignore[no-untyped-
     run = esmini.read(log, trace)
     path = model(scenario)
     report = check_scenario_run(path, run)
-    return compare(simulate(io.load_scenario(path).root, path), report, run)
+    return compare(simulate(load_scenario(path).root, path), report, run)
 
 
 @pytest.mark.parametrize(

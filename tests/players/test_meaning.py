@@ -7,9 +7,9 @@ import math
 import pytest
 
 import scemlmodel as scm
-from sceml.players import meaning
 from sceml.players.goals import goal_problems
 from sceml.players.record import PlayerRun
+from sceml.xosc import meaning
 
 
 def test_drive_distance_lasts_distance_over_speed() -> None:

@@ -7,8 +7,8 @@ from pathlib import Path
 
 import pytest
 
-from sceml import io
 from sceml.export import build_xosc
+from sceml.model.loading import load_scenario
 
 HERE = Path(__file__).resolve().parent
 SCENARIOS = HERE / "scenarios"
@@ -33,5 +33,5 @@ def test_committed_scenarios_equal_the_builder_output(tmp_path: Path) -> None:
 @pytest.mark.parametrize("path", sorted(SCENARIOS.glob("*.xmi")), ids=lambda p: p.stem)
 @pytest.mark.parametrize("version", ["1.0", "1.3"])
 def test_every_scenario_exports(path: Path, version: str) -> None:
-    document = build_xosc(io.load_scenario(path).root, version=version, source_path=path)
+    document = build_xosc(load_scenario(path).root, version=version, source_path=path)
     assert document.events_of

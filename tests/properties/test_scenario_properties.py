@@ -8,10 +8,10 @@ from hypothesis import given, settings
 from strategies import scenarios
 
 import scemlmodel as scm
-from sceml import schema
 from sceml.diagnostics import Severity
 from sceml.export import export
 from sceml.validation import validate
+from sceml.xosc import schema
 
 PROPERTY = settings(max_examples=50, deadline=None)
 

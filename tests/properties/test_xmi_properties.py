@@ -14,11 +14,12 @@ from hypothesis import strategies as st
 from strategies import scenarios as shared_scenarios
 
 import scemlmodel as scm
-from sceml import io
-from sceml.build import ScenarioBuilder, lane, world
 from sceml.cli import cli
-from sceml.compare import differences
 from sceml.errors import SceMLError
+from sceml.model.build import ScenarioBuilder, lane, world
+from sceml.model.compare import differences
+from sceml.model.loading import load, unresolved_references
+from sceml.model.saving import save
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 SOURCES = [EXAMPLES / "uis1-concrete.xmi", EXAMPLES / "uis2-logical.xmi"]
@@ -33,7 +34,7 @@ KINDS = ["Accelerate", "Decelerate", "KeepVelocity", "DriveDistance", "TimeElaps
 @st.composite
 def scenarios(draw: st.DrawFn) -> scm.Scenario:
     """A scenario of random actors and action nodes in parallel chains from root to end."""
-    # XML 1.0 cannot carry control characters or lone surrogates (io.save refuses them).
+    # XML 1.0 cannot carry control characters or lone surrogates (save refuses them).
     name = st.text(st.characters(exclude_categories=("Cc", "Cs")), min_size=1, max_size=12)
     builder = ScenarioBuilder(draw(name), level="concrete")
     actors = []
@@ -60,8 +61,8 @@ def scenarios(draw: st.DrawFn) -> scm.Scenario:
 @PROPERTY
 @given(scenario=scenarios())
 def test_random_scenarios_round_trip_unchanged(tmp_path: Path, scenario: scm.Scenario) -> None:
-    path = io.save(scenario, tmp_path / "random.xmi")
-    assert differences(scenario, io.load(path).root) == []
+    path = save(scenario, tmp_path / "random.xmi")
+    assert differences(scenario, load(path).root) == []
 
 
 @PROPERTY
@@ -69,8 +70,8 @@ def test_random_scenarios_round_trip_unchanged(tmp_path: Path, scenario: scm.Sce
 def test_shared_random_scenarios_round_trip(tmp_path: Path, data: st.DataObject) -> None:
     level = data.draw(st.sampled_from(["functional", "logical", "concrete"]))
     scenario = data.draw(shared_scenarios(level))
-    path = io.save(scenario, tmp_path / "random.xmi")
-    reloaded = io.load(path).root
+    path = save(scenario, tmp_path / "random.xmi")
+    reloaded = load(path).root
     assert differences(scenario, reloaded) == []
 
 
@@ -93,10 +94,10 @@ def deadline(seconds: int = 20) -> Iterator[None]:
 def _load_and_walk(path: Path) -> None:
     """What a tool does with a file: load it, resolve its references, walk everything."""
     try:
-        document = io.load(path)
+        document = load(path)
     except SceMLError:
         return
-    list(io.unresolved_references(document.root))
+    list(unresolved_references(document.root))
     for obj in document.root.eAllContents():
         for feature in obj.eClass.eAllStructuralFeatures():
             obj.eGet(feature)

@@ -7,8 +7,8 @@ from pathlib import Path
 import pytest
 
 import scemlmodel as scm
-from sceml import io
-from sceml.build import ScenarioBuilder
+from sceml.model.build import ScenarioBuilder
+from sceml.model.loading import load
 from sceml.render import RenderError, diagram, to_bytes
 from sceml.render.bt import Leaf, Module, Parallel, Wait, tree_of
 
@@ -22,7 +22,7 @@ def kinds(items: list) -> list[str]:
 
 
 def test_uis1_is_parallel_all_of_two_sequences_as_in_fig_treenot() -> None:
-    tree = tree_of(io.load(EXAMPLES / "uis1-functional.xmi").root)
+    tree = tree_of(load(EXAMPLES / "uis1-functional.xmi").root)
     assert tree.series_parallel and tree.left_out == []
     [parallel] = tree.items
     assert isinstance(parallel, Parallel) and parallel.policy == "all"
@@ -32,7 +32,7 @@ def test_uis1_is_parallel_all_of_two_sequences_as_in_fig_treenot() -> None:
 
 
 def test_uis1_svg_has_one_parallel_all_and_two_sequences() -> None:
-    svg = parse(to_bytes(diagram(io.load(EXAMPLES / "uis1-logical.xmi").root, view="bt"), "svg"))
+    svg = parse(to_bytes(diagram(load(EXAMPLES / "uis1-logical.xmi").root, view="bt"), "svg"))
     assert len(groups(svg, "sceml-bt-parallel-all")) == 1
     assert len(groups(svg, "sceml-bt-sequence")) == 2
     assert groups(svg, "sceml-bt-parallel-one") == []
@@ -41,7 +41,7 @@ def test_uis1_svg_has_one_parallel_all_and_two_sequences() -> None:
 
 
 def test_uis2_expanded_puts_the_module_body_in_its_own_frame() -> None:
-    tree = tree_of(io.load(EXAMPLES / "uis2-functional.xmi").root, "expanded")
+    tree = tree_of(load(EXAMPLES / "uis2-functional.xmi").root, "expanded")
     [parallel] = tree.items
     assert [kinds(c) if not isinstance(c[0], Module) else "module" for c in parallel.children] == [
         ["Accelerate", "TurnLeft", "InLocationRadius"],

@@ -5,9 +5,9 @@ from __future__ import annotations
 import pytest
 
 import scemlmodel as scm
-from sceml.build import ScenarioBuilder, world
 from sceml.editor.errors import OperationError
 from sceml.editor.node_ops import attribute_value
+from sceml.model.build import ScenarioBuilder, world
 from sceml.render.labels import Scope, action_lines
 
 
@@ -29,8 +29,8 @@ def test_a_measure_apart_from_the_default_is_one_line() -> None:
 
 
 def test_the_editor_offers_the_measure_as_fields() -> None:
-    from sceml.build import node_named
     from sceml.editor.fields import node_fields
+    from sceml.model.build import node_named
 
     b = ScenarioBuilder("fields", level="concrete")
     ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0), speed=10.0)

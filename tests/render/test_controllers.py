@@ -5,7 +5,7 @@ root lists the controller each actor starts with."""
 from __future__ import annotations
 
 import scemlmodel as scm
-from sceml.build import ScenarioBuilder, activation, controller, override, world
+from sceml.model.build import ScenarioBuilder, activation, controller, override, world
 from sceml.render import diagram, to_bytes
 
 from .svgtools import fills, groups, parse, text_of

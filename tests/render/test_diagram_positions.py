@@ -7,8 +7,9 @@ from pathlib import Path
 from lxml import etree
 
 import scemlmodel as scm
-from sceml import io
 from sceml.export import export
+from sceml.model.loading import load
+from sceml.model.saving import save
 from sceml.modules.library import describe_features
 from sceml.render.labels import Scope, parameter_items
 
@@ -20,13 +21,13 @@ def _place_every_node(graph: scm.Graph) -> None:
 
 def test_positions_are_saved_but_never_shown_or_exported(examples_copy: Path) -> None:
     path = examples_copy / "uis2-concrete.xmi"
-    before = export(io.load(path).root, date="2026-01-01T00:00:00")
-    document = io.load(path)
+    before = export(load(path).root, date="2026-01-01T00:00:00")
+    document = load(path)
     _place_every_node(document.root)
-    io.save(document.root, path)
+    save(document.root, path)
     assert b"diagramPosition" in path.read_bytes()
 
-    reloaded = io.load(path)
+    reloaded = load(path)
     placed = [n for n in reloaded.root.nodes if n.diagramPosition is not None]
     assert len(placed) == len(reloaded.root.nodes)
     assert reloaded.root.nodes[2].diagramPosition.x == 200.0

@@ -7,8 +7,8 @@ from pathlib import Path
 import pytest
 
 import scemlmodel as scm
-from sceml import io
-from sceml.build import LibraryBuilder, ScenarioBuilder
+from sceml.model.build import LibraryBuilder, ScenarioBuilder
+from sceml.model.loading import load
 from sceml.render import ModuleChoiceError, diagram, flow_diagram, to_bytes
 
 from .svgtools import fills, groups, parse, text_of
@@ -17,7 +17,7 @@ EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
 def svg_of(name: str, **options: object):
-    root = io.load(EXAMPLES / name).root
+    root = load(EXAMPLES / name).root
     return parse(to_bytes(diagram(root, **options), "svg"))  # type: ignore[arg-type]
 
 
@@ -75,7 +75,7 @@ def test_functional_labels_show_no_parameters() -> None:
 
 
 def test_uis1_flows_follow_the_paper() -> None:
-    document = io.load(EXAMPLES / "uis1-concrete.xmi")
+    document = load(EXAMPLES / "uis1-concrete.xmi")
     svg = parse(to_bytes(flow_diagram(document.root).graph, "svg"))
     titles = {
         g.get("id"): g.findtext("{http://www.w3.org/2000/svg}title")
@@ -124,7 +124,7 @@ def test_expanded_module_is_a_frame_with_ports_and_bound_actors() -> None:
 
 
 def test_library_module_alone_and_the_choice_of_module() -> None:
-    library = io.load(EXAMPLES / "library" / "sceml-library.xmi").root
+    library = load(EXAMPLES / "library" / "sceml-library.xmi").root
     svg = parse(to_bytes(diagram(library, module="CrossingManeuver"), "svg"))
     assert len(groups(svg, "sceml-module")) == 1
     assert len(groups(svg, "sceml-condition")) == 2 and len(groups(svg, "sceml-lateral")) == 1
@@ -188,7 +188,7 @@ def test_a_module_that_uses_itself_is_drawn_collapsed() -> None:
 
 def test_unresolved_module_is_drawn_as_a_broken_box(examples_copy: Path) -> None:
     (examples_copy / "library" / "sceml-library.xmi").unlink()
-    root = io.load(examples_copy / "uis2-logical.xmi").root
+    root = load(examples_copy / "uis2-logical.xmi").root
     svg = parse(to_bytes(diagram(root, modules="expanded"), "svg"))
     broken = groups(svg, "sceml-broken")
     assert len(broken) == 1 and "definition not found" in text_of(broken[0])

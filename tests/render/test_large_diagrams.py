@@ -9,11 +9,11 @@ import graphviz
 import pytest
 from click.testing import CliRunner
 
-import sceml.render.report as report_module
-from sceml import io
+import sceml.review.page as report_module
 from sceml.cli import cli
+from sceml.model.loading import load, load_library
 from sceml.render import DiagramTooLargeError, diagram, drawn_nodes
-from sceml.render.report import build_report
+from sceml.review.page import build_report
 
 REPO = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(REPO / "benchmarks"))
@@ -32,7 +32,7 @@ def big(tmp_path_factory: pytest.TempPathFactory) -> Path:
 def test_a_diagram_above_the_limit_is_refused_before_anything_is_drawn(
     big: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    root = io.load(big).root
+    root = load(big).root
     count = drawn_nodes(root, "collapsed")
     assert count == len(root.nodes)
     drawn: list[object] = []
@@ -45,8 +45,8 @@ def test_a_diagram_above_the_limit_is_refused_before_anything_is_drawn(
 
 
 def test_expanded_module_uses_count_their_definitions() -> None:
-    root = io.load(EXAMPLES / "uis2-concrete.xmi").root
-    crossing = io.load_library(EXAMPLES / "library" / "sceml-library.xmi").root
+    root = load(EXAMPLES / "uis2-concrete.xmi").root
+    crossing = load_library(EXAMPLES / "library" / "sceml-library.xmi").root
     definition = next(m for m in crossing.modules if m.name == "CrossingManeuver")
     assert drawn_nodes(root, "collapsed") == len(root.nodes)
     assert drawn_nodes(root, "expanded") == len(root.nodes) + len(definition.nodes)
@@ -64,6 +64,6 @@ def test_the_report_omits_the_diagram_and_keeps_its_tables(
     big: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     monkeypatch.setattr(report_module, "MAX_DIAGRAM_NODES", 500)
-    html = build_report(io.load(big), [])
+    html = build_report(load(big), [])
     assert "Diagram omitted:" in html and "<svg" not in html.split("<h2>Diagram</h2>")[1][:500]
     assert "<h2>Parameters</h2>" in html or "Parameters" in html

@@ -11,8 +11,8 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Circle, Polygon, Wedge
 
 import scemlmodel as scm
-from sceml.io import load
 from sceml.maps import MapError
+from sceml.model.loading import load
 from sceml.render.mapscene import MapViewError, build_scene, junction_boxes
 from sceml.render.mapview import MapFigure, draw, inline_svg, map_view
 

@@ -11,16 +11,20 @@ import pytest
 from browser import CHROMIUM, CHROMIUM_ARGS
 
 import scemlmodel as scm
-from sceml import io
-from sceml.build import ScenarioBuilder
 from sceml.diagnostics import Diagnostic, Severity
-from sceml.params import span
-from sceml.render.report import TEMPLATE, Figure, build_report
+from sceml.model.build import ScenarioBuilder
+from sceml.model.documents import Document
+from sceml.model.loading import load
+from sceml.model.locating import uri_fragment
+from sceml.model.params import span
+from sceml.model.saving import save
+from sceml.review.figure import Figure
+from sceml.review.page import TEMPLATE, build_report
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
-def broken_document(tmp_path: Path) -> io.Document:
+def broken_document(tmp_path: Path) -> Document:
     """A scenario with a join that has only one input (paper rule 3), saved and loaded back."""
     b = ScenarioBuilder("Broken", map="Town03", level="logical")
     ego = b.actor("Car", "ego", ego=True)
@@ -28,11 +32,11 @@ def broken_document(tmp_path: Path) -> io.Document:
     b.chain(b.root, go)
     join = b.join_all(go)
     b.chain(join, b.end)
-    path = io.save(b.scenario, tmp_path / "broken.xmi")
-    return io.load(path)
+    path = save(b.scenario, tmp_path / "broken.xmi")
+    return load(path)
 
 
-def diagnostics_for(document: io.Document) -> list[Diagnostic]:
+def diagnostics_for(document: Document) -> list[Diagnostic]:
     join = next(n for n in document.root.nodes if isinstance(n, scm.JoinAllFinished))
     ego = document.root.nodes[0].actors[0]
     return [
@@ -40,7 +44,7 @@ def diagnostics_for(document: io.Document) -> list[Diagnostic]:
             Severity.ERROR,
             "SCEML-S004",
             "join has one input",
-            fragment=io.uri_fragment(join),
+            fragment=uri_fragment(join),
             file=str(document.path),
             line=document.line_of(join),
         ),
@@ -90,12 +94,12 @@ def test_extra_figures_follow_the_diagram_under_their_titles(tmp_path: Path) -> 
 
 
 def test_module_internals_map_through_expanded_uses() -> None:
-    document = io.load(EXAMPLES / "uis2-logical.xmi")
+    document = load(EXAMPLES / "uis2-logical.xmi")
     use = next(n for n in document.root.nodes if isinstance(n, scm.ModuleUse))
     inner = use.definition.nodes[3]
     library = str(EXAMPLES / "library" / "sceml-library.xmi")
     diagnostic = Diagnostic(
-        Severity.ERROR, "SCEML-M9", "inside", fragment=io.uri_fragment(inner), file=library
+        Severity.ERROR, "SCEML-M9", "inside", fragment=uri_fragment(inner), file=library
     )
     html = build_report(document, [diagnostic])
     use_id = f"nodes.{list(document.root.nodes).index(use)}"

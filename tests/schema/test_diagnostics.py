@@ -5,8 +5,8 @@ from __future__ import annotations
 from pathlib import Path
 
 from sceml.diagnostics import Severity
-from sceml.qualitychecker import QualityIssue, quality_diagnostics
-from sceml.xosc_check import check_file
+from sceml.xosc.check import check_file
+from sceml.xosc.qualitychecker import QualityIssue, quality_diagnostics
 
 DATA = Path(__file__).parent / "data"
 
@@ -42,7 +42,7 @@ def test_an_unsafe_file_is_unreadable_not_raised() -> None:
 
 
 def test_the_checked_versions_come_from_the_one_versions_list() -> None:
-    from sceml import qualitychecker, schema
+    from sceml.xosc import qualitychecker, schema
 
     assert set(qualitychecker.CHECKED_VERSIONS) < set(schema.SUPPORTED_VERSIONS)
     assert (

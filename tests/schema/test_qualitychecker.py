@@ -1,4 +1,4 @@
-"""Tests for sceml.qualitychecker: running ASAM's OpenSCENARIO XML checker bundle."""
+"""Tests for sceml.xosc.qualitychecker: running ASAM's OpenSCENARIO XML checker bundle."""
 
 from __future__ import annotations
 
@@ -10,13 +10,13 @@ from pathlib import Path
 import pytest
 from lxml import etree
 
-from sceml.qualitychecker import (
+from sceml.xosc.qualitychecker import (
     CheckerStatus,
     QualityIssue,
     QualityReport,
     run_quality_checker,
 )
-from sceml.schema import UnsafeXMLError
+from sceml.xosc.schema import UnsafeXMLError
 
 DATA = Path(__file__).parent / "data"
 SCHEMA_CHECKER = "check_asam_xosc_xml_valid_schema"
@@ -173,7 +173,7 @@ def test_fresh_process_gets_no_logging_side_effects() -> None:
 
     code = (
         "import logging, sys\n"
-        "from sceml.qualitychecker import run_quality_checker\n"
+        "from sceml.xosc.qualitychecker import run_quality_checker\n"
         "report = run_quality_checker(sys.argv[1])\n"
         "root = logging.getLogger()\n"
         "assert report.issues and root.handlers == [] and root.level == logging.WARNING\n"
@@ -194,7 +194,7 @@ def test_fresh_process_gets_no_logging_side_effects() -> None:
 def test_bundle_crash_becomes_quality_checker_error(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    from sceml import qualitychecker
+    from sceml.xosc import qualitychecker
 
     def boom(config: object, result: object) -> None:
         os.chdir(tmp_path)  # the real bundle may leave the cwd changed when it raises

@@ -1,4 +1,4 @@
-"""Tests for sceml.schema: XSD validation, version detection and hostile-input refusal."""
+"""Tests for sceml.xosc.schema: XSD validation, version detection and hostile-input refusal."""
 
 from __future__ import annotations
 
@@ -10,9 +10,9 @@ from pathlib import Path
 import pytest
 from lxml import etree
 
-from sceml import schema
 from sceml.errors import SceMLError
-from sceml.schema import (
+from sceml.xosc import schema
+from sceml.xosc.schema import (
     SUPPORTED_VERSIONS,
     SchemaIssue,
     UnsafeXMLError,

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 
-from sceml.build import ScenarioBuilder, activation, controller, override, world
+from sceml.model.build import ScenarioBuilder, activation, controller, override, world
 from sceml.simulate import simulate
 
 
@@ -27,7 +27,7 @@ def test_a_controller_change_finishes_at_once_and_changes_no_motion() -> None:
     b.chain(b.root, wait, take_over, brake, off, b.end)
     run = simulate(b.scenario)
     # The wait starts one flow after the root (0.05 s) and ends 1 s later; written into the
-    # next event's trigger, it costs no step (players.flows), and the assignment it starts
+    # next event's trigger, it costs no step (xosc.flows), and the assignment it starts
     # acts from the next step, as a player's action does (1.1 s). Each controller node after
     # it starts one flow after its predecessor and finishes in that same step.
     starts = [run.node(str(n.name)).started for n in (take_over, brake, off)]

@@ -8,18 +8,18 @@ import numpy as np
 import pytest
 from conftest import EXAMPLES
 
-from sceml import io
+from sceml.model.loading import load_scenario
 from sceml.simulate import END_NODE, Run, simulate
 
-#: A flow costs one time step (players.meaning.FLOW_DELAY_STEPS): a node starts one step
+#: A flow costs one time step (xosc.meaning.FLOW_DELAY_STEPS): a node starts one step
 #: after its predecessor finished; none out of a condition the export writes into its
-#: successor's trigger (players.flows.inlined).
+#: successor's trigger (xosc.flows.inlined).
 STEP = 0.05
 
 
 def run_of(name: str) -> Run:
     path = EXAMPLES / name
-    return simulate(io.load_scenario(path).root, path)
+    return simulate(load_scenario(path).root, path)
 
 
 def distance(run: Run, a: str, b: str, k: int) -> float:

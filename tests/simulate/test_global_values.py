@@ -9,11 +9,11 @@ from pathlib import Path
 
 import pytest
 
-from sceml.build import ScenarioBuilder, world
 from sceml.importer import import_file
-from sceml.players.meaning import value_after, value_holds
+from sceml.model.build import ScenarioBuilder, world
 from sceml.simulate import simulate
 from sceml.simulate.world import SimulationError
+from sceml.xosc.meaning import value_after, value_holds
 
 FILES = Path(__file__).resolve().parents[1] / "importer" / "files"
 
@@ -26,7 +26,7 @@ def test_a_condition_holds_once_the_actions_changed_the_value(name: str) -> None
     assert times == {"SetCounter": (0.05, 0.05), "CounterHigh": (0.05, 0.1)}
     # Mood is "calm" until Calm sets it: StillCalm holds at once.
     assert run.node("StillCalm").finished == 0.05
-    # CounterHigh is written into Brake's trigger (players.flows): Brake starts when it holds.
+    # CounterHigh is written into Brake's trigger (xosc.flows): Brake starts when it holds.
     assert run.node("Brake").started == 0.1
 
 

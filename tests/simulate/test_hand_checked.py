@@ -2,10 +2,10 @@
 
 The actors stand on no map (no map named): each moves straight along its heading, so every
 expectation below follows from x = x0 + v t with boxes of 4 m x 2 m. A flow costs one time
-step of 0.05 s, as in players (`players.meaning.FLOW_DELAY_STEPS`): the root finishes at 0, the
+step of 0.05 s, as in players (`xosc.meaning.FLOW_DELAY_STEPS`): the root finishes at 0, the
 nodes after it start at 0.05 s, and the end node finishes one step after its last predecessor.
 A flow out of a wait, a join, or a condition the export writes into its successor's trigger
-(`players.flows.inlined`) costs none: the successor starts in the instant it finishes.
+(`xosc.flows.inlined`) costs none: the successor starts in the instant it finishes.
 """
 
 from __future__ import annotations
@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 import scemlmodel as scm
-from sceml.build import ScenarioBuilder, world
+from sceml.model.build import ScenarioBuilder, world
 from sceml.simulate import END_NODE, MAX_DURATION, simulate
 from sceml.simulate.geometry import Boxes, time_to_collision
 

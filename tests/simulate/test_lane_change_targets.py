@@ -9,8 +9,8 @@ from pathlib import Path
 
 import pytest
 
-from sceml import io
 from sceml.importer import import_to_file
+from sceml.model.loading import load
 from sceml.simulate import simulate
 
 FILES = Path(__file__).parents[1] / "importer" / "files"
@@ -22,7 +22,7 @@ def test_lane_changes_end_in_the_named_lanes_at_their_offsets(tmp_path: Path) ->
     shutil.copy(FILES / "lane-changes.xosc", tmp_path)
     model = tmp_path / "lane-changes.xmi"
     import_to_file(tmp_path / "lane-changes.xosc", model)
-    run = simulate(io.load(model).root, model)
+    run = simulate(load(model).root, model)
     cut_in, onward = run.node("CutInEvent"), run.node("OnwardEvent")
     assert cut_in.finished is not None and onward.finished is not None
     target = run.actor_index("Target")

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import pytest
 
-from sceml.build import ScenarioBuilder, world
+from sceml.model.build import ScenarioBuilder, world
 from sceml.simulate import simulate
 
 SIZE = {"length": 4.0, "width": 2.0}

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 from conftest import REPO
 
-from sceml.build import ScenarioBuilder, lane, world
+from sceml.model.build import ScenarioBuilder, lane, world
 from sceml.simulate import END_NODE, simulate
 
 MAP = str(REPO / "maps" / "intersection.xodr")

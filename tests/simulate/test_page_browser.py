@@ -10,7 +10,7 @@ import pytest
 from browser import CHROMIUM, CHROMIUM_ARGS
 from conftest import EXAMPLES
 
-from sceml import io
+from sceml.model.loading import load_scenario
 from sceml.simulate import simulate
 from sceml.simulate.page import preview_page
 
@@ -23,7 +23,7 @@ from sceml.simulate.page import preview_page
 def test_the_slider_moves_the_actors_and_marks_the_running_nodes(tmp_path: Path) -> None:
     sync_api = pytest.importorskip("playwright.sync_api")
     source = EXAMPLES / "uis1-concrete.xmi"
-    scenario = io.load_scenario(source).root
+    scenario = load_scenario(source).root
     run = simulate(scenario, source)
     page_file = tmp_path / "uis1.html"
     page_file.write_text(preview_page(run, scenario, source), encoding="utf-8")

@@ -10,10 +10,10 @@ from pathlib import Path
 import pytest
 
 import scemlmodel as scm
-from sceml.build import road
 from sceml.importer import import_file
 from sceml.maps import RoadMap, load_map
-from sceml.params import value
+from sceml.model.build import road
+from sceml.model.params import value
 from sceml.render.labels import describe_position
 from sceml.simulate import simulate
 from sceml.simulate.setup import make_actor
@@ -84,7 +84,7 @@ def test_relative_starts_destinations_and_conditions_follow_their_entity() -> No
     # NearLead's point is 40 m behind Lead and 3.5 m right of it, where Lead is at each step:
     # (x_lead - 40, -5.0). Behind (20 m/s) gains 5 m/s on it from 5 m behind, within 3 m
     # after 0.4 s (0.45 s: the first step past it), and Slow, whose StartTrigger holds the
-    # condition (players.flows.inlined), starts then too.
+    # condition (xosc.flows.inlined), starts then too.
     assert run.node("NearLead").finished == pytest.approx(0.45)
     assert run.node("Slow").started == pytest.approx(0.45)
     # DriveThere's destination is 100 m beyond Lead's x when it starts (t = 0.05 s: Lead at

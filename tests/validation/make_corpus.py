@@ -2,7 +2,7 @@
 
     python tests/validation/make_corpus.py [--out DIR]
 
-Each case is built with the public builder API and saved with io.save; faults the builder cannot
+Each case is built with the public builder API and saved with io_save; faults the builder cannot
 express (dangling flows, broken hrefs) are made by editing the saved XML. MANIFEST lists every
 case with the rule codes validation must report for it, nothing more and nothing less; a line
 with no codes is a model that must validate clean. The committed corpus must equal this output.
@@ -17,8 +17,8 @@ from pathlib import Path
 from lxml import etree
 
 import scemlmodel as scm
-from sceml import io
-from sceml.build import (
+from sceml.files.writing import write_atomically
+from sceml.model.build import (
     LibraryBuilder,
     ScenarioBuilder,
     activation,
@@ -30,7 +30,9 @@ from sceml.build import (
     road,
     world,
 )
-from sceml.params import discrete, normal, span, uniform
+from sceml.model.loading import load_library
+from sceml.model.params import discrete, normal, span, uniform
+from sceml.model.saving import save as io_save
 
 HERE = Path(__file__).resolve().parent / "corpus"
 DATE = "2026-01-01T00:00:00"
@@ -60,7 +62,7 @@ def scenario(level: str = "concrete", **options: object) -> tuple[ScenarioBuilde
 
 
 def save(root: object, out: Path, name: str) -> Path:
-    return io.save(root, out / name)  # type: ignore[arg-type]
+    return io_save(root, out / name)  # type: ignore[arg-type]
 
 
 def edit_xml(path: Path, change: Callable[[etree._Element], None]) -> None:
@@ -100,7 +102,7 @@ def definition(out: Path, name: str) -> scm.ModuleDefinition:
     """A module of the corpus library, loaded from `out` so that uses refer to it across files."""
     if not (out / LIBRARY).exists():
         save(library(), out, LIBRARY)
-    return next(m for m in io.load_library(out / LIBRARY).root.modules if m.name == name)
+    return next(m for m in load_library(out / LIBRARY).root.modules if m.name == name)
 
 
 def crossing_scenario(level: str = "concrete") -> tuple[ScenarioBuilder, dict[str, scm.Actor]]:
@@ -980,7 +982,7 @@ def build_all(out: Path) -> list[Path]:
         build(out)
         lines.append(f"{name} {codes}".rstrip())
     manifest = out / "MANIFEST"
-    io.write_atomically(manifest, ("\n".join(lines) + "\n").encode("utf-8"))
+    write_atomically(manifest, ("\n".join(lines) + "\n").encode("utf-8"))
     return [out / name for name, _, _ in CASES] + [manifest]
 
 

@@ -8,13 +8,13 @@ from pathlib import Path
 
 import pytest
 
-from sceml import io
+from sceml.model.loading import load
 from sceml.validation import REGISTRY, iter_diagnostics
 
 HERE = Path(__file__).resolve().parent
 CORPUS = HERE / "corpus"
 
-#: Rules the corpus (validated without options) cannot show, each tested elsewhere: io.load
+#: Rules the corpus (validated without options) cannot show, each tested elsewhere: load
 #: refuses duplicate module names (IDs) itself, so M014 fires on models built in memory
 #: (test_rules.py); E003 needs an export profile or version (tests/cli/test_rules_fire.py), and
 #: so does E007 (tests/importer/test_cli_and_editor.py) and E008 (test_rules.py). R009 needs a
@@ -52,7 +52,7 @@ def test_committed_corpus_equals_the_script_output(tmp_path: Path) -> None:
 
 @pytest.mark.parametrize(("name", "codes"), manifest(), ids=[n for n, _ in manifest()])
 def test_case_gives_exactly_its_codes(name: str, codes: set[str]) -> None:
-    document = io.load(CORPUS / name)
+    document = load(CORPUS / name)
     found = list(iter_diagnostics(document.root, document=document))
     assert {d.code for d in found} == codes, "\n".join(str(d) for d in found)
     for diagnostic in found:

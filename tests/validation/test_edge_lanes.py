@@ -7,8 +7,9 @@ from pathlib import Path
 
 import pytest
 
-from sceml import io
-from sceml.build import ScenarioBuilder, lane
+from sceml.model.build import ScenarioBuilder, lane
+from sceml.model.loading import load
+from sceml.model.saving import save
 from sceml.validation import validate
 
 MAP = Path(__file__).resolve().parents[2] / "maps" / "intersection.xodr"
@@ -29,9 +30,9 @@ def _codes(folder: Path, kind: str) -> dict[str, str]:
     b.actor("Car", "ego", ego=True, start=lane(1, -1, 10.0))
     parked = b.actor(kind, "parked", start=lane(1, -2, 30.0))
     b.chain(b.root, b.add("KeepVelocity", parked, duration=1.0), b.end)
-    io.save(b.scenario, folder / "edge.xmi")
+    save(b.scenario, folder / "edge.xmi")
     (folder / ".sceml-root").touch()
-    document = io.load(folder / "edge.xmi")
+    document = load(folder / "edge.xmi")
     return {d.code: d.message for d in validate(document.root, document=document)}
 
 

@@ -5,9 +5,9 @@ from __future__ import annotations
 from pathlib import Path
 
 import scemlmodel as scm
-from sceml import io
-from sceml.build import LibraryBuilder, ScenarioBuilder, lane
 from sceml.diagnostics import Diagnostic
+from sceml.model.build import LibraryBuilder, ScenarioBuilder, lane
+from sceml.model.loading import load
 from sceml.validation import validate
 from sceml.validation.context import Context
 from sceml.validation.limits import Limits
@@ -16,7 +16,7 @@ EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
 def test_nodes_nested_three_deep_trace_to_the_outermost_use() -> None:
-    scenario = io.load(EXAMPLES / "overtaking-concrete.xmi").root
+    scenario = load(EXAMPLES / "overtaking-concrete.xmi").root
     flat = Context(scenario, None, Limits()).flat()
     assert flat is not None
     use = next(n for n in scenario.nodes if isinstance(n, scm.ModuleUse))
@@ -25,7 +25,7 @@ def test_nodes_nested_three_deep_trace_to_the_outermost_use() -> None:
 
 
 def test_plain_nodes_sharing_a_name_each_trace_to_themselves() -> None:
-    scenario = io.load(EXAMPLES / "uis2-concrete.xmi").root
+    scenario = load(EXAMPLES / "uis2-concrete.xmi").root
     first, second = [n for n in scenario.nodes if isinstance(n, scm.InLocationRadius)]
     second.name = first.name
     # A name that looks like an expanded node's is still a plain node of the scenario.

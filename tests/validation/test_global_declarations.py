@@ -3,7 +3,7 @@ are left alone; a parameter of that name does not declare a variable."""
 
 from __future__ import annotations
 
-from sceml.build import ScenarioBuilder, world
+from sceml.model.build import ScenarioBuilder, world
 from sceml.validation import validate
 
 

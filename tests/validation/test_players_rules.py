@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from sceml.build import LibraryBuilder, ScenarioBuilder, lane, world
+from sceml.model.build import LibraryBuilder, ScenarioBuilder, lane, world
 from sceml.validation import validate
 
 

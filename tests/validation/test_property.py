@@ -8,7 +8,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import scemlmodel as scm
-from sceml import io
+from sceml.model.loading import load
 from sceml.validation import INTERNAL_ERROR, validate
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
@@ -97,7 +97,7 @@ def apply(root: object, edit: str, a: int, b: int, number: float) -> None:
 def test_random_edits_never_crash_the_validator(
     file: str, changes: list[tuple[str, int, int]], number: float
 ) -> None:
-    document = io.load(EXAMPLES / file)
+    document = load(EXAMPLES / file)
     for edit, a, b in changes:
         apply(document.root, edit, a, b, number)
     found = validate(document.root, document=document)

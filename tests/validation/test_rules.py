@@ -7,10 +7,11 @@ from pathlib import Path
 import pytest
 
 import scemlmodel as scm
-from sceml import io
-from sceml.build import LibraryBuilder, ScenarioBuilder, lane
 from sceml.diagnostics import Severity
-from sceml.params import span
+from sceml.model.build import LibraryBuilder, ScenarioBuilder, lane
+from sceml.model.loading import load, load_library
+from sceml.model.params import span
+from sceml.model.saving import save
 from sceml.validation import (
     Limits,
     LimitsError,
@@ -36,12 +37,12 @@ def scenario(level: str = "concrete") -> tuple[ScenarioBuilder, scm.Actor]:
 
 @pytest.mark.parametrize("path", EXAMPLE_FILES, ids=[p.name for p in EXAMPLE_FILES])
 def test_reference_examples_have_no_diagnostics(path: Path) -> None:
-    document = io.load(path)
+    document = load(path)
     assert [str(d) for d in iter_diagnostics(document.root, document=document)] == []
 
 
 def test_examples_validate_for_every_openscenario_version() -> None:
-    document = io.load(EXAMPLES / "uis2-concrete.xmi")
+    document = load(EXAMPLES / "uis2-concrete.xmi")
     for version in ("1.0", "1.1", "1.2", "1.3"):
         assert is_valid(document.root, document=document, osc_version=version)
 
@@ -188,12 +189,12 @@ def test_library_internals_are_reported_in_the_library_file(tmp_path: Path) -> N
     module = library.module("Loose")
     role = module.role("r", "Car")
     module.chain(module.in_port, module.add("TimeElapsed", role, duration=1.0))
-    io.save(library.library, tmp_path / "lib.xmi")
-    definition = io.load_library(tmp_path / "lib.xmi").root.modules[0]
+    save(library.library, tmp_path / "lib.xmi")
+    definition = load_library(tmp_path / "lib.xmi").root.modules[0]
     b, ego = scenario()
     b.chain(b.root, b.use(definition, {"r": ego}), b.end)
-    io.save(b.scenario, tmp_path / "s.xmi")
-    document = io.load(tmp_path / "s.xmi")
+    save(b.scenario, tmp_path / "s.xmi")
+    document = load(tmp_path / "s.xmi")
     found = [d for d in validate(document.root, document=document) if d.code == "SCEML-M009"]
     assert [(Path(d.file).name, d.line) for d in found] == [("lib.xmi", 5)]
 

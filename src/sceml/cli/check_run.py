@@ -8,12 +8,12 @@ from pathlib import Path
 import click
 
 from ..players.check import READERS, check_player_run, format_report
-from ..schema import SUPPORTED_VERSIONS
-from .common import SceMLCommand, allow_option
+from ..xosc.schema import SUPPORTED_VERSIONS
+from .common import SceMLCommand, allow_option, input_file
 
 
 @click.command(cls=SceMLCommand)
-@click.argument("model", type=click.Path(exists=True, dir_okay=False, path_type=Path))
+@input_file("model")
 @click.option(
     "--log",
     "log_path",

@@ -8,7 +8,7 @@ from pathlib import Path
 import click
 
 from ..report import exit_code, render
-from ..xosc_check import QUALITY_MAX_BYTES, check_file
+from ..xosc.check import QUALITY_MAX_BYTES, check_file
 from .common import SceMLCommand, allow_option, emit_report, file_progress, report_options
 
 

@@ -14,7 +14,9 @@ import click
 
 from ..diagnostics import Diagnostic
 from ..errors import ArgumentError, SceMLError
-from ..io import Document, migration_notices, write_atomically
+from ..files.writing import write_atomically
+from ..model.documents import Document
+from ..model.xmiresource import migration_notices
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -110,10 +112,11 @@ class LazySceMLGroup(SceMLGroup):
 
     def format_commands(self, ctx: click.Context, formatter: click.HelpFormatter) -> None:
         """The list of commands, from their summaries: nothing is imported to show it."""
-        from .summaries import SUMMARIES
+        from .summaries import summaries
 
         names = self.list_commands(ctx)
-        if any(name not in SUMMARIES and name not in self.commands for name in names):
+        known = summaries(self.lazy_commands)
+        if any(name not in known and name not in self.commands for name in names):
             super().format_commands(ctx, formatter)  # a command without a summary: import all
             return
         limit = formatter.width - 6 - max(len(name) for name in names)
@@ -121,7 +124,7 @@ class LazySceMLGroup(SceMLGroup):
         for name in names:
             command = self.commands.get(name)
             if command is None:  # shortened by click's own rule, as the command would be
-                command = click.Command(name, help=SUMMARIES[name])
+                command = click.Command(name, help=known[name])
             if not command.hidden:
                 rows.append((name, command.get_short_help_str(limit)))
         with formatter.section("Commands"):
@@ -186,6 +189,42 @@ def locate(
     if where is None and (file or document) is not None:
         where = str(file or document.path)  # type: ignore[union-attr]
     return replace(diagnostic, file=where, line=line)
+
+
+def input_file(name: str = "file") -> Callable[[F], F]:
+    """The existing file a command reads, as a Path argument named `name`."""
+    return click.argument(name, type=click.Path(exists=True, dir_okay=False, path_type=Path))
+
+
+def output_file(help: str, *, metavar: str | None = None) -> Callable[[F], F]:
+    """-o/--output, required: the one file a command writes."""
+    return click.option(
+        "-o",
+        "--output",
+        required=True,
+        type=click.Path(dir_okay=False, path_type=Path),
+        metavar=metavar,
+        help=help,
+    )
+
+
+def output_folder(help: str) -> Callable[[F], F]:
+    """-o/--output DIR, required: the folder a command writes its files into (as `out_dir`)."""
+    return click.option(
+        "-o",
+        "--output",
+        "out_dir",
+        type=click.Path(file_okay=False, path_type=Path),
+        metavar="DIR",
+        required=True,
+        help=help,
+    )
+
+
+#: --seed, on every command that draws random numbers.
+seed_option = click.option(
+    "--seed", type=click.IntRange(min=0), default=0, show_default=True, help="Seed."
+)
 
 
 def allow_option(command: F) -> F:

@@ -8,17 +8,19 @@ import click
 
 import scemlmodel as scm
 
-from .. import io
 from ..diagnostics import Severity
 from ..levels.checks import validate_model
 from ..levels.concretize import concretize as make_concrete
 from ..levels.concretize import parse_assignment
-from ..reach import unreadable_from
-from .common import Parsed, SceMLCommand, allow_option, echo_diagnostics
+from ..model.documents import Document
+from ..model.loading import broken_references, load_scenario
+from ..model.reach import unreadable_from
+from ..model.saving import save
+from .common import Parsed, SceMLCommand, allow_option, echo_diagnostics, input_file, output_file
 
 
 @click.command(cls=SceMLCommand)
-@click.argument("file", type=click.Path(exists=True, dir_okay=False, path_type=Path))
+@input_file()
 @click.option(
     "--set",
     "assignments",
@@ -27,14 +29,7 @@ from .common import Parsed, SceMLCommand, allow_option, echo_diagnostics
     help="Give a parameter a value in SI units, e.g. ego.Accelerate_1.targetSpeed=12. Repeatable. "
     "Paths are listed when an unknown one is given (see docs/levels.md).",
 )
-@click.option(
-    "-o",
-    "--output",
-    type=click.Path(dir_okay=False, path_type=Path),
-    metavar="OUT",
-    required=True,
-    help="Where to write the concrete scenario (.xmi); written atomically.",
-)
+@output_file("Where to write the concrete scenario (.xmi); written atomically.", metavar="OUT")
 @allow_option
 def concretize(
     file: Path, assignments: tuple[tuple[str, float], ...], output: Path, allow: tuple[Path, ...]
@@ -45,10 +40,10 @@ def concretize(
     language default must be set. The result is validated and written to OUT; exit 1 when it
     has errors (it is written anyway, so that it can be inspected).
     """
-    document = io.load_scenario(file, allow=allow)
+    document = load_scenario(file, allow=allow)
     _refuse_unresolved(document)
     result = make_concrete(document.root, dict(assignments))
-    io.save(result, output, origin=file)
+    save(result, output, origin=file)
     click.echo(f"wrote {output}")
     for named in unreadable_from(result, file, output):
         click.echo(
@@ -67,7 +62,7 @@ def report_validation(model: scm.Scenario, output: Path) -> None:
         raise click.exceptions.Exit(1)
 
 
-def _refuse_unresolved(document: io.Document) -> None:
+def _refuse_unresolved(document: Document) -> None:
     # The copy concretize works on has no file, so report a broken reference here, located.
-    for error in io.broken_references(document):
+    for error in broken_references(document):
         raise error

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import click
 
-from ..regenerate import generate, project_root
+from ..dev.regenerate import generate, project_root
 
 
 @click.group()
@@ -83,7 +83,7 @@ def release_command(root: Path | None) -> None:
     OpenSCENARIO exports, as test material that never changes. Run it once per release, after
     `sceml dev check-release` passes; it refuses a version that is already kept.
     """
-    from ..migrations.release import keep_release
+    from ..dev.release import keep_release
 
     root = root or project_root()
     folder = keep_release(root)
@@ -101,8 +101,8 @@ def release_command(root: Path | None) -> None:
 )
 def class_diagram_command(out: Path) -> None:
     """Draw the metamodel's class diagrams (graph, actions, actors, values) from the .ecore."""
-    from ..classdiagram import VIEWS, class_diagram
-    from ..io import write_atomically
+    from ..dev.classdiagram import VIEWS, class_diagram
+    from ..files.writing import write_atomically
 
     for view in VIEWS:
         graph = class_diagram(view)

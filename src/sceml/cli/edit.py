@@ -7,6 +7,8 @@ from pathlib import Path
 
 import click
 
+import scemlmodel as scm
+
 from .common import SceMLCommand
 
 
@@ -22,7 +24,7 @@ from .common import SceMLCommand
 @click.option("--read-only", is_flag=True, help="Let reviewers look: every change is refused.")
 @click.option(
     "--level",
-    type=click.Choice(["functional", "logical", "concrete"]),
+    type=click.Choice([level.name for level in scm.AbstractionLevel.eLiterals]),
     default="functional",
     show_default=True,
     help="Abstraction level of a new scenario (when FILE does not exist yet).",

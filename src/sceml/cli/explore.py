@@ -10,11 +10,21 @@ from typing import TYPE_CHECKING
 import click
 
 from ..executors import Executor, check, open_executor
-from ..io import Document, load_scenario, make_folder, remove_folders, write_atomically
+from ..files.outputset import output_set
+from ..files.writing import make_folder, remove_folders, write_atomically
 from ..levels.counts import parse_count
-from ..outputset import output_set
-from ..schema import SUPPORTED_VERSIONS
-from .common import Parsed, SceMLCommand, allow_option, executor_options
+from ..model.documents import Document
+from ..model.loading import load_scenario
+from ..xosc.schema import SUPPORTED_VERSIONS
+from .common import (
+    Parsed,
+    SceMLCommand,
+    allow_option,
+    executor_options,
+    input_file,
+    output_folder,
+    seed_option,
+)
 
 if TYPE_CHECKING:
     from ..explore import Exploration
@@ -26,7 +36,7 @@ _METRICS = ("min-ttc", "min-distance", "collision", "pet")
 # processes): a batch is a tenth of the budget at a few ms per run and starts its workers
 # afresh, so small searches gain little from more (figures in docs/simulate.md).
 @click.command(cls=SceMLCommand, context_settings={"default_map": {"executor": "local"}})
-@click.argument("logical", type=click.Path(exists=True, dir_okay=False, path_type=Path))
+@input_file("logical")
 @click.option(
     "--metric",
     type=click.Choice(_METRICS),
@@ -44,16 +54,8 @@ _METRICS = ("min-ttc", "min-distance", "collision", "pet")
     help="Runs in all (at least 2): 200, 1e4 or 2^12. A budget whose runs this machine's free "
     "memory cannot hold is refused.",
 )
-@click.option("--seed", type=click.IntRange(min=0), default=0, show_default=True, help="Seed.")
-@click.option(
-    "-o",
-    "--output",
-    "out_dir",
-    type=click.Path(file_okay=False, path_type=Path),
-    metavar="DIR",
-    required=True,
-    help="Folder for runs.csv, parameter-space.png and the critical scenarios.",
-)
+@seed_option
+@output_folder("Folder for runs.csv, parameter-space.png and the critical scenarios.")
 @click.option(
     "--top",
     type=click.IntRange(min=0),

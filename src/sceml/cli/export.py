@@ -8,22 +8,16 @@ import click
 
 from ..errors import SceMLError
 from ..export import ExportError, export_to_file
-from ..export.support import PROFILES, default_version
 from ..export.versions import VERSIONS
 from ..export.writer import header_date
-from ..io import load_scenario
-from .common import Parsed, SceMLCommand, allow_option, echo_diagnostics
+from ..model.loading import load_scenario
+from ..xosc.profiles import PROFILES, default_version
+from .common import Parsed, SceMLCommand, allow_option, echo_diagnostics, input_file, output_file
 
 
 @click.command(cls=SceMLCommand)
-@click.argument("file", type=click.Path(exists=True, dir_okay=False, path_type=Path))
-@click.option(
-    "-o",
-    "--output",
-    required=True,
-    type=click.Path(dir_okay=False, path_type=Path),
-    help="The .xosc file to write (atomically; an existing file is only replaced on success).",
-)
+@input_file()
+@output_file("The .xosc file to write (atomically; an existing file is only replaced on success).")
 @click.option(
     "--osc-version",
     type=click.Choice(VERSIONS),

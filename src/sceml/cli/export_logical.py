@@ -8,12 +8,12 @@ import click
 
 from ..export.writer import header_date
 from ..levels.pvd import MODES, export_distribution
-from ..schema import DISTRIBUTION_VERSIONS
-from .common import Parsed, SceMLCommand, allow_option
+from ..xosc.schema import DISTRIBUTION_VERSIONS
+from .common import Parsed, SceMLCommand, allow_option, input_file
 
 
 @click.command("export-distribution", cls=SceMLCommand)
-@click.argument("logical", type=click.Path(exists=True, dir_okay=False, path_type=Path))
+@input_file("logical")
 @click.option(
     "-o",
     "--output",

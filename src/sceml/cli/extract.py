@@ -11,9 +11,10 @@ import click
 
 from ..diagnostics import Severity
 from ..errors import ArgumentError
-from ..io import load_scenario, save
+from ..model.loading import load_scenario
+from ..model.saving import save
 from ..validation import validate
-from .common import Parsed, SceMLCommand, echo_diagnostics
+from .common import Parsed, SceMLCommand, echo_diagnostics, input_file, output_file
 
 
 def _origin(text: str) -> tuple[float, float]:
@@ -31,15 +32,10 @@ def _actor(text: str) -> object:
 
 
 @click.command(cls=SceMLCommand)
-@click.argument("recording", type=click.Path(exists=True, dir_okay=False, path_type=Path))
-@click.option(
-    "-o",
-    "--output",
-    required=True,
-    type=click.Path(dir_okay=False, path_type=Path),
+@input_file("recording")
+@output_file(
+    "The scenario to write (atomically; nothing is written when the recording cannot be used).",
     metavar="OUT.xmi",
-    help="The scenario to write (atomically; nothing is written when the recording cannot be "
-    "used).",
 )
 @click.option(
     "--map",

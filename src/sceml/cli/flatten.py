@@ -7,18 +7,13 @@ from pathlib import Path
 import click
 
 from ..modules import flatten_file
-from .common import SceMLCommand, allow_option
+from .common import SceMLCommand, allow_option, input_file, output_file
 
 
 @click.command(cls=SceMLCommand)
-@click.argument("file", type=click.Path(exists=True, dir_okay=False, path_type=Path))
-@click.option(
-    "-o",
-    "--output",
-    required=True,
-    type=click.Path(dir_okay=False, path_type=Path),
-    metavar="OUT",
-    help="Where to write the flattened scenario (written atomically; may be FILE itself).",
+@input_file()
+@output_file(
+    "Where to write the flattened scenario (written atomically; may be FILE itself).", metavar="OUT"
 )
 @allow_option
 def flatten(file: Path, output: Path, allow: tuple[Path, ...]) -> None:

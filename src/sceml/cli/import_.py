@@ -8,21 +8,18 @@ from pathlib import Path
 import click
 
 from ..diagnostics import Severity
+from ..files.safefiles import reading_roots
 from ..importer import import_to_file
-from ..io import load_scenario, reading_roots
+from ..model.loading import load_scenario
 from ..validation import validate
-from .common import SceMLCommand, allow_option, echo_diagnostics
+from .common import SceMLCommand, allow_option, echo_diagnostics, input_file, output_file
 
 
 @click.command(cls=SceMLCommand)
-@click.argument("file", type=click.Path(exists=True, dir_okay=False, path_type=Path))
-@click.option(
-    "-o",
-    "--output",
-    required=True,
-    type=click.Path(dir_okay=False, path_type=Path),
+@input_file()
+@output_file(
+    "The scenario to write (atomically; nothing is written when the input cannot be used).",
     metavar="OUT.xmi",
-    help="The scenario to write (atomically; nothing is written when the input cannot be used).",
 )
 @click.option(
     "--map",

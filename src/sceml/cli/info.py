@@ -8,13 +8,13 @@ from pathlib import Path
 
 import click
 
-from ..info import Summary, summarize
-from ..io import broken_references, load
-from .common import SceMLCommand, allow_option, exit_if_broken
+from ..model.info import Summary, summarize
+from ..model.loading import broken_references, load
+from .common import SceMLCommand, allow_option, exit_if_broken, input_file
 
 
 @click.command(cls=SceMLCommand)
-@click.argument("file", type=click.Path(exists=True, dir_okay=False, path_type=Path))
+@input_file()
 @click.option("--json", "as_json", is_flag=True, help="Print the summary as JSON.")
 @allow_option
 def info(file: Path, as_json: bool, allow: tuple[Path, ...]) -> None:

@@ -8,9 +8,10 @@ import click
 
 import scemlmodel as scm
 
-from .. import io
 from ..diff.merge import merge as merge_models
-from .common import SceMLCommand
+from ..model.loading import load_scenario
+from ..model.saving import save
+from .common import SceMLCommand, output_file
 
 
 def _scenario_file() -> click.Path:
@@ -18,7 +19,7 @@ def _scenario_file() -> click.Path:
 
 
 def _scenario(path: Path) -> scm.Scenario:
-    root = io.load_scenario(path).root
+    root = load_scenario(path).root
     assert isinstance(root, scm.Scenario)
     return root
 
@@ -27,14 +28,10 @@ def _scenario(path: Path) -> scm.Scenario:
 @click.argument("base", type=_scenario_file())
 @click.argument("ours", type=_scenario_file())
 @click.argument("theirs", type=_scenario_file())
-@click.option(
-    "-o",
-    "--output",
-    required=True,
-    type=click.Path(dir_okay=False, path_type=Path),
-    metavar="OUT",
-    help="Where to write the merged scenario (atomically; may be OURS itself, as git's merge "
+@output_file(
+    "Where to write the merged scenario (atomically; may be OURS itself, as git's merge "
     "driver does). Nothing is written when there is a conflict.",
+    metavar="OUT",
 )
 @click.option(
     "--name",
@@ -68,5 +65,5 @@ def merge(
             click.echo(f"{label}: conflict: {conflict}", err=True)
         click.echo(f"{label}: {len(result.conflicts)} conflict(s); nothing written", err=True)
         raise click.exceptions.Exit(1)
-    io.save(result.scenario, output, origin=ours)
+    save(result.scenario, output, origin=ours)
     click.echo(f"{label}: merged ({len(result.taken)} change(s) from THEIRS) into {output}")

@@ -8,7 +8,7 @@ from pathlib import Path
 import click
 
 from ..errors import ArgumentError
-from ..migrations.files import Outcome, migrate_file
+from ..model.migrating import Outcome, migrate_file
 from .common import ReportsMigrations, allow_option
 
 

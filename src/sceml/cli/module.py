@@ -8,7 +8,7 @@ from pathlib import Path
 
 import click
 
-from ..io import load_library
+from ..model.loading import load_library
 from ..modules import extract_file, list_definitions, parse_role, show
 from ..modules.library import DefinitionDetail, DefinitionSummary, ParameterInfo, Size
 from .common import SceMLGroup, allow_option

@@ -6,16 +6,17 @@ from pathlib import Path
 
 import click
 
-from .. import io
 from ..levels.paths import UnknownPathError
 from ..levels.promote import load_ranges
 from ..levels.promote import promote as make_logical
-from .common import SceMLCommand, allow_option
+from ..model.loading import load_scenario
+from ..model.saving import save
+from .common import SceMLCommand, allow_option, input_file, output_file
 from .concretize import report_validation
 
 
 @click.command(cls=SceMLCommand)
-@click.argument("file", type=click.Path(exists=True, dir_okay=False, path_type=Path))
+@input_file()
 @click.option(
     "--ranges",
     "ranges_file",
@@ -25,14 +26,7 @@ from .concretize import report_validation
     help="YAML (or .json) file mapping parameter paths to values, ranges, distributions or "
     "positions; see examples/uis1-ranges.yaml and docs/levels.md.",
 )
-@click.option(
-    "-o",
-    "--output",
-    type=click.Path(dir_okay=False, path_type=Path),
-    metavar="OUT",
-    required=True,
-    help="Where to write the logical scenario (.xmi); written atomically.",
-)
+@output_file("Where to write the logical scenario (.xmi); written atomically.", metavar="OUT")
 @allow_option
 def promote(file: Path, ranges_file: Path, output: Path, allow: tuple[Path, ...]) -> None:
     """Promote FILE to the logical level with the ranges and distributions in RANGES.
@@ -41,12 +35,12 @@ def promote(file: Path, ranges_file: Path, output: Path, allow: tuple[Path, ...]
     result is validated and written to OUT.
     """
     ranges = load_ranges(ranges_file)
-    document = io.load_scenario(file, allow=allow)
+    document = load_scenario(file, allow=allow)
     try:
         result = make_logical(document.root, ranges, source=ranges_file)
     except UnknownPathError as error:
         error.file = error.file or str(ranges_file)
         raise
-    io.save(result, output, origin=file)
+    save(result, output, origin=file)
     click.echo(f"wrote {output}")
     report_validation(result, output)

@@ -10,17 +10,13 @@ import click
 import scemlmodel as scm
 
 from ..errors import SceMLError
-from ..io import (
-    Document,
-    broken_references,
-    load,
-    model_path,
-    unresolved_references,
-    write_atomically,
-)
+from ..files.writing import write_atomically
+from ..model.documents import Document
+from ..model.loading import broken_references, load, unresolved_references
+from ..model.locating import model_path
 from ..render import FORMATS, MAX_DIAGRAM_NODES, ModuleChoiceError, View, diagram, to_bytes
 from ..render.flow import Modules
-from .common import SceMLCommand, allow_option, exit_if_broken
+from .common import SceMLCommand, allow_option, exit_if_broken, input_file, output_file
 
 
 def output_format(path: Path) -> str:
@@ -35,14 +31,8 @@ def output_format(path: Path) -> str:
 
 
 @click.command(cls=SceMLCommand)
-@click.argument("file", type=click.Path(exists=True, dir_okay=False, path_type=Path))
-@click.option(
-    "-o",
-    "--output",
-    required=True,
-    type=click.Path(dir_okay=False, path_type=Path),
-    help="File to write; its suffix (.svg, .png or .pdf) chooses the format.",
-)
+@input_file()
+@output_file("File to write; its suffix (.svg, .png or .pdf) chooses the format.")
 @click.option(
     "--view",
     type=click.Choice(["flow", "bt", "map"]),

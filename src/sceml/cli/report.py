@@ -8,22 +8,18 @@ from typing import cast
 import click
 
 from ..diagnostics import Severity
-from ..io import load, write_atomically
+from ..files.writing import write_atomically
+from ..model.loading import load
 from ..render.flow import Modules
-from ..render.report import build_report, report_figures
+from ..review.figures import report_figures
+from ..review.page import build_report
 from ..validation import validate
-from .common import SceMLCommand, allow_option
+from .common import SceMLCommand, allow_option, input_file, output_file
 
 
 @click.command(cls=SceMLCommand)
-@click.argument("file", type=click.Path(exists=True, dir_okay=False, path_type=Path))
-@click.option(
-    "-o",
-    "--output",
-    required=True,
-    type=click.Path(dir_okay=False, path_type=Path),
-    help="HTML file to write (.html).",
-)
+@input_file()
+@output_file("HTML file to write (.html).")
 @click.option(
     "--modules",
     type=click.Choice(["collapsed", "expanded"]),

@@ -15,20 +15,30 @@ import numpy as np
 
 import scemlmodel as scm
 
-from .. import io
 from ..diagnostics import Severity
 from ..errors import ArgumentError, SceMLError
 from ..executors import check, open_executor
-from ..graph import root_node
 from ..levels.batch import BatchConfig, BatchResult, Rows, run_batch
 from ..levels.counts import SAMPLE_MEMORY_BYTES, check_count, parse_count
 from ..levels.manifest import SampleRecord, write_manifest
 from ..levels.paths import LevelError
 from ..levels.sampling import STRATEGIES, plan_for, values_at
 from ..levels.space import parameter_space
-from ..schema import SUPPORTED_VERSIONS
+from ..model.documents import Document
+from ..model.graph import root_node
+from ..model.loading import load_scenario
 from ..validation import validate
-from .common import Parsed, SceMLCommand, allow_option, echo_diagnostics, executor_options
+from ..xosc.schema import SUPPORTED_VERSIONS
+from .common import (
+    Parsed,
+    SceMLCommand,
+    allow_option,
+    echo_diagnostics,
+    executor_options,
+    input_file,
+    output_folder,
+    seed_option,
+)
 
 _FORMATS = {"xmi": ("xmi",), "xosc": ("xosc",), "both": ("xosc", "xmi")}
 
@@ -42,7 +52,7 @@ atexit.register(gc.freeze)
 
 
 @click.command(cls=SceMLCommand)
-@click.argument("logical", type=click.Path(exists=True, dir_okay=False, path_type=Path))
+@input_file("logical")
 @click.option(
     "--strategy",
     type=click.Choice(STRATEGIES),
@@ -58,16 +68,8 @@ atexit.register(gc.freeze)
     help="Number of samples (required for random and lhs; caps the grid): 1000, 1e6 or 2^20. "
     "A count that this machine's free memory or the output's disk cannot hold is refused.",
 )
-@click.option("--seed", type=click.IntRange(min=0), default=0, show_default=True, help="Seed.")
-@click.option(
-    "-o",
-    "--output",
-    "out_dir",
-    type=click.Path(file_okay=False, path_type=Path),
-    metavar="DIR",
-    required=True,
-    help="Folder for the sampled files and manifest.csv / manifest.json.",
-)
+@seed_option
+@output_folder("Folder for the sampled files and manifest.csv / manifest.json.")
 @click.option(
     "--format",
     "file_format",
@@ -122,7 +124,7 @@ def sample(
     """
     check(executor, scheduler)
     try:
-        document = io.load_scenario(logical, allow=allow)
+        document = load_scenario(logical, allow=allow)
         scenario = document.root
         _require_logical(scenario, logical)
         _require_valid(document, logical)
@@ -243,7 +245,7 @@ def _require_logical(scenario: scm.Scenario, file: Path) -> None:
         raise LevelError(f"only logical scenarios are sampled; this one is {level}", file=file)
 
 
-def _require_valid(document: io.Document, file: Path) -> None:
+def _require_valid(document: Document, file: Path) -> None:
     # Samples only change numbers: rules about structure, actors and modules are checked once here.
     found = validate(document.root, document=document)
     errors = [d for d in found if d.severity >= Severity.ERROR]

@@ -10,19 +10,20 @@ from pathlib import Path
 
 import click
 
-from ..io import load_scenario, write_atomically
-from ..outputset import output_set
+from ..files.outputset import output_set
+from ..files.writing import write_atomically
+from ..model.loading import load_scenario
 from ..simulate import DEFAULT_STEP, Run, simulate
 from ..simulate.outputs import summary, trajectories_csv
 from ..simulate.timeline import shown_nodes
-from .common import SceMLCommand, allow_option
+from .common import SceMLCommand, allow_option, input_file
 
 #: Runs with more steps than this show a progress bar (when a person is watching).
 _BAR_STEPS = 2000
 
 
 @click.command(cls=SceMLCommand)
-@click.argument("file", type=click.Path(exists=True, dir_okay=False, path_type=Path))
+@input_file()
 @click.option(
     "-o",
     "--output",

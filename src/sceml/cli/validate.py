@@ -7,57 +7,12 @@ from pathlib import Path
 
 import click
 
-from ..diagnostics import Diagnostic, Severity
-from ..errors import LoadError
-from ..export.profiles import PROFILES
-from ..io import Document, load
-from ..report import FileReport, exit_code, render
-from ..schema import SUPPORTED_VERSIONS
-from ..validation import OLDER_RELEASE, Limits, load_limits
-from ..validation import validate as validate_model
+from ..report import exit_code, render
+from ..validation import Limits, load_limits
+from ..validation.files import validate_file
+from ..xosc.profiles import PROFILES
+from ..xosc.schema import SUPPORTED_VERSIONS
 from .common import ReportsMigrations, allow_option, emit_report, file_progress, report_options
-
-
-def validate_file(
-    path: Path,
-    limits: Limits,
-    osc_version: str | None,
-    allow: tuple[Path, ...] = (),
-    osc_profile: str | None = None,
-) -> FileReport:
-    """Load and validate one file; an unreadable one is reported, not raised."""
-    try:
-        document = load(path, allow=allow)
-    except LoadError as error:
-        where = f"line {error.line}: " if error.line else ""
-        return FileReport(str(path), unreadable=where + error.message)
-    diagnostics = validate_model(
-        document.root,
-        document=document,
-        limits=limits,
-        osc_version=osc_version,
-        osc_profile=osc_profile,
-    )
-    return FileReport(str(path), [*older_releases(document), *diagnostics])
-
-
-def older_releases(document: Document) -> list[Diagnostic]:
-    """A warning for each file read (the model, its libraries) saved with an older release."""
-    found = []
-    for report in document.migrations():
-        changes = "; ".join(change.describe() for change in report.changes[:5])
-        more = f"; and {len(report.changes) - 5} more" if len(report.changes) > 5 else ""
-        found.append(
-            Diagnostic(
-                Severity.WARNING,
-                OLDER_RELEASE,
-                f"{report.summary()}{': ' + changes + more if changes else ''}; "
-                f"`sceml migrate {report.file} --in-place` rewrites it",
-                file=str(report.file),
-                line=1,
-            )
-        )
-    return found
 
 
 @click.command("validate", cls=ReportsMigrations)

@@ -10,8 +10,8 @@ from pathlib import Path
 
 import scemlmodel as scm
 
-from .. import io
-from ..collector import collector_paused
+from ..model.collector import collector_paused
+from ..model.loading import load_scenario
 from .changes import PARTS, Change, Diff, compare
 from .snapshot import Snapshot, snapshot
 
@@ -54,6 +54,6 @@ def _empty(like: Snapshot) -> Snapshot:
 
 
 def _scenario(path: str | Path) -> scm.Scenario:
-    root = io.load_scenario(path).root
+    root = load_scenario(path).root
     assert isinstance(root, scm.Scenario)
     return root

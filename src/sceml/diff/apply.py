@@ -15,8 +15,8 @@ from pyecore.ecore import EAttribute, EObject, EReference
 
 import scemlmodel as scm
 
-from ..copying import copy_tree
-from ..traversal import all_contents, single_references
+from ..model.copying import copy_tree
+from ..model.traversal import all_contents, single_references
 from .snapshot import ITEM_KEYS
 
 #: The receiving model's actor of a given name (None when it has none).

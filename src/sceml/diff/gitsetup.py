@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import SceMLError
-from ..io import write_atomically
+from ..files.writing import write_atomically
 
 DRIVER = "sceml"
 

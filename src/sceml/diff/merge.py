@@ -17,9 +17,9 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
-from ..collector import collector_paused
 from ..diagnostics import Diagnostic, Severity
-from ..graph import successors, topological_order
+from ..model.collector import collector_paused
+from ..model.graph import successors, topological_order
 from .apply import copied, copy_leaf, set_layout
 from .matching import Matching, match
 from .snapshot import Element, Leaf, Snapshot, snapshot

@@ -18,8 +18,8 @@ from pyecore.ecore import EClass, EEnumLiteral, EObject, EProxy
 
 import scemlmodel as scm
 
-from .. import catalog
-from ..traversal import attributes, containments, cross_references, stored
+from ..model import catalog
+from ..model.traversal import attributes, containments, cross_references, stored
 
 #: A leaf value: hashable, comparable, and readable in a report.
 Leaf = Any

@@ -8,11 +8,11 @@ from pyecore.ecore import EAttribute
 
 import scemlmodel as scm
 
+from ..model.traversal import attributes, containments
 from ..modules import naming
 from ..modules.library import definition_named
 from ..modules.resolve import resolved_definition
 from ..render.labels import loaded_definition
-from ..traversal import attributes, containments
 from .context import EditContext, argument, check_text, referrers, require
 from .errors import OperationError
 from .fields import actor_kind_names

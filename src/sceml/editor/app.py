@@ -25,6 +25,7 @@ from starlette.routing import Mount, Route
 from starlette.staticfiles import StaticFiles
 
 from ..errors import SceMLError
+from ..xosc.profiles import default_version
 from .bodies import BadBody, parse_object, read_limited
 from .commands import ANY_TAB
 from .errors import EditorError, ExportRefused, OperationError
@@ -172,8 +173,9 @@ class Api:
         s = self.session
 
         def export(body: dict[str, Any], tab: str) -> dict[str, Any]:
-            version = body.get("version") or "1.3"
-            path = s.export(version, body.get("profile") or "generic", body.get("path"))
+            profile = body.get("profile") or "generic"
+            version = body.get("version") or default_version(profile)
+            path = s.export(version, profile, body.get("path"))
             return {"path": str(path), "version": version}
 
         def open_file(body: dict[str, Any], tab: str) -> dict[str, Any]:

@@ -7,7 +7,7 @@ from typing import Any
 
 import scemlmodel as scm
 
-from ..copying import Copier
+from ..model.copying import Copier
 from ..modules import naming
 from .context import Clipboard, EditContext, require
 from .node_ops import FIXED, _coordinates, adopt

@@ -9,10 +9,11 @@ from typing import Any
 
 from pyecore.ecore import EObject
 
-from .. import io
 from ..diff import compare_models
 from ..diff.picture import node_actions
 from ..diff.words import describe
+from ..model.documents import Document
+from ..model.loading import load
 from .ids import Ids
 
 
@@ -23,16 +24,16 @@ class SavedComparison:
     def __init__(self, path: Path, roots: list[Path] | None) -> None:
         self.path, self.roots = path, roots
         self._stamp: tuple[int, int] | None = None
-        self._saved: io.Document | None = None
+        self._saved: Document | None = None
 
-    def _saved_model(self) -> io.Document | None:
+    def _saved_model(self) -> Document | None:
         try:
             stat = self.path.stat()
         except OSError:
             return None  # never saved: everything is new, and there is nothing to compare
         stamp = (stat.st_mtime_ns, stat.st_size)
         if stamp != self._stamp or self._saved is None:
-            self._saved = io.load(self.path, allowed_roots=self.roots)
+            self._saved = load(self.path, allowed_roots=self.roots)
             self._stamp = stamp
         return self._saved
 

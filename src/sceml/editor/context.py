@@ -11,8 +11,8 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
-from ..graph import root_node
-from ..traversal import all_contents, cross_references
+from ..model.graph import root_node
+from ..model.traversal import all_contents, cross_references
 from .changes import Recorder
 from .errors import OperationError
 from .ids import Ids

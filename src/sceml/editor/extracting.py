@@ -13,9 +13,10 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
-from .. import io
-from ..copying import Copier
 from ..errors import SceMLError
+from ..files.writing import write_atomically
+from ..model.copying import Copier
+from ..model.saving import save
 from ..modules.extract import extract, find_region
 from .context import EditContext, argument, check_text, require
 from .errors import OperationError
@@ -45,7 +46,7 @@ def extract_module(ctx: EditContext, op: dict[str, Any]) -> None:
         if definition not in library.modules:
             library.modules.append(definition)
         try:
-            io.save(library, path)
+            save(library, path)
         except SceMLError as error:
             _forget(library, name)
             raise OperationError(error.message) from None
@@ -56,7 +57,7 @@ def extract_module(ctx: EditContext, op: dict[str, Any]) -> None:
         if previous is None:
             path.unlink(missing_ok=True)
         else:
-            io.write_atomically(path, previous)
+            write_atomically(path, previous)
 
     ctx.rec.outside(library, write, unwrite)
     _replace(ctx, region.nodes, region.source, region.targets, built)

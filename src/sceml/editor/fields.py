@@ -10,8 +10,8 @@ from pyecore.ecore import EAttribute, EEnum, EObject, EReference, EStructuralFea
 
 import scemlmodel as scm
 
-from .. import catalog
-from ..traversal import features
+from ..model import catalog
+from ..model.traversal import features
 from .nested import attributes_of, is_nested, shown
 from .values import position_to_json, value_to_json
 

@@ -4,7 +4,7 @@ After each change the session's unsaved model is written to `.NAME.recovered.xmi
 file (or the copy is removed once everything is saved), by one background thread, so the answer
 to the edit does not wait for the disk. Changes that arrive while a write runs are folded into
 the next write: a SIGKILL loses at most the changes since the last write began, in practice the
-last edit. The write itself is atomic (`sceml.io.write_atomically`), so the copy is never torn.
+last edit. The write itself is atomic (`sceml.files.writing.write_atomically`), so the copy is never torn.
 """
 
 from __future__ import annotations

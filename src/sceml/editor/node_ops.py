@@ -9,7 +9,7 @@ from pyecore.ecore import EAttribute, EEnum, EObject, EReference, EStructuralFea
 
 import scemlmodel as scm
 
-from .. import catalog
+from ..model import catalog
 from ..modules import naming
 from .context import EditContext, argument, check_text, require
 from .errors import OperationError

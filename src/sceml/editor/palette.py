@@ -8,10 +8,12 @@ from typing import Any
 
 import scemlmodel as scm
 
-from .. import catalog
+from ..model import catalog
 from ..render import style
-from ..schema import SUPPORTED_VERSIONS
 from ..validation.context import is_kind
+from ..validation.parameters import MODULE_ONLY_KINDS, SPREAD_KINDS
+from ..xosc.profiles import PROFILES
+from ..xosc.schema import SUPPORTED_VERSIONS
 from .fields import actor_kind_names, enum_options
 from .node_ops import JOIN_KINDS
 
@@ -113,12 +115,28 @@ def choices() -> dict[str, list[str]]:
         "cloudStates": enum_options(scm.CloudState),
         "precipitationTypes": enum_options(scm.PrecipitationType),
         "oscVersions": list(SUPPORTED_VERSIONS),
+        "profiles": list(PROFILES),
     }
 
 
+#: The model class of each ParamValue type of the protocol (docs/editor-protocol.md).
+_VALUE_CLASSES = {
+    "value": "Value",
+    "range": "Range",
+    "uniform": "UniformDistribution",
+    "normal": "NormalDistribution",
+    "discrete": "DiscreteDistribution",
+    "ref": "ParameterRef",
+}
+
+
 def value_types(level: str, in_module: bool) -> list[str]:
-    """Which ParamValue types the level allows (docs/editor-protocol.md)."""
-    if level == "concrete" and not in_module:
-        return ["value"]
-    found = ["value", "range", "uniform", "normal", "discrete"]
-    return [*found, "ref"] if in_module else found
+    """Which ParamValue types the level allows: those the parameter rules accept there."""
+    refused = (() if in_module else MODULE_ONLY_KINDS) + (
+        SPREAD_KINDS if level == "concrete" and not in_module else ()
+    )
+    return [
+        name
+        for name, kind in _VALUE_CLASSES.items()
+        if not any(is_kind(kind, other) for other in refused)
+    ]

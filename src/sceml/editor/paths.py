@@ -2,9 +2,9 @@
 
 A path in a request is whatever the page (or any program on this machine) sent. It is checked
 as text first (type, NUL, length), resolved against the folder of the edited file, and must lie
-in one of the session's allowed folders: `sceml.io.reading_roots` of the file named when the
+in one of the session's allowed folders: `sceml.files.safefiles.reading_roots` of the file named when the
 server started, plus each `--allow DIR`. What happens at the target itself (a device, a FIFO, a
-symlink) is `sceml.io.write_atomically`'s rule, which every save and export goes through.
+symlink) is `sceml.files.writing.write_atomically`'s rule, which every save and export goes through.
 """
 
 from __future__ import annotations

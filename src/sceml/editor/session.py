@@ -12,16 +12,20 @@ from pyecore.resources import URI
 
 import scemlmodel as scm
 
-from .. import io
-from ..build import ScenarioBuilder
 from ..diagnostics import Diagnostic
 from ..errors import LoadError, SceMLError
 from ..export.writer import ExportError, InvalidOutputError, export_to_file
-from ..graph import root_node
+from ..files.safefiles import reading_roots
+from ..model.build import ScenarioBuilder
+from ..model.documents import Document, new_resource_set
+from ..model.graph import root_node
+from ..model.loading import load, load_library
+from ..model.saving import save as io_save
 from ..modules.library import definition_named
 from ..render.labels import loaded_definition
 from ..render.style import style_data
 from ..validation.incremental import IncrementalValidator
+from ..xosc.profiles import default_version
 from . import operations, palette, view
 from .changes import Recorder
 from .clipboard import copy_nodes
@@ -40,7 +44,7 @@ class SessionOptions:
     read_only: bool = False
     level: str = "functional"
     libraries: list[Path] = field(default_factory=list)
-    #: Folders the editor may also read and write (`--allow`), beyond `io.reading_roots`.
+    #: Folders the editor may also read and write (`--allow`), beyond `reading_roots`.
     allow: list[Path] = field(default_factory=list)
 
 
@@ -50,7 +54,7 @@ class EditorSession:
     def __init__(self, options: SessionOptions | None = None) -> None:
         self.options = options or SessionOptions()
         self.version = 0
-        self.document: io.Document | None = None
+        self.document: Document | None = None
         self.graph: scm.Graph = scm.Scenario()
         self.module: str | None = None
         self.stack = CommandStack()
@@ -91,13 +95,13 @@ class EditorSession:
         if self.document is not None and self.stack.dirty and not discard:
             raise ConflictError("there are unsaved changes; save them or open with discard")
         document = (
-            io.load(path, allowed_roots=self.roots) if path.exists() else self._new_scenario(path)
+            load(path, allowed_roots=self.roots) if path.exists() else self._new_scenario(path)
         )
         self._adopt(document, module)
         self.recovery_offer = self._earlier_recovery()
         return self.view()
 
-    def _adopt(self, document: io.Document, module: str | None) -> None:
+    def _adopt(self, document: Document, module: str | None) -> None:
         """Edit `document` (one module of it, for a library) from a fresh history."""
         graph: scm.Graph = document.root
         if isinstance(document.root, scm.Library):
@@ -113,7 +117,7 @@ class EditorSession:
     def _allowed_folders(self, path: Path) -> list[Path]:
         # A library named with --library is the user's explicit choice, like --allow.
         extra = [*self.options.allow, *(Path(p).resolve().parent for p in self.options.libraries)]
-        return io.reading_roots(path, extra)
+        return reading_roots(path, extra)
 
     def allowed(self, path: object, what: str) -> Path:
         """The absolute path a request names, if it lies in the allowed folders."""
@@ -130,7 +134,7 @@ class EditorSession:
         except SceMLError as error:
             raise OperationError(error.message) from None
 
-    def _new_scenario(self, path: Path) -> io.Document:
+    def _new_scenario(self, path: Path) -> Document:
         builder = ScenarioBuilder(path.stem, level=self.options.level)
         # The environment the panel shows is the one the file gets: noon, clear, dry.
         builder.environment()
@@ -138,10 +142,10 @@ class EditorSession:
         # two unconnected nodes that automatic layout would pack side by side.
         builder.root.diagramPosition = scm.DiagramPosition(x=0.0, y=0.0)
         builder.end.diagramPosition = scm.DiagramPosition(x=70.0, y=480.0)
-        resource_set = io.new_resource_set(self.roots)
+        resource_set = new_resource_set(self.roots)
         resource = resource_set.create_resource(URI(str(path)))
         resource.append(builder.scenario)
-        return io.Document(path, builder.scenario, resource, resource_set)
+        return Document(path, builder.scenario, resource, resource_set)
 
     def open_definition(self, node_id: object, *, discard: bool = False) -> dict[str, Any]:
         """Edit the module definition a use of the current graph refers to, in its library."""
@@ -179,7 +183,7 @@ class EditorSession:
         path = self.allowed(text, "'library'")
         if path.exists():
             try:
-                loaded = io.load_library(path, resource_set=self.document.resource_set)
+                loaded = load_library(path, resource_set=self.document.resource_set)
             except LoadError as error:
                 raise OperationError(str(error)) from None
             return loaded.root, path
@@ -382,7 +386,7 @@ class EditorSession:
         self._writable()
         assert self.document is not None
         target = self.path if path is None else self.allowed(path, "'path'")
-        io.save(self.document.root, target)
+        io_save(self.document.root, target)
         self.document.resource.sceml_migration = None  # the file is of the current release now
         # Saving may rewrite references and the file's path: validate the whole model again.
         assert self.validator is not None
@@ -402,13 +406,14 @@ class EditorSession:
         return self.view(tab=tab)
 
     def export(
-        self, version: str = "1.3", profile: str = "generic", path: str | Path | None = None
+        self, version: str | None = None, profile: str = "generic", path: str | Path | None = None
     ) -> Path:
         """Export the scenario to OpenSCENARIO; a refusal is an ExportRefused with diagnostics."""
         if not isinstance(self.graph, scm.Scenario):
             raise OperationError("only a scenario can be exported, not a module")
-        _check_choice(version, "'version'")
         _check_choice(profile, "'profile'")
+        version = default_version(profile) if version is None else version
+        _check_choice(version, "'version'")
         target = self.path.with_suffix(".xosc") if path is None else self.allowed(path, "'path'")
         try:
             return export_to_file(
@@ -441,7 +446,7 @@ class EditorSession:
                 self.recovery_path.unlink(missing_ok=True)
             return None
         target = self.recovery_path
-        io.save(self.document.root, target)
+        io_save(self.document.root, target)
         if self.recovery_offer == target:
             self.recovery_offer = None  # the user went on editing: the old copy is replaced
         return target
@@ -475,7 +480,7 @@ class EditorSession:
             return self.view()
         assert self.document is not None
         original, module = self.path, self.module
-        document = io.load(offer, allowed_roots=self.roots)
+        document = load(offer, allowed_roots=self.roots)
         # The copy lies beside the file, so its relative references mean the same there.
         document.path = original
         document.resource.uri = URI(str(original))

@@ -8,7 +8,7 @@ from typing import Any
 
 import scemlmodel as scm
 
-from .. import params
+from ..model import params
 from .errors import OperationError
 
 #: Every ParamValue type of the protocol, in the order the panels offer them.

@@ -12,8 +12,9 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
-from .. import catalog
 from ..diagnostics import Diagnostic
+from ..model import catalog
+from ..model.graph import finishes_with_first
 from ..modules import naming
 from ..render.flow import inner_scope
 from ..render.labels import (
@@ -58,7 +59,7 @@ def look(node: EObject) -> str:
         return catalog.category(node) or "longitudinal"
     if isinstance(node, scm.ModuleUse):
         return "module" if loaded_definition(node) is not None else "brokenModule"
-    if isinstance(node, scm.EndNode) and node.policy is not None and node.policy.name == "joinOne":
+    if isinstance(node, scm.EndNode) and finishes_with_first(node):
         return "endOne"
     return _LOOKS.get(node.eClass.name, "longitudinal")
 
@@ -272,15 +273,14 @@ class Lister:
 
 
 def diagnostic_json(diagnostic: Diagnostic, node: str | None, actor: str | None) -> dict[str, Any]:
-    """A Diagnostic as the protocol's JSON."""
+    """A Diagnostic as the protocol's JSON: Diagnostic.to_json's fields the page shows, and the
+    node or actor it is about."""
+    shown = diagnostic.to_json()
     return {
-        "severity": str(diagnostic.severity),
-        "code": diagnostic.code,
-        "message": diagnostic.message,
-        "path": diagnostic.path,
+        **{key: shown[key] for key in ("severity", "code", "message", "path")},
         "node": node,
         "actor": actor,
-        "line": diagnostic.line,
+        "line": shown["line"],
     }
 
 

@@ -12,9 +12,10 @@ import numpy as np
 
 import scemlmodel as scm
 
-from .. import io
+from ..files.writing import write_atomically
 from ..levels.apply import apply
 from ..levels.xosc import XoscWriter
+from ..model.saving import save
 from ..simulate import Run
 from .objective import NO_CONFLICT
 from .search import Evaluation, Exploration
@@ -92,7 +93,7 @@ def write_critical(
         concrete = apply(logical, values)
         base = out_dir / f"{stem}_critical_{rank:02d}"
         xmi = base.with_suffix(".xmi")
-        io.save(concrete, stage(xmi), origin=logical_file)
+        save(concrete, stage(xmi), origin=logical_file)
         problem = writer.write(concrete, stage(base.with_suffix(".xosc")))
         files = [xmi] if problem else [xmi, base.with_suffix(".xosc")]
         written.append((evaluation, files, problem))
@@ -144,7 +145,7 @@ def plot_space(exploration: Exploration, path: Path) -> None:
     figure.tight_layout()
     buffer = text_io.BytesIO()
     figure.savefig(buffer, format="png", dpi=110, metadata={"Software": None})
-    io.write_atomically(path, buffer.getvalue())
+    write_atomically(path, buffer.getvalue())
 
 
 def _collided(run: Run | None) -> bool:

@@ -89,7 +89,7 @@ def explore(
     """Search the logical scenario's parameter space for its most critical concrete runs.
 
     `logical` is what `logical_file` holds: workers simulate the file's bytes (and those of its
-    libraries, reachable with `allow` as for io.load_scenario, and its map). The runs happen on
+    libraries, reachable with `allow` as for sceml.model.loading.load_scenario, and its map). The runs happen on
     `executor`, by default in this process.
     """
     if metric not in METRICS:

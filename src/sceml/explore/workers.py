@@ -24,7 +24,7 @@ import scemlmodel as scm
 
 from ..errors import SceMLError
 from ..executors import Executor
-from ..graph import root_node
+from ..files.safefiles import read_input, reading_roots
 from ..levels.batch import (
     BatchConfig,
     BatchPayload,
@@ -35,7 +35,7 @@ from ..levels.batch import (
 )
 from ..maps.reader import MapError
 from ..maps.reference import map_reference
-from ..safefiles import read_input, reading_roots
+from ..model.graph import root_node
 from ..simulate import Run, simulate
 
 #: What became of one candidate: its run, or the message of the error that stopped it.

@@ -23,7 +23,7 @@ value=...>` is added to the top-level ParameterDeclarations. Values the exporter
 (bounding-box centre, the CARLA speed-change duration, the overtake arrival tolerance) stay
 literal; DriveDistance's duration of parameters is the expression `${$distance / $speed}` (1.1+).
 
-`support.unsupported_reason(kind, version, profile)` says why a node kind cannot be exported.
+`sceml.xosc.support.unsupported_reason(kind, version, profile)` says why a node kind cannot be exported.
 """
 
 from __future__ import annotations
@@ -32,7 +32,7 @@ import importlib
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
-    from .support import supported_kinds, unsupported_reason
+    from ..xosc.support import supported_kinds, unsupported_reason
     from .values import ParameterDeclarationSpec
     from .writer import (
         ExportError,
@@ -44,17 +44,17 @@ if TYPE_CHECKING:
     )
 
 #: Where each public name lives. Imported on first use, so that importing a light submodule
-#: (`sceml.export.versions`, `sceml.export.support`) does not load Jinja2 and the templates.
+#: (`sceml.export.versions`) does not load Jinja2 and the templates.
 _HOMES = {
-    "supported_kinds": "support",
-    "unsupported_reason": "support",
-    "ParameterDeclarationSpec": "values",
-    "ExportError": "writer",
-    "InvalidOutputError": "writer",
-    "XoscDocument": "writer",
-    "build_xosc": "writer",
-    "export": "writer",
-    "export_to_file": "writer",
+    "supported_kinds": "..xosc.support",
+    "unsupported_reason": "..xosc.support",
+    "ParameterDeclarationSpec": ".values",
+    "ExportError": ".writer",
+    "InvalidOutputError": ".writer",
+    "XoscDocument": ".writer",
+    "build_xosc": ".writer",
+    "export": ".writer",
+    "export_to_file": ".writer",
 }
 
 
@@ -62,7 +62,7 @@ def __getattr__(name: str) -> Any:
     home = _HOMES.get(name)
     if home is None:
         raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    return getattr(importlib.import_module(f"{__name__}.{home}"), name)
+    return getattr(importlib.import_module(home, __name__), name)
 
 
 __all__ = [

@@ -13,7 +13,8 @@ from typing import Any
 
 import scemlmodel as scm
 
-from ..players import meaning
+from ..xosc import meaning
+from ..xosc.support import MAPPED_KINDS
 from .context import Action, Context, Event
 from .entities import performance_of
 from .speeds import speed_dynamics
@@ -21,7 +22,7 @@ from .triggers import Condition, Finish, Group, delayed, finished, with_extra
 from .values import number
 
 #: A node's events, and its finish: the event its successors wait for, or (for a node written
-#: into its successor's trigger, `players.flows.inlined`) the groups that hold once it finished.
+#: into its successor's trigger, `xosc.flows.inlined`) the groups that hold once it finished.
 Plan = tuple[list[Event], Finish]
 Planner = Callable[[Context, scm.GraphElement, list[Group]], Plan]
 
@@ -29,10 +30,12 @@ PLANNERS: dict[str, Planner] = {}
 
 
 def planner(*kinds: str) -> Callable[[Planner], Planner]:
-    """Register a planner for node kinds."""
+    """Register a planner for node kinds; each must be listed in `support.MAPPED_KINDS`."""
 
     def register(function: Planner) -> Planner:
         for kind in kinds:
+            if kind not in MAPPED_KINDS:
+                raise AssertionError(f"{kind} has a planner but is not in MAPPED_KINDS")
             PLANNERS[kind] = function
         return function
 
@@ -93,7 +96,7 @@ def plan_speed(ctx: Context, node: scm.ActionNode, groups: list[Group]) -> Plan:
 @planner("DriveDistance")
 def plan_drive_distance(ctx: Context, node: scm.DriveDistance, groups: list[Group]) -> Plan:
     """A step SpeedAction to the speed; finished distance / speed seconds after the activation
-    (`players.meaning.drive_distance_duration`): the speed holds, so the distance is driven
+    (`xosc.meaning.drive_distance_duration`): the speed holds, so the distance is driven
     from where the node starts. TraveledDistanceCondition would count from the simulation's
     start, which is wrong once the actor has moved."""
     name = ctx.event_names[node]
@@ -149,7 +152,7 @@ def _drive_time(ctx: Context, node: scm.DriveDistance) -> str:
 @planner("Follow", "Approach")
 def plan_distance_keeping(ctx: Context, node: scm.ActionNode, groups: list[Group]) -> Plan:
     """LongitudinalDistanceAction to the target, within the gap-keeping limits of
-    `players.meaning`; Follow keeps it (continuous) and finishes when the gap is first reached,
+    `xosc.meaning`; Follow keeps it (continuous) and finishes when the gap is first reached,
     Approach ends when the gap is held (the player's own end of a non-continuous action)."""
     name = ctx.event_names[node]
     follow = isinstance(node, scm.Follow)
@@ -247,7 +250,7 @@ def plan_turn(ctx: Context, node: scm.RoutedManeuver, groups: list[Group]) -> Pl
     """AssignRouteAction from the actor's start to the destination; finished by an arrival
     marker, because players complete routing actions as soon as the route is set (SPEC §7).
     Not AcquirePositionAction: esmini runs that in the longitudinal domain and so stops a
-    running speed maneuver of the actor; a route controls no domain (`players.meaning`)."""
+    running speed maneuver of the actor; a route controls no domain (`xosc.meaning`)."""
     name = ctx.event_names[node]
     destination = ctx.position(node.destination)
     if ctx.profile == "carla":  # scenario_runner reads no AssignRouteAction
@@ -392,7 +395,7 @@ def plan_speed_condition(ctx: Context, node: scm.SpeedCondition, groups: list[Gr
 @planner("TraveledDistance")
 def plan_traveled(ctx: Context, node: scm.TraveledDistance, groups: list[Group]) -> Plan:
     """A marker on TraveledDistanceCondition: the actor's odometer since the simulation started
-    (players.meaning.TRAVELED_FROM), the same in every version and profile."""
+    (xosc.meaning.TRAVELED_FROM), the same in every version and profile."""
     name = ctx.event_names[node]
     entity = ctx.entity(node.referenceActor)
     data = {"entity": entity, "value": ctx.values.text(node, "distance")}

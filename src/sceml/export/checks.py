@@ -14,9 +14,9 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
-from .. import graph
 from ..diagnostics import Diagnostic, Severity
-from ..io import model_path, uri_fragment
+from ..model import graph
+from ..model.locating import model_path, uri_fragment
 from ..modules.flatten import Flattened
 from ..validation import REGISTRY, Registry, iter_diagnostics, validate
 

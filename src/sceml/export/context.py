@@ -47,7 +47,7 @@ class Context:
     marker: str
     entity_names: dict[EObject, str] = field(default_factory=dict)
     event_names: dict[EObject, str] = field(default_factory=dict)
-    #: Nodes written into their successor's trigger, with no event (`players.flows.inlined`).
+    #: Nodes written into their successor's trigger, with no event (`xosc.flows.inlined`).
     inline: set[EObject] = field(default_factory=set)
 
     def entity(self, actor: scm.Participant | None) -> str:

@@ -1,7 +1,7 @@
 """The controller nodes' planners: one event each, finished when its action completes.
 
 Players complete controller actions in the step they start them
-(`players.meaning.completes_at_once`), so the event is the node's finish event.
+(`xosc.meaning.completes_at_once`), so the event is the node's finish event.
 """
 
 from __future__ import annotations
@@ -10,7 +10,7 @@ from typing import Any
 
 import scemlmodel as scm
 
-from ..players.meaning import OVERRIDE_ELEMENTS
+from ..xosc.meaning import OVERRIDE_ELEMENTS
 from .actions import Plan, planner
 from .context import Action, Context, Event
 from .controllers import activation, controller, override, released

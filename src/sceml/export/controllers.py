@@ -14,8 +14,8 @@ from typing import Any
 
 import scemlmodel as scm
 
-from ..players.meaning import CONTROLLER_DOMAINS as DOMAINS
-from ..players.meaning import OVERRIDE_ELEMENTS
+from ..xosc.meaning import CONTROLLER_DOMAINS as DOMAINS
+from ..xosc.meaning import OVERRIDE_ELEMENTS
 from .context import Context
 from .values import number
 

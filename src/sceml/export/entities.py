@@ -40,7 +40,7 @@ def entity(ctx: Context, actor: scm.Actor) -> dict[str, Any]:
     kind = actor.eClass.name
     length, width, height = (ctx.values.raw(actor, f) for f in ("length", "width", "height"))
     bbox = {
-        # The reference point is the box's centre, as SceML positions are (players.meaning).
+        # The reference point is the box's centre, as SceML positions are (xosc.meaning).
         "x": number(0.0),
         "z": number(round(height / 2, 6)),
         "length": ctx.values.text(actor, "length"),

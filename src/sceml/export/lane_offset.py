@@ -12,7 +12,7 @@ from .triggers import Group
 @planner("LaneOffset")
 def plan_lane_offset(ctx: Context, node: scm.LaneOffset, groups: list[Group]) -> Plan:
     """The action (every version and profile); the event completes when the offset is reached,
-    which esmini 3.6 also does for a continuous one (`players.meaning.lane_offset_duration`)."""
+    which esmini 3.6 also does for a continuous one (`xosc.meaning.lane_offset_duration`)."""
     name = ctx.event_names[node]
     data = {
         "continuous": "true" if node.continuous else "false",

@@ -3,7 +3,7 @@
 An Action element becomes the node's event (it finishes when the action completes); a Condition
 element becomes a marker event that fires once the node is activated and the condition holds, as
 every condition node does (docs/import.md), or, where the node is inlined
-(`players.flows.inlined`), in its successor's trigger. Only the element's `name` is replaced, so that names
+(`xosc.flows.inlined`), in its successor's trigger. Only the element's `name` is replaced, so that names
 stay unique in the written document; everything else is the text that was read.
 """
 
@@ -14,7 +14,7 @@ from markupsafe import Markup
 
 import scemlmodel as scm
 
-from ..safexml import hardened_parser
+from ..files.safexml import hardened_parser
 from .actions import Plan, marker_plan, planner
 from .context import Action, Context, Event
 from .triggers import Condition, Group

@@ -7,7 +7,7 @@ from functools import cache
 import jinja2
 from lxml import etree
 
-from ..safexml import hardened_parser
+from ..files.safexml import hardened_parser
 from ..templating import environment
 from .viewmodel import View
 

@@ -11,8 +11,8 @@ from __future__ import annotations
 
 import scemlmodel as scm
 
-from .. import params
-from ..graph import predecessors
+from ..model import params
+from ..model.graph import predecessors
 from .context import Context
 from .values import number
 

@@ -2,7 +2,7 @@
 
 A node is activated when its predecessors have finished (SPEC §3). A predecessor's finish is
 the completeState of one event (its *finish event*), or, for a node the export writes into its
-successor's trigger (`players.flows.inlined`), the ConditionGroups that hold when it has
+successor's trigger (`xosc.flows.inlined`), the ConditionGroups that hold when it has
 finished. An activation is a list of ConditionGroups (OR) of Conditions (AND): every
 predecessor's finish ANDed for ordinary nodes and join-all, ORed for join-one.
 """

@@ -7,8 +7,8 @@ from dataclasses import dataclass
 
 from pyecore.ecore import EObject
 
-from .. import params
-from ..io import model_path
+from ..model import params
+from ..model.locating import model_path
 
 
 @dataclass(frozen=True)

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ..schema import SUPPORTED_VERSIONS
+from ..xosc.schema import SUPPORTED_VERSIONS
 
 #: The OpenSCENARIO versions the exporter writes.
 VERSIONS = SUPPORTED_VERSIONS

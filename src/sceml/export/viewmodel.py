@@ -12,10 +12,11 @@ from typing import Any
 
 import scemlmodel as scm
 
-from .. import graph
 from ..errors import SceMLError
 from ..maps.reference import is_scenery_file
-from ..players.flows import inlined
+from ..model import graph
+from ..xosc.flows import inlined
+from ..xosc.profiles import DEFAULT_VERSION
 from .actions import PLANNERS
 from .context import Context, Event, node_name
 from .entities import entity, init_actions
@@ -35,7 +36,7 @@ class MappingError(SceMLError):
 class Options:
     """What the caller decided: version, profile, header date, map text, parameter hook."""
 
-    version: str = "1.3"
+    version: str = DEFAULT_VERSION
     profile: str = "generic"
     date: str = "1970-01-01T00:00:00"
     logic_file: str = ""
@@ -65,7 +66,7 @@ class View:
     #: The root's declarations (`global_kinds.declarations`): parameters and variables.
     declared: dict[str, list[dict[str, Any]]] = field(default_factory=dict)
     #: node name -> (first event, finish event) of every node that has events (an inlined node
-    #: has none: `players.flows.inlined`); not rendered, for callers and tests.
+    #: has none: `xosc.flows.inlined`); not rendered, for callers and tests.
     events_of: dict[str, tuple[str, str]] = field(default_factory=dict)
 
 
@@ -102,7 +103,9 @@ def build_view(scenario: scm.Scenario, options: Options) -> View:
     story = names.claim(sanitize(root.scenarioName, "Scenario"))
     act = names.claim(f"{story}_Act")
     groups = _groups(ctx, actors, events)
-    stop = activation([finishes.get(p) for p in graph.predecessors(end)], _is_one(end), "End")
+    stop = activation(
+        [finishes.get(p) for p in graph.predecessors(end)], graph.finishes_with_first(end), "End"
+    )
     max_duration = ctx.values.text(root, "maxDuration")
     stop = _unique(names, [*stop, [simulation_time_over(max_duration, "End")]])
     env = environment(ctx, root, options.date)
@@ -140,12 +143,6 @@ def _declared(root: scm.RootNode, variables_allowed: bool) -> dict[str, list[dic
         raise MappingError(str(problem), element=root.name) from None
 
 
-def _is_one(node: scm.GraphElement) -> bool:
-    if isinstance(node, scm.EndNode):
-        return node.policy is scm.JoinPolicy.joinOne
-    return isinstance(node, scm.JoinOneFinished)
-
-
 def _plan(ctx: Context, nodes: list[scm.GraphElement]) -> tuple[list[Event], dict[Any, Finish]]:
     """Events of every node in topological order, and each node's finish (`triggers.Finish`)."""
     finishes: dict[Any, Finish] = {}
@@ -157,7 +154,7 @@ def _plan(ctx: Context, nodes: list[scm.GraphElement]) -> tuple[list[Event], dic
             raise MappingError(f"{kind} has no OpenSCENARIO mapping", element=str(node.name))
         before = [finishes.get(p) for p in graph.predecessors(node)]
         node_events, finish = planner(
-            ctx, node, activation(before, _is_one(node), ctx.event_names[node])
+            ctx, node, activation(before, graph.finishes_with_first(node), ctx.event_names[node])
         )
         events.extend(node_events)
         finishes[node] = finish

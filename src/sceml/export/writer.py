@@ -11,15 +11,17 @@ from lxml import etree
 
 import scemlmodel as scm
 
-from .. import graph, schema
 from ..diagnostics import Diagnostic
 from ..errors import ArgumentError, SceMLError
-from ..io import write_atomically
+from ..files.writing import write_atomically
 from ..maps.reference import is_town_name
+from ..model import graph
 from ..modules.flatten import expand
+from ..xosc import schema
+from ..xosc.profiles import DEFAULT_VERSION
+from ..xosc.support import unsupported_reason
 from . import checks
 from .render import render_tree, serialise
-from .support import unsupported_reason
 from .values import ParameterHook
 from .viewmodel import MappingError, Options, build_view
 
@@ -58,7 +60,7 @@ class XoscDocument:
 def build_xosc(
     scenario: scm.Scenario,
     *,
-    version: str = "1.3",
+    version: str = DEFAULT_VERSION,
     profile: str = "generic",
     date: str | None = None,
     source_path: str | Path | None = None,

@@ -9,10 +9,10 @@ import numpy as np
 
 import scemlmodel as scm
 
-from .. import catalog
-from ..build import lane, world
 from ..errors import ArgumentError
 from ..maps import RoadMap
+from ..model import catalog
+from ..model.build import lane, world
 from .motion import Motion
 from .recording import Track
 

@@ -9,7 +9,7 @@ a maneuver's start (a lane change during a speed change), the maneuver gets a br
 own from the root, with its wait in front.
 
 Timing follows the players (docs/simulate.md): every flow costs a step
-(`players.meaning.FLOW_DELAY_STEPS`), and a maneuver acts in the step its node starts, so a
+(`xosc.meaning.FLOW_DELAY_STEPS`), and a maneuver acts in the step its node starts, so a
 recording shows its motion change a step before the node's start. A maneuver right after
 another therefore shows at its predecessor's finish, as recorded. A wait adds a flow: its
 condition is aimed at when it must hold for the maneuver to show at its recorded start, and
@@ -25,10 +25,10 @@ import numpy as np
 
 import scemlmodel as scm
 
-from ..build import ScenarioBuilder, world
-from ..params import value
-from ..players.meaning import FLOW_DELAY_STEPS
+from ..model.build import ScenarioBuilder, world
+from ..model.params import value
 from ..simulate import DEFAULT_STEP
+from ..xosc.meaning import FLOW_DELAY_STEPS
 from .events import Event
 from .motion import Motion
 from .sync import Explanation, explain

@@ -21,9 +21,9 @@ import numpy as np
 
 import scemlmodel as scm
 
-from ..graph import actors as scenario_actors
+from ..model.graph import actors as scenario_actors
+from ..model.params import concrete
 from ..modules import flatten
-from ..params import concrete
 from ..simulate import Run
 from .events import LONGITUDINAL
 from .pipeline import Extraction

@@ -11,9 +11,9 @@ import numpy as np
 
 import scemlmodel as scm
 
-from ..build import ScenarioBuilder
 from ..errors import ArgumentError
 from ..maps import RoadMap
+from ..model.build import ScenarioBuilder
 from ..validation.limits import Limits
 from .actors import ActorSpec, actor_kind, start_position
 from .assemble import Inferred, add_actor_graph

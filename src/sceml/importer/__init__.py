@@ -5,7 +5,7 @@
   or not represented; with a ParameterValueDistribution (`distribution`, or `path` itself being
   one, which names its scenario) the scenario is logical where the distribution varies it;
 - `import_to_file(path, output, *, map_path=None, distribution=None)` also saves it
-  (atomically, `sceml.io.save`).
+  (atomically, `sceml.model.saving.save`).
 
 Input that cannot be used (malformed XML, another version, an XSD violation, a missing catalog,
 a dangling reference, a circular trigger) raises `XoscImportError` with file and line, before
@@ -25,8 +25,9 @@ from pathlib import Path
 
 import scemlmodel as scm
 
-from .. import io
-from ..build import ScenarioBuilder
+from ..files.safefiles import reading_roots
+from ..model.build import ScenarioBuilder
+from ..model.saving import save
 from . import catalogs, markers, parameters
 from .context import Build
 from .distribution import Distribution, read_distribution
@@ -66,14 +67,14 @@ def import_file(
     names a ParameterValueDistribution whose parameters make the scenario logical; when `path`
     is itself one, the scenario its ScenarioFile names is imported with it. `catalog_paths`
     are more folders to find catalogs in (esmini's `--path`); files the scenario names are read
-    only inside `io.reading_roots` of it, `allow` and `catalog_paths`.
+    only inside `reading_roots` of it, `allow` and `catalog_paths`.
     """
     search = [Path(folder) for folder in catalog_paths]
     extra = [*search, *(Path(folder) for folder in allow)]
     source, varied = _sources(
         Path(path), None if distribution is None else Path(distribution), extra
     )
-    roots = io.reading_roots(source.path, extra)
+    roots = reading_roots(source.path, extra)
     report = ImportReport(str(source.path), source.version)
     report.catalog_entries = catalogs.resolve(source, search, roots, report)
     resolved = parameters.resolve(source, () if varied is None else varied.specs)
@@ -130,7 +131,7 @@ def import_to_file(
         catalog_paths=catalog_paths,
         allow=allow,
     )
-    io.save(imported.scenario, output, origin=Path(imported.report.file))
+    save(imported.scenario, output, origin=Path(imported.report.file))
     return imported
 
 
@@ -159,7 +160,7 @@ def _sources(
             line=tree.getroot().sourceline,
         )
     varied = read_distribution(path, tree, version)
-    if not _inside(varied.scenario, io.reading_roots(path, allow)):
+    if not _inside(varied.scenario, reading_roots(path, allow)):
         # Its name only: an outside file is neither read nor described.
         raise XoscImportError(
             f"the ScenarioFile {varied.scenario} is outside the folders the import may read; "

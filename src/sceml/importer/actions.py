@@ -15,8 +15,8 @@ from lxml import etree
 
 import scemlmodel as scm
 
-from .. import catalog
 from ..maps.resolve import is_relative, resolve, start_poses
+from ..model import catalog
 from . import traced
 from .context import Build, last_name
 from .geometry import classify

@@ -8,7 +8,7 @@ A CatalogLocations `Directory` is read relative to the scenario's folder, then r
 declaration values, so the entry is then resolved in place like any other element
 (`parameters.py`).
 
-Only regular files inside the allowed folders (`io.reading_roots`: the scenario's folder, its
+Only regular files inside the allowed folders (`reading_roots`: the scenario's folder, its
 project root, `--allow` and `--catalog-path` folders) are read, and resolution is bounded: an
 entry that refers to itself (directly or through others) would otherwise grow the tree
 exponentially.
@@ -22,7 +22,8 @@ from pathlib import Path
 
 from lxml import etree
 
-from .. import io, schema
+from ..files.safefiles import reading_roots
+from ..xosc import schema
 from .parameters import declared_name, value_of, values_at
 from .reading import ORIGIN, Source
 from .report import ImportReport
@@ -44,10 +45,10 @@ def resolve(
     """Replace every CatalogReference in the tree; returns 'catalog/entry' of each one used.
 
     `search` are the `--catalog-path` folders; `roots` the folders files may be read from
-    (default: `io.reading_roots` of the scenario with `search`); `report` gets the guesses.
+    (default: `reading_roots` of the scenario with `search`); `report` gets the guesses.
     """
     if roots is None:
-        roots = io.reading_roots(source.path, search)
+        roots = reading_roots(source.path, search)
     catalogs = _Catalogs(source, search, roots)
     used: list[str] = []
     copied = 0

@@ -10,8 +10,8 @@ from lxml import etree
 
 import scemlmodel as scm
 
-from ..build import GraphBuilder
-from ..safexml import hardened_parser
+from ..files.safexml import hardened_parser
+from ..model.build import GraphBuilder
 from .reading import ORIGIN, Source
 from .report import ImportReport
 from .traced import TRACE

@@ -13,8 +13,8 @@ from lxml import etree
 
 import scemlmodel as scm
 
-from ..players.meaning import CONTROLLER_DOMAINS as DOMAINS
-from ..players.meaning import OVERRIDE_ELEMENTS
+from ..xosc.meaning import CONTROLLER_DOMAINS as DOMAINS
+from ..xosc.meaning import OVERRIDE_ELEMENTS
 from .actions import Motion, Request, _add, _maps
 from .context import Build
 

@@ -25,7 +25,8 @@ from lxml import etree
 
 import scemlmodel as scm
 
-from .. import params, schema
+from ..model import params
+from ..xosc import schema
 from .errors import XoscImportError
 from .reading import check
 

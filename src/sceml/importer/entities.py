@@ -8,7 +8,7 @@ from lxml import etree
 
 import scemlmodel as scm
 
-from .. import catalog
+from ..model import catalog
 from . import traced
 from .context import Build
 from .controllers import object_controller

@@ -12,9 +12,9 @@ from __future__ import annotations
 
 import scemlmodel as scm
 
-from .. import params
-from ..copying import copy_tree
 from ..levels.paths import LevelError, slots
+from ..model import params
+from ..model.copying import copy_tree
 from .context import Build
 from .distribution import Distribution, Spec
 from .parameters import Use

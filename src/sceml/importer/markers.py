@@ -16,7 +16,7 @@ from lxml import etree
 
 import scemlmodel as scm
 
-from .. import catalog
+from ..model import catalog
 from .actions import Motion, Request, _add
 from .context import Build, last_name
 from .positions import number
@@ -90,7 +90,7 @@ def drive_distance(
 ) -> scm.ActionNode | None:
     """A DriveDistance from its step speed action and its `__driven` event: a
     TraveledDistanceCondition (carla profile), or the activation delayed by distance / speed
-    (`players.meaning.drive_distance_duration`)."""
+    (`xosc.meaning.drive_distance_duration`)."""
     speed = request.element.find(".//AbsoluteTargetSpeed")
     if speed is None:
         return None

@@ -14,8 +14,8 @@ from collections import deque
 
 import scemlmodel as scm
 
-from .. import catalog
-from ..players.flows import is_condition_element
+from ..model import catalog
+from ..xosc.flows import is_condition_element
 from .context import Build
 
 _AXES = {
@@ -98,7 +98,7 @@ def _wait(build: Build, earlier: scm.Maneuver, later: scm.Maneuver) -> scm.JoinA
     """`later` also waits for `earlier`: a join before it, or, where `later` is started by a
     condition of its own, before that condition. The condition is then evaluated once both
     have finished and stays the only thing `later` waits for, so the export writes it into
-    `later`'s StartTrigger (`players.flows.inlined`) and `later` starts in the step it holds,
+    `later`'s StartTrigger (`xosc.flows.inlined`) and `later` starts in the step it holds,
     as in the original; a join after the condition would make it a marker, a step late."""
     target: scm.GraphElement = later
     sources = [flow.source for flow in later.incoming]

@@ -11,7 +11,7 @@ from pathlib import Path
 
 from lxml import etree
 
-from .. import schema
+from ..xosc import schema
 from .errors import XoscImportError
 
 #: Attribute set on elements copied from a catalog: the file they came from (namespaced, so it

@@ -13,7 +13,7 @@ from lxml import etree
 
 import scemlmodel as scm
 
-from .. import params
+from ..model import params
 from . import markers, traced
 from .actions import Motion, Request, map_action
 from .context import Build, last_name
@@ -165,7 +165,7 @@ class Storyboard:
         actor = info.actors[0]
         kind = markers.hint(self.build, info.name)
         # Only a marker's delay is a KeepVelocity's duration; a delay in a KeepVelocity's own
-        # StartTrigger is a wait before it (written there by the export, players.flows).
+        # StartTrigger is a wait before it (written there by the export, xosc.flows).
         marker = markers.is_marker(self.build, info.element)
         trigger = Trigger(
             self.build,

@@ -21,9 +21,9 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
-from ..copying import Copier
-from ..graph import root_node
-from ..io import model_path
+from ..model.copying import Copier
+from ..model.graph import root_node
+from ..model.locating import model_path
 from ..modules.flatten import expand
 from .paths import LevelError, place_value, resolve, slots, unresolved
 

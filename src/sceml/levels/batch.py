@@ -20,9 +20,9 @@ exports every sample in full.
 Who writes depends on the executor. Worker processes on the caller's machine
 (`Executor.shares_files`) write their samples' files themselves, so that writing, which costs
 about as much as producing a file, runs on every core: each file is written under its own name
-into a staging folder inside the output folder and renamed into place (`io.write_staged`), and
+into a staging folder inside the output folder and renamed into place (`write_staged`), and
 the task returns only the records. Otherwise (in-process, Dask) workers return file contents
-and the caller writes each file atomically (`io.write_atomically`). Either way a sample's record
+and the caller writes each file atomically (`write_atomically`). Either way a sample's record
 is kept only once all its files are written, and a sample the run did not finish (its chunk
 lost, or Ctrl-C) has no files when the run returns: the caller removes the staging folder,
 and the files that workers wrote for samples whose records never arrived. So the manifest lists
@@ -46,10 +46,14 @@ from numpy.typing import NDArray
 
 import scemlmodel as scm
 
-from .. import io
 from ..errors import SaveError, SceMLError
 from ..executors import Deferred, Executor, open_executor
-from ..safefiles import read_input
+from ..files.safefiles import read_input
+from ..files.writing import make_folder, remove_folders, write_atomically, write_staged
+from ..model.documents import Document
+from ..model.loading import load_scenario, unresolved_references
+from ..model.saving import save
+from ..xosc.profiles import DEFAULT_VERSION
 from .apply import FlatTemplate, copy_scenario, set_level
 from .checks import SampleChecker
 from .manifest import SampleRecord
@@ -68,10 +72,10 @@ class BatchConfig:
     out_dir: Path
     paths: tuple[str, ...]
     formats: tuple[str, ...] = ("xosc",)
-    osc_version: str = "1.3"
+    osc_version: str = DEFAULT_VERSION
     stem: str = "sample"
     width: int = 5
-    #: More folders the logical scenario's references may reach (see io.reading_roots).
+    #: More folders the logical scenario's references may reach (see sceml.files.safefiles.reading_roots).
     allow: tuple[Path, ...] = ()
 
     def file_name(self, index: int, suffix: str) -> str:
@@ -96,7 +100,7 @@ class Worker:
 
     def __init__(self, config: BatchConfig) -> None:
         self.config = config
-        logical = io.load_scenario(config.logical, allow=config.allow).root
+        logical = load_scenario(config.logical, allow=config.allow).root
         self.template = FlatTemplate(logical, config.paths)
         self.checker = SampleChecker(self.template)
         self.xosc = None
@@ -158,9 +162,9 @@ class Worker:
 
     def _xmi_bytes(self, target: Path) -> bytes:
         assert self.xmi_copy is not None
-        # io.save writes references relative to the file it saves, so it saves where the file
+        # save writes references relative to the file it saves, so it saves where the file
         # belongs (the worker's copy of the output folder) and the bytes are read back.
-        io.save(self.xmi_copy.scenario, target, origin=self.config.logical)
+        save(self.xmi_copy.scenario, target, origin=self.config.logical)
         try:
             return target.read_bytes()
         finally:
@@ -174,9 +178,9 @@ def write_sample(folder: Path, produced: Produced, staging: Path | None = None) 
     try:
         for name, data in produced.files:
             if staging is None:
-                io.write_atomically(folder / name, data)
+                write_atomically(folder / name, data)
             else:
-                io.write_staged(folder / name, data, staging)
+                write_staged(folder / name, data, staging)
             written.append(folder / name)
     except BaseException:
         for path in written:
@@ -241,20 +245,20 @@ def make_payload(config: BatchConfig) -> BatchPayload:
         out_dir=config.out_dir.resolve(),
         allow=tuple(p.resolve() for p in config.allow),
     )
-    document = io.load_scenario(config.logical, allow=config.allow)
+    document = load_scenario(config.logical, allow=config.allow)
     files: set[Path] = set()
     while (found := _loaded_files(document)) != files:  # a library may use another's modules
         files = found
         for resource in list(document.resource_set.resources.values()):
             for root in resource.contents:
                 # Resolving is the point; a broken reference fails in the worker as it would here.
-                list(io.unresolved_references(root))
+                list(unresolved_references(root))
     # Read again by the reading rule: the file may have been swapped for a FIFO since it loaded.
     inputs = tuple(sorted((str(path), read_input(path)) for path in files))
     return BatchPayload(config, inputs)
 
 
-def _loaded_files(document: io.Document) -> set[Path]:
+def _loaded_files(document: Document) -> set[Path]:
     found = set()
     for resource in document.resource_set.resources.values():
         path = Path(resource.uri.normalize()).resolve()
@@ -371,7 +375,7 @@ def run_batch(
     When the run fails, the output folder, if it made it, is removed again unless files were
     written.
     """
-    created = io.make_folder(config.out_dir)
+    created = make_folder(config.out_dir)
     try:
         payload = make_payload(config)
         if executor is not None:
@@ -379,7 +383,7 @@ def run_batch(
         with open_executor("processes", workers=workers) as own:
             return _run(payload, indices, rows, own, chunk_size, progress)
     except BaseException:
-        io.remove_folders(created)
+        remove_folders(created)
         raise
 
 

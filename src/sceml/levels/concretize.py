@@ -6,7 +6,7 @@ from collections.abc import Mapping
 
 import scemlmodel as scm
 
-from .. import params
+from ..model import params
 from .apply import copy_scenario, set_level
 from .paths import LevelArgumentError, LevelError, Slot, place_value, resolve, slots, unresolved
 

@@ -14,7 +14,7 @@ import shutil
 from pathlib import Path
 
 from ..errors import ArgumentError, LoadError
-from ..safefiles import read_input
+from ..files.safefiles import read_input
 from .paths import LevelArgumentError
 
 #: What one sample holds in memory while a run lasts: its values, its row in the manifest and the

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from ..io import write_atomically
+from ..files.writing import write_atomically
 
 CSV_NAME = "manifest.csv"
 JSON_NAME = "manifest.json"

@@ -26,9 +26,9 @@ from pyecore.ecore import EObject, EReference
 
 import scemlmodel as scm
 
-from .. import catalog, params
-from ..copying import copy_tree
 from ..errors import ArgumentError, SceMLError
+from ..model import catalog, params
+from ..model.copying import copy_tree
 from ..modules.resolve import resolved_definition
 
 _SEGMENT = re.compile(r"^(?P<name>[^.\[\]]+)(?:\[(?P<index>\d+)\])?$")

@@ -21,9 +21,9 @@ from typing import Any
 
 import scemlmodel as scm
 
-from .. import build, catalog, params
-from ..config import load_config
 from ..errors import LoadError
+from ..files.config import load_config
+from ..model import build, catalog, params
 from .apply import copy_scenario, set_level
 from .paths import LevelError, find_feature, place, resolve, slots, unresolved
 

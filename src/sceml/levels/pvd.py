@@ -30,8 +30,12 @@ from lxml import etree
 
 import scemlmodel as scm
 
-from .. import io, schema
-from ..graph import root_node
+from ..files.writing import write_atomically
+from ..model.graph import root_node
+from ..model.loading import load_scenario
+from ..model.locating import model_path
+from ..xosc import schema
+from ..xosc.profiles import DEFAULT_VERSION
 from .apply import FlatTemplate
 from .paths import LevelArgumentError, LevelError
 from .space import Dimension, ParameterSpace, parameter_space
@@ -58,7 +62,7 @@ def export_distribution(
     logical: Path,
     out_dir: Path,
     *,
-    version: str = "1.3",
+    version: str = DEFAULT_VERSION,
     mode: str = "auto",
     runs: int = 100,
     seed: int = 0,
@@ -67,7 +71,7 @@ def export_distribution(
 ) -> DistributionFiles:
     """Write `<stem>.xosc` (parameterized) and `<stem>.pvd.xosc` (its distribution) to out_dir.
 
-    Files the scenario refers to are read from `io.reading_roots(logical, allow)`.
+    Files the scenario refers to are read from `sceml.files.safefiles.reading_roots(logical, allow)`.
     """
     if version not in schema.DISTRIBUTION_VERSIONS:
         raise LevelArgumentError(
@@ -78,7 +82,7 @@ def export_distribution(
         from ..export.writer import header_date  # Jinja2 is loaded only when exporting
 
         date = header_date(date)
-    scenario = io.load_scenario(logical, allow=allow).root
+    scenario = load_scenario(logical, allow=allow).root
     space = parameter_space(scenario)
     kind = distribution_kind(space, mode)
     stem = logical.stem.removesuffix("-logical")
@@ -91,8 +95,8 @@ def export_distribution(
         space, kind, version, scenario_path.name, runs=runs, seed=seed, date=file_date
     )
     _check(distribution, version, distribution_path)
-    io.write_atomically(scenario_path, _bytes(tree))
-    io.write_atomically(distribution_path, _bytes(distribution))
+    write_atomically(scenario_path, _bytes(tree))
+    write_atomically(distribution_path, _bytes(distribution))
     return DistributionFiles(scenario_path, distribution_path, kind)
 
 
@@ -137,7 +141,7 @@ def parameterized_tree(
         spec = ParameterDeclarationSpec(parameter_name(path), number(value))
         for target_value in template.slots_of(index):
             owner = target_value.eContainer()
-            hook[(io.model_path(owner), target_value.eContainmentFeature().name)] = spec
+            hook[(model_path(owner), target_value.eContainmentFeature().name)] = spec
     return export(
         flat, version=version, date=date, source_path=source, output_path=target, parameters=hook
     )

@@ -1,7 +1,7 @@
 """One sample to one XSD-checked .xosc file, through the export's fast path, written atomically.
 
 The export's `build_xosc` renders the document from precompiled templates, parses it once, and
-checks the tree against the XSD that `sceml.schema` loads once per process; the bytes it returns
+checks the tree against the XSD that `sceml.xosc.schema` loads once per process; the bytes it returns
 are written as they are, so nothing is parsed again here.
 """
 
@@ -16,11 +16,12 @@ from lxml import etree
 
 import scemlmodel as scm
 
-from .. import schema
 from ..errors import SceMLError
-from ..io import model_path, write_atomically
-from ..players.meaning import drive_distance_duration
-from ..safexml import hardened_parser
+from ..files.safexml import hardened_parser
+from ..files.writing import write_atomically
+from ..model.locating import model_path
+from ..xosc import schema
+from ..xosc.meaning import drive_distance_duration
 from .apply import FlatTemplate
 
 if TYPE_CHECKING:

@@ -15,8 +15,8 @@ from pathlib import Path
 from lxml import etree
 
 from ..errors import LoadError
-from ..safefiles import read_input
-from ..safexml import doctype_line, hardened_parser, has_dtd
+from ..files.safefiles import read_input
+from ..files.safexml import doctype_line, hardened_parser, has_dtd
 from .model import (
     Connection,
     Geometry,
@@ -41,7 +41,7 @@ def parse_opendrive(
 ) -> tuple[str, list[Road], list[Junction]]:
     """The OpenDRIVE version ("1.7"), roads and junctions of the file at `path`.
 
-    The file is read by the one reading rule (`sceml.safefiles.read_input`): a regular file,
+    The file is read by the one reading rule (`sceml.files.safefiles.read_input`): a regular file,
     below one of `roots` when they are given, within the size limit.
     """
     root = _root(Path(path), roots)

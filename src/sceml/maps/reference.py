@@ -6,7 +6,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..safefiles import reading_roots
+from ..files.safefiles import reading_roots
 
 #: 3D scenery formats a player loads as a scene graph (OpenSCENARIO's RoadNetwork/SceneGraphFile):
 #: a place with no roads, such as esmini's parking lot, where every position is a world position.

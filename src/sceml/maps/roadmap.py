@@ -19,7 +19,7 @@ from typing import Any
 
 import numpy as np
 
-from ..safefiles import check_inside
+from ..files.safefiles import check_inside
 from .model import (
     Junction,
     LaneBand,

@@ -14,7 +14,7 @@ from pathlib import Path
 from lxml import etree
 
 from ..errors import LoadError
-from ..safexml import hardened_parser
+from ..files.safexml import hardened_parser
 
 _XSI_TYPE = "{http://www.w3.org/2001/XMLSchema-instance}type"
 _ECORE_TYPE = re.compile(r"#//(\w+)$")

@@ -18,10 +18,10 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
-from ..collector import collector_paused
-from ..copying import Copier
-from ..io import model_path
-from ..traversal import (
+from ..model.collector import collector_paused
+from ..model.copying import Copier
+from ..model.locating import model_path
+from ..model.traversal import (
     all_contents,
     containments,
     cross_references,

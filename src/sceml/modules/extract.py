@@ -22,11 +22,11 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
-from .. import catalog
-from ..build import ModuleBuilder
-from ..copying import copy_tree
-from ..graph import predecessors, root_node, successors, topological_order
-from ..params import as_parameter
+from ..model import catalog
+from ..model.build import ModuleBuilder
+from ..model.copying import copy_tree
+from ..model.graph import predecessors, root_node, successors, topological_order
+from ..model.params import as_parameter
 from .errors import ExtractError
 from .library import instantiate
 

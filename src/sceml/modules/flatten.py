@@ -12,9 +12,9 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
-from ..collector import collector_paused
-from ..copying import Copier
-from ..traversal import all_contents, cross_references
+from ..model.collector import collector_paused
+from ..model.copying import Copier
+from ..model.traversal import all_contents, cross_references
 from .errors import FlattenError
 from .expansion import Edge, Expansion, Origin, expansion, forget_references
 

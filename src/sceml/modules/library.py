@@ -9,11 +9,11 @@ from pyecore.ecore import EAttribute, EObject, EReference
 
 import scemlmodel as scm
 
-from .. import catalog, params
-from ..build import GraphBuilder
 from ..errors import BuildError
-from ..graph import successors, topological_order
-from ..params import ParameterInput
+from ..model import catalog, params
+from ..model.build import GraphBuilder
+from ..model.graph import successors, topological_order
+from ..model.params import ParameterInput
 from . import naming
 from .errors import FlattenError, UnknownModuleError
 from .resolve import definition_key, location, resolved_definition

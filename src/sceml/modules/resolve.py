@@ -11,7 +11,8 @@ from pyecore.ecore import EObject, EProxy
 import scemlmodel as scm
 
 from ..errors import LoadError
-from ..io import Document, model_path
+from ..model.documents import Document
+from ..model.locating import model_path
 from .errors import FlattenError
 
 

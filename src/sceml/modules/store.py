@@ -14,9 +14,12 @@ from pyecore.resources import URI
 
 import scemlmodel as scm
 
-from .. import io
 from ..errors import SaveError
-from ..safefiles import output_target
+from ..files.safefiles import output_target, reading_roots
+from ..files.writing import make_folder, remove_folders
+from ..model.documents import new_resource_set
+from ..model.loading import broken_references, load_library, load_scenario
+from ..model.saving import save
 from .errors import ExtractError
 from .extract import RoleSpec, extract
 from .flatten import expand
@@ -49,16 +52,16 @@ def flatten_file(
 ) -> FlattenReport:
     """Flatten the scenario in `path` and save it, atomically, to `output`.
 
-    Referenced libraries are read from `io.reading_roots(path, allowed_roots)`.
+    Referenced libraries are read from `reading_roots(path, allowed_roots)`.
     """
     path, output = Path(path), Path(output)
-    document = io.load_scenario(path, allow=allowed_roots)
+    document = load_scenario(path, allow=allowed_roots)
     # Every reference to another file is tried first, a node's referenceActor as much as a
     # module's definition: each failure is told at its line, none in pyecore's words mid-way.
-    for error in io.broken_references(document):
+    for error in broken_references(document):
         raise error
     flattened = expand(document.root)
-    io.save(flattened.scenario, output, origin=path)
+    save(flattened.scenario, output, origin=path)
     return FlattenReport(output, flattened.expanded, len(flattened.scenario.nodes))
 
 
@@ -80,16 +83,14 @@ def extract_file(
     """
     path, library_path = Path(path).resolve(), Path(library_path).resolve()
     target = Path(output).resolve() if output is not None else path
-    resource_set = io.new_resource_set(
-        io.reading_roots(path, [library_path.parent, *allowed_roots])
-    )
-    scenario = io.load_scenario(path, resource_set=resource_set).root
+    resource_set = new_resource_set(reading_roots(path, [library_path.parent, *allowed_roots]))
+    scenario = load_scenario(path, resource_set=resource_set).root
     created = not library_path.exists()
     if created:
         library = scm.Library(name=library_path.stem)
         resource_set.create_resource(URI(str(library_path))).append(library)
     else:
-        library = io.load_library(library_path, resource_set=resource_set).root
+        library = load_library(library_path, resource_set=resource_set).root
     try:
         use = extract(scenario, node_names, name, library, roles=roles, parametrize=parametrize)
     except ExtractError as error:
@@ -121,7 +122,7 @@ def save_together(models: Sequence[tuple[EObject, Path]]) -> None:
     try:
         replaced = [output_target(target) for _, target in models]
         for (root, target), real in zip(models, replaced, strict=True):
-            created += io.make_folder(real.parent, target=target)
+            created += make_folder(real.parent, target=target)
             try:
                 handle, name = tempfile.mkstemp(
                     prefix=f".{real.name}.", suffix=".tmp", dir=real.parent
@@ -130,7 +131,7 @@ def save_together(models: Sequence[tuple[EObject, Path]]) -> None:
                 raise SaveError(f"cannot write: {error.strerror}", file=target) from None
             os.close(handle)
             temporaries.append(Path(name))
-            io.save(root, name)
+            save(root, name)
         for temporary, (_, target), real in zip(temporaries, models, replaced, strict=True):
             try:
                 os.replace(temporary, real)
@@ -142,4 +143,4 @@ def save_together(models: Sequence[tuple[EObject, Path]]) -> None:
             with contextlib.suppress(FileNotFoundError):
                 temporary.unlink()
         if not done:
-            io.remove_folders(created)
+            remove_folders(created)

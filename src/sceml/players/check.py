@@ -12,19 +12,20 @@ from pathlib import Path
 
 import scemlmodel as scm
 
-from .. import graph, io
 from ..errors import ArgumentError
 from ..export import build_xosc
 from ..maps import RoadMap, load_map
 from ..maps.reference import map_reference
+from ..model import graph
+from ..model.loading import load_scenario
 from ..modules import flatten
+from ..xosc.profiles import DEFAULT_VERSION
 from . import esmini
 from .checker import RunReport, check_run
 from .record import PlayerRun
 
 #: Readers of each player's log and trace files: (log, trace or None) -> PlayerRun.
 READERS: dict[str, Callable[[Path, Path | None], PlayerRun]] = {esmini.NAME: esmini.read}
-DEFAULT_VERSION = "1.3"
 
 
 def check_player_run(
@@ -56,7 +57,7 @@ def check_scenario_run(
 ) -> RunReport:
     """Check a run already read against the scenario in `scenario_path`."""
     path = Path(scenario_path)
-    scenario = io.load_scenario(path, allow=allow).root
+    scenario = load_scenario(path, allow=allow).root
     chosen = version or run.osc_version or DEFAULT_VERSION
     document = build_xosc(scenario, version=chosen, source_path=path)
     flat = (

@@ -1,4 +1,4 @@
-"""Whether a player's run of an exported scenario kept its meaning (SPEC §3, `players.meaning`).
+"""Whether a player's run of an exported scenario kept its meaning (SPEC §3, `xosc.meaning`).
 
 Checked against the flattened graph and the exported document:
   order      a node's events start only after its predecessors finished (all of them, or the
@@ -21,10 +21,10 @@ from lxml import etree
 
 import scemlmodel as scm
 
-from .. import graph, params
 from ..export.names import SEPARATOR
 from ..maps import RoadMap
-from .flows import flow_steps, inlined, is_passing
+from ..model import graph, params
+from ..xosc.flows import flow_steps, inlined, is_passing
 from .goals import goal_problems
 from .record import EventRun, PlayerRun
 
@@ -48,7 +48,7 @@ class NodeCheck:
     problems: list[str] = field(default_factory=list)
     #: Unfinished at the stop, but the end node did not wait for it (SPEC §3: join-one).
     pending: bool = False
-    #: Written into its successor's trigger (`players.flows.inlined`): its times are derived.
+    #: Written into its successor's trigger (`xosc.flows.inlined`): its times are derived.
     inlined: bool = False
 
 
@@ -154,7 +154,7 @@ def _inlined_times(
 ) -> tuple[float | None, float | None]:
     """Start and finish of a node the export wrote into its successor's trigger (it has no
     event of its own): activated when its predecessors' finishes reach it
-    (`players.flows.flow_steps`); a join or port finishes then, a wait its duration later, and
+    (`xosc.flows.flow_steps`); a join or port finishes then, a wait its duration later, and
     a condition when its successors (whose only predecessor it is) started."""
     one = isinstance(node, scm.JoinOneFinished)
     reached = []
@@ -226,9 +226,7 @@ def _needed(end: scm.EndNode, finish: dict[str, float | None]) -> set[str]:
     while stack:
         node = stack.pop()
         before = [p for p in graph.predecessors(node) if not isinstance(p, scm.RootNode)]
-        one = isinstance(node, scm.JoinOneFinished) or (
-            isinstance(node, scm.EndNode) and node.policy is scm.JoinPolicy.joinOne
-        )
+        one = graph.finishes_with_first(node)
         done = [p for p in before if finish.get(str(p.name)) is not None]
         if one and done:
             before = [min(done, key=lambda p: finish[str(p.name)] or 0.0)]

@@ -1,6 +1,6 @@
 """A preview run beside a player's run of the same scenario: node starts, positions, the end.
 
-Both runs place an actor by its reference point, the centre of its box (`players.meaning`), so
+Both runs place an actor by its reference point, the centre of its box (`xosc.meaning`), so
 positions compare directly. A node's start is its activation: in the preview the instant its
 predecessors finished; in the player the start of its first event for maneuvers, joins and
 ports, and for conditions (whose marker event starts only when the condition holds) the step
@@ -14,10 +14,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .. import catalog
+from ..model import catalog
 from ..simulate.run import Run
+from ..xosc.meaning import FLOW_DELAY_STEPS
 from .checker import RunReport, required
-from .meaning import FLOW_DELAY_STEPS
 from .record import PlayerRun
 
 #: What counts as agreeing (issue 25): node starts within this many seconds, positions within
@@ -57,8 +57,8 @@ class Comparison:
 
 def player_starts(report: RunReport, step: float) -> dict[str, float]:
     """Each node's activation in the player's run, by node name: a condition's is the step
-    after its predecessors finished (`players.meaning.FLOW_DELAY_STEPS`), or the instant,
-    after a node written into the trigger (`players.flows`); an inlined node's is derived by
+    after its predecessors finished (`xosc.meaning.FLOW_DELAY_STEPS`), or the instant,
+    after a node written into the trigger (`xosc.flows`); an inlined node's is derived by
     the checker."""
     finishes = {node.name: node.finish for node in report.nodes}
     inline = {node.name for node in report.nodes if node.inlined}

@@ -1,4 +1,4 @@
-"""Whether each node's goal held when the player finished it (`players.meaning`), from the trace.
+"""Whether each node's goal held when the player finished it (`xosc.meaning`), from the trace.
 
 A player samples every time step, so each test allows what one or two steps can change: the
 distance the actor moves in them, or the speed change of its rate.
@@ -14,8 +14,8 @@ from pyecore.ecore import EObject
 
 from ..maps import RoadMap
 from ..maps.positions import centre
-from ..params import concrete
-from . import meaning
+from ..model.params import concrete
+from ..xosc import meaning
 from .record import PlayerRun, Trace
 
 #: How far a speed may be off its goal at the finish (m/s): one step of a typical rate.

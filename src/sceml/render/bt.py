@@ -28,7 +28,13 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
-from ..graph import predecessors, reachable, successors, topological_order
+from ..model.graph import (
+    finishes_with_first,
+    predecessors,
+    reachable,
+    successors,
+    topological_order,
+)
 from . import style
 from .flow import Modules, RenderError, dom_id, inner_scope, look_of, new_digraph
 from .labels import Scope, actor_line, loaded_definition, scenario_title
@@ -92,11 +98,7 @@ class _Edge:
 
 
 def _policy(node: EObject) -> Policy:
-    if isinstance(node, scm.JoinOneFinished):
-        return "one"
-    if isinstance(node, scm.EndNode) and node.policy is not None and node.policy.name == "joinOne":
-        return "one"
-    return "all"
+    return "one" if finishes_with_first(node) else "all"
 
 
 def tree_of(graph: scm.Graph, modules: Modules = "collapsed", scope: Scope | None = None) -> Tree:

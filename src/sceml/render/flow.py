@@ -17,9 +17,10 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
-from .. import catalog
 from ..errors import SceMLError
-from ..io import uri_fragment
+from ..model import catalog
+from ..model.graph import finishes_with_first
+from ..model.locating import uri_fragment
 from . import style
 from .labels import (
     Scope,
@@ -164,7 +165,7 @@ class _FlowDrawer:
                 scenario_title(scenario), root_lines(node, scenario)
             )
         elif isinstance(node, scm.EndNode):
-            one = node.policy is not None and node.policy.name == "joinOne"
+            one = finishes_with_first(node)
             attributes["label"] = "End ?" if one else "End"
         attributes.setdefault("label", str(node.name or node.eClass.name))
         _mark(attributes, self.marks.get(node))

@@ -17,11 +17,11 @@ from pyecore.ecore import EAttribute, EEnum, EObject, EReference
 
 import scemlmodel as scm
 
-from .. import catalog, params
 from ..errors import SceMLError
-from ..graph import actors, root_node
+from ..model import catalog, params
+from ..model.graph import actors, root_node
 from ..modules.resolve import resolved_definition
-from ..players.meaning import CONTROLLER_DOMAINS
+from ..xosc.meaning import CONTROLLER_DOMAINS
 
 #: Features every action node has that labels show in other ways, or never.
 _NOT_PARAMETERS = {

@@ -18,14 +18,14 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
-from .. import catalog
 from ..errors import SceMLError
-from ..graph import actors, root_node, topological_order
-from ..io import allowed_roots_of
 from ..maps import PositionError, RoadMap, WorldPose, load_map
 from ..maps.positions import Located, centre, is_concrete, locate, nominal, spread
 from ..maps.reference import map_reference
 from ..maps.resolve import is_relative, start_poses
+from ..model import catalog
+from ..model.documents import allowed_roots_of
+from ..model.graph import actors, root_node, topological_order
 from ..modules import flatten
 from .flow import RenderError
 from .labels import scenario_title

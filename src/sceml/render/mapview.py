@@ -33,12 +33,9 @@ from matplotlib.text import Annotation
 
 import scemlmodel as scm
 
-from ..io import Document
-from ..maps import MapError
 from . import style
 from .flow import RenderError
-from .mapscene import ActorMark, CircleMark, MapScene, MapViewError, Place, TargetMark, build_scene
-from .report import Figure as ReportFigure
+from .mapscene import ActorMark, CircleMark, MapScene, Place, TargetMark, build_scene
 
 if TYPE_CHECKING:
     from matplotlib.typing import RcKeyType
@@ -532,31 +529,6 @@ def _titles(drawn: MapFigure) -> None:
             zorder=20,
         )
         _keep(drawn, note, "note")
-
-
-# --- the review report --------------------------------------------------------------------------
-
-REPORT_TITLE = "Map view"
-REPORT_ANCHOR = "map-view"
-
-
-def report_figure(document: Document) -> ReportFigure:
-    """The map view as a report figure; without a picture, a note saying why there is none."""
-    scenario = document.root
-    if not isinstance(scenario, scm.Scenario):
-        return ReportFigure(REPORT_TITLE, REPORT_ANCHOR, "", "module libraries have no map view")
-    try:
-        scene = build_scene(scenario, document.path)
-        svg = to_bytes(draw(scene), "svg")
-    except MapViewError as error:
-        return ReportFigure(REPORT_TITLE, REPORT_ANCHOR, "", f"No map view: {error.message}.")
-    except MapError as error:
-        where = Path(error.file).name if error.file else "the map"
-        where += f":{error.line}" if error.line else ""
-        note = f"No map view: {where}: {error.message}."
-        return ReportFigure(REPORT_TITLE, REPORT_ANCHOR, "", note)
-    note = "; ".join(scene.notes)
-    return ReportFigure(REPORT_TITLE, REPORT_ANCHOR, inline_svg(svg), note)
 
 
 def inline_svg(svg: bytes) -> str:

@@ -1,8 +1,8 @@
 """The preview player: a concrete scenario executed with SPEC §3 semantics by kinematic actors.
 
-    >>> from sceml import io
+    >>> from sceml.model.loading import load_scenario
     >>> from sceml.simulate import simulate
-    >>> run = simulate(io.load_scenario("examples/uis1-concrete.xmi").root, "examples/uis1-concrete.xmi")
+    >>> run = simulate(load_scenario("examples/uis1-concrete.xmi").root, "examples/uis1-concrete.xmi")
     >>> run.end_reason, run.node("InVehicleRadius_1").finished  # doctest: +SKIP
 
 What it models and what it does not: docs/simulate.md. It is a preview, not a vehicle-dynamics

@@ -11,7 +11,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Protocol
 
-from ..players.meaning import GapLimits, gap_acceleration
+from ..xosc.meaning import GapLimits, gap_acceleration
 from .paths import Path
 
 
@@ -66,7 +66,7 @@ class Ramp:
 @dataclass(frozen=True)
 class GapKeeping:
     """Drive towards a gap of `distance` m (centre to centre, along the actor's heading) to
-    the `target` actor, by the players' law (`players.meaning.gap_acceleration`)."""
+    the `target` actor, by the players' law (`xosc.meaning.gap_acceleration`)."""
 
     target: str
     distance: float

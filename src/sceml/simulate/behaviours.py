@@ -3,7 +3,7 @@
 One class per kind, registered by metaclass name. `start` is called when the node is activated;
 `done` after every step (and at once) until it returns True. A maneuver *claims* the parts of
 its actor it controls (`speed`, `path`); a later maneuver claiming the same part supersedes it.
-What each kind does and when it finishes is `players.meaning`, which the export also follows:
+What each kind does and when it finishes is `xosc.meaning`, which the export also follows:
 speed changes when the target speed is reached, routed and trajectory maneuvers on arrival within
 their tolerance, DriveDistance when the distance is driven from the node's start (after
 distance / speed seconds), Follow when the gap is first reached (it keeps following afterwards),
@@ -21,8 +21,8 @@ import scemlmodel as scm
 
 from ..export.entities import performance_of
 from ..maps import RoadMap
-from ..params import concrete
-from ..players import meaning
+from ..model.params import concrete
+from ..xosc import meaning
 from . import lanes
 from .actors import Actor, GapKeeping, Hold, Ramp, Shift
 from .paths import LaneSpot, Path, joined, straight
@@ -36,7 +36,7 @@ _BEYOND = 1.0
 
 class Behaviour:
     """A running maneuver; subclasses implement `start` and `done`. `claims` are the parts of
-    the actor it controls (`players.meaning.controls`)."""
+    the actor it controls (`xosc.meaning.controls`)."""
 
     def __init__(self, node: EObject, world: World) -> None:
         self.node = node
@@ -71,10 +71,6 @@ def behaviour_for(node: EObject, world: World) -> Behaviour | None:
     """The behaviour of a maneuver node; None for a kind the preview does not know."""
     cls = _KINDS.get(node.eClass.name)
     return cls(node, world) if cls is not None else None
-
-
-def known_kinds() -> tuple[str, ...]:
-    return tuple(_KINDS)
 
 
 # --- longitudinal ---------------------------------------------------------------------------
@@ -128,7 +124,7 @@ class DriveDistance(Behaviour):
 @kind("Follow", "Approach")
 class GapManeuver(Behaviour):
     """Close up to `distance` m behind the target; Follow keeps the gap afterwards, Approach
-    holds its speed once the gap is held (`players.meaning`)."""
+    holds its speed once the gap is held (`xosc.meaning`)."""
 
     def start(self, world: World) -> None:
         self.lead = world.actor(self.node.targetActor, self.name)
@@ -392,7 +388,7 @@ class Overtake(Behaviour):
         self.actor.settle_shift()
 
     def _ahead(self) -> bool:
-        """Near the point `gap` m ahead of the target (`players.meaning`), as the export says."""
+        """Near the point `gap` m ahead of the target (`xosc.meaning`), as the export says."""
         lead = self.lead
         x = lead.x + self.gap * math.cos(lead.heading)
         y = lead.y + self.gap * math.sin(lead.heading)
@@ -402,7 +398,7 @@ class Overtake(Behaviour):
 @kind("LaneOffset")
 class LaneOffset(Behaviour):
     """Move sideways within the lane to the offset (from the lane's centre, or from the target
-    actor), along half a cosine over the distance driven in `players.meaning.lane_offset_duration`."""
+    actor), along half a cosine over the distance driven in `xosc.meaning.lane_offset_duration`."""
 
     def start(self, world: World) -> None:
         node, actor = self.node, self.actor

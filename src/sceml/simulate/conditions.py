@@ -2,7 +2,7 @@
 
 A condition is evaluated only after its activation, at the activation instant and after every
 step, until it first holds. Distances are between actor reference points (centres), like the
-export's `freespace="false"`; the time to collision is the players' (`players.meaning`), over
+export's `freespace="false"`; the time to collision is the players' (`xosc.meaning`), over
 the distance its node measures (between the boxes by default).
 """
 
@@ -14,8 +14,8 @@ from collections.abc import Callable
 from pyecore.ecore import EObject
 
 from ..maps.resolve import is_relative
-from ..params import concrete
-from ..players import meaning
+from ..model.params import concrete
+from ..xosc import meaning
 from .actors import Actor
 from .geometry import free_distance_now
 from .world import World

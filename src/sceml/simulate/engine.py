@@ -3,9 +3,9 @@
 At t = 0 the root finishes and actors stand at their starts. A node that finishes makes each
 successor whose incoming flows are satisfied (one predecessor finished for an ordinary node,
 all for JoinAllFinished and a join-all end, one for JoinOneFinished and a join-one end) ready;
-a ready node is activated one time step later (`players.meaning.FLOW_DELAY_STEPS`), as players
+a ready node is activated one time step later (`xosc.meaning.FLOW_DELAY_STEPS`), as players
 evaluate a trigger in the step after the event it waits for completed, and is checked at once;
-a node after one the export writes into its trigger (`players.flows.inlined`) is activated in
+a node after one the export writes into its trigger (`xosc.flows.inlined`) is activated in
 the same instant, as the player starts it in the step the condition holds.
 Each step begins by activating the nodes due at its end instant (so a maneuver acts in the
 step its node starts, as a player's action does), then all actors move, each speed decided
@@ -23,9 +23,9 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
-from ..graph import predecessors, successors
-from ..players import meaning
-from ..players.flows import flow_steps, inlined
+from ..model.graph import finishes_with_first, predecessors, successors
+from ..xosc import meaning
+from ..xosc.flows import flow_steps, inlined
 from . import global_values
 from .behaviours import Behaviour, behaviour_for
 from .conditions import Test, condition_for
@@ -52,7 +52,7 @@ class NodeState:
     behaviour: Behaviour | None = None
     test: Test | None = None
     note: str = ""
-    #: When a trigger that holds in the instant started it (`players.flows.inlined`); its
+    #: When a trigger that holds in the instant started it (`xosc.flows.inlined`); its
     #: behaviour begins at the next step.
     since: float | None = None
 
@@ -76,7 +76,7 @@ class Scheduler:
         self.active: list[NodeState] = []
         #: Nodes whose predecessors have finished, with the instant they are activated at.
         self.ready: list[tuple[float, NodeState]] = []
-        #: Nodes whose outgoing flow costs no step (`players.flows.inlined`).
+        #: Nodes whose outgoing flow costs no step (`xosc.flows.inlined`).
         self.inline = inlined(nodes)
         self.owners: dict[tuple[str, str], NodeState] = {}
         self.ended = False
@@ -140,7 +140,7 @@ class Scheduler:
 
     def _activated_at(self, state: NodeState) -> float:
         """When a ready node is activated: each finished predecessor's finish plus what its
-        flow costs (`players.flows.flow_steps`); the last of them, or the first for a
+        flow costs (`xosc.flows.flow_steps`); the last of them, or the first for a
         join-one."""
         times = [
             round(p.finished + flow_steps(p.node, self.inline) * self.world.dt, 9)
@@ -216,9 +216,7 @@ class Scheduler:
 
 def _state(node: EObject) -> NodeState:
     actor = getattr(node, "referenceActor", None)
-    needs_all = not isinstance(node, scm.JoinOneFinished) and not (
-        isinstance(node, scm.EndNode) and getattr(node.policy, "name", "joinAll") == "joinOne"
-    )
+    needs_all = not finishes_with_first(node)
     return NodeState(
         node,
         str(node.name),

@@ -1,6 +1,6 @@
 """The global kinds in the preview: a store of the scenario's parameters and variables, set from
 the root's declarations, changed by SetParameter and SetVariable, read by ParameterCondition and
-VariableCondition (their meaning is `players.meaning.value_holds` and `value_after`)."""
+VariableCondition (their meaning is `xosc.meaning.value_holds` and `value_after`)."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
-from ..players import meaning
+from ..xosc import meaning
 from .conditions import Test, kind
 from .world import SimulationError, World
 

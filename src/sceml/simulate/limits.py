@@ -16,13 +16,14 @@ from pathlib import Path
 
 from pyecore.ecore import EObject
 
-from .. import catalog
-from ..graph import actors as scenario_actors
-from ..graph import root_node
-from ..io import model_path, unresolved_references
+from ..model import catalog
+from ..model.graph import actors as scenario_actors
+from ..model.graph import root_node
+from ..model.loading import unresolved_references
+from ..model.locating import model_path
+from ..model.params import concrete
+from ..model.traversal import all_contents
 from ..modules.flatten import Flattened
-from ..params import concrete
-from ..traversal import all_contents
 from .world import SimulationError
 
 #: The largest magnitude the preview accepts per SI unit: beyond any road user (540 km/h, 10 g),

@@ -9,14 +9,14 @@ import numpy as np
 
 import scemlmodel as scm
 
-from ..graph import actors as scenario_actors
-from ..graph import root_node
-from ..io import allowed_roots_of
 from ..maps import RoadMap, load_map
 from ..maps.reference import map_reference
 from ..maps.resolve import start_poses
+from ..model.documents import allowed_roots_of
+from ..model.graph import actors as scenario_actors
+from ..model.graph import root_node
+from ..model.params import concrete
 from ..modules.flatten import Flattened, expand
-from ..params import concrete
 from .engine import Scheduler, run_schedule
 from .global_values import initial_values
 from .limits import located_in, refuse_unresolved, refuse_unusable

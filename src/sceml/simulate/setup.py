@@ -10,7 +10,7 @@ import scemlmodel as scm
 
 from ..maps import PositionError, RoadMap, WorldPose
 from ..maps.resolve import is_relative, resolve, road_pose, road_to_lane
-from ..params import concrete
+from ..model.params import concrete
 from . import lanes
 from .actors import Actor
 from .paths import LaneSpot, heading_path

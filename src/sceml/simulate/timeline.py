@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from html import escape
 
-from .. import catalog
+from ..model import catalog
 from ..render import style
 from .run import NodeRecord, Run
 

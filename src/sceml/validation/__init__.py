@@ -1,7 +1,8 @@
 """Validation: constraint functions registered per metaclass, collected into diagnostics.
 
+    from sceml.model.loading import load
     from sceml.validation import validate
-    for diagnostic in validate(io.load("uis1-concrete.xmi").root):
+    for diagnostic in validate(load("uis1-concrete.xmi").root):
         print(diagnostic)
 
 Importing this package registers every rule of SPEC §6 (one module per area) in `REGISTRY`.

@@ -9,10 +9,10 @@ from pyecore.ecore import EObject, EProxy
 
 import scemlmodel as scm
 
-from .. import catalog
 from ..diagnostics import Severity
-from ..graph import nodes_of
 from ..maps.resolve import RELATIVE_KINDS, is_relative
+from ..model import catalog
+from ..model.graph import nodes_of
 from .context import Context
 from .registry import Finding, constraint
 

@@ -11,9 +11,9 @@ from pyecore.ecore import EObject, EProxy
 
 import scemlmodel as scm
 
-from .. import catalog
-from ..graph import root_node
-from ..io import Document
+from ..model import catalog
+from ..model.documents import Document
+from ..model.graph import root_node
 from ..modules.expansion import Expansion, expansion
 from .limits import Limits
 

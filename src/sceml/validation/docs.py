@@ -19,7 +19,7 @@ INTRO = """\
 the paper's rules 1-5, and what a scenario engineer would expect). Every diagnostic carries its
 rule code, severity, message, file, line and model path. Codes are stable: S structure, A actors,
 P parameters and levels, C simultaneity, L plausibility, M modules, E export readiness, R the
-map, Y what real players can honour (`sceml.players.meaning`, docs/openscenario-mapping.md).
+map, Y what real players can honour (`sceml.xosc.meaning`, docs/openscenario-mapping.md).
 
 This file is generated from the rule registry: `python -m sceml.validation.docs >
 docs/validation-rules.md`. A test fails when it is stale.

@@ -16,7 +16,7 @@ from pyecore.ecore import EObject, EReference
 
 import scemlmodel as scm
 
-from ..traversal import all_contents, single_references
+from ..model.traversal import all_contents, single_references
 
 __all__ = ["EVERYTHING", "Aspect", "Change", "Impact", "aspects_of", "refers_to"]
 

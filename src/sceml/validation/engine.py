@@ -8,10 +8,11 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
-from ..collector import collector_paused
 from ..diagnostics import Diagnostic, Severity
-from ..io import Document, model_path, uri_fragment
-from ..traversal import all_contents
+from ..model.collector import collector_paused
+from ..model.documents import Document
+from ..model.locating import model_path, uri_fragment
+from ..model.traversal import all_contents
 from .context import Context
 from .limits import Limits
 from .registry import REGISTRY, Registry, Rule

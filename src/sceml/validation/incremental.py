@@ -34,11 +34,11 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
-from ..collector import collector_paused
 from ..diagnostics import Diagnostic
-from ..graph import root_node
-from ..io import Document
 from ..maps.reference import map_reference
+from ..model.collector import collector_paused
+from ..model.documents import Document
+from ..model.graph import root_node
 from .context import Context
 from .edits import EVERYTHING, Aspect, Change, Impact, refers_to
 from .engine import Key, locate, objects, run_rule, through_modules, unique

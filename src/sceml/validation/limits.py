@@ -22,8 +22,9 @@ from pathlib import Path
 
 import scemlmodel as scm
 
-from .. import catalog
 from ..errors import LoadError, SceMLError
+from ..files.config import load_config
+from ..model import catalog
 
 #: The limit names a table may use, with what each bounds.
 LIMIT_KEYS = {
@@ -85,7 +86,6 @@ def load_limits(path: str | Path, base: Limits | None = None) -> Limits:
     """Read a YAML or TOML limits file and lay it over `base` (the built-in table by default)."""
     # Here rather than at the top: the reader imports PyYAML, which `sceml validate` without
     # --limits never needs (start-up, issue 31).
-    from ..config import load_config
 
     path = Path(path)
     try:

@@ -19,7 +19,6 @@ from pyecore.ecore import EObject
 import scemlmodel as scm
 
 from ..diagnostics import Severity
-from ..graph import Flows, OwnFlows, reachable, root_node
 from ..maps import (
     BICYCLE_LANE_TYPES,
     PEDESTRIAN_LANE_TYPES,
@@ -34,6 +33,7 @@ from ..maps.positions import Located, centre, locate, spread
 from ..maps.reference import MapReference, is_town_name, map_reference
 from ..maps.resolve import RELATIVE_KINDS, is_relative, road_to_lane, start_poses
 from ..maps.routes import routes_from
+from ..model.graph import Flows, OwnFlows, reachable, root_node
 from .context import Context, is_kind, performer
 from .registry import Finding, constraint
 

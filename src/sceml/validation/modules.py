@@ -10,8 +10,8 @@ from pyecore.ecore import EObject
 import scemlmodel as scm
 
 from ..diagnostics import Severity
-from ..graph import nodes_of
-from ..io import unresolved_references
+from ..model.graph import nodes_of
+from ..model.loading import unresolved_references
 from .actors import declared_participants, label
 from .context import Context, is_kind
 from .registry import Finding, constraint

@@ -9,7 +9,7 @@ from lxml import etree
 import scemlmodel as scm
 
 from ..diagnostics import Severity
-from ..safexml import hardened_parser
+from ..files.safexml import hardened_parser
 from .context import Context
 from .registry import Finding, constraint
 

@@ -9,10 +9,10 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
-from .. import catalog
 from ..diagnostics import Severity
-from ..graph import root_node
-from ..params import describe
+from ..model import catalog
+from ..model.graph import root_node
+from ..model.params import describe
 from .context import Context, is_kind
 from .registry import Finding, constraint
 
@@ -75,10 +75,16 @@ def _unit(value: EObject) -> str:
         return ""
 
 
+#: The values a concrete scenario may not hold (SCEML-P001); the editor offers the others.
+SPREAD_KINDS = ("Range", "Distribution")
+#: The values only a module definition may hold (SCEML-P008).
+MODULE_ONLY_KINDS = ("ParameterRef",)
+
+
 @constraint(
     "SCEML-P001",
     ERROR,
-    ("Range", "Distribution"),
+    SPREAD_KINDS,
     "a concrete scenario holds single values: no range or distribution",
     paper_rule="2",
     through_modules=True,
@@ -208,7 +214,7 @@ def values_physically_meaningful(value: EObject, context: Context) -> Iterator[F
 @constraint(
     "SCEML-P008",
     ERROR,
-    "ParameterRef",
+    MODULE_ONLY_KINDS,
     "a parameter reference sits inside a module definition and names one of its parameters",
 )
 def parameter_ref_in_its_module(ref: scm.ParameterRef, context: Context) -> Iterator[Finding]:

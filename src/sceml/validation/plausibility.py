@@ -14,9 +14,9 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
-from .. import catalog
 from ..diagnostics import Severity
-from ..params import describe
+from ..model import catalog
+from ..model.params import describe
 from .context import Context, performer
 from .parameters import parameter_path
 from .registry import Finding, constraint

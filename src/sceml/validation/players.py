@@ -1,6 +1,6 @@
 """What real players can honour: combinations whose meaning no OpenSCENARIO encoding keeps.
 
-The meaning of each maneuver is `sceml.players.meaning`; the export writes it so that players
+The meaning of each maneuver is `sceml.xosc.meaning`; the export writes it so that players
 (esmini 3.6) do it. Where no encoding does, these rules say so with a code, never a silent
 change of meaning (issue 25).
 """
@@ -14,13 +14,13 @@ from pyecore.ecore import EObject
 import scemlmodel as scm
 
 from ..diagnostics import Severity
-from ..graph import reachable
-from ..params import is_single_value
+from ..model.graph import reachable
+from ..model.params import is_single_value
 from .context import Context
 from .registry import Finding, constraint
 
 _ROUTED = ("TurnLeft", "TurnRight", "Cross", "FollowTrajectory")
-_SOURCE = "issue 25 (players.meaning)"
+_SOURCE = "issue 25 (xosc.meaning)"
 
 
 def _single(value: scm.ParameterValue | None) -> float | None:

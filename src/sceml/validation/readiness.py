@@ -18,6 +18,7 @@ from pyecore.ecore import EObject
 import scemlmodel as scm
 
 from ..diagnostics import Severity
+from ..xosc.support import default_version, unsupported_reason, unsupported_setting
 from .context import Context
 from .registry import Finding, constraint
 
@@ -108,9 +109,6 @@ def kinds_exportable(scenario: scm.Scenario, context: Context) -> Iterator[Findi
         return
     if context.level_of(scenario) != "concrete":
         return
-    # Imported late: the export package runs this validation before it exports.
-    from ..export.support import default_version, unsupported_reason
-
     profile = context.osc_profile or "generic"
     version = context.osc_version or default_version(profile)
     for kind, node in _used_kinds(scenario, context).items():
@@ -131,8 +129,6 @@ def kinds_exportable(scenario: scm.Scenario, context: Context) -> Iterator[Findi
 def settings_exportable(node: EObject, context: Context) -> Iterator[Finding]:
     if context.osc_version is None and context.osc_profile is None:
         return
-    from ..export.support import default_version, unsupported_setting
-
     version = context.osc_version or default_version(context.osc_profile or "generic")
     reason = unsupported_setting(node, version)
     if reason:

@@ -24,8 +24,8 @@ from pyecore.ecore import EObject
 
 import scemlmodel as scm
 
-from .. import catalog
 from ..diagnostics import Severity
+from ..model import catalog
 from .context import Context
 from .registry import Finding, constraint
 

@@ -8,7 +8,7 @@ from collections.abc import Iterator
 import scemlmodel as scm
 
 from ..diagnostics import Severity
-from ..graph import nodes_of, topological_order
+from ..model.graph import nodes_of, topological_order
 from .context import Context
 from .registry import Finding, constraint
 

@@ -31,8 +31,10 @@ export function ExportDialog({
   onCancel: () => void;
 }) {
   const versions = view.choices.oscVersions ?? [];
-  const [version, setVersion] = useState(versions[versions.length - 1] ?? "");
-  const [profile, setProfile] = useState("generic");
+  const profiles = view.choices.profiles ?? [];
+  // "": the server writes the profile's default version (the newest; 1.0 for carla).
+  const [version, setVersion] = useState("");
+  const [profile, setProfile] = useState(profiles[0] ?? "");
   const [path, setPath] = useState("");
   const [busy, setBusy] = useState(false);
   const [result, setResult] = useState<ExportResult | null>(null);
@@ -46,6 +48,7 @@ export function ExportDialog({
       <Field label="Version">
         {(id) => (
           <select id={id} value={version} onChange={(e) => setVersion(e.target.value)}>
+            <option value="">the profile's default</option>
             {versions.map((v) => (
               <option key={v} value={v}>
                 OpenSCENARIO {v}
@@ -57,8 +60,11 @@ export function ExportDialog({
       <Field label="Profile">
         {(id) => (
           <select id={id} value={profile} onChange={(e) => setProfile(e.target.value)}>
-            <option value="generic">generic</option>
-            <option value="carla">carla</option>
+            {profiles.map((p) => (
+              <option key={p} value={p}>
+                {p}
+              </option>
+            ))}
           </select>
         )}
       </Field>

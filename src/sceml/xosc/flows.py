@@ -1,0 +1,90 @@
+"""Which nodes the export writes into their successor's trigger, and what a flow costs.
+
+A player sees an event's completion in the step after it completes, so a node that is its own
+(marker) event costs its successors one step (`meaning.FLOW_DELAY_STEPS`). The export writes
+some nodes without an event of their own: their condition goes into the StartTrigger (or the
+StopTrigger) of their only successor, ANDed with what activates them, so that the successor
+starts in the step the condition holds. A flow *out of* such an *inlined* node costs no step.
+The export, the preview, the run checker and the comparison all ask this module which nodes
+are inlined, so that they keep step with each other.
+
+Inlining must not change what the graph means (SPEC §3): a condition finishes at the first
+instant after its activation at which it holds, and stays finished. Written into a trigger it
+is evaluated again at every step, so it may only stand where "holds now" and "has held" agree:
+
+- joins and ports: what they wait for stays true once true (completions, simulation time,
+  delays of those), so they go into the trigger of each successor;
+- TimeElapsed: its activation delayed, true from then on, likewise;
+- any other condition (SpeedCondition, InLocationRadius, an opaque Condition, ...): only into
+  successors that have no other predecessor and use their activation once, as the StartTrigger
+  of one event (`_USES_ACTIVATION_ONCE`); into each of them when there are several (an
+  imported event with several actions): each starts at the first instant it holds. A maneuver with a finish marker (`__arrived`,
+  `__gap_reached`, ...) ANDs its activation with its goal, another condition ANDs it with its
+  own test, a join combines it with other branches: there "held once" and "holds now" differ,
+  so the condition keeps its marker event.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+
+import scemlmodel as scm
+
+from ..model import graph
+from .meaning import FLOW_DELAY_STEPS
+
+#: Kinds whose export uses the activation exactly once, unchanged, as one event's StartTrigger.
+_USES_ACTIVATION_ONCE = ("Accelerate", "Decelerate", "Stop", "LaneChange", "Overtake")
+#: Kinds that only pass activation on (a marker with the activation as its trigger).
+_PASSING = (scm.JoinAllFinished, scm.JoinOneFinished, scm.InPort, scm.OutPort)
+
+
+def is_condition_element(node: scm.GraphElement) -> bool:
+    """Whether an opaque node keeps a Condition (rather than an Action)."""
+    return isinstance(node, scm.OpaqueAction) and str(node.xml or "").lstrip().startswith(
+        "<Condition"
+    )
+
+
+def _uses_activation_once(node: scm.GraphElement) -> bool:
+    if isinstance(node, scm.OpaqueAction):
+        return not is_condition_element(node)
+    return node.eClass.name in _USES_ACTIVATION_ONCE
+
+
+def inlined(nodes: Iterable[scm.GraphElement]) -> set[scm.GraphElement]:
+    """Of a (flattened) graph's nodes, those the export writes into their successor's trigger
+    instead of a marker event."""
+    found: set[scm.GraphElement] = set()
+    for node in nodes:
+        after = graph.successors(node)
+        if after and (
+            _passes_latched(node) or all(_holds_now_for(node, successor) for successor in after)
+        ):
+            found.add(node)
+    return found
+
+
+def _passes_latched(node: scm.GraphElement) -> bool:
+    """Joins, ports and waits: what they write stays true once true."""
+    return isinstance(node, (*_PASSING, scm.TimeElapsed))
+
+
+def _holds_now_for(node: scm.GraphElement, successor: scm.GraphElement) -> bool:
+    """A condition whose successor waits for it alone and starts one event on it."""
+    return (
+        (isinstance(node, scm.Condition) or is_condition_element(node))
+        and len(graph.predecessors(successor)) == 1
+        and _uses_activation_once(successor)
+    )
+
+
+def is_passing(node: scm.GraphElement) -> bool:
+    """Joins and ports: they finish as soon as they are activated."""
+    return isinstance(node, _PASSING)
+
+
+def flow_steps(source: scm.GraphElement, inline: set[scm.GraphElement]) -> int:
+    """How many time steps a flow out of `source` costs: none out of an inlined node (its
+    successor's trigger holds its condition), else `meaning.FLOW_DELAY_STEPS`."""
+    return 0 if source in inline else FLOW_DELAY_STEPS

@@ -1,0 +1,310 @@
+"""What each maneuver means to every player: when it starts, what it does, when it finishes.
+
+SPEC §3 says a maneuver finishes when its goal is reached; this module says exactly how, once,
+for the OpenSCENARIO export (which writes it so that a player such as esmini does it), the
+preview (`sceml simulate`, which does it itself), the run checker (`sceml check-run`, which
+checks a player did it) and the validation rules that refuse what no player can do. The
+numbers of a player's own behaviour that the export relies on (esmini 3.6) are named here so
+that the preview copies them instead of guessing.
+
+Positions are the actor's reference point, which the export puts at the centre of its box
+(BoundingBox Center x = 0), so a start position, a destination and a radius mean the same
+point in the file, in the preview and in a player's log. Where a position is (a road
+coordinate, a position relative to an actor where that actor is when it is used) is defined
+once in `sceml.maps.resolve`, which every stage reads.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from ..model import catalog
+
+# --- when a node starts --------------------------------------------------------------------------
+
+#: A node starts this many time steps after its predecessors finished. Players evaluate a
+#: trigger in the step after the event it waits for completed (esmini 3.6: an event's
+#: StartTrigger sees the completeState of the previous step), so a flow from a node that is an
+#: event of its own costs one step. A flow out of a node the export writes into its successor's
+#: trigger (a condition, wait or join: `xosc.flows.inlined`) costs none: the successor starts
+#: in the step the condition holds (`xosc.flows.flow_steps`). The preview does the same, so
+#: that it keeps step with a player: root -> SpeedCondition -> Accelerate starts the Accelerate
+#: one step after the start, in the step the speed is reached, as the original file would.
+FLOW_DELAY_STEPS = 1
+
+# --- who controls what --------------------------------------------------------------------------
+
+#: The parts of its actor a maneuver controls, by its metamodel category: `speed` (the
+#: longitudinal domain of OpenSCENARIO), `path` (lateral), both (composite). A turn is lateral:
+#: it is routed, not driven, setting where the actor goes at junctions and leaving its speed to
+#: whatever maneuver controls it (exported as AssignRouteAction, which players run in no
+#: control domain, so a running Accelerate or Follow of the same actor goes on).
+_CONTROLS = {"longitudinal": ("speed",), "lateral": ("path",), "composite": ("speed", "path")}
+
+
+def controls(kind: str) -> tuple[str, ...]:
+    """The parts of its actor a maneuver of `kind` controls (none for conditions and controller
+    changes)."""
+    return _CONTROLS.get(catalog.category(kind) or "", ())
+
+
+# --- controllers ----------------------------------------------------------------------------------
+
+#: Categories whose nodes finish in the step they start. A controller change (ActivateController,
+#: AssignController, OverrideController) is an instant action to players (esmini 3.6 completes
+#: the ControllerAction and ActivateControllerAction in the step it starts them), so the export
+#: takes its event's completion as the node's finish; it controls no part of the actor itself:
+#: what the controller then does is the player's, and SceML's preview does not run it.
+INSTANT_CATEGORIES = ("controller",)
+#: The domains an activation switches, as OpenSCENARIO's ActivateControllerAction attributes
+#: (lighting and animation from 1.2) and SceML's ControllerActivation features, in that order.
+CONTROLLER_DOMAINS = ("lateral", "longitudinal", "lighting", "animation")
+#: OpenSCENARIO's OverrideControllerValueAction element for each ControllerOverrideKind, in the
+#: schema's order.
+OVERRIDE_ELEMENTS = {
+    "throttle": "Throttle",
+    "brake": "Brake",
+    "clutch": "Clutch",
+    "parkingBrake": "ParkingBrake",
+    "steeringWheel": "SteeringWheel",
+    "gear": "Gear",
+}
+
+
+def completes_at_once(kind: str) -> bool:
+    """Whether a node of `kind` finishes as soon as it starts (a controller change)."""
+    return catalog.category(kind) in INSTANT_CATEGORIES
+
+
+# --- speed ----------------------------------------------------------------------------------------
+
+#: A speed counts as reached within this much (m/s): Accelerate, Decelerate, Stop.
+SPEED_TOLERANCE = 1e-6
+
+
+def drive_distance_duration(distance: float, speed: float) -> float:
+    """How long a DriveDistance lasts: it steps the speed to `speed` and holds it, so `distance`
+    is driven from where the node starts after distance / speed seconds. (OpenSCENARIO 1.x has
+    no condition that measures a distance from an event's start: TraveledDistanceCondition
+    counts from the start of the simulation.) A speed of 0 never gets there: infinity."""
+    return math.inf if speed <= 0 else distance / speed
+
+
+# --- gap keeping (Follow, Approach) -------------------------------------------------------------
+
+#: Gap keeping accelerates and brakes at most this much (m/s2), whatever the actor could do.
+GAP_ACCELERATION = 3.0
+GAP_DECELERATION = 6.0
+#: esmini's LongitudinalDistanceAction: a damped spring whose constant is this factor times the
+#: limit in force (the acceleration limit when too close, the deceleration limit when too far),
+#: critically damped (damping 2 * sqrt(constant)).
+GAP_SPRING = 0.4
+#: A non-continuous distance action (Approach) stops driving when the gap is within this much
+#: of its distance (esmini's LONGITUDINAL_DISTANCE_THRESHOLD); the actor then holds its speed.
+APPROACH_HOLD = 0.1
+#: Approach has finished once the gap is within this much of its distance. Wider than the
+#: player's own stop: a spring closes the last decimetres slowly, so a finish at 0.1 m would
+#: hang on the last centimetres of rounding between two players.
+APPROACH_REACHED = 0.5
+
+
+@dataclass(frozen=True)
+class GapLimits:
+    """The limits gap keeping drives within (m/s2, m/s2, m/s)."""
+
+    acceleration: float
+    deceleration: float
+    max_speed: float
+
+
+def gap_limits(max_speed: float, max_acceleration: float, max_deceleration: float) -> GapLimits:
+    """The gap-keeping limits of an actor with these performance limits."""
+    return GapLimits(
+        min(GAP_ACCELERATION, max_acceleration),
+        min(GAP_DECELERATION, max_deceleration),
+        max_speed,
+    )
+
+
+def gap_acceleration(
+    gap: float, distance: float, relative_speed: float, limits: GapLimits
+) -> float:
+    """The acceleration gap keeping asks for: `gap` is centre to centre along the road,
+    `relative_speed` the actor's speed minus the target's. esmini's spring: the tension is the
+    acceleration limit when the actor is too close (gap below distance), else the deceleration
+    limit, as its code has it."""
+    error = gap - distance
+    tension = (limits.acceleration if error < 0 else limits.deceleration) * GAP_SPRING
+    wanted = error * tension - relative_speed * 2.0 * math.sqrt(tension)
+    return min(max(wanted, -limits.deceleration), limits.acceleration)
+
+
+def follow_slack(distance: float) -> float:
+    """Follow has reached its gap once the gap is below distance + this slack: a controller
+    closes in from above and then holds the gap, so "closer than the distance" may never hold."""
+    return max(1.0, distance / 10.0)
+
+
+def follow_reached(gap: float, distance: float) -> bool:
+    """Whether Follow has finished (it keeps the gap afterwards)."""
+    return gap < distance + follow_slack(distance)
+
+
+def approach_reached(gap: float, distance: float) -> bool:
+    """Whether Approach has finished (it drives on until within APPROACH_HOLD, then holds its
+    speed, unless a later maneuver takes the speed first)."""
+    return abs(gap - distance) < APPROACH_REACHED
+
+
+# --- conditions ---------------------------------------------------------------------------------
+
+#: TimeToCollision is measured between the bounding boxes (OpenSCENARIO freespace="true") unless
+#: the node says otherwise: the default of its `freespace`, so files saved before that feature
+#: keep their meaning.
+TTC_FREESPACE = True
+
+
+@dataclass(frozen=True)
+class Separation:
+    """Where a target is from an actor, in the actor's frame (x ahead, y to the left), and the
+    sizes of both boxes: what a measuring condition's distance is taken from."""
+
+    ahead: float
+    left: float
+    length: float
+    width: float
+    target_length: float
+    target_width: float
+    #: The least distance between the two boxes' outlines (0 while they overlap).
+    box_gap: float
+
+
+def measured_distance(at: Separation, freespace: bool, kind: str) -> float:
+    """The distance a condition measures (esmini 3.6, `Object::Distance` in the entity
+    coordinate system): euclidean is the straight line, longitudinal and lateral its parts
+    along and across the actor's heading; with freespace between the boxes' outlines (the
+    boxes taken as aligned for the parts), else between the reference points."""
+    if kind == "longitudinal":
+        reach = (at.length + at.target_length) / 2 if freespace else 0.0
+        return max(0.0, abs(at.ahead) - reach)
+    if kind == "lateral":
+        reach = (at.width + at.target_width) / 2 if freespace else 0.0
+        return max(0.0, abs(at.left) - reach)
+    return at.box_gap if freespace else math.hypot(at.ahead, at.left)
+
+
+#: TraveledDistance counts the actor's odometer from the start of the simulation, every metre
+#: moved whichever way (esmini 3.6: `odometer_`, compared with `>=`), not from the node's start.
+TRAVELED_FROM = "simulation start"
+
+
+def traveled_reached(odometer: float, distance: float) -> bool:
+    """Whether a TraveledDistance holds."""
+    return odometer >= distance
+
+
+def time_headway(at: Separation, freespace: bool, kind: str, speed: float) -> float | None:
+    """The time headway a player measures (esmini 3.6, `TrigByTimeHeadway`): the measured
+    distance to the target over the actor's own speed. None when undefined: the target
+    behind, or the actor standing or reversing."""
+    if at.ahead < 0 or speed < 1e-10:
+        return None
+    return measured_distance(at, freespace, kind) / speed
+
+
+def time_to_collision(
+    free_distance: float,
+    velocity: tuple[float, float],
+    speed: float,
+    target_velocity: tuple[float, float],
+    target_speed: float,
+) -> float | None:
+    """The time to collision a player measures (esmini 3.6, `Object::TimeToCollision`): the
+    distance between the boxes over the closing speed along the target's direction of travel
+    (the actor's own speed when the target stands). None when undefined: touching, or not
+    closing in."""
+    tx, ty = target_velocity
+    target_moving = math.hypot(tx, ty)
+    if target_moving < 1e-10:
+        closing = speed
+    else:
+        along = (velocity[0] * tx + velocity[1] * ty) / target_moving
+        closing = _sign(speed) * _sign(along) * (along - abs(target_speed))
+    if abs(free_distance) < 1e-10 or abs(closing) < 1e-10:
+        return None
+    ttc = free_distance / closing
+    return ttc if ttc >= 0 else None
+
+
+def _sign(value: float) -> float:
+    return -1.0 if value < 0 else 1.0
+
+
+# --- arrival and lane changes ---------------------------------------------------------------------
+
+#: Routed and trajectory maneuvers (TurnLeft, TurnRight, Cross, FollowTrajectory) finish when the
+#: actor's reference point is within the maneuver's `tolerance` of its destination or last
+#: waypoint; Overtake changes back once `overtake_back_tolerance(gap)` of the point `gap` metres
+#: ahead of the target.
+
+
+def overtake_back_tolerance(gap: float) -> float:
+    """How near the point `gap` m ahead of the target counts as there (a fast pass skips it)."""
+    return max(1.0, gap / 2.0)
+
+
+# --- parameters and variables (the global kinds) -------------------------------------------------
+
+#: A SetParameter or SetVariable finishes in the step it starts: players complete a
+#: ParameterAction or VariableAction at once (esmini 3.6 logs the set and the action's
+#: completeState in the same step). esmini 3.6 does not run a ParameterAction's ModifyAction
+#: ("not supported yet"); a VariableAction's it does.
+GLOBAL_ACTION_STEPS = 0
+
+
+def _as_number(text: str) -> float | None:
+    try:
+        return float(text)
+    except ValueError:
+        return None
+
+
+def value_holds(current: str, rule: str, value: str) -> bool:
+    """Whether a ParameterCondition or VariableCondition holds: numbers compare as numbers
+    (esmini compares a double parameter numerically), other values as text, equalTo only."""
+    held, wanted = _as_number(current), _as_number(value)
+    if held is None or wanted is None:
+        return rule == "equalTo" and current.strip().lower() == value.strip().lower()
+    if rule == "lessThan":
+        return held < wanted
+    if rule == "greaterThan":
+        return held > wanted
+    return abs(held - wanted) < 1e-9
+
+
+def value_after(current: str, modify: str, value: str) -> str:
+    """The parameter's or variable's text after a SetParameter or SetVariable; ValueError when
+    adding to or multiplying something that is no number."""
+    if modify == "set":
+        return value
+    held, by = _as_number(current), _as_number(value)
+    if held is None or by is None:
+        raise ValueError(f"cannot {modify} {value!r} to {current!r}: both must be numbers")
+    result = held + by if modify == "add" else held * by
+    return repr(result) if result != int(result) else str(int(result))
+
+
+# --- lane offset ---------------------------------------------------------------------------------
+
+
+def lane_offset_duration(change: float, max_lateral_acc: float, shape: str) -> float:
+    """How long a LaneOffset takes to move `change` m sideways, its lateral acceleration peaking
+    at `max_lateral_acc` (esmini 3.6's TransitionDynamics): a half sine over π√(|Δ|/2a); cubic,
+    and linear read as cubic, √(6|Δ|/a); a step at once. It finishes then, continuous or not
+    (esmini ends the action when the offset is reached)."""
+    if shape == "step" or change == 0:
+        return 0.0
+    if shape == "sinusoidal":
+        return math.pi * math.sqrt(abs(change) / (2 * max_lateral_acc))
+    return math.sqrt(6 * abs(change) / max_lateral_acc)
