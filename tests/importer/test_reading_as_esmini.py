@@ -18,6 +18,7 @@ from click.testing import CliRunner
 import scemlmodel as scm
 from sceml import io
 from sceml.cli import cli
+from sceml.export import build_xosc
 from sceml.importer import XoscImportError, import_file
 from sceml.maps import load_map
 from sceml.maps.resolve import start_poses
@@ -417,9 +418,21 @@ def test_a_stop_trigger_ends_the_run_without_waiting_for_branches_it_does_not_na
     imported = import_file(path)
     end = next(n for n in imported.scenario.nodes if isinstance(n, scm.EndNode))
     assert end.policy is scm.JoinPolicy.joinOne
-    inputs = {f.source.eClass.name for f in end.incoming}
-    # Three seconds after Go, or once the branch the StopTrigger does not name is done.
-    assert inputs == {"TimeElapsed", "Stop"}
+    inputs = {f.source.eClass.name: f.source for f in end.incoming}
+    # Three seconds after Go; the branch the StopTrigger does not name reaches the end only
+    # together with those three seconds, so it can neither end the run sooner nor later.
+    assert set(inputs) == {"TimeElapsed", "JoinAllFinished"}
+    assert inputs["TimeElapsed"].duration.value == 3.0
+    rest = {f.source.eClass.name: f.source for f in inputs["JoinAllFinished"].incoming}
+    assert set(rest) == {"Stop", "TimeElapsed"}
+    assert rest["TimeElapsed"] is inputs["TimeElapsed"]
+    # Written back, the StopTrigger is Go's end and 3 s, and the time limit: Never is not in it.
+    stop = build_xosc(imported.scenario, version="1.1", source_path=path).tree.find(
+        "Storyboard/StopTrigger"
+    )
+    refs = [c.get("storyboardElementRef") for c in stop.iter("StoryboardElementStateCondition")]
+    assert refs == ["Go"]
+    assert [c.get("delay") for c in stop.iter("Condition")][0] == "3.0"
 
 
 def test_a_time_only_stop_trigger_makes_the_run_last_that_long(tmp_path: Path) -> None:
@@ -508,7 +521,7 @@ def test_a_lane_offset_reaching_into_the_next_lane_is_that_lane(tmp_path: Path) 
     assert lane(start) == ("1", -1, 70.0, -1.0)
 
 
-def test_with_a_time_limit_too_the_other_branches_end_the_run_only_after_it(
+def test_with_a_time_limit_too_it_is_the_maximum_duration_and_the_stop_alone_ends_the_run(
     tmp_path: Path,
 ) -> None:
     path = scenario(
@@ -529,10 +542,11 @@ def test_with_a_time_limit_too_the_other_branches_end_the_run_only_after_it(
         "</ByValueCondition></Condition></ConditionGroup>",
     )
     imported = import_file(path)
+    root = next(n for n in imported.scenario.nodes if isinstance(n, scm.RootNode))
+    assert root.maxDuration.value == 300.0
     rest = next(n for n in imported.scenario.nodes if n.name == "branches_done")
-    waits = {f.source.eClass.name: f.source for f in rest.incoming}
-    assert set(waits) == {"Stop", "TimeElapsed"}
-    assert waits["TimeElapsed"].duration.value == 300.0
+    # Later (the branch not named) joined with Go (what the StopTrigger waits for).
+    assert sorted(f.source.name for f in rest.incoming) == ["Go", "Later"]
 
 
 def test_the_conditions_of_one_group_are_a_group_not_a_chain(tmp_path: Path) -> None:
