@@ -573,3 +573,79 @@ def test_the_conditions_of_one_group_are_a_group_not_a_chain(tmp_path: Path) -> 
     assert all([f.source for f in c.incoming] == [go] for c in checks)
     joins = {f.target.name for c in checks for f in c.outgoing}
     assert len(joins) == 1
+
+
+# --- same run: opaque conditions and relative speeds ---------------------------------------
+
+STAND_STILL = (
+    '<ConditionGroup><Condition name="Still" delay="4" conditionEdge="rising"><ByEntityCondition>'
+    '<TriggeringEntities triggeringEntitiesRule="any"><EntityRef entityRef="Ego"/>'
+    '</TriggeringEntities><EntityCondition><StandStillCondition duration="1"/>'
+    "</EntityCondition></ByEntityCondition></Condition></ConditionGroup>"
+)
+
+
+def test_an_opaque_conditions_delay_is_waited_for_once(tmp_path: Path) -> None:
+    imported = import_file(scenario(tmp_path, stop=STAND_STILL))
+    kept = next(n for n in imported.scenario.nodes if isinstance(n, scm.OpaqueAction))
+    wait = next(f.target for f in kept.outgoing)
+    # The 4 s are the TimeElapsed after the node; the kept XML no longer waits for them too.
+    assert isinstance(wait, scm.TimeElapsed)
+    assert wait.duration.value == 4.0
+    assert 'delay="0"' in kept.xml
+    assert 'conditionEdge="rising"' in kept.xml
+    stop = build_xosc(imported.scenario, version="1.1", source_path=tmp_path / "s.xosc").tree
+    kept_xml = [c for c in stop.iter("Condition") if c.find(".//StandStillCondition") is not None]
+    waits = [
+        c.get("delay")
+        for c in stop.iterfind("Storyboard/StopTrigger//Condition")
+        if c.find(".//StoryboardElementStateCondition") is not None
+    ]
+    # Written back: the kept condition without its delay, and 4 s on what follows it, once.
+    assert [c.get("delay") for c in kept_xml] == ["0"]
+    assert waits == ["4.0"]
+
+
+def test_a_story_relative_target_speed_gives_the_speed_of_a_later_lane_change(
+    tmp_path: Path,
+) -> None:
+    relative = (
+        '<Event name="Follow" priority="overwrite"><Action name="FollowAction"><PrivateAction>'
+        '<LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="step" value="0" '
+        'dynamicsDimension="time"/><SpeedActionTarget><RelativeTargetSpeed entityRef="Lead" '
+        'value="1.5" speedTargetValueType="factor" continuous="true"/></SpeedActionTarget>'
+        "</SpeedAction></LongitudinalAction></PrivateAction></Action><StartTrigger>"
+        '<ConditionGroup><Condition name="FollowWhen" delay="0" conditionEdge="none">'
+        f"<ByValueCondition>{AT_START}</ByValueCondition></Condition></ConditionGroup>"
+        "</StartTrigger></Event>"
+    )
+    change = (
+        '<Event name="Change" priority="overwrite"><Action name="ChangeAction"><PrivateAction>'
+        '<LateralAction><LaneChangeAction><LaneChangeActionDynamics dynamicsShape="sinusoidal" '
+        'value="3" dynamicsDimension="time"/><LaneChangeTarget><RelativeTargetLane '
+        'entityRef="Ego" value="1"/></LaneChangeTarget></LaneChangeAction></LateralAction>'
+        '</PrivateAction></Action><StartTrigger><ConditionGroup><Condition name="ChangeWhen" '
+        'delay="0" conditionEdge="none"><ByValueCondition><SimulationTimeCondition value="2" '
+        'rule="greaterThan"/></ByValueCondition></Condition></ConditionGroup></StartTrigger>'
+        "</Event>"
+    )
+    lead_speed = (
+        '<Private entityRef="Lead"><PrivateAction><TeleportAction><Position>'
+        '<LanePosition roadId="1" laneId="-1" s="80" offset="0"/></Position></TeleportAction>'
+        "</PrivateAction><PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics "
+        'dynamicsShape="step" value="0" dynamicsDimension="time"/><SpeedActionTarget>'
+        '<AbsoluteTargetSpeed value="20"/></SpeedActionTarget></SpeedAction>'
+        "</LongitudinalAction></PrivateAction></Private>"
+    )
+    path = scenario(
+        tmp_path,
+        entities=f'<ScenarioObject name="Ego">{CAR}</ScenarioObject>'
+        f'<ScenarioObject name="Lead">{CAR}</ScenarioObject>',
+        init=LANE_START.format(name="Ego", position=EGO_START) + lead_speed,
+        maneuvers=f'<Maneuver name="M">{relative}{change}</Maneuver>',
+    )
+    imported = import_file(path)
+    lane_change = next(n for n in imported.scenario.nodes if isinstance(n, scm.LaneChange))
+    # Lead drives 20 m/s, Ego 1.5 times that: 3 s of lane change at 30 m/s are 90 m.
+    assert lane_change.distance.value == 90.0
+    assert guessed(imported, "relative target speed taken as 30 m/s")

@@ -116,9 +116,7 @@ def _speed(
     return _add(build, request, kind, targetSpeed=value, rate=rate)
 
 
-def _relative_speed(
-    build: Build, request: Request, speed: etree._Element, motion: Motion
-) -> None:
+def _relative_speed(build: Build, request: Request, speed: etree._Element, motion: Motion) -> None:
     """The speed a relative target speed reaches, from the other actor's speed known so far,
     so that later actions given in time (a lane change's duration) get their length."""
     target = speed.find("SpeedActionTarget/RelativeTargetSpeed")
