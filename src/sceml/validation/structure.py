@@ -213,3 +213,25 @@ def node_names_unique(graph: scm.Graph, context: Context) -> Iterator[Finding]:
         elif counts[node.name] > 1 and node.name not in reported:
             reported.add(node.name)
             yield node, f"{counts[node.name]} nodes are named {node.name!r}"
+
+
+@constraint(
+    "SCEML-S014",
+    ERROR,
+    "ActionNode",
+    "a node runs at least once, and only a maneuver or an opaque action runs more than once",
+    source="engineer",
+)
+def runs_are_possible(node: scm.ActionNode, context: Context) -> Iterator[Finding]:
+    runs = node.maxRuns
+    if runs < 1:
+        yield node, f"{node.name!r} may run {runs} times: a node runs at least once (maxRuns 1)"
+    elif runs > 1 and isinstance(node, scm.Condition):
+        # A condition finishes once it holds; players have no condition that holds again.
+        yield (
+            node,
+            (
+                f"condition {node.name!r} may run {runs} times: a condition finishes once it "
+                "holds; repeat the maneuver after it instead"
+            ),
+        )
