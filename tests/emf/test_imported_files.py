@@ -112,3 +112,15 @@ def test_emf_keeps_an_imported_lane_change_target(emf: Harness, tmp_path: Path) 
     result = emf.run("roundtrip", ECORE, source, out, Path("lanes.xmi"))
     assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
     assert differences(io.load(source / "lanes.xmi").root, io.load(out / "lanes.xmi").root) == []
+
+
+def test_emf_keeps_how_many_times_an_imported_node_runs(emf: Harness, tmp_path: Path) -> None:
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    import_to_file(FILES / "repeats.xosc", source / "repeats.xmi")
+    assert 'maxRuns="3"' in (source / "repeats.xmi").read_text()
+    result = emf.run("roundtrip", ECORE, source, out, Path("repeats.xmi"))
+    assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+    assert 'maxRuns="3"' in (out / "repeats.xmi").read_text()
+    assert differences(io.load(source / "repeats.xmi").root, io.load(out / "repeats.xmi").root) == []
