@@ -123,4 +123,6 @@ def test_emf_keeps_how_many_times_an_imported_node_runs(emf: Harness, tmp_path: 
     result = emf.run("roundtrip", ECORE, source, out, Path("repeats.xmi"))
     assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
     assert 'maxRuns="3"' in (out / "repeats.xmi").read_text()
-    assert differences(io.load(source / "repeats.xmi").root, io.load(out / "repeats.xmi").root) == []
+    assert (
+        differences(io.load(source / "repeats.xmi").root, io.load(out / "repeats.xmi").root) == []
+    )
