@@ -1,7 +1,8 @@
 """A node with maxRuns runs again each time its activation holds anew (issue 24, repeats).
 
 Worked out by hand as in `test_hand_checked.py`: a flow costs one step of 0.05 s, a flow out of
-a wait none.
+a wait none. The repeated node is a KeepVelocity, whose run lasts its duration whatever the
+speed; the export cannot repeat one (SCEML-S014), the preview runs what the language means.
 """
 
 from __future__ import annotations

@@ -270,6 +270,8 @@ def impossible_runs(out: Path) -> None:
         b.add("TimeElapsed", ego, name="Again", duration=1.0, maxRuns=2),
         b.add("Accelerate", ego, name="Never", targetSpeed=10.0, rate=1.0, maxRuns=0),
         b.add("Accelerate", ego, name="Thrice", targetSpeed=12.0, rate=1.0, maxRuns=3),
+        # Written as its event and the event of its finish: players cannot repeat both.
+        b.add("KeepVelocity", ego, name="HoldTwice", duration=2.0, maxRuns=2),
         b.end,
     )
     save(b.scenario, out, "s014-runs.xmi")

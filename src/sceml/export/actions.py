@@ -26,14 +26,19 @@ Plan = tuple[list[Event], Finish]
 Planner = Callable[[Context, scm.GraphElement, list[Group]], Plan]
 
 PLANNERS: dict[str, Planner] = {}
+#: Kinds written as one event: only they can run more than once (maximumExecutionCount is an
+#: event's; a node written as an event and its finish marker cannot repeat them together).
+ONE_EVENT: set[str] = set()
 
 
-def planner(*kinds: str) -> Callable[[Planner], Planner]:
-    """Register a planner for node kinds."""
+def planner(*kinds: str, one_event: bool = False) -> Callable[[Planner], Planner]:
+    """Register a planner for node kinds (`one_event`: it writes each node as one event)."""
 
     def register(function: Planner) -> Planner:
         for kind in kinds:
             PLANNERS[kind] = function
+            if one_event:
+                ONE_EVENT.add(kind)
         return function
 
     return register
@@ -82,7 +87,7 @@ def plan_join(ctx: Context, node: scm.GraphElement, groups: list[Group]) -> Plan
     return marker_plan(ctx, node, groups, ctx.ego)
 
 
-@planner("Accelerate", "Decelerate", "Stop")
+@planner("Accelerate", "Decelerate", "Stop", one_event=True)
 def plan_speed(ctx: Context, node: scm.ActionNode, groups: list[Group]) -> Plan:
     """A SpeedAction to the target speed at the given rate; it completes when the speed is reached."""
     target = "0.0" if isinstance(node, scm.Stop) else ctx.values.text(node, "targetSpeed")
@@ -198,7 +203,7 @@ def plan_distance_keeping(ctx: Context, node: scm.ActionNode, groups: list[Group
     return [event, done], done.name
 
 
-@planner("LaneChange")
+@planner("LaneChange", one_event=True)
 def plan_lane_change(ctx: Context, node: scm.LaneChange, groups: list[Group]) -> Plan:
     """LaneChangeAction `lanes` lanes to the left (+) or right (-) of the actor's own lane or of
     the target actor's, or into the absolute `targetLane`, shaped as the node says."""

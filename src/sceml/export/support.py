@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from .actions import PLANNERS
+from .actions import ONE_EVENT, PLANNERS
 from .profiles import CARLA_VERSION, PROFILES
 from .versions import VERSIONS
 
@@ -10,6 +10,7 @@ __all__ = [
     "CARLA_VERSION",
     "PROFILES",
     "default_version",
+    "repeatable",
     "unsupported_reason",
     "unsupported_setting",
 ]
@@ -25,6 +26,11 @@ CARLA_UNSUPPORTED = {
     "KeepVelocity": "its duration is a condition delay, which scenario_runner starts when the act "
     "starts, not when the node is activated",
 }
+
+
+def repeatable(kind_name: str) -> bool:
+    """Whether a node of this kind can run more than once when exported (`maxRuns`)."""
+    return kind_name in ONE_EVENT
 
 
 def default_version(profile: str = "generic") -> str:

@@ -14,6 +14,7 @@ from lxml import etree
 import scemlmodel as scm
 
 from .. import params
+from ..export.support import repeatable
 from . import markers, traced
 from .actions import Motion, Request, map_action
 from .context import Build, last_name
@@ -204,13 +205,14 @@ class Storyboard:
         return join
 
     def _runs(self, info: Event, nodes: list[scm.GraphElement]) -> None:
-        """The event's maximumExecutionCount as its node's maxRuns (one action, not a
-        condition); otherwise reported: SceML repeats nodes one by one, not a group."""
+        """The event's maximumExecutionCount as its node's maxRuns (one action, of a kind the
+        export writes as one event); otherwise reported: SceML repeats nodes one by one, not a
+        group, and players cannot repeat an event together with the event of its finish."""
         count = int(info.element.get("maximumExecutionCount", "1"))
         if count <= 1:
             return
         node = nodes[0] if len(nodes) == 1 else None
-        if isinstance(node, scm.ActionNode) and not isinstance(node, scm.Condition):
+        if isinstance(node, scm.ActionNode) and repeatable(node.eClass.name):
             node.maxRuns = count
             self.build.report.add(
                 "mapped",
@@ -221,7 +223,8 @@ class Storyboard:
             return
         self.build.report.add(
             "not represented",
-            f"event {info.name!r} may run {count} times; SceML repeats a node of one action only",
+            f"event {info.name!r} may run {count} times; SceML repeats only a node of one "
+            "action that is written back as one event",
             self.build.where(info.element),
         )
 

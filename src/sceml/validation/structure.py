@@ -219,10 +219,12 @@ def node_names_unique(graph: scm.Graph, context: Context) -> Iterator[Finding]:
     "SCEML-S014",
     ERROR,
     "ActionNode",
-    "a node runs at least once, and only a maneuver or an opaque action runs more than once",
+    "a node runs at least once, and more than once only if it is a maneuver players repeat",
     source="engineer",
 )
 def runs_are_possible(node: scm.ActionNode, context: Context) -> Iterator[Finding]:
+    from ..export.support import repeatable  # the export's planners say which kinds can
+
     runs = node.maxRuns
     if runs < 1:
         yield node, f"{node.name!r} may run {runs} times: a node runs at least once (maxRuns 1)"
@@ -233,5 +235,13 @@ def runs_are_possible(node: scm.ActionNode, context: Context) -> Iterator[Findin
             (
                 f"condition {node.name!r} may run {runs} times: a condition finishes once it "
                 "holds; repeat the maneuver after it instead"
+            ),
+        )
+    elif runs > 1 and not repeatable(node.eClass.name):
+        yield (
+            node,
+            (
+                f"{node.eClass.name} {node.name!r} may run {runs} times, but it is written as an "
+                "event and the event of its finish, which players cannot repeat together"
             ),
         )
