@@ -2,13 +2,15 @@
 
     python benchmarks/editor_browser.py [--runs 10]
 
-Starts `sceml edit` on UIS2 (examples/uis2-concrete.xmi) and on a synthetic 500-node scenario
-(built as benchmarks/editor_roundtrip.py builds it) and drives Debian's Chromium
+Starts `sceml edit` on UIS2 (examples/uis2-concrete.xmi) and on a valid 500-node scenario on the
+real map (benchmarks/scale_scenarios.py: every node kind, module uses) and drives Debian's Chromium
 (/usr/bin/chromium) with Playwright, as a user would:
 
 - first paint: from navigation start to the frame in which every top-level node is drawn, for
-  the file as given (no saved places: ELK lays it out; the page says how long ELK took) and
-  again after saving it with every node's place (as any file the editor saved);
+  the file as given (no saved places: ELK lays it out; the page says how long ELK took) in a
+  browser that has never shown it; then reloaded (the browser keeps the layout ELK made, so
+  ELK does not run again); and again after saving it with every node's place (as any file the
+  editor saved);
 - edit to canvas: from Enter in the "Target speed" field to the frame in which the node's box
   shows the new value (the server's round trip included);
 - drop to drawn: from releasing a palette item over the canvas to the frame that shows the new
@@ -40,7 +42,7 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 sys.path.insert(0, str(HERE.parent / "tests"))
 from browser import CHROMIUM, CHROMIUM_ARGS  # noqa: E402
-from editor_roundtrip import synthetic  # noqa: E402
+from scale_scenarios import write  # noqa: E402
 
 SCEML = Path(sys.executable).parent / "sceml"
 URL = re.compile(r"http://127\.0\.0\.1:\d+/")
@@ -69,9 +71,15 @@ def start_server(path: Path, log: Path) -> tuple[subprocess.Popen[bytes], str]:
     raise SystemExit(f"sceml edit did not start:\n{log.read_text(errors='replace')}")
 
 
-def first_paint(page: Any, url: str, top_level: int) -> tuple[float, float]:
+#: Forget what the page keeps in the browser (layouts, expanded uses); about:blank has no storage.
+FORGET = "() => { try { localStorage.clear(); } catch (error) { return String(error); } }"
+
+
+def first_paint(page: Any, url: str, top_level: int, *, fresh: bool) -> tuple[float, float]:
     """Ms from navigation start to the frame that shows `top_level` nodes, and of that the
-    layout (ELK, as the page measures it)."""
+    layout (ELK, as the page measures it); `fresh`: as in a browser that never showed the file."""
+    if fresh:
+        page.evaluate(FORGET)
     page.goto(url)
     handle = page.wait_for_function(
         f"n => {DRAWN} >= n ? performance.now() : false",
@@ -155,8 +163,10 @@ def measure(browser: Any, path: Path, runs: int, log: Path) -> dict[str, Any]:
         context = browser.new_context(viewport={"width": 1600, "height": 1000})
         page = context.new_page()
         page.on("dialog", lambda dialog: dialog.accept())
-        painted = [first_paint(page, url, len(top)) for _ in range(max(3, runs // 3))]
+        samples = max(3, runs // 3)
+        painted = [first_paint(page, url, len(top), fresh=True) for _ in range(samples)]
         paints, layouts = [p for p, _ in painted], [layout for _, layout in painted]
+        reloads = [first_paint(page, url, len(top), fresh=False)[0] for _ in range(samples)]
         # Select by keyboard: in a large graph the box may lie outside the fitted view.
         page.locator(f'.react-flow__node[aria-label="{target}"]').focus()
         page.keyboard.press("Enter")
@@ -170,7 +180,7 @@ def measure(browser: Any, path: Path, runs: int, log: Path) -> dict[str, Any]:
         # the file and open it again, as a user who drew the scenario would.
         page.keyboard.press("Control+s")
         page.get_by_role("status").filter(has_text="Saved").wait_for()
-        placed = [first_paint(page, url, len(top) + runs)[0] for _ in range(max(3, runs // 3))]
+        placed = [first_paint(page, url, len(top) + runs, fresh=True)[0] for _ in range(samples)]
         context.close()
     finally:
         process.terminate()
@@ -180,6 +190,7 @@ def measure(browser: Any, path: Path, runs: int, log: Path) -> dict[str, Any]:
         "top": len(top),
         "first paint": statistics.median(paints),
         "layout": statistics.median(layouts),
+        "reload": statistics.median(reloads),
         "placed": statistics.median(placed),
         "edit to canvas": statistics.median(edits),
         "drop to drawn": statistics.median(drops),
@@ -201,13 +212,13 @@ def main(argv: list[str] | None = None) -> None:
         shutil.copytree(HERE.parent / "maps", folder / "maps")
         cases = {
             "UIS2": folder / "examples" / "uis2-concrete.xmi",
-            "500 nodes": synthetic(folder, 500),
+            "500 nodes": write(500, folder / "scale"),
         }
         browser = playwright.chromium.launch(executable_path=str(CHROMIUM), args=CHROMIUM_ARGS)
         print(f"median ms in Chromium, {arguments.runs} runs; anchor: GET /api/view + JSON parse")
         print(
             f"{'model':>10} {'nodes':>6} {'drawn':>6} {'first paint':>12} {'of it ELK':>10}"
-            f" {'saved places':>13}"
+            f" {'reload':>7} {'saved places':>13}"
             f" {'edit->canvas':>13}"
             f" {'drop->drawn':>12} {'anchor':>7} {'fit':>4}"
         )
@@ -215,7 +226,7 @@ def main(argv: list[str] | None = None) -> None:
             got = measure(browser, path, arguments.runs, folder / f"{label}.log")
             print(
                 f"{label:>10} {got['nodes']:>6} {got['top']:>6} {got['first paint']:>12.0f}"
-                f" {got['layout']:>10.0f} {got['placed']:>13.0f}"
+                f" {got['layout']:>10.0f} {got['reload']:>7.0f} {got['placed']:>13.0f}"
                 f" {got['edit to canvas']:>13.0f} {got['drop to drawn']:>12.0f}"
                 f" {got['anchor']:>7.0f} {'yes' if got['fits'] else 'NO':>4}"
             )

@@ -1,13 +1,13 @@
 
 from .scemlmodel import getEClassifier, eClassifiers
 from .scemlmodel import name, nsURI, nsPrefix, eClass
-from .scemlmodel import AbstractionLevel, JoinPolicy, LaneChangeDirection, ComparisonRule, CloudState, PrecipitationType, ActorKind, NamedElement, Graph, Scenario, Library, Flow, GraphElement, DiagramPosition, RootNode, EndNode, ModuleElement, ActionNode, Maneuver, LongitudinalManeuver, LateralManeuver, CompositeManeuver, Condition, Accelerate, Decelerate, Stop, KeepVelocity, DriveDistance, Follow, Approach, LaneChange, RoutedManeuver, TurnLeft, TurnRight, Cross, FollowTrajectory, Overtake, InLocationRadius, InVehicleRadius, TimeElapsed, SpeedCondition, TimeToCollision, OpaqueAction, JoiningPolicy, JoinAllFinished, JoinOneFinished, ModuleDefinition, InPort, OutPort, ModuleUse, RoleBinding, ParameterOverride, ModuleParameter, Participant, ActorRole, AllowedKind, Actor, Pedestrian, TwoWheeler, Bicycle, Motorcycle, FourWheeler, Car, Van, Truck, Bus, Position, WorldPosition, LanePosition, RoadPosition, RelativeLanePosition, RelativeRoadPosition, RelativeObjectPosition, RelativeWorldPosition, Environment, ParameterValue, Value, Range, Distribution, UniformDistribution, NormalDistribution, DiscreteDistribution, WeightedValue, ParameterRef, RelativeDistanceType, CoordinateSystem, TraveledDistance, TimeHeadway, LaneChangeShape
+from .scemlmodel import AbstractionLevel, JoinPolicy, LaneChangeDirection, ComparisonRule, CloudState, PrecipitationType, ActorKind, NamedElement, Graph, Scenario, Library, Flow, GraphElement, DiagramPosition, RootNode, EndNode, ModuleElement, ActionNode, Maneuver, LongitudinalManeuver, LateralManeuver, CompositeManeuver, Condition, Accelerate, Decelerate, Stop, KeepVelocity, DriveDistance, Follow, Approach, LaneChange, RoutedManeuver, TurnLeft, TurnRight, Cross, FollowTrajectory, Overtake, InLocationRadius, InVehicleRadius, TimeElapsed, SpeedCondition, TimeToCollision, Property, Controller, ControllerActivation, ControllerManeuver, ActivateController, AssignController, ControllerOverrideKind, ControllerOverride, OverrideController, OpaqueAction, DeclarationType, ModifyRule, Declaration, GlobalAction, ParameterCondition, VariableCondition, SetParameter, SetVariable, TrafficSignalState, TrafficSignalCondition, LaneOffset, JoiningPolicy, JoinAllFinished, JoinOneFinished, ModuleDefinition, InPort, OutPort, ModuleUse, RoleBinding, ParameterOverride, ModuleParameter, Participant, ActorRole, AllowedKind, Actor, Pedestrian, TwoWheeler, Bicycle, Motorcycle, FourWheeler, Car, Van, Truck, Bus, Position, WorldPosition, LanePosition, RoadPosition, RelativeLanePosition, RelativeRoadPosition, RelativeObjectPosition, RelativeWorldPosition, Environment, ParameterValue, Value, Range, Distribution, UniformDistribution, NormalDistribution, DiscreteDistribution, WeightedValue, ParameterRef, RelativeDistanceType, CoordinateSystem, TraveledDistance, TimeHeadway, LaneChangeShape
 
 
 from . import scemlmodel
 
-__all__ = ['AbstractionLevel', 'JoinPolicy', 'LaneChangeDirection', 'ComparisonRule', 'CloudState', 'PrecipitationType', 'ActorKind', 'NamedElement', 'Graph', 'Scenario', 'Library', 'Flow', 'GraphElement', 'DiagramPosition', 'RootNode', 'EndNode', 'ModuleElement', 'ActionNode', 'Maneuver', 'LongitudinalManeuver', 'LateralManeuver', 'CompositeManeuver', 'Condition', 'Accelerate', 'Decelerate', 'Stop', 'KeepVelocity', 'DriveDistance', 'Follow', 'Approach', 'LaneChange', 'RoutedManeuver', 'TurnLeft', 'TurnRight', 'Cross', 'FollowTrajectory', 'Overtake', 'InLocationRadius', 'InVehicleRadius', 'TimeElapsed', 'SpeedCondition', 'TimeToCollision', 'OpaqueAction', 'JoiningPolicy', 'JoinAllFinished',
-           'JoinOneFinished', 'ModuleDefinition', 'InPort', 'OutPort', 'ModuleUse', 'RoleBinding', 'ParameterOverride', 'ModuleParameter', 'Participant', 'ActorRole', 'AllowedKind', 'Actor', 'Pedestrian', 'TwoWheeler', 'Bicycle', 'Motorcycle', 'FourWheeler', 'Car', 'Van', 'Truck', 'Bus', 'Position', 'WorldPosition', 'LanePosition', 'RoadPosition', 'RelativeLanePosition', 'RelativeRoadPosition', 'RelativeObjectPosition', 'RelativeWorldPosition', 'Environment', 'ParameterValue', 'Value', 'Range', 'Distribution', 'UniformDistribution', 'NormalDistribution', 'DiscreteDistribution', 'WeightedValue', 'ParameterRef', 'RelativeDistanceType', 'CoordinateSystem', 'TraveledDistance', 'TimeHeadway', 'LaneChangeShape']
+__all__ = ['AbstractionLevel', 'JoinPolicy', 'LaneChangeDirection', 'ComparisonRule', 'CloudState', 'PrecipitationType', 'ActorKind', 'NamedElement', 'Graph', 'Scenario', 'Library', 'Flow', 'GraphElement', 'DiagramPosition', 'RootNode', 'EndNode', 'ModuleElement', 'ActionNode', 'Maneuver', 'LongitudinalManeuver', 'LateralManeuver', 'CompositeManeuver', 'Condition', 'Accelerate', 'Decelerate', 'Stop', 'KeepVelocity', 'DriveDistance', 'Follow', 'Approach', 'LaneChange', 'RoutedManeuver', 'TurnLeft', 'TurnRight', 'Cross', 'FollowTrajectory', 'Overtake', 'InLocationRadius', 'InVehicleRadius', 'TimeElapsed', 'SpeedCondition', 'TimeToCollision', 'Property', 'Controller', 'ControllerActivation', 'ControllerManeuver', 'ActivateController', 'AssignController', 'ControllerOverrideKind', 'ControllerOverride', 'OverrideController', 'OpaqueAction', 'DeclarationType', 'ModifyRule', 'Declaration',
+           'GlobalAction', 'ParameterCondition', 'VariableCondition', 'SetParameter', 'SetVariable', 'TrafficSignalState', 'TrafficSignalCondition', 'LaneOffset', 'JoiningPolicy', 'JoinAllFinished', 'JoinOneFinished', 'ModuleDefinition', 'InPort', 'OutPort', 'ModuleUse', 'RoleBinding', 'ParameterOverride', 'ModuleParameter', 'Participant', 'ActorRole', 'AllowedKind', 'Actor', 'Pedestrian', 'TwoWheeler', 'Bicycle', 'Motorcycle', 'FourWheeler', 'Car', 'Van', 'Truck', 'Bus', 'Position', 'WorldPosition', 'LanePosition', 'RoadPosition', 'RelativeLanePosition', 'RelativeRoadPosition', 'RelativeObjectPosition', 'RelativeWorldPosition', 'Environment', 'ParameterValue', 'Value', 'Range', 'Distribution', 'UniformDistribution', 'NormalDistribution', 'DiscreteDistribution', 'WeightedValue', 'ParameterRef', 'RelativeDistanceType', 'CoordinateSystem', 'TraveledDistance', 'TimeHeadway', 'LaneChangeShape']
 
 eSubpackages = []
 eSuperPackage = None
@@ -21,6 +21,7 @@ GraphElement.diagramPosition.eType = DiagramPosition
 RootNode.maxDuration.eType = ParameterValue
 RootNode.environment.eType = Environment
 RootNode.actors.eType = Actor
+RootNode.declarations.eType = Declaration
 ActionNode.referenceActor.eType = Participant
 ActionNode.targetActor.eType = Participant
 Accelerate.targetSpeed.eType = ParameterValue
@@ -48,6 +49,12 @@ InVehicleRadius.radius.eType = ParameterValue
 TimeElapsed.duration.eType = ParameterValue
 SpeedCondition.speed.eType = ParameterValue
 TimeToCollision.time.eType = ParameterValue
+Controller.properties.eType = Property
+AssignController.controller.eType = Controller
+AssignController.activation.eType = ControllerActivation
+OverrideController.overrides.eType = ControllerOverride
+LaneOffset.offset.eType = ParameterValue
+LaneOffset.maxLateralAcc.eType = ParameterValue
 ModuleDefinition.roles.eType = ActorRole
 ModuleDefinition.parameters.eType = ModuleParameter
 ModuleUse.definition.eType = ModuleDefinition
@@ -62,12 +69,15 @@ Actor.initialSpeed.eType = ParameterValue
 Actor.length.eType = ParameterValue
 Actor.width.eType = ParameterValue
 Actor.height.eType = ParameterValue
+Actor.controller.eType = Controller
+Actor.controllerActivation.eType = ControllerActivation
 WorldPosition.x.eType = ParameterValue
 WorldPosition.y.eType = ParameterValue
 WorldPosition.z.eType = ParameterValue
 WorldPosition.h.eType = ParameterValue
 LanePosition.s.eType = ParameterValue
 LanePosition.offset.eType = ParameterValue
+LanePosition.h.eType = ParameterValue
 RoadPosition.s.eType = ParameterValue
 RoadPosition.t.eType = ParameterValue
 RoadPosition.h.eType = ParameterValue
@@ -99,8 +109,8 @@ GraphElement.incoming.eOpposite = Flow.target
 GraphElement.outgoing.eType = Flow
 GraphElement.outgoing.eOpposite = Flow.source
 
-otherClassifiers = [AbstractionLevel, JoinPolicy, LaneChangeDirection, ComparisonRule, CloudState,
-                    PrecipitationType, ActorKind, RelativeDistanceType, CoordinateSystem, LaneChangeShape]
+otherClassifiers = [AbstractionLevel, JoinPolicy, LaneChangeDirection, ComparisonRule, CloudState, PrecipitationType,
+                    ActorKind, ControllerOverrideKind, DeclarationType, ModifyRule, RelativeDistanceType, CoordinateSystem, LaneChangeShape]
 
 for classif in otherClassifiers:
     eClassifiers[classif.name] = classif

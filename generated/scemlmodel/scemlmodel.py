@@ -27,6 +27,14 @@ PrecipitationType = EEnum('PrecipitationType', literals=['dry', 'rain', 'snow'])
 ActorKind = EEnum('ActorKind', literals=[
                   'Pedestrian', 'TwoWheeler', 'Bicycle', 'Motorcycle', 'FourWheeler', 'Car', 'Van', 'Truck', 'Bus'])
 
+ControllerOverrideKind = EEnum('ControllerOverrideKind', literals=[
+                               'throttle', 'brake', 'clutch', 'parkingBrake', 'steeringWheel', 'gear'])
+
+DeclarationType = EEnum('DeclarationType', literals=[
+                        'double', 'integer', 'string', 'boolean', 'unsignedInt', 'unsignedShort', 'dateTime'])
+
+ModifyRule = EEnum('ModifyRule', literals=['set', 'add', 'multiply'])
+
 RelativeDistanceType = EEnum('RelativeDistanceType', literals=[
                              'euclidean', 'longitudinal', 'lateral'])
 
@@ -103,6 +111,129 @@ class DiagramPosition(EObject, metaclass=MetaEClass):
 
         if y is not None:
             self.y = y
+
+
+class Property(EObject, metaclass=MetaEClass):
+    """One name and value pair of a controller, as OpenSCENARIO's Property: text the player reads (e.g. esmini's timeGap or mode)."""
+    name = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    value = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+
+    def __init__(self, *, name=None, value=None):
+        # if kwargs:
+        #    raise AttributeError('unexpected arguments: {}'.format(kwargs))
+
+        super().__init__()
+
+        if name is not None:
+            self.name = name
+
+        if value is not None:
+            self.value = value
+
+
+class Controller(EObject, metaclass=MetaEClass):
+    """What drives an actor instead of the player's default (OpenSCENARIO's Controller): its name, which players use to pick an implementation (esmini: ACCController, InteractiveController, ...), an optional controllerType (1.2+: movement, lateral, longitudinal, lighting, animation, appearance, all) and its properties. SceML's own preview does not run it."""
+    name = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    controllerType = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    file = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    properties = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+
+    def __init__(self, *, name=None, controllerType=None, properties=None, file=None):
+        # if kwargs:
+        #    raise AttributeError('unexpected arguments: {}'.format(kwargs))
+
+        super().__init__()
+
+        if name is not None:
+            self.name = name
+
+        if controllerType is not None:
+            self.controllerType = controllerType
+
+        if file is not None:
+            self.file = file
+
+        if properties:
+            self.properties.extend(properties)
+
+
+class ControllerActivation(EObject, metaclass=MetaEClass):
+    """Which domains of an actor's controller are switched on (true) or off (false); unset leaves a domain as the player has it. lighting and animation exist from OpenSCENARIO 1.2."""
+    lateral = EAttribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
+    longitudinal = EAttribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
+    lighting = EAttribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
+    animation = EAttribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
+
+    def __init__(self, *, lateral=None, longitudinal=None, lighting=None, animation=None):
+        # if kwargs:
+        #    raise AttributeError('unexpected arguments: {}'.format(kwargs))
+
+        super().__init__()
+
+        if lateral is not None:
+            self.lateral = lateral
+
+        if longitudinal is not None:
+            self.longitudinal = longitudinal
+
+        if lighting is not None:
+            self.lighting = lighting
+
+        if animation is not None:
+            self.animation = animation
+
+
+class ControllerOverride(EObject, metaclass=MetaEClass):
+    """One overridden input: active or released, and its value (pedals 0..1, steering wheel in rad, a manual gear's number)."""
+    kind = EAttribute(eType=ControllerOverrideKind, unique=True, derived=False,
+                      changeable=True, default_value=ControllerOverrideKind.throttle)
+    active = EAttribute(eType=EBoolean, unique=True, derived=False,
+                        changeable=True, default_value=True)
+    value = EAttribute(eType=EDouble, unique=True, derived=False,
+                       changeable=True, default_value=0.0)
+
+    def __init__(self, *, kind=None, active=None, value=None):
+        # if kwargs:
+        #    raise AttributeError('unexpected arguments: {}'.format(kwargs))
+
+        super().__init__()
+
+        if kind is not None:
+            self.kind = kind
+
+        if active is not None:
+            self.active = active
+
+        if value is not None:
+            self.value = value
+
+
+class Declaration(EObject, metaclass=MetaEClass):
+    """A parameter or variable the scenario declares for its global nodes to read and change (ParameterCondition, SetParameter, VariableCondition, SetVariable): exported as a ParameterDeclaration or (1.2+) VariableDeclaration with this initial value."""
+    name = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    type = EAttribute(eType=DeclarationType, unique=True, derived=False,
+                      changeable=True, default_value=DeclarationType.double)
+    value = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    variable = EAttribute(eType=EBoolean, unique=True, derived=False,
+                          changeable=True, default_value=False)
+
+    def __init__(self, *, name=None, type=None, value=None, variable=None):
+        # if kwargs:
+        #    raise AttributeError('unexpected arguments: {}'.format(kwargs))
+
+        super().__init__()
+
+        if name is not None:
+            self.name = name
+
+        if type is not None:
+            self.type = type
+
+        if value is not None:
+            self.value = value
+
+        if variable is not None:
+            self.variable = variable
 
 
 class RoleBinding(EObject, metaclass=MetaEClass):
@@ -357,8 +488,9 @@ class LanePosition(Position):
     laneId = EAttribute(eType=EInt, unique=True, derived=False, changeable=True)
     s = EReference(ordered=True, unique=True, containment=True, derived=False)
     offset = EReference(ordered=True, unique=True, containment=True, derived=False)
+    h = EReference(ordered=True, unique=True, containment=True, derived=False)
 
-    def __init__(self, *, roadId=None, laneId=None, s=None, offset=None, **kwargs):
+    def __init__(self, *, roadId=None, laneId=None, s=None, offset=None, h=None, **kwargs):
 
         super().__init__(**kwargs)
 
@@ -373,6 +505,9 @@ class LanePosition(Position):
 
         if offset is not None:
             self.offset = offset
+
+        if h is not None:
+            self.h = h
 
 
 class RoadPosition(Position):
@@ -559,8 +694,9 @@ class RootNode(GraphElement):
     maxDuration = EReference(ordered=True, unique=True, containment=True, derived=False)
     environment = EReference(ordered=True, unique=True, containment=True, derived=False)
     actors = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+    declarations = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
 
-    def __init__(self, *, scenarioName=None, description=None, author=None, date=None, map=None, level=None, maxDuration=None, environment=None, actors=None, **kwargs):
+    def __init__(self, *, scenarioName=None, description=None, author=None, date=None, map=None, level=None, maxDuration=None, environment=None, actors=None, declarations=None, **kwargs):
 
         super().__init__(**kwargs)
 
@@ -590,6 +726,9 @@ class RootNode(GraphElement):
 
         if actors:
             self.actors.extend(actors)
+
+        if declarations:
+            self.declarations.extend(declarations)
 
 
 class EndNode(GraphElement):
@@ -672,8 +811,10 @@ class Actor(Participant):
     length = EReference(ordered=True, unique=True, containment=True, derived=False)
     width = EReference(ordered=True, unique=True, containment=True, derived=False)
     height = EReference(ordered=True, unique=True, containment=True, derived=False)
+    controller = EReference(ordered=True, unique=True, containment=True, derived=False)
+    controllerActivation = EReference(ordered=True, unique=True, containment=True, derived=False)
 
-    def __init__(self, *, isEgo=None, model=None, startPosition=None, initialSpeed=None, length=None, width=None, height=None, **kwargs):
+    def __init__(self, *, isEgo=None, model=None, startPosition=None, initialSpeed=None, length=None, width=None, height=None, controller=None, controllerActivation=None, **kwargs):
 
         super().__init__(**kwargs)
 
@@ -697,6 +838,12 @@ class Actor(Participant):
 
         if height is not None:
             self.height = height
+
+        if controller is not None:
+            self.controller = controller
+
+        if controllerActivation is not None:
+            self.controllerActivation = controllerActivation
 
 
 class UniformDistribution(Distribution):
@@ -837,6 +984,15 @@ class OpaqueAction(ActionNode):
 
         if sourceVersion is not None:
             self.sourceVersion = sourceVersion
+
+
+@abstract
+class GlobalAction(ActionNode):
+    """An action no actor performs: it changes the scenario state (a parameter, a variable, a traffic signal). It has no reference actor and finishes at once."""
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
 
 
 class JoinAllFinished(JoiningPolicy):
@@ -1008,6 +1164,131 @@ class TimeToCollision(Condition):
 
         if time is not None:
             self.time = time
+
+
+@abstract
+class ControllerManeuver(Maneuver):
+    """A change of the reference actor's controller during the run. It completes at once, as players complete controller actions; what the controller then does is the player's."""
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
+class ParameterCondition(Condition):
+    """Holds once the scenario's parameter compares by rule with value (OpenSCENARIO's ParameterCondition). A global condition: no actor fulfils it."""
+    parameter = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    rule = EAttribute(eType=ComparisonRule, unique=True, derived=False,
+                      changeable=True, default_value=ComparisonRule.equalTo)
+    value = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+
+    def __init__(self, *, parameter=None, rule=None, value=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if parameter is not None:
+            self.parameter = parameter
+
+        if rule is not None:
+            self.rule = rule
+
+        if value is not None:
+            self.value = value
+
+
+class VariableCondition(Condition):
+    """Holds once the scenario's variable compares by rule with value (OpenSCENARIO 1.2+'s VariableCondition). A global condition: no actor fulfils it."""
+    variable = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    rule = EAttribute(eType=ComparisonRule, unique=True, derived=False,
+                      changeable=True, default_value=ComparisonRule.equalTo)
+    value = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+
+    def __init__(self, *, variable=None, rule=None, value=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if variable is not None:
+            self.variable = variable
+
+        if rule is not None:
+            self.rule = rule
+
+        if value is not None:
+            self.value = value
+
+
+class SetParameter(GlobalAction):
+    """Sets the scenario's parameter to value, or adds value to it, or multiplies it by value (OpenSCENARIO's ParameterAction)."""
+    parameter = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    value = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    modify = EAttribute(eType=ModifyRule, unique=True, derived=False,
+                        changeable=True, default_value=ModifyRule.set)
+
+    def __init__(self, *, parameter=None, value=None, modify=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if parameter is not None:
+            self.parameter = parameter
+
+        if value is not None:
+            self.value = value
+
+        if modify is not None:
+            self.modify = modify
+
+
+class SetVariable(GlobalAction):
+    """Sets the scenario's variable to value, or adds value to it, or multiplies it by value (OpenSCENARIO 1.2+'s VariableAction)."""
+    variable = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    value = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    modify = EAttribute(eType=ModifyRule, unique=True, derived=False,
+                        changeable=True, default_value=ModifyRule.set)
+
+    def __init__(self, *, variable=None, value=None, modify=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if variable is not None:
+            self.variable = variable
+
+        if value is not None:
+            self.value = value
+
+        if modify is not None:
+            self.modify = modify
+
+
+class TrafficSignalState(GlobalAction):
+    """Switches a traffic signal of the map to a state (OpenSCENARIO's TrafficSignalStateAction)."""
+    signalId = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    state = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+
+    def __init__(self, *, signalId=None, state=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if signalId is not None:
+            self.signalId = signalId
+
+        if state is not None:
+            self.state = state
+
+
+class TrafficSignalCondition(Condition):
+    """Holds once a traffic signal of the map shows the state (OpenSCENARIO's TrafficSignalCondition). A global condition: no actor fulfils it."""
+    signalId = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    state = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+
+    def __init__(self, *, signalId=None, state=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if signalId is not None:
+            self.signalId = signalId
+
+        if state is not None:
+            self.state = state
 
 
 class TraveledDistance(Condition):
@@ -1240,6 +1521,84 @@ class Overtake(CompositeManeuver):
 
         if laneChangeDistance is not None:
             self.laneChangeDistance = laneChangeDistance
+
+
+class ActivateController(ControllerManeuver):
+    """Switches the domains of the actor's controller on or off (OpenSCENARIO's ActivateControllerAction); unset leaves a domain as it is."""
+    lateral = EAttribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
+    longitudinal = EAttribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
+    lighting = EAttribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
+    animation = EAttribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
+
+    def __init__(self, *, lateral=None, longitudinal=None, lighting=None, animation=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if lateral is not None:
+            self.lateral = lateral
+
+        if longitudinal is not None:
+            self.longitudinal = longitudinal
+
+        if lighting is not None:
+            self.lighting = lighting
+
+        if animation is not None:
+            self.animation = animation
+
+
+class AssignController(ControllerManeuver):
+    """Gives the actor another controller (OpenSCENARIO's AssignControllerAction); activation, when set, also switches its domains (1.1+)."""
+    controller = EReference(ordered=True, unique=True, containment=True, derived=False)
+    activation = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, controller=None, activation=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if controller is not None:
+            self.controller = controller
+
+        if activation is not None:
+            self.activation = activation
+
+
+class OverrideController(ControllerManeuver):
+    """Overrides driver inputs of the actor's controller (OpenSCENARIO's OverrideControllerValueAction): throttle, brake, clutch, parking brake, steering wheel or gear, each at most once."""
+    overrides = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+
+    def __init__(self, *, overrides=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if overrides:
+            self.overrides.extend(overrides)
+
+
+class LaneOffset(LateralManeuver):
+    """Moves the reference actor sideways within its lane to offset m left of the lane's centre (or, with a target actor, offset m left of that actor's lateral position), its lateral acceleration peaking at maxLateralAcc along shape (OpenSCENARIO's LaneOffsetAction). Finished when the offset is reached, as esmini ends the action then (continuous or not)."""
+    shape = EAttribute(eType=LaneChangeShape, unique=True, derived=False,
+                       changeable=True, default_value=LaneChangeShape.sinusoidal)
+    continuous = EAttribute(eType=EBoolean, unique=True, derived=False,
+                            changeable=True, default_value=False)
+    offset = EReference(ordered=True, unique=True, containment=True, derived=False)
+    maxLateralAcc = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, offset=None, maxLateralAcc=None, shape=None, continuous=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if shape is not None:
+            self.shape = shape
+
+        if continuous is not None:
+            self.continuous = continuous
+
+        if offset is not None:
+            self.offset = offset
+
+        if maxLateralAcc is not None:
+            self.maxLateralAcc = maxLateralAcc
 
 
 class TurnLeft(RoutedManeuver):

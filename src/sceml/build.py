@@ -32,11 +32,20 @@ def world(
 
 
 def lane(
-    road_id: str | int, lane_id: int, s: ParameterInput, offset: ParameterInput = 0.0
+    road_id: str | int,
+    lane_id: int,
+    s: ParameterInput,
+    offset: ParameterInput = 0.0,
+    h: ParameterInput | None = None,
 ) -> scm.LanePosition:
-    """A lane position: road, lane, distance along the road and lateral offset (m)."""
+    """A lane position: road, lane, distance along the road and lateral offset (m) and, when
+    given, the heading relative to the lane's direction of traffic (rad)."""
     return scm.LanePosition(
-        roadId=str(road_id), laneId=int(lane_id), s=as_parameter(s), offset=as_parameter(offset)
+        roadId=str(road_id),
+        laneId=int(lane_id),
+        s=as_parameter(s),
+        offset=as_parameter(offset),
+        h=None if h is None else as_parameter(h),
     )
 
 
@@ -102,6 +111,39 @@ def relative_world(
     )
 
 
+def controller(
+    name: str, controller_type: str | None = None, properties: dict[str, str] | None = None
+) -> scm.Controller:
+    """A controller for an actor (`actor(..., controller=...)`) or an AssignController."""
+    made = scm.Controller(name=name, controllerType=controller_type)
+    for key, value in (properties or {}).items():
+        made.properties.append(scm.Property(name=key, value=value))
+    return made
+
+
+def activation(
+    *,
+    lateral: bool | None = None,
+    longitudinal: bool | None = None,
+    lighting: bool | None = None,
+    animation: bool | None = None,
+) -> scm.ControllerActivation:
+    """Which controller domains to switch on (True) or off (False); None leaves one as it is."""
+    return scm.ControllerActivation(
+        lateral=lateral, longitudinal=longitudinal, lighting=lighting, animation=animation
+    )
+
+
+def override(kind: str, value: float = 0.0, *, active: bool = True) -> scm.ControllerOverride:
+    """One input of an OverrideController: throttle, brake, clutch, parkingBrake,
+    steeringWheel or gear."""
+    literal = scm.ControllerOverrideKind.getEEnumLiteral(kind)
+    if literal is None:
+        options = ", ".join(str(item.name) for item in scm.ControllerOverrideKind.eLiterals)
+        raise BuildError(f"unknown override {kind!r}; choose one of: {options}")
+    return scm.ControllerOverride(kind=literal, value=float(value), active=active)
+
+
 def _kind_class(kind: str | type, base: str) -> type:
     name = catalog.class_name(kind)
     cls = getattr(scm, name, None)
@@ -131,18 +173,22 @@ class GraphBuilder:
     def add(
         self,
         kind: str | type,
-        actor: scm.Participant,
+        actor: scm.Participant | None,
         *,
         target: scm.Participant | None = None,
         name: str | None = None,
         **parameters: object,
     ) -> scm.ActionNode:
-        """Add a maneuver or condition performed by `actor`.
+        """Add a maneuver or condition performed by `actor` (None for a global kind such as
+        SetParameter, which no actor performs).
 
         Numeric parameters take numbers or parameter values (see `sceml.params`); positions take
         `world(...)` or `lane(...)`; other attributes (e.g. `direction="right"`) take their literal.
         """
         cls = _kind_class(kind, "ActionNode")
+        if (actor is None) == catalog.performed_by_actor(cls):
+            needs = "needs a reference actor" if actor is None else "is performed by no actor"
+            raise BuildError(f"{cls.__name__} {needs}")
         node = cls(name=name or self._auto_name(cls.__name__))
         node.referenceActor = actor
         if target is not None:
@@ -282,11 +328,18 @@ class ScenarioBuilder(GraphBuilder):
         start: scm.Position | None = None,
         speed: ParameterInput | None = None,
         model: str | None = None,
+        controller: scm.Controller | None = None,
+        activation: scm.ControllerActivation | None = None,
         **dimensions: ParameterInput,
     ) -> scm.Actor:
-        """Add an actor of a kind (Car, Bicycle, Pedestrian, ...) to the root node."""
+        """Add an actor of a kind (Car, Bicycle, Pedestrian, ...) to the root node, optionally
+        with the controller it starts with and the domains switched on at the start."""
         cls = _kind_class(kind, "Actor")
         actor = cls(name=name, isEgo=ego, model=model)
+        if controller is not None:
+            actor.controller = detached(controller)
+        if activation is not None:
+            actor.controllerActivation = detached(activation)
         if start is not None:
             actor.startPosition = detached(start)
         if speed is not None:
@@ -297,6 +350,18 @@ class ScenarioBuilder(GraphBuilder):
             actor.eSet(key, as_parameter(given))
         self.root.actors.append(actor)
         return actor
+
+    def declare(
+        self, name: str, value: object, *, type: str = "double", variable: bool = False
+    ) -> scm.Declaration:
+        """Declare a parameter (or a 1.2+ variable) the global nodes read and change."""
+        kind = scm.DeclarationType.getEEnumLiteral(type)
+        if kind is None:
+            raise BuildError(f"unknown declaration type {type!r}")
+        text = str(value).lower() if isinstance(value, bool) else str(value)
+        declaration = scm.Declaration(name=name, type=kind, value=text, variable=variable)
+        self.root.declarations.append(declaration)
+        return declaration
 
 
 class ModuleBuilder(GraphBuilder):

@@ -28,7 +28,7 @@ ACTOR_DEFAULT = "actor"
 POSITIVE = "positive"
 NON_NEGATIVE = "nonNegative"
 
-CATEGORIES = ("longitudinal", "lateral", "composite", "condition")
+CATEGORIES = ("longitudinal", "lateral", "composite", "controller", "condition", "global")
 
 #: Features that only say how a node is drawn (the editor's layout); never a parameter or a meaning.
 NOTATION_FEATURES = frozenset({"diagramPosition"})
@@ -190,7 +190,8 @@ def class_name(kind: EObject | EClass | type | str) -> str:
 
 
 def category(kind: EObject | EClass | type | str) -> str | None:
-    """`longitudinal`, `lateral`, `composite` or `condition` for action nodes, else None."""
+    """`longitudinal`, `lateral`, `composite`, `controller`, `condition` or `global` for action
+    nodes (`opaque` for an OpaqueAction), else None."""
     return _node_details(class_name(kind)).get("category")
 
 
@@ -203,6 +204,12 @@ def complexity(kind: EObject | EClass | type | str) -> int | None:
 def needs_target(kind: EObject | EClass | type | str) -> bool:
     """Whether the node kind needs a target actor besides its reference actor."""
     return _node_details(class_name(kind)).get("needsTarget") == "true"
+
+
+def performed_by_actor(kind: EObject | EClass | type | str) -> bool:
+    """Whether a node of the kind has a reference actor; a global kind (annotation
+    `actor="none"`: a parameter, variable or traffic signal node) is performed by no actor."""
+    return _node_details(class_name(kind)).get("actor") != "none"
 
 
 def allows_target(kind: EObject | EClass | type | str) -> bool:

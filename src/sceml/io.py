@@ -293,39 +293,46 @@ def _check_tree(tree: etree._ElementTree, path: Path) -> None:
             file=path,
             line=models[0].sourceline,
         )
-    _check_types(root, path)
-    seen: dict[str, int | None] = {}
-    for element in root.iter(etree.Element):
-        identifier = element.get(f"{{{xmi_namespace}}}id")
-        if identifier is None:
-            continue
-        if identifier in seen:
-            raise LoadError(
-                f"duplicate xmi:id {identifier!r} (first on line {seen[identifier]})",
-                file=path,
-                line=element.sourceline,
-            )
-        seen[identifier] = element.sourceline
+    _check_types_and_ids(root, path, f"{{{xmi_namespace}}}id")
 
 
 _XSI_TYPE = "{http://www.w3.org/2001/XMLSchema-instance}type"
 
 
-def _check_types(root: etree._Element, path: Path) -> None:
-    """Refuse an xsi:type that names no concrete SceML class, in the file's own terms."""
+def _check_types_and_ids(root: etree._Element, path: Path, id_attribute: str) -> None:
+    """Refuse an xsi:type that names no concrete SceML class, in the file's own terms, and
+    then a repeated xmi:id.
+
+    One walk over the tree does both (each was a walk of its own, a third of a large file's
+    load); a wrong type anywhere is still reported before a repeated id, as it was.
+    """
     # Files SceML and EMF write declare their prefixes on the root element alone; then every
     # element has the root's prefixes, and building each one's nsmap (most of this pass's
     # time on a large file) is not needed.
     declared = sum(1 for _ in etree.iterwalk(root, events=("start-ns",)))
     shared = _prefixes(root) if declared == len(root.nsmap) else None
+    seen: dict[str, etree._Element] = {}
+    repeated: tuple[etree._Element, etree._Element] | None = None
     for element in root.iter(etree.Element):
         value = element.get(_XSI_TYPE)
-        if value is None:
+        if value is not None:
+            # A file names a handful of types under one set of prefixes: judge each pair once.
+            problem = _type_problem_of(value, shared or _prefixes(element))
+            if problem is not None:
+                raise LoadError(problem, file=path, line=element.sourceline)
+        identifier = element.get(id_attribute)
+        if identifier is None:
             continue
-        # A file names a handful of types under one set of prefixes: judge each pair once.
-        problem = _type_problem_of(value, shared or _prefixes(element))
-        if problem is not None:
-            raise LoadError(problem, file=path, line=element.sourceline)
+        first = seen.setdefault(identifier, element)
+        if first is not element and repeated is None:
+            repeated = (first, element)
+    if repeated is not None:
+        first, again = repeated
+        raise LoadError(
+            f"duplicate xmi:id {again.get(id_attribute)!r} (first on line {first.sourceline})",
+            file=path,
+            line=again.sourceline,
+        )
 
 
 def _prefixes(element: etree._Element) -> tuple[tuple[str | None, str], ...]:

@@ -215,3 +215,36 @@ def test_lines_are_those_of_the_file_as_read_after_the_model_changes() -> None:
     assert [document.line_of(node) for node in nodes[2:]] == [before[n] for n in nodes[2:]]
     assert document.line_of(added) is None
     assert document.resource.sceml_tree is None  # only the lines were kept
+
+
+_TWO_PROBLEMS = """<?xml version='1.0' encoding='UTF-8'?>
+<scemlmodel:Scenario xmlns:xmi="http://www.omg.org/XMI" xmlns:scemlmodel="{ns}"
+    xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance" xmi:version="2.0">
+  <nodes xsi:type="scemlmodel:RootNode" name="Root" level="concrete">
+    <actors xsi:type="scemlmodel:Car" xmi:id="a1" name="ego"/>
+    <actors xsi:type="scemlmodel:Car" xmi:id="a1" name="other"/>
+    <actors xsi:type="scemlmodel:Car" xmi:id="a1" name="third"/>
+  </nodes>
+  <nodes xsi:type="scemlmodel:{kind}" name="End"/>
+</scemlmodel:Scenario>
+"""
+
+
+@pytest.mark.parametrize(
+    ("kind", "line", "words"),
+    [
+        # A wrong type is reported before a repeated id, even one on an earlier line.
+        ("Teleport", 9, "Teleport"),
+        # Else the first repetition, naming the line of the first use.
+        ("EndNode", 6, "duplicate xmi:id 'a1' (first on line 5)"),
+    ],
+)
+def test_a_wrong_type_comes_before_a_repeated_id(
+    tmp_path: Path, kind: str, line: int, words: str
+) -> None:
+    path = tmp_path / "two-problems.xmi"
+    path.write_text(_TWO_PROBLEMS.format(ns=scm.nsURI, kind=kind), encoding="utf-8")
+    with pytest.raises(LoadError) as caught:
+        io.load(path)
+    assert caught.value.line == line
+    assert words in caught.value.message

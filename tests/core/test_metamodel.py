@@ -141,7 +141,7 @@ def test_spec_concepts_exist(package) -> None:
 def test_every_action_kind_has_category_complexity_and_typed_parameters() -> None:
     # OpaqueAction (what `sceml import` keeps verbatim) is no paper kind: category "opaque".
     kinds = [k for k in catalog.action_node_kinds() if k.__name__ != "OpaqueAction"]
-    assert len(kinds) == 20
+    assert len(kinds) == 30
     assert catalog.category("OpaqueAction") == "opaque"
     for kind in kinds:
         assert catalog.category(kind) in catalog.CATEGORIES, kind
@@ -150,12 +150,30 @@ def test_every_action_kind_has_category_complexity_and_typed_parameters() -> Non
             assert spec.unit, f"{kind.__name__}.{spec.name} has no unit"
 
 
+def test_global_kinds_are_performed_by_no_actor() -> None:
+    performed_by_none = {
+        k.__name__ for k in catalog.action_node_kinds() if not catalog.performed_by_actor(k)
+    }
+    assert performed_by_none == {
+        "ParameterCondition",
+        "VariableCondition",
+        "SetParameter",
+        "SetVariable",
+        "TrafficSignalState",
+        "TrafficSignalCondition",
+    }
+    assert catalog.category("SetParameter") == "global"
+    assert catalog.category("ParameterCondition") == "condition"
+
+
 def test_categories_follow_the_paper() -> None:
     assert catalog.category("Accelerate") == "longitudinal"
     assert catalog.category("LaneChange") == "lateral"
     assert catalog.category("TurnRight") == "lateral"
     assert catalog.category("Overtake") == "composite"
     assert catalog.category("InVehicleRadius") == "condition"
+    assert catalog.category("ActivateController") == "controller"
+    assert catalog.category("OverrideController") == "controller"
     assert catalog.category("JoinAllFinished") is None
 
 

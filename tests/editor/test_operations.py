@@ -242,6 +242,7 @@ def test_set_position_and_waypoints(uis1: EditorSession) -> None:
         "laneId": -1,
         "s": {"type": "value", "value": 12.0},
         "offset": None,
+        "h": None,
     }
     after = roundtrip(
         uis1, [{"op": "set_position", "node": cross, "field": "destination", "value": lane}]

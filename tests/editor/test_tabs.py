@@ -93,4 +93,9 @@ def test_the_event_stream_announces_every_change(examples_copy: Path) -> None:
     )
     client.post("/api/ops", json={"ops": "refused"})
     client.post("/api/undo", headers={"x-sceml-tab": "b"})
-    assert published == [{"version": version + 1, "tab": "a"}, {"version": version + 1, "tab": "b"}]
+    assert [(event["version"], event["tab"]) for event in published] == [
+        (version + 1, "a"),
+        (version + 1, "b"),
+    ]
+    # The patch of the added node travels with the event (tests/editor/test_patches.py).
+    assert [n["name"] for n in published[0]["patch"]["nodes"]["changed"]] == ["Stop_1"]

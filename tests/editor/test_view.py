@@ -80,13 +80,21 @@ def test_a_problem_in_a_module_use_marks_the_use(uis2: EditorSession) -> None:
 def test_palette_groups_and_libraries(uis2: EditorSession) -> None:
     palette = uis2.view()["palette"]
     groups = [g["group"] for g in palette]
-    assert groups[:5] == ["longitudinal", "lateral", "composite", "condition", "join"]
-    assert groups[5] == "library:library/sceml-library.xmi"
+    assert groups[:7] == [
+        "longitudinal",
+        "lateral",
+        "composite",
+        "controller",
+        "condition",
+        "global",
+        "join",
+    ]
+    assert groups[7] == "library:library/sceml-library.xmi"
     longitudinal = [i["kind"] for i in palette[0]["items"]]
     assert "Accelerate" in longitudinal and "TurnLeft" not in longitudinal
-    modules = [i["module"] for i in palette[5]["items"]]
-    assert "CrossingManeuver" in modules and palette[5]["items"][0]["kind"] == "ModuleUse"
-    crossing = next(i for i in palette[5]["items"] if i["module"] == "CrossingManeuver")
+    modules = [i["module"] for i in palette[7]["items"]]
+    assert "CrossingManeuver" in modules and palette[7]["items"][0]["kind"] == "ModuleUse"
+    crossing = next(i for i in palette[7]["items"] if i["module"] == "CrossingManeuver")
     # UIS2's actors: ego and car are Cars (FourWheelers), pedestrian a Pedestrian.
     assert crossing["roles"] == [
         {"role": "crosser", "allowedKinds": ["TwoWheeler", "Pedestrian"], "actors": ["pedestrian"]},

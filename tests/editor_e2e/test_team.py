@@ -15,7 +15,7 @@ from pathlib import Path
 import pytest
 from browser import CHROMIUM
 from editor.servers import Server, start
-from editor_e2e.test_editor import node, open_editor, ops_answer
+from editor_e2e.test_editor import commit, node, open_editor, ops_answer
 from playwright.sync_api import Browser, Page, expect
 
 from sceml import io
@@ -201,6 +201,29 @@ def test_two_pages_see_each_others_edits_live_and_undo_their_own(
         expect(status(each)).to_contain_text("Saved")
 
 
+def test_a_conflict_between_tabs_is_explained_with_names(
+    two_pages: tuple[Page, Page], editor: object, examples_copy: Path
+) -> None:
+    a, b = two_pages
+    url = editor(examples_copy / "uis1-concrete.xmi")  # type: ignore[operator]
+    open_editor(a, url)
+    open_editor(b, url)
+    add_from_palette(a, "Stop")
+    # B renames the Stop A added; A's Undo of the add would throw B's rename away.
+    node(b, "Stop_1").focus()
+    b.keyboard.press("Enter")
+    name = b.get_by_role("region", name="Properties").get_by_label("Name", exact=True)
+    commit(b, name, "Halt")
+    expect(node(a, "Halt")).to_be_visible()
+    with a.expect_response(lambda r: r.url.endswith("/api/undo")):
+        a.get_by_role("toolbar", name="Editor").get_by_role("button", name="Undo").click()
+    expect(a.get_by_role("alert")).to_contain_text(
+        "'Add Stop' cannot be undone here: another tab changed the same things since ('Set')"
+    )
+    for each in (a, b):
+        expect(node(each, "Halt")).to_be_visible()
+
+
 def test_invalid_number_text_is_marked_with_the_reason(
     page: Page, editor: object, examples_copy: Path
 ) -> None:
@@ -328,6 +351,10 @@ def test_modules_expand_with_room_unique_labels_fitting_roles_and_a_way_back(
     page.once("dialog", lambda dialog: dialog.accept())  # "Save the changes and open ...?"
     props.get_by_role("button", name="Open definition").click()
     expect(toolbar).to_contain_text("sceml-library.xmi")
+    # A module is not offered inside its own definition (the other modules still are).
+    palette = page.get_by_role("region", name="Palette")
+    expect(palette.get_by_role("button", name="CrossingManeuver", exact=True)).to_have_count(0)
+    expect(palette.get_by_role("button", name="Stop", exact=True)).to_be_visible()
     toolbar.get_by_role("button", name="Back to scenario").click()
     expect(toolbar).to_contain_text("uis2-concrete.xmi")
     expect(toolbar.get_by_role("button", name="Back to scenario")).to_have_count(0)
@@ -355,3 +382,88 @@ def test_expanding_a_use_fits_the_whole_diagram_in_view(
         assert (
             pane["y"] - 1 <= box["y"] and box["y"] + box["height"] <= pane["y"] + pane["height"] + 1
         )
+
+
+#: Each edge's path, sampled in screen coordinates, against the frame header's box: the ids of
+#: the edges that pass through it, and how many edges there were.
+EDGES_THROUGH_HEADER = """() => {
+  const header = document.querySelector('.sceml-frame .frame-header').getBoundingClientRect();
+  const paths = [...document.querySelectorAll('.react-flow__edge-path')];
+  const through = paths.filter((path) => {
+    const total = path.getTotalLength();
+    const screen = path.getScreenCTM();
+    for (let i = 0; i <= 200; i++) {
+      const p = path.getPointAtLength((total * i) / 200).matrixTransform(screen);
+      if (p.x > header.left && p.x < header.right && p.y > header.top && p.y < header.bottom) return true;
+    }
+    return false;
+  });
+  return { through: through.map((p) => p.closest('.react-flow__edge').dataset.testid),
+           edges: paths.length, header: header.width * header.height };
+}"""
+
+
+@pytest.mark.parametrize("direction", ["Top down", "Left to right"])
+def test_edges_keep_clear_of_an_expanded_frames_header(
+    page: Page, editor: object, examples_copy: Path, direction: str
+) -> None:
+    # The edge into the use ended at its in-port, under the header, and crossed its text.
+    url = editor(examples_copy / "uis2-concrete.xmi")  # type: ignore[operator]
+    open_editor(page, url)
+    page.get_by_label("Layout direction").select_option(label=direction)
+    node(page, "CrossingManeuver_1").get_by_role("button", name="Expand").click()
+    expect(node(page, "CrossingManeuver_1.Cross_1")).to_be_visible()
+    page.wait_for_timeout(1500)  # the layout, then the fit's glide
+    found = page.evaluate(EDGES_THROUGH_HEADER)
+    assert found["header"] > 0 and found["edges"] >= 12, found
+    assert found["through"] == [], found
+
+
+def test_extract_asks_for_the_library_and_undo_takes_its_write_back(
+    page: Page, editor: object, examples_copy: Path
+) -> None:
+    url = editor(examples_copy / "uis1-concrete.xmi")  # type: ignore[operator]
+    open_editor(page, url)
+    node(page, "Accelerate_1").click()
+    node(page, "TurnRight_1").click(modifiers=["Shift"])
+    toolbar = page.get_by_role("toolbar", name="Editor")
+    toolbar.get_by_role("button", name="Extract module").click()
+    dialog = page.get_by_role("dialog", name="Extract module")
+    dialog.get_by_label("Module name").fill("Turning")
+    dialog.get_by_label("Module name").press("Enter")
+    # Enter without a library writes nowhere: the dialog asks for one.
+    expect(dialog.get_by_role("alert")).to_have_text(
+        "Choose the library file the module is written into."
+    )
+    library = examples_copy / "library" / "turning.xmi"
+    assert not library.exists()
+    dialog.get_by_label("Library").fill("library/turning.xmi")
+    with ops_answer(page):
+        dialog.get_by_label("Library").press("Enter")
+    expect(node(page, "Accelerate_1")).to_have_count(0)
+    assert [str(m.name) for m in io.load_library(library).root.modules] == ["Turning"]
+    with page.expect_response(lambda r: r.url.endswith("/api/undo")):
+        toolbar.get_by_role("button", name="Undo").click()
+    expect(node(page, "Accelerate_1")).to_be_visible()
+    assert not library.exists()  # Extract made the file; Undo removes it
+
+
+def test_an_edit_is_answered_with_a_patch_of_that_node(
+    page: Page, editor: object, examples_copy: Path
+) -> None:
+    url = editor(examples_copy / "uis1-concrete.xmi")  # type: ignore[operator]
+    open_editor(page, url)
+    node(page, "Accelerate_1").focus()
+    page.keyboard.press("Enter")
+    speed = page.get_by_role("region", name="Properties").get_by_label("Target speed", exact=True)
+    speed.fill("9")
+    with ops_answer(page) as answered:
+        speed.press("Enter")
+    request = answered.value.request
+    answer = answered.value.json()
+    # The page names the revision it holds, so the server sends only the edited node.
+    assert request.headers["x-sceml-revision"].isdigit()
+    assert "nodes" not in answer
+    assert [n["name"] for n in answer["patch"]["nodes"]["changed"]] == ["Accelerate_1"]
+    expect(node(page, "Accelerate_1")).to_contain_text("targetSpeed: 9 m/s")
+    expect(node(page, "Accelerate_2")).to_contain_text("targetSpeed: 4 m/s")

@@ -20,7 +20,9 @@ def test_emf_reads_and_writes_an_imported_scenario_with_opaque_nodes(
     source, out = tmp_path / "in", tmp_path / "out"
     source.mkdir()
     out.mkdir()
-    import_to_file(FILES / "alks-lane-keeping.xosc", source / "alks.xmi")
+    # Its controller activation is kept opaque (the lane offset of alks-lane-keeping, used
+    # here before, maps now).
+    import_to_file(FILES / "cut-in.xosc", source / "alks.xmi")
     assert "OpaqueAction" in (source / "alks.xmi").read_text()
     result = emf.run("roundtrip", ECORE, source, out, Path("alks.xmi"))
     assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
@@ -112,6 +114,56 @@ def test_emf_keeps_an_imported_lane_change_target(emf: Harness, tmp_path: Path) 
     result = emf.run("roundtrip", ECORE, source, out, Path("lanes.xmi"))
     assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
     assert differences(io.load(source / "lanes.xmi").root, io.load(out / "lanes.xmi").root) == []
+
+
+def test_emf_reads_and_writes_global_nodes_declarations_signals_and_lane_headings(
+    emf: Harness, tmp_path: Path
+) -> None:
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    for name in ("variables", "lane-headings", "traffic-signals", "lane-offsets"):
+        import_to_file(FILES / f"{name}.xosc", source / f"{name}.xmi")
+        result = emf.run("roundtrip", ECORE, source, out, Path(f"{name}.xmi"))
+        assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+        original, from_emf = io.load(source / f"{name}.xmi"), io.load(out / f"{name}.xmi")
+        assert differences(original.root, from_emf.root) == []
+    globals_back = io.load(out / "variables.xmi").root
+    kinds = {n.eClass.name for n in globals_back.nodes}
+    assert {"SetVariable", "VariableCondition"} <= kinds
+    assert [(d.name, d.variable) for d in globals_back.nodes[0].declarations] == [
+        ("Counter", True),
+        ("Mood", True),
+    ]
+    lead = next(
+        a for a in io.load(out / "lane-headings.xmi").root.nodes[0].actors if a.name == "Lead"
+    )
+    assert lead.startPosition.h.value == 3.141593
+
+
+def test_emf_reads_and_writes_imported_controllers(emf: Harness, tmp_path: Path) -> None:
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    names = ("controller_object", "controller_assign", "controller_override")
+    for name in names:
+        import_to_file(FILES / f"{name}.xosc", source / f"{name}.xmi")
+        result = emf.run("roundtrip", ECORE, source, out, Path(f"{name}.xmi"))
+        assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+        original = io.load(source / f"{name}.xmi").root
+        assert differences(original, io.load(out / f"{name}.xmi").root) == [], name
+    from_emf = io.load(out / "controller_override.xmi").root
+    (override,) = [n for n in from_emf.nodes if n.name == "Override"]
+    assert [(o.kind.name, o.active, o.value) for o in override.overrides] == [
+        ("throttle", True, 0.3),
+        ("steeringWheel", True, 0.05),
+        ("gear", True, 3.0),
+    ]
+    # An unset domain (EBooleanObject) stays unset through EMF, not false.
+    (assign,) = [n for n in from_emf.nodes if n.name == "Assign"]
+    assert (assign.activation.longitudinal, assign.activation.lateral) == (True, None)
+    ego = next(a for a in io.load(out / "controller_object.xmi").root.nodes[0].actors)
+    assert [(p.name, p.value) for p in ego.controller.properties][1] == ("timeGap", "2.0")
 
 
 def test_emf_keeps_how_many_times_an_imported_node_runs(emf: Harness, tmp_path: Path) -> None:

@@ -115,9 +115,21 @@ def test_export_checks_are_the_registrys_rules() -> None:
 def test_every_kind_maps_in_every_version_of_the_generic_profile() -> None:
     from sceml import catalog
 
+    # Variables came with OpenSCENARIO 1.2.
+    since_1_2 = {"VariableCondition", "SetVariable"}
     for cls in catalog.action_node_kinds():
         for version in ("1.0", "1.1", "1.2", "1.3"):
-            assert unsupported_reason(cls.__name__, version) is None, (cls.__name__, version)
+            if (cls.__name__, version) == ("OverrideController", "1.0"):
+                continue  # below
+            reason = unsupported_reason(cls.__name__, version)
+            if cls.__name__ in since_1_2 and version in ("1.0", "1.1"):
+                assert reason is not None and "needs OpenSCENARIO 1.2" in reason
+            else:
+                assert reason is None, (cls.__name__, version)
+    # 1.0 allows an OverrideControllerValueAction only beside an assignment, all six inputs given.
+    assert unsupported_reason("OverrideController", "1.0") == (
+        "OverrideController needs OpenSCENARIO 1.1 or later"
+    )
     assert unsupported_reason("Teleport", "1.3") == "Teleport has no OpenSCENARIO mapping"
 
 
@@ -168,3 +180,40 @@ def test_world_positions_and_every_maneuver_export(tmp_path: Path) -> None:
         tree = export(b.scenario, version=version)
         names = [event.get("name") for event in tree.iter("Event")]
         assert "Overtake_1__back" in names and "Follow_1__gap_reached" in names
+
+
+def test_controller_settings_a_version_cannot_say_are_refused_naming_the_holder() -> None:
+    from sceml.build import activation, controller
+
+    b = ScenarioBuilder("Ctl", map="map.xodr", level="concrete", date="2026-01-01T00:00:00")
+    ego = b.actor(
+        "Car",
+        "ego",
+        ego=True,
+        start=lane("3", 1, 30.0),
+        controller=controller("ALKS", "movement"),
+        activation=activation(lighting=True),
+    )
+    assign = b.add(
+        "AssignController",
+        ego,
+        name="takeOver",
+        controller=controller("ACC"),
+        activation=activation(longitudinal=True),
+    )
+    b.chain(b.root, assign, b.end)
+    with pytest.raises(ExportError) as caught:
+        export(b.scenario, version="1.1")
+    refused = {(d.element.name, d.code) for d in caught.value.diagnostics}
+    # controllerType and the lighting domain came with 1.2; an assignment that activates, 1.1.
+    assert refused == {("ego", "SCEML-E008")}
+    assert "controllerType needs OpenSCENARIO 1.2" in str(caught.value)
+    with pytest.raises(ExportError) as caught:
+        export(b.scenario, version="1.0")
+    refused = {(d.element.name, d.code) for d in caught.value.diagnostics}
+    assert refused == {("ego", "SCEML-E008"), ("takeOver", "SCEML-E008")}
+    messages = " ".join(d.message for d in caught.value.diagnostics)
+    assert "an assignment that also activates needs OpenSCENARIO 1.1" in messages
+    ego.controller.controllerType = None
+    ego.controllerActivation = None
+    assert export(b.scenario, version="1.1") is not None

@@ -70,7 +70,7 @@ def test_the_json_report_lists_maneuvers_conditions_and_the_replay(tmp_path: Pat
     by_actor = {a["name"]: [m["kind"] for m in a["maneuvers"]] for a in report["actors"]}
     assert by_actor == {
         "ego": ["Accelerate", "TurnLeft"],
-        "car": ["Accelerate"],
+        "car": ["DriveDistance"],  # its speed jumps, as the original's DriveDistance
         "pedestrian": ["Accelerate", "Cross"],
     }
     waits = {(c["actor"], c["kind"], c["reference"], c["target"]) for c in report["conditions"]}

@@ -129,15 +129,30 @@ def test_noisy_recordings_of_uis1_mostly_come_back_whole() -> None:
         and replays_closely(found)
         for found in noisy_runs(run, 8)
     ]
-    assert sum(whole) >= 6, whole
+    assert sum(whole) >= 7, whole
 
 
-def test_noisy_recordings_keep_the_maneuvers_of_uis2_and_overtaking() -> None:
-    for name in ("uis2-concrete.xmi", "overtaking-concrete.xmi"):
-        scenario, run = original(EXAMPLES / name)
-        expected = signature(scenario, run, min_change=1.0).maneuvers
-        same = [
-            signature(found.scenario, found.replay.run, min_change=1.0).maneuvers == expected  # type: ignore[union-attr]
-            for found in noisy_runs(run, 8)
-        ]
-        assert sum(same) >= 6, (name, same)
+def test_noisy_recordings_of_uis2_come_back_with_their_maneuvers_and_waits() -> None:
+    # 7 of 8 (the code before this guard: 6, one of them 86 m off, its car waiting for a
+    # speed the ego never reached in the scenario); the car's jump now replays as a step, so
+    # most stay within 1 m without the bound of a ramp at the limit.
+    scenario, run = original(EXAMPLES / "uis2-concrete.xmi")
+    expected = signature(scenario, run, min_change=1.0)
+    found = list(noisy_runs(run, 8))
+    same = [
+        signature(f.scenario, f.replay.run, min_change=1.0) == expected  # type: ignore[union-attr]
+        for f in found
+    ]
+    assert sum(same) >= 7, same
+    close = [f.replay is not None and f.replay.largest < 1.0 for f in found]
+    assert sum(close) >= 5, [f.replay.largest for f in found if f.replay is not None]
+
+
+def test_noisy_recordings_keep_the_maneuvers_of_overtaking() -> None:
+    scenario, run = original(EXAMPLES / "overtaking-concrete.xmi")
+    expected = signature(scenario, run, min_change=1.0).maneuvers
+    same = [
+        signature(found.scenario, found.replay.run, min_change=1.0).maneuvers == expected  # type: ignore[union-attr]
+        for found in noisy_runs(run, 8)
+    ]
+    assert sum(same) >= 6, same

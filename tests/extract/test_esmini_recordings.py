@@ -28,12 +28,13 @@ EXPECTED = {
     "uis2": (
         {
             "ego": ["Accelerate", "TurnLeft"],
-            "car": ["Accelerate"],
+            # The car's speed jumps (the example's DriveDistance): a step, as recorded.
+            "car": ["DriveDistance"],
             "pedestrian": ["Accelerate", "Cross"],
         },
         {
-            ("car", "Accelerate_2", "InLocationRadius", "ego", None),
-            ("pedestrian", "Accelerate_3", "InVehicleRadius", "pedestrian", "car"),
+            ("car", "DriveDistance_1", "InLocationRadius", "ego", None),
+            ("pedestrian", "Accelerate_2", "InVehicleRadius", "pedestrian", "car"),
         },
     ),
 }

@@ -143,3 +143,60 @@ def test_a_bike_that_turns_onto_a_lane_after_crossing_crossed_to_that_corner() -
     assert cross.start == pytest.approx(2.0, abs=0.15)
     assert math.hypot(cross.destination[0] - 10.0, cross.destination[1] - 4.5) < 0.3
     assert found.replay is not None and found.replay.largest < 0.5
+
+
+def noisy(track: Track, seed: int, every: int = 2, sd: float = 0.1) -> Track:
+    """The track at every `every`-th sample (10 Hz) with Gaussian position noise of `sd` m."""
+    rng = np.random.default_rng(seed)
+    t = track.times[::every]
+    return Track(
+        track.name,
+        t,
+        track.x[::every] + rng.normal(0.0, sd, len(t)),
+        track.y[::every] + rng.normal(0.0, sd, len(t)),
+        None if track.heading is None else track.heading[::every],
+        kind=track.kind,
+    )
+
+
+def test_a_speed_that_jumps_from_standing_is_a_drive_distance() -> None:
+    # Standing until t = 2 s, then 10 m/s at once (a player's step): 60 m by t = 8 s. A ramp at
+    # the car's limit would replay up to 10² / (8 x 8) = 1.6 m off; a step replays it as it was.
+    t = times(8.0)
+    car = straight("ego", t, 0.0, 0.0, 0.0, 10.0 * np.maximum(t - 2.0, 0.0))
+    found = extract(Recording((car,), "by hand"))
+    (event,) = found.actors[0].maneuvers
+    assert event.kind == "DriveDistance"
+    assert event.start == pytest.approx(2.0, abs=0.01)
+    assert event.parameters["speed"] == pytest.approx(10.0, abs=0.01)
+    # It holds that speed to the end of the recording: what it drove from the jump on.
+    assert event.parameters["distance"] == pytest.approx(60.0, abs=0.2)
+    assert found.replay is not None and found.replay.largest < 0.2
+
+
+def test_a_jump_under_noise_is_timed_by_all_that_follows_it() -> None:
+    # The same jump at 10 Hz with 0.1 m of noise: the step's time and speed are fitted over the
+    # six seconds after it, so the replay stays within a metre on every seed.
+    t = times(8.0)
+    car = straight("ego", t, 0.0, 0.0, 0.0, 10.0 * np.maximum(t - 2.0, 0.0))
+    for seed in range(6):
+        found = extract(Recording((noisy(car, seed),), "by hand"))
+        (event,) = found.actors[0].maneuvers
+        assert event.kind == "DriveDistance", seed
+        assert event.start == pytest.approx(2.0, abs=0.05), seed
+        assert event.parameters["speed"] == pytest.approx(10.0, abs=0.05), seed
+        assert found.replay is not None and found.replay.largest < 1.0, seed
+
+
+def test_a_noisy_bike_that_sets_off_straight_does_not_cross() -> None:
+    # A bike stands for 1 s, then rides straight north at +1.5 m/s² to 4 m/s. With 0.1 m of
+    # noise at 10 Hz its first headings are noise (the smoothing's edge, a short chord); none
+    # of that is a crossing.
+    t = times(6.0)
+    bike = straight(
+        "bike", t, 0.0, 0.0, math.pi / 2, ramp_distance(t, 0.0, 1.0, 1.0 + 4 / 1.5, 4.0)
+    )
+    bike = Track(bike.name, bike.times, bike.x, bike.y, bike.heading, kind="Bicycle")
+    for seed in range(8):
+        (actor,) = extract(Recording((noisy(bike, seed),), "by hand"), check_replay=False).actors
+        assert [e.kind for e in actor.maneuvers] == ["Accelerate"], seed

@@ -70,7 +70,8 @@ def _position(position: EObject | None, heading: bool = True) -> str:
     if position is None:
         return "-"
     if isinstance(position, scm.LanePosition):
-        return f"lane({position.roadId},{position.laneId},{_number(position, 's')},{_number(position, 'offset')})"
+        turned = "" if position.h is None else f",h={_number(position, 'h')}"
+        return f"lane({position.roadId},{position.laneId},{_number(position, 's')},{_number(position, 'offset')}{turned})"
     # Trajectory vertices are written without a heading (docs/openscenario-mapping.md, issue 13),
     # so a Cross destination and FollowTrajectory waypoints come back without one.
     h = _number(position, "h") if heading else "*"
@@ -82,7 +83,12 @@ def _content(obj: EObject) -> str:
     parts = []
     for feature in obj.eClass.eAllStructuralFeatures():
         name = str(feature.name)
-        if name in SKIPPED or feature.derived or feature.transient:
+        if feature.derived or feature.transient:
+            continue
+        # A controller's name picks what drives the actor, a property's names its setting.
+        if name in SKIPPED and not (
+            name == "name" and isinstance(obj, scm.Controller | scm.Property)
+        ):
             continue
         if name == "referenceActor" and isinstance(obj, scm.TimeElapsed):
             # A wait does nothing to its actor, and the export writes it as a delay in its

@@ -68,9 +68,15 @@ def test_without_a_readable_map_the_report_says_how_turns_are_read(tmp_path: Pat
 def test_opaque_nodes_open_in_the_editor_and_are_not_in_the_palette(tmp_path: Path) -> None:
     # Copied beside the output with its map and catalogs: the editor reads the map it names
     # from the model's own folder.
-    for name in ("alks-lane-keeping.xosc", "highway.xodr"):
-        shutil.copy(FILES / name, tmp_path / name)
+    shutil.copy(FILES / "highway.xodr", tmp_path / "highway.xodr")
     shutil.copytree(FILES / "catalogs", tmp_path / "catalogs")
+    # Its lane offset (which SceML maps) becomes a visibility change, which SceML has no kind for.
+    text = (FILES / "alks-lane-keeping.xosc").read_text()
+    start, end = text.index("<LateralAction>"), text.index("</LateralAction>")
+    hidden = '<VisibilityAction graphics="false" traffic="true" sensors="true"/>'
+    (tmp_path / "alks-lane-keeping.xosc").write_text(
+        text[:start] + hidden + text[end + len("</LateralAction>") :]
+    )
     output = tmp_path / "alks.xmi"
     assert (
         CliRunner()
@@ -82,11 +88,11 @@ def test_opaque_nodes_open_in_the_editor_and_are_not_in_the_palette(tmp_path: Pa
     session.open(output)
     view = session.view()
     opaque = [node for node in view["nodes"] if node["kind"] == "OpaqueAction"]
-    # The LaneOffsetAction; its TraveledDistanceCondition maps to TraveledDistance.
+    # The VisibilityAction; its TraveledDistanceCondition maps to TraveledDistance.
     assert [node["look"] for node in opaque] == ["opaque"]
     assert opaque[0]["lines"] == [
         "SideVehicle",
-        "Action LaneOffsetAction",
+        "Action VisibilityAction",
         "OpenSCENARIO 1.3, line 81",
     ]
     assert view["style"]["looks"]["opaque"]["dashed"] is True

@@ -100,10 +100,11 @@ HAND_WRITTEN = {
         "1.2",
         ["Car", "Truck"],
         [
+            # The ACC switched on (1.2 still reads 1.0's unwrapped ActivateControllerAction).
+            "ActivateController",
             "EndNode",
             "Follow",
             "JoinAllFinished",
-            "OpaqueAction",
             "RootNode",
             "Stop",
             "Stop",
@@ -111,7 +112,7 @@ HAND_WRITTEN = {
             # Between the boxes (freespace), as SceML's TimeToCollision measures.
             "TimeToCollision",
         ],
-        {"Action ActivateControllerAction"},
+        set(),
     ),
     "alks-lane-keeping": (
         "1.3",
@@ -124,14 +125,14 @@ HAND_WRITTEN = {
             # and the condition alone decides when the run ends.
             "JoinAllFinished",
             "LaneChange",
-            "OpaqueAction",
+            "LaneOffset",
             "RootNode",
             "SpeedCondition",
             "TimeElapsed",
             # The odometer since the start, as SceML's TraveledDistance counts.
             "TraveledDistance",
         ],
-        {"Action LaneOffsetAction"},
+        set(),
     ),
 }
 
@@ -182,14 +183,20 @@ def test_follow_and_brake_reads_a_maneuver_from_its_catalog() -> None:
     assert lead_stop.rate.value == 7.0  # the reference's ParameterAssignment
     wait = lead_stop.incoming[0].source
     assert isinstance(wait, scm.TimeElapsed) and wait.duration.value == 5.0
-    not_represented = " ".join(e.message for e in imported.report.section("not represented"))
-    assert "controller" in not_represented
+    # The ego's controller, from the controller catalog, is the actor's.
+    ego = next(a for a in imported.scenario.nodes[0].actors if a.name == "Ego")
+    assert ego.controller.name == "ACCController"
+    assert "controller" not in " ".join(
+        e.message for e in imported.report.section("not represented")
+    )
 
 
-def test_an_opaque_node_exports_back_verbatim(tmp_path: Path) -> None:
+def test_a_lane_offset_and_the_stop_trigger_export_back(tmp_path: Path) -> None:
     back = round_trip(FILES / "alks-lane-keeping.xosc", tmp_path, "1.3")
     text = back.read_text()
+    # The lane offset, once kept opaque, is a LaneOffset node written back as it was read.
     assert '<LaneOffsetAction continuous="false">' in text
+    assert 'maxLateralAcc="0.3" dynamicsShape="sinusoidal"' in text
     assert '<AbsoluteTargetLaneOffset value="-0.8"/>' in text
     # The StopTrigger's TraveledDistance is a SceML kind now, written as a marker's condition.
     assert '<TraveledDistanceCondition value="400.0"/>' in text

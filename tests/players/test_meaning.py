@@ -6,7 +6,10 @@ import math
 
 import pytest
 
+import scemlmodel as scm
 from sceml.players import meaning
+from sceml.players.goals import goal_problems
+from sceml.players.record import PlayerRun
 
 
 def test_drive_distance_lasts_distance_over_speed() -> None:
@@ -56,3 +59,20 @@ def test_every_maneuver_controls_speed_or_path_and_turns_only_the_path() -> None
     assert meaning.controls("TurnLeft") == ("path",)  # a route: it leaves the speed alone
     assert meaning.controls("Overtake") == ("speed", "path")
     assert meaning.controls("InLocationRadius") == ()
+
+
+def test_controller_changes_complete_at_once_and_control_no_domain() -> None:
+
+    for kind in ("ActivateController", "AssignController", "OverrideController"):
+        assert meaning.completes_at_once(kind)
+        assert meaning.controls(kind) == ()
+    assert not meaning.completes_at_once("Accelerate")
+    node = scm.ActivateController(name="on", lateral=True)
+    run = PlayerRun("esmini")
+    # Activated at 1.0 s, its event started at 1.05 s: done in that step, or one step late.
+    assert goal_problems(node, (1.0, 1.05), 1.05, run, None) == []
+    assert goal_problems(node, (1.0, 1.05), 1.1, run, None) == []
+    assert goal_problems(node, (1.0, 1.05), 1.5, run, None) == [
+        "at its finish (1.50 s) it took 0.45 s after its start; a controller change completes "
+        "at once"
+    ]

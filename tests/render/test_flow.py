@@ -170,7 +170,7 @@ def test_legend_is_added_on_request() -> None:
     assert groups(parse(to_bytes(diagram(scenario), "svg")), "sceml-legend") == []
     svg = parse(to_bytes(diagram(scenario, legend=True), "svg"))
     assert len(groups(svg, "sceml-legend")) == 1
-    assert len(groups(svg, "sceml-legend-sample")) == 11
+    assert len(groups(svg, "sceml-legend-sample")) == 13
 
 
 def test_a_module_that_uses_itself_is_drawn_collapsed() -> None:

@@ -21,7 +21,10 @@ from sceml import io
 from sceml.build import (
     LibraryBuilder,
     ScenarioBuilder,
+    activation,
+    controller,
     lane,
+    override,
     relative_lane,
     relative_object,
     road,
@@ -401,6 +404,15 @@ def parameter_ref_in_scenario(out: Path) -> None:
     save(b.scenario, out, "p008-parameter-ref-in-scenario.xmi")
 
 
+@case("p009-undeclared-parameter", "SCEML-P009")
+def undeclared_parameter(out: Path) -> None:
+    b, _ = scenario()
+    b.declare("Declared", 1.0)
+    setter = b.add("SetParameter", None, parameter="Undeclared", value="2")
+    b.chain(b.root, setter, b.end)
+    save(b.scenario, out, "p009-undeclared-parameter.xmi")
+
+
 # Simultaneity --------------------------------------------------------------------------------
 
 
@@ -720,6 +732,59 @@ def opaque_not_an_action(out: Path) -> None:
     b.scenario.nodes.append(kept)
     b.chain(b.root, kept, b.end)
     save(b.scenario, out, "e006-opaque-not-an-action.xmi")
+
+
+# Controllers (issue 24) ---------------------------------------------------------------------------
+
+
+@case("k001-unnamed-controller", "SCEML-K001")
+def unnamed_controller(out: Path) -> None:
+    b, ego = scenario()
+    ego.controller = controller("ACCController", properties={"timeGap": "1.5"})
+    assign = b.add("AssignController", ego, controller=controller(""))
+    b.chain(b.root, assign, b.end)
+    save(b.scenario, out, "k001-unnamed-controller.xmi")
+
+
+@case("k002-input-overridden-twice", "SCEML-K002")
+def input_overridden_twice(out: Path) -> None:
+    b, ego = scenario()
+    twice = b.add("OverrideController", ego, overrides=[override("brake", 0.2), override("brake")])
+    b.chain(b.root, twice, b.end)
+    save(b.scenario, out, "k002-input-overridden-twice.xmi")
+
+
+@case("k003-pedal-beyond-travel", "SCEML-K003")
+def pedal_beyond_travel(out: Path) -> None:
+    b, ego = scenario()
+    # A steering wheel in rad may exceed 1; a pedal may not.
+    pressed = [override("throttle", 1.5), override("steeringWheel", 2.0)]
+    b.chain(b.root, b.add("OverrideController", ego, overrides=pressed), b.end)
+    save(b.scenario, out, "k003-pedal-beyond-travel.xmi")
+
+
+@case("k004-activation-of-nothing", "SCEML-K004")
+def activation_of_nothing(out: Path) -> None:
+    b, ego = scenario()
+    b.chain(b.root, b.add("ActivateController", ego), b.end)
+    save(b.scenario, out, "k004-activation-of-nothing.xmi")
+
+
+@case("k000-controllers-clean", "")
+def controllers_clean(out: Path) -> None:
+    b, ego = scenario()
+    ego.controller = controller("ACCController", "longitudinal", {"timeGap": "1.5"})
+    ego.controllerActivation = activation(longitudinal=True)
+    assign = b.add(
+        "AssignController",
+        ego,
+        controller=controller("InteractiveController"),
+        activation=activation(lateral=True),
+    )
+    brake = b.add("OverrideController", ego, overrides=[override("brake", 1.0)])
+    off = b.add("ActivateController", ego, longitudinal=False, lateral=False)
+    b.chain(b.root, assign, brake, off, b.end)
+    save(b.scenario, out, "k000-controllers-clean.xmi")
 
 
 # The map (SPEC §12): maps/intersection.xodr, see docs/map.md -------------------------------------

@@ -1,6 +1,6 @@
 // The editor page: toolbar, palette, diagram, properties and problems around one server view.
 
-import { useReactFlow } from "@xyflow/react";
+import { useReactFlow, useStoreApi } from "@xyflow/react";
 import { useCallback, useEffect, useMemo, useRef, useState } from "react";
 import { api, ApiError } from "./api";
 import { Diagram } from "./canvas/Diagram";
@@ -18,7 +18,8 @@ import { useExpanded } from "./state/useExpanded";
 import { freeSpot } from "./lib/placement";
 import { useServer } from "./state/useServer";
 import { useShortcuts } from "./state/useShortcuts";
-import type { Diagnostic, Op, PaletteItem, View, ViewNode, XY } from "./types";
+import { useStable } from "./state/useStable";
+import type { Answer, Diagnostic, Op, PaletteItem, View, ViewNode, XY } from "./types";
 
 type DialogState =
   | { type: "open" }
@@ -48,6 +49,7 @@ export function Editor() {
   const [direction, setDirection] = useState<Direction>(storedDirection);
   const diagram = useDiagramState(view, expanded, direction);
   const flow = useReactFlow();
+  const storeApi = useStoreApi();
   const [dialog, setDialog] = useState<DialogState>(null);
   const [clipboard, setClipboard] = useState<{ count: number; pastes: number }>({ count: 0, pastes: 0 });
   const canvas = useRef<HTMLDivElement>(null);
@@ -99,8 +101,19 @@ export function Editor() {
     const duration = fittedFor.current === document ? 200 : 0;
     fittedFor.current = document;
     fitNext.current = false;
-    requestAnimationFrame(() => void flow.fitView({ padding: 0.06, maxZoom: 1.25, duration }));
-  }, [laidOut, flow]);
+    // React Flow learns its pane's size from a ResizeObserver: a fit before that (a layout
+    // known from an earlier visit is ready at once) fits the page's first, narrow pane. Fit at
+    // once (what is drawn shows), and again once React Flow knows the pane's real size.
+    let frames = 0;
+    const fitOnceSized = () => {
+      const pane = canvas.current?.querySelector(".react-flow")?.getBoundingClientRect();
+      const { width, height } = storeApi.getState();
+      const sized = pane !== undefined && Math.abs(pane.width - width) < 1 && Math.abs(pane.height - height) < 1;
+      if (sized || frames === 0) void flow.fitView({ padding: 0.06, maxZoom: 1.25, duration });
+      if (!sized && frames++ < 60) requestAnimationFrame(fitOnceSized);
+    };
+    requestAnimationFrame(fitOnceSized);
+  }, [laidOut, flow, storeApi]);
 
   /** Where every top-level node is drawn now. */
   const drawnPositions = useCallback((): Record<string, XY> => {
@@ -230,6 +243,9 @@ export function Editor() {
     [editable, centre, edit, flow],
   );
 
+  const addFromPalette = useStable((item: PaletteItem) => addItem(item));
+  const stableShowProblem = useStable(showProblem);
+
   const arrange = useCallback(
     async (to: Direction = direction) => {
       const positions = await diagram.arrange(to);
@@ -302,7 +318,7 @@ export function Editor() {
   const open = useCallback(
     async (path: string, module: string) => {
       setDialog(null);
-      const attempt = async (discard: boolean): Promise<View | null> => {
+      const attempt = async (discard: boolean): Promise<Answer | null> => {
         try {
           const next = await server.enqueue(() => api.open(path, discard, module || undefined));
           return next;
@@ -425,7 +441,7 @@ export function Editor() {
         </div>
       )}
       <div className="workspace">
-        {view && !view.readOnly && <Palette view={view} onAdd={(item) => addItem(item)} />}
+        {view && !view.readOnly && <Palette palette={view.palette} style={view.style} disabled={view.readOnly} onAdd={addFromPalette} />}
         <div className="canvas" ref={canvas}>
           <Diagram
             view={view}
@@ -441,7 +457,7 @@ export function Editor() {
         </div>
         {view && <Properties view={view} node={single} selectionCount={selectedNodes.length} send={send} openDefinition={openDefinition} />}
       </div>
-      {view && <Problems diagnostics={view.diagnostics} onShow={showProblem} />}
+      {view && <Problems diagnostics={view.diagnostics} onShow={stableShowProblem} />}
       {view?.comparison && <Changes comparison={view.comparison} />}
       {view?.recovery && editable && recoveryLater !== view.recovery.path && (
         <RecoveryDialog

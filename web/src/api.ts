@@ -1,6 +1,6 @@
 // The HTTP calls of the editor protocol. Every call that changes something answers with a view.
 
-import type { Diagnostic, Op, View } from "./types";
+import type { Answer, Diagnostic, Op, View, ViewPatch } from "./types";
 
 /** A refused request: the server's `error` text, its status, and any diagnostics (export, 422). */
 export class ApiError extends Error {
@@ -32,10 +32,19 @@ export const TAB_ID: string = (() => {
   return made;
 })();
 
+/** The view revision this page holds: every request names it, and the server answers a view
+ * call with a patch to it when one applies (lib/patch.ts). */
+let heldRevision: number | null = null;
+
+export function holdRevision(revision: number | null): void {
+  heldRevision = revision;
+}
+
 async function call<T>(method: "GET" | "POST", path: string, body?: unknown): Promise<T> {
   let response: Response;
   try {
     const headers: Record<string, string> = { "X-SceML-Tab": TAB_ID };
+    if (heldRevision !== null) headers["X-SceML-Revision"] = String(heldRevision);
     if (body !== undefined) headers["Content-Type"] = "application/json";
     const json = body === undefined ? undefined : JSON.stringify(body);
     response = await fetch(path, {
@@ -64,13 +73,13 @@ async function call<T>(method: "GET" | "POST", path: string, body?: unknown): Pr
 }
 
 export const api = {
-  view: () => call<View>("GET", "/api/view"),
+  view: () => call<Answer>("GET", "/api/view"),
   ops: (ops: Op[], label?: string) =>
-    call<View>("POST", "/api/ops", label ? { ops, label } : { ops }),
-  undo: () => call<View>("POST", "/api/undo"),
-  redo: () => call<View>("POST", "/api/redo"),
+    call<Answer>("POST", "/api/ops", label ? { ops, label } : { ops }),
+  undo: () => call<Answer>("POST", "/api/undo"),
+  redo: () => call<Answer>("POST", "/api/redo"),
   copy: (nodes: string[]) => call<{ copied: number }>("POST", "/api/copy", { nodes }),
-  save: (path?: string) => call<View>("POST", "/api/save", path ? { path } : {}),
+  save: (path?: string) => call<Answer>("POST", "/api/save", path ? { path } : {}),
   exportXosc: (version: string, profile: string, path?: string) =>
     call<{ path: string; version: string }>("POST", "/api/export", {
       version,
@@ -78,14 +87,17 @@ export const api = {
       ...(path ? { path } : {}),
     }),
   open: (path: string, discard: boolean, module?: string) =>
-    call<View>("POST", "/api/open", { path, discard, ...(module ? { module } : {}) }),
-  openDefinition: (node: string) => call<View>("POST", "/api/open-definition", { node }),
-  recovery: (restore: boolean) => call<View>("POST", "/api/recovery", { restore }),
-  compare: (on: boolean) => call<View>("POST", "/api/compare", { on }),
+    call<Answer>("POST", "/api/open", { path, discard, ...(module ? { module } : {}) }),
+  openDefinition: (node: string) => call<Answer>("POST", "/api/open-definition", { node }),
+  recovery: (restore: boolean) => call<Answer>("POST", "/api/recovery", { restore }),
+  compare: (on: boolean) => call<Answer>("POST", "/api/compare", { on }),
 };
 
-/** A change event of the server's stream: the view's new version and the tab that made it. */
-export interface ChangeEvent {
+/** A change event of the server's stream: the tab that made it, the view's shared small fields
+ * (no undo or redo: those are each tab's own) and the patch to the new revision. */
+export type ChangeEvent = Partial<Omit<View, "undo" | "redo">> & {
   version: number;
+  revision: number;
   tab: string;
-}
+  patch?: ViewPatch;
+};

@@ -20,7 +20,7 @@ export type ParamType = ParamValue["type"];
 
 export type Position =
   | { type: "world"; x: ParamValue; y: ParamValue; z: ParamValue | null; h: ParamValue | null }
-  | { type: "lane"; roadId: string; laneId: number; s: ParamValue; offset: ParamValue | null }
+  | { type: "lane"; roadId: string; laneId: number; s: ParamValue; offset: ParamValue | null; h: ParamValue | null }
   | { type: "road"; roadId: string; s: ParamValue; t: ParamValue | null; h: ParamValue | null }
   | { type: "relativeLane"; entity: string; dLane: number; ds: ParamValue | null; offset: ParamValue | null }
   | { type: "relativeRoad"; entity: string; ds: ParamValue | null; dt: ParamValue | null }
@@ -52,6 +52,7 @@ export type Look =
   | "longitudinal"
   | "lateral"
   | "composite"
+  | "controller"
   | "condition"
   | "root"
   | "end"
@@ -176,6 +177,8 @@ export interface Comparison {
 
 export interface View {
   version: number;
+  /** The revision of the view's shared content: a patch applies to the page that holds its base. */
+  revision: number;
   comparison?: Comparison;
   document: DocumentInfo;
   readOnly: boolean;
@@ -196,5 +199,30 @@ export interface View {
   /** A recovery copy an earlier run left (after a crash or kill), offered until answered. */
   recovery: { path: string; written: string } | null;
 }
+
+/** The entries of a list that changed or were added, the ids removed, and the whole order of
+ * ids when it is not the old order less the removed with the added at the end. */
+export interface ListPatch<T> {
+  changed: T[];
+  removed: string[];
+  order?: string[];
+}
+
+/** What changed in the shared content since revision `base` (docs/editor-protocol.md, Patches). */
+export interface ViewPatch {
+  base: number;
+  nodes?: ListPatch<ViewNode>;
+  edges?: ListPatch<ViewEdge>;
+  actors?: Actor[];
+  diagnostics?: Diagnostic[];
+  palette?: PaletteGroup[];
+  style?: Style;
+  choices?: Record<string, string[]>;
+  valueTypes?: string[];
+  comparison?: Comparison | null;
+}
+
+/** A view, or (for a page that named its revision) the view's small fields and a patch. */
+export type Answer = View | (Omit<View, "nodes" | "edges" | "actors" | "diagnostics" | "palette" | "style" | "choices" | "valueTypes" | "comparison"> & { patch: ViewPatch });
 
 export type Op = { op: string } & Record<string, unknown>;

@@ -131,7 +131,8 @@ def extract_command(
     """Extract a concrete SceML scenario from the recorded drive RECORDING.
 
     Each actor's trajectory is smoothed and cut into maneuvers (Accelerate, Decelerate, Stop,
-    KeepVelocity, LaneChange, TurnLeft, TurnRight, Cross) with their parameters. When a
+    DriveDistance for a speed that jumps from standing, KeepVelocity, LaneChange, TurnLeft,
+    TurnRight, Cross) with their parameters. When a
     maneuver started later than the one before it finished, the condition that first held
     then becomes a node before it: another actor within a radius (InVehicleRadius), another
     actor at a place (InLocationRadius), another actor's speed (SpeedCondition), else a time.

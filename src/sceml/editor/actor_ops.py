@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from typing import Any
 
+from pyecore.ecore import EAttribute
+
 import scemlmodel as scm
 
 from ..modules import naming
@@ -14,7 +16,7 @@ from ..traversal import attributes, containments
 from .context import EditContext, argument, check_text, referrers, require
 from .errors import OperationError
 from .fields import actor_kind_names
-from .node_ops import adopt, attribute_value, place
+from .node_ops import adopt, attribute_value, nested_holder, place, set_attribute
 from .values import position_from_json, value_from_json
 
 _ACTOR_TEXT_FIELDS = ("name", "isEgo", "model")
@@ -56,11 +58,19 @@ def remove_actor(ctx: EditContext, op: dict[str, Any]) -> None:
 
 
 def set_actor(ctx: EditContext, op: dict[str, Any]) -> None:
-    """Set an actor's name, kind, ego flag or simulator model."""
+    """Set an actor's name, kind, ego flag, simulator model, or a field of its controller or of
+    the domains switched at the start (`controller.name`, `controllerActivation.lateral`)."""
     actor = ctx.actor(argument(op, "actor"))
     field, value = argument(op, "field"), op.get("value")
     if field == "kind":
         _change_kind(ctx, actor, _kind(value))
+        return
+    nested = nested_holder(ctx, actor, str(field))
+    if nested is not None:
+        owner, name = nested
+        feature = owner.eClass.findEStructuralFeature(name)
+        require(isinstance(feature, EAttribute), f"an actor has no field {field!r} to set")
+        set_attribute(ctx, owner, feature, attribute_value(feature, value))
         return
     require(field in _ACTOR_TEXT_FIELDS, f"an actor has no field {field!r} to set")
     if field == "name":

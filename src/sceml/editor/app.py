@@ -31,6 +31,7 @@ from .errors import EditorError, ExportRefused, OperationError
 from .headers import SecurityHeaders
 from .journal import Journal
 from .live import Broadcaster
+from .patches import ViewHistory
 from .session import EditorSession
 
 #: The host names the editor answers to; it listens on 127.0.0.1 only.
@@ -65,6 +66,22 @@ def _error(message: str, status: int, **extra: Any) -> JSONResponse:
 #: The header a page names itself with, so each tab undoes its own edits.
 TAB_HEADER = "x-sceml-tab"
 _TAB = re.compile(r"[A-Za-z0-9_-]{1,64}")
+#: The header a page names the view revision it holds with, to be answered with a patch.
+REVISION_HEADER = "x-sceml-revision"
+#: The routes that answer with a view (the others answer with their own small results).
+VIEW_ROUTES = frozenset(
+    {
+        "/api/view",
+        "/api/ops",
+        "/api/undo",
+        "/api/redo",
+        "/api/save",
+        "/api/open",
+        "/api/open-definition",
+        "/api/recovery",
+        "/api/compare",
+    }
+)
 
 
 def _tab(request: Request) -> str:
@@ -72,6 +89,15 @@ def _tab(request: Request) -> str:
     if tab != ANY_TAB and not _TAB.fullmatch(tab):
         raise BadBody(f"the {TAB_HEADER} header must be 1 to 64 letters, digits, - or _")
     return tab
+
+
+def _revision(request: Request) -> int | None:
+    text = request.headers.get(REVISION_HEADER)
+    if text is None:
+        return None
+    if not text.isascii() or not text.isdigit() or len(text) > 18:
+        raise BadBody(f"the {REVISION_HEADER} header must be a view revision (a number)")
+    return int(text)
 
 
 Action = Callable[[dict[str, Any], str], Any]
@@ -84,7 +110,8 @@ class Api:
         self.session = session
         self.lock = threading.Lock()
         self.live = Broadcaster()
-        self.journal = Journal(lambda: self._locked(lambda body, tab: session.recover(), {}, ""))
+        self.history = ViewHistory()
+        self.journal = Journal(lambda: self._locked(lambda body, tab: session.recover(), {}, "")[0])
 
     async def call(self, request: Request, action: Action) -> Response:
         """Read the JSON body, run `action` under the lock, answer JSON or a protocol error."""
@@ -93,11 +120,14 @@ class Api:
             return _error("a request from another site was refused", 403)
         try:
             tab = _tab(request)
+            known = _revision(request)
             body: dict[str, Any] = {}
             if request.method == "POST":
                 raw = await read_limited(request.stream(), request.headers.get("content-length"))
                 body = parse_object(raw)
-            result = await run_in_threadpool(self._locked, action, body, tab)
+            if request.url.path in VIEW_ROUTES:
+                action = self._patched(action, known)
+            result, event = await run_in_threadpool(self._locked, action, body, tab)
         except ExportRefused as error:
             return _error(error.message, error.status, diagnostics=error.diagnostics)
         except EditorError as error:
@@ -110,12 +140,23 @@ class Api:
             return _error(f"the file cannot be used: {error.strerror or error}", 400)
         if request.method == "POST":
             self.journal.changed()
-            self.live.publish({"version": self.session.version, "tab": tab})
+            self.live.publish(event)
         return JSONResponse(result)
 
-    def _locked(self, action: Action, body: dict[str, Any], tab: str) -> Any:
+    def _patched(self, action: Action, known: int | None) -> Action:
+        """`action`, its view answered as a patch when the page holds a revision one applies to."""
+
+        def patched(body: dict[str, Any], tab: str) -> Any:
+            return self.history.answer(action(body, tab), known)
+
+        return patched
+
+    def _locked(self, action: Action, body: dict[str, Any], tab: str) -> tuple[Any, dict[str, Any]]:
+        """`action`'s result and the change event other pages get if it changed something
+        (made under the lock, so that it is this request's revision)."""
         with self.lock:
-            return action(body, tab)
+            result = action(body, tab)
+            return result, {**self.history.event(tab), "version": self.session.version}
 
     async def events(self, request: Request) -> Response:
         """The stream of change events every open page listens to."""
@@ -147,7 +188,7 @@ class Api:
             "/api/undo": ("POST", lambda body, tab: s.undo(tab)),
             "/api/redo": ("POST", lambda body, tab: s.redo(tab)),
             "/api/copy": ("POST", lambda body, tab: {"copied": s.copy(body.get("nodes"), tab)}),
-            "/api/save": ("POST", lambda body, tab: s.save(body.get("path"))),
+            "/api/save": ("POST", lambda body, tab: s.save(body.get("path"), tab)),
             "/api/export": ("POST", export),
             "/api/open": ("POST", open_file),
             "/api/open-definition": (
@@ -157,7 +198,7 @@ class Api:
                 ),
             ),
             "/api/recovery": ("POST", lambda body, tab: s.resolve_recovery(body.get("restore"))),
-            "/api/compare": ("POST", lambda body, tab: s.compare(_flag(body, "on"))),
+            "/api/compare": ("POST", lambda body, tab: s.compare(_flag(body, "on"), tab)),
         }
         routes = [self._route(path, method, action) for path, (method, action) in table.items()]
         return [*routes, Route("/api/events", self.events)]

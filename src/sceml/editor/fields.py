@@ -12,6 +12,7 @@ import scemlmodel as scm
 
 from .. import catalog
 from ..traversal import features
+from .nested import attributes_of, is_nested, shown
 from .values import position_to_json, value_to_json
 
 #: Features no panel edits: graph structure, notation, and what other fields already show.
@@ -20,7 +21,13 @@ _HIDDEN = {"incoming", "outgoing", "actors", "environment", "bindings", *catalog
 _FIRST = {"name": 0, "referenceActor": 1, "targetActor": 2}
 _HIDDEN_BY_CLASS = {"ModuleUse": {"definition", "overrides"}}
 #: Where a feature name reads badly as words: `isEgo` is shown as "Ego".
-_LABELS = {"isEgo": "Ego", "h": "Heading", "roadId": "Road", "laneId": "Lane"}
+_LABELS = {
+    "isEgo": "Ego",
+    "h": "Heading",
+    "roadId": "Road",
+    "laneId": "Lane",
+    "controllerType": "Type",
+}
 _SPEED_UNIT = "m/s"
 
 
@@ -87,7 +94,10 @@ def feature_field(
 def _attribute_field(feature: EAttribute, held: object) -> dict[str, Any]:
     if isinstance(feature.eType, EEnum):
         return {"type": "enum", "options": enum_options(feature.eType), "value": _enum_value(held)}
-    if type_name(feature) in ("EBoolean", "EBooleanObject"):
+    if type_name(feature) == "EBooleanObject":
+        # Unset (null) has a meaning of its own: a controller domain left as it is.
+        return {"type": "bool", "value": None if held is None else bool(held)}
+    if type_name(feature) == "EBoolean":
         return {"type": "bool", "value": bool(held)}
     return {"type": "text", "value": held}
 
@@ -121,11 +131,31 @@ def node_fields(node: EObject) -> list[dict[str, Any]]:
     # The name first, as every panel shows it, then who performs the node; the rest in
     # metamodel order (a stable sort keeps it).
     ordered = sorted(_features(node), key=lambda feature: _FIRST.get(feature.name, len(_FIRST)))
+    performed = not isinstance(node, scm.ActionNode) or catalog.performed_by_actor(node)
     for feature in ordered:
         if feature.name == "targetActor" and not catalog.allows_target(node):
             continue
+        if feature.name == "referenceActor" and not performed:
+            continue  # a global kind (SetParameter, ...): no actor performs it
+        if isinstance(feature, EReference) and is_nested(feature):
+            fields.extend(nested_fields(node, feature))
+            continue
         made = feature_field(node, feature)
         if made is not None:
+            fields.append(made)
+    return fields
+
+
+def nested_fields(owner: EObject, feature: EReference) -> list[dict[str, Any]]:
+    """A contained controller's or activation's attributes as `<feature>.<attribute>` fields."""
+    held = shown(owner, feature)
+    prefix, title = f"{feature.name}.", label(str(feature.name))
+    fields = []
+    for attribute in attributes_of(held):
+        made = feature_field(held, attribute, prefix)
+        if made is not None:
+            # "Controller name", not a second "Name" beside the actor's own.
+            made["label"] = f"{title} {label(str(attribute.name)).lower()}"
             fields.append(made)
     return fields
 

@@ -14,6 +14,7 @@ from ..modules import naming
 from .context import EditContext, argument, check_text, require
 from .errors import OperationError
 from .fields import type_name
+from .nested import blank, nested_feature, removes
 from .values import position_from_json, value_from_json
 
 #: Node kinds the palette adds besides the action nodes.
@@ -67,7 +68,8 @@ def add_node(ctx: EditContext, op: dict[str, Any]) -> None:
     kind = argument(op, "kind")
     require(kind in addable_kinds(), f"cannot add a node of kind {kind!r}")
     node = getattr(scm, kind)(name=naming.numbered(kind, ctx.node_names()))
-    if op.get("actor") is not None:
+    # The palette adds with the actor in view; a global kind (SetParameter, ...) takes none.
+    if op.get("actor") is not None and catalog.performed_by_actor(kind):
         require(isinstance(node, scm.ActionNode), f"a {kind} has no actor")
         node.referenceActor = ctx.participant(op["actor"])
     adopt(ctx, node)
@@ -120,12 +122,24 @@ def move(ctx: EditContext, op: dict[str, Any]) -> None:
 
 
 def _holder(ctx: EditContext, node: scm.GraphElement, field: str) -> tuple[EObject, str]:
-    """The object and feature a field name means (`environment.x` is the root's environment)."""
+    """The object and feature a field name means (`environment.x` is the root's environment,
+    `controller.name` an AssignController's controller)."""
     if isinstance(node, scm.RootNode) and field.startswith("environment."):
         if node.environment is None:
             ctx.rec.set(node, "environment", scm.Environment())
         return node.environment, field.removeprefix("environment.")
-    return node, field
+    return nested_holder(ctx, node, field) or (node, field)
+
+
+def nested_holder(ctx: EditContext, owner: EObject, field: str) -> tuple[EObject, str] | None:
+    """The contained object a prefixed field is an attribute of, made when still unset."""
+    found = nested_feature(owner, field)
+    if found is None:
+        return None
+    feature, attribute = found
+    if owner.eGet(feature) is None:
+        ctx.rec.set(owner, str(feature.name), blank(feature))
+    return owner.eGet(feature), attribute
 
 
 def _feature(owner: EObject, name: str, node: scm.GraphElement) -> EStructuralFeature:
@@ -148,7 +162,16 @@ def set_field(ctx: EditContext, op: dict[str, Any]) -> None:
     require(isinstance(feature, EAttribute), f"{name!r} is not set with 'set'; see its type")
     if feature_name == "name" and owner is node:
         _check_name(ctx, node, value)
-    ctx.rec.set(owner, feature_name, attribute_value(feature, value))
+    set_attribute(ctx, owner, feature, attribute_value(feature, value))
+
+
+def set_attribute(ctx: EditContext, owner: EObject, feature: EAttribute, value: object) -> None:
+    """Set an attribute; a controller whose name is emptied is removed from its holder."""
+    holder, containment = owner.eContainer(), owner.eContainmentFeature()
+    if holder is not None and removes(containment, str(feature.name), value):
+        ctx.rec.set(holder, str(containment.name), None)
+        return
+    ctx.rec.set(owner, str(feature.name), value)
 
 
 def attribute_value(feature: EAttribute, value: object) -> object:
@@ -159,6 +182,8 @@ def attribute_value(feature: EAttribute, value: object) -> object:
         options = ", ".join(str(item.name) for item in kind.eLiterals)
         require(literal is not None, f"{feature.name} must be one of {options}, not {value!r}")
         return literal
+    if type_name(feature) == "EBooleanObject" and value is None:
+        return None  # unset: e.g. a controller domain left as it is
     if type_name(feature) in ("EBoolean", "EBooleanObject"):
         require(isinstance(value, bool), f"{feature.name} must be true or false")
         return value

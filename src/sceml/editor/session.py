@@ -270,12 +270,12 @@ class EditorSession:
             answer["created"] = created
         return answer
 
-    def compare(self, on: bool) -> dict[str, Any]:
+    def compare(self, on: bool, tab: str = ANY_TAB) -> dict[str, Any]:
         """Start or stop comparing the scenario with its saved file (`sceml diff`'s terms)."""
         if on and self.module is not None:
             raise OperationError("comparing with the saved file works on scenarios, not modules")
         self.comparison = SavedComparison(self.path, self.roots) if on else None
-        return self.view()
+        return self.view(tab=tab)
 
     def _compared(self, nodes: list[dict[str, Any]]) -> dict[str, Any] | None:
         if self.comparison is None:
@@ -376,8 +376,9 @@ class EditorSession:
 
     # Files ---------------------------------------------------------------------------------
 
-    def save(self, path: str | Path | None = None) -> dict[str, Any]:
-        """Save atomically, in place or to `path` (a scenario elsewhere is then edited there)."""
+    def save(self, path: str | Path | None = None, tab: str = ANY_TAB) -> dict[str, Any]:
+        """Save atomically, in place or to `path` (a scenario elsewhere is then edited there);
+        the view has `tab`'s undo and redo."""
         self._writable()
         assert self.document is not None
         target = self.path if path is None else self.allowed(path, "'path'")
@@ -398,7 +399,7 @@ class EditorSession:
         if self.comparison is not None:  # compare with the file just written
             self.comparison = SavedComparison(self.path, self.roots)
         self.version += 1
-        return self.view()
+        return self.view(tab=tab)
 
     def export(
         self, version: str = "1.3", profile: str = "generic", path: str | Path | None = None

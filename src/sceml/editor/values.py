@@ -146,6 +146,7 @@ def position_to_json(position: scm.Position | None) -> dict[str, Any] | None:
             "laneId": position.laneId,
             "s": value_to_json(position.s),
             "offset": value_to_json(position.offset),
+            "h": value_to_json(position.h),
         }
     if isinstance(position, scm.RoadPosition):
         return {
@@ -226,6 +227,7 @@ def position_from_json(
             laneId=lane_id,
             s=coordinate("s", required=True),
             offset=coordinate("offset", required=False),
+            h=coordinate("h", required=False),
         )
     if kind in _OFFSETS:
         return _relative_from_json(data, str(kind), coordinate, participants or {})

@@ -451,4 +451,6 @@ def plan_ttc(ctx: Context, node: scm.TimeToCollision, groups: list[Group]) -> Pl
     return marker_plan(ctx, node, groups, ctx.entity(node.referenceActor), check)
 
 
-from . import opaque  # noqa: E402, F401  (registers the OpaqueAction planner of sceml import)
+# Registers the planners of sceml import's OpaqueAction, the controller changes, the global
+# kinds and LaneOffset.
+from . import controller_actions, global_kinds, lane_offset, opaque  # noqa: E402, F401

@@ -74,6 +74,7 @@ class Context:
                 "laneId": str(position.laneId),
                 "s": text(position, "s"),
                 "offset": text(position, "offset"),
+                "h": None if position.h is None else text(position, "h"),
             }
         if isinstance(position, scm.RoadPosition):
             return {

@@ -1,4 +1,5 @@
-"""Entities and Init: inline Vehicle/Pedestrian objects, start positions and initial speeds."""
+"""Entities and Init: inline Vehicle/Pedestrian objects, their controllers, start positions,
+initial speeds and controller activations."""
 
 from __future__ import annotations
 
@@ -7,6 +8,7 @@ from typing import Any
 import scemlmodel as scm
 
 from .context import Context
+from .controllers import init_activation, object_controller
 from .values import number
 
 #: OpenSCENARIO vehicleCategory of each SceML vehicle kind.
@@ -51,6 +53,7 @@ def entity(ctx: Context, actor: scm.Actor) -> dict[str, Any]:
         return {
             "name": name,
             "object": "pedestrian",
+            "controller": object_controller(ctx, actor),
             "model": model,
             "model_name": model,
             "mass": PEDESTRIAN_MASS,
@@ -69,6 +72,7 @@ def entity(ctx: Context, actor: scm.Actor) -> dict[str, Any]:
     return {
         "name": name,
         "object": "vehicle",
+        "controller": object_controller(ctx, actor),
         # CARLA takes the blueprint from the Vehicle name; others read it as a label.
         "model_name": actor.model or category,
         "category": category,
@@ -108,9 +112,11 @@ def _axle(steering: float, wheel: float, track: float, position_x: float) -> dic
 
 
 def init_actions(ctx: Context, actor: scm.Actor) -> dict[str, Any]:
-    """The Private init block of an actor: teleport to the start, then its initial speed."""
+    """The Private init block of an actor: teleport to the start, its initial speed, then the
+    domains of its controller switched at the start."""
     return {
         "entity": ctx.entity(actor),
         "position": ctx.position(actor.startPosition),
         "speed": ctx.values.text(actor, "initialSpeed"),
+        "activation": init_activation(ctx, actor),
     }

@@ -28,6 +28,16 @@ CARLA_UNSUPPORTED = {
 }
 
 
+_VARIABLES = "variables came with 1.2 (earlier versions have parameters only)"
+#: Kinds a version before the given one cannot say, with the reason where one helps: 1.0 allows
+#: an OverrideControllerValueAction only beside an assignment, with every input given.
+SINCE: dict[str, tuple[str, str | None]] = {
+    "OverrideController": ("1.1", None),
+    "VariableCondition": ("1.2", _VARIABLES),
+    "SetVariable": ("1.2", _VARIABLES),
+}
+
+
 def repeatable(kind_name: str) -> bool:
     """Whether a node of this kind can run more than once when exported (`maxRuns`)."""
     return kind_name in ONE_EVENT
@@ -50,6 +60,9 @@ def unsupported_reason(kind_name: str, version: str, profile: str = "generic") -
         return None
     if kind_name not in PLANNERS:
         return f"{kind_name} has no OpenSCENARIO mapping"
+    since, why = SINCE.get(kind_name, (None, None))
+    if since is not None and _minor(version) < _minor(since):
+        return f"{kind_name} needs OpenSCENARIO {since} or later" + (f": {why}" if why else "")
     if profile == "carla" and kind_name in CARLA_UNSUPPORTED:
         return f"{kind_name} is not supported by the carla profile: {CARLA_UNSUPPORTED[kind_name]}"
     return None
@@ -60,10 +73,16 @@ def unsupported_reason(kind_name: str, version: str, profile: str = "generic") -
 _SINCE_1_1 = (("relativeDistanceType", "euclidean"), ("coordinateSystem", "entity"))
 
 
+def _minor(version: str) -> int:
+    return int(version.split(".")[1])
+
+
 def unsupported_setting(node: object, version: str) -> str | None:
-    """Why a node's settings (not its kind) cannot be said in `version`; None when they can."""
-    if version != "1.0":
-        return None
+    """Why a node's or actor's settings (not its kind) cannot be said in `version`; None when
+    they can."""
+    reason = _controller_setting(node, _minor(version))
+    if reason is not None or version != "1.0":
+        return reason
     for feature, plain in _SINCE_1_1:
         held = getattr(node, feature, None)
         if held is not None and held.name != plain:
@@ -76,3 +95,31 @@ def unsupported_setting(node: object, version: str) -> str | None:
 def supported_kinds(version: str, profile: str = "generic") -> tuple[str, ...]:
     """The action, join and port kinds that map for a version and profile."""
     return tuple(k for k in sorted(PLANNERS) if unsupported_reason(k, version, profile) is None)
+
+
+_ACTIVATE_SINCE_1_1 = ("lateral", "longitudinal")
+#: Controller domains OpenSCENARIO 1.2 added.
+_DOMAINS_SINCE_1_2 = ("lighting", "animation")
+
+
+def _controller_setting(node: object, minor: int) -> str | None:
+    """What of a controller a version cannot say: lighting and animation domains and
+    controllerType (1.2), an assignment that also activates (1.1). `node` is an
+    ActivateController, an AssignController or an actor (its controller and Init activation)."""
+    controller = getattr(node, "controller", None)
+    switches = (
+        node,
+        getattr(node, "activation", None),
+        getattr(node, "controllerActivation", None),
+    )
+    if minor < 2:
+        if controller is not None and controller.controllerType:
+            return "a controller's controllerType needs OpenSCENARIO 1.2 or later"
+        for holder in switches:
+            for domain in _DOMAINS_SINCE_1_2:
+                if getattr(holder, domain, None) is not None:
+                    return f"switching the {domain} domain needs OpenSCENARIO 1.2 or later"
+    activation = getattr(node, "activation", None)
+    if minor < 1 and any(getattr(activation, d, None) is not None for d in _ACTIVATE_SINCE_1_1):
+        return "an assignment that also activates needs OpenSCENARIO 1.1 or later"
+    return None

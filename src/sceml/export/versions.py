@@ -36,6 +36,11 @@ class Traits:
     pedestrian_model_required: bool
     #: 1.1 introduced `${...}` expressions in attribute values.
     expressions: bool = False
+    #: 1.1 wraps ActivateControllerAction in ControllerAction and makes its parts optional
+    #: (1.0 needs an OverrideControllerValueAction of all six inputs beside an assignment).
+    controller_action: bool = False
+    #: 1.2 added Controller's controllerType.
+    controller_type: bool = False
 
 
 def traits(version: str) -> Traits:
@@ -58,4 +63,6 @@ def traits(version: str) -> Traits:
         precipitation_intensity=minor >= 1,
         pedestrian_model_required=minor == 0,
         expressions=minor >= 1,
+        controller_action=minor >= 1,
+        controller_type=minor >= 2,
     )

@@ -20,6 +20,7 @@ from .actions import PLANNERS
 from .context import Context, Event, node_name
 from .entities import entity, init_actions
 from .environment import environment
+from .global_kinds import declarations
 from .names import NameTable, sanitize
 from .triggers import Finish, Group, activation, simulation_started, simulation_time_over
 from .values import ParameterHook, Values
@@ -61,6 +62,8 @@ class View:
     act_start: list[Group]
     groups: list[dict[str, Any]]
     stop: list[Group]
+    #: The root's declarations (`global_kinds.declarations`): parameters and variables.
+    declared: dict[str, list[dict[str, Any]]] = field(default_factory=dict)
     #: node name -> (first event, finish event) of every node that has events (an inlined node
     #: has none: `players.flows.inlined`); not rendered, for callers and tests.
     events_of: dict[str, tuple[str, str]] = field(default_factory=dict)
@@ -126,7 +129,15 @@ def build_view(scenario: scm.Scenario, options: Options) -> View:
             for node in nodes
             if isinstance(finish := finishes[node], str)
         },
+        declared=_declared(root, ctx.traits.variables),
     )
+
+
+def _declared(root: scm.RootNode, variables_allowed: bool) -> dict[str, list[dict[str, Any]]]:
+    try:
+        return declarations(root, variables_allowed)
+    except ValueError as problem:
+        raise MappingError(str(problem), element=root.name) from None
 
 
 def _is_one(node: scm.GraphElement) -> bool:

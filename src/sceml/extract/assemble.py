@@ -21,6 +21,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, cast
 
+import numpy as np
+
 import scemlmodel as scm
 
 from ..build import ScenarioBuilder, world
@@ -63,8 +65,10 @@ def add_actor_graph(
     actors: dict[str, scm.Actor],
     ego: str | None,
     thresholds: Thresholds,
+    speed_changes: dict[str, list[Event]],
 ) -> list[Inferred]:
-    """Add one actor's maneuvers (with their waits) from the root to the end node."""
+    """Add one actor's maneuvers (with their waits) from the root to the end node;
+    `speed_changes` are every actor's extracted speed changes (for speed conditions)."""
     name = str(actor.name)
     own = motions[name]
     begin = _Tail(builder.root, float(own.times[0]))
@@ -72,21 +76,15 @@ def add_actor_graph(
     inferred: list[Inferred] = []
     for event in sorted(events, key=lambda e: e.start):
         tail = _tail_for(event, tails, begin, thresholds)
-        node = builder.add(event.kind, actor, **_node_parameters(event.parameters, event))
+        why = None
         if not event.flexible and event.start - tail.finish > _least_wait(event, thresholds):
             driving = own.at(own.speed, event.start) > thresholds.standing_speed
             driving = driving and not _speed_changing(events, tail.finish, event.start)
-            # The condition starts a flow after the tail finished, and holds a flow before the
-            # maneuver's node starts (which is when the maneuver shows, plus SHOWS_EARLY).
-            why = explain(
-                name,
-                event.start + SHOWS_EARLY - FLOW_DELAY,
-                tail.finish + FLOW_DELAY,
-                motions,
-                ego,
-                thresholds,
-                driving=driving,
+            why = _explain_start(
+                event, tail.finish, motions, ego, thresholds, driving, speed_changes, own.step
             )
+        node = builder.add(event.kind, actor, **_node_parameters(event.parameters, event))
+        if why is not None:
             condition = _condition(builder, why, actors)
             builder.chain(tail.node, condition, node)
             inferred.append(Inferred(str(condition.name), str(node.name), name, event.start, why))
@@ -97,6 +95,54 @@ def add_actor_graph(
         if tail.node is not builder.root:
             builder.flow(tail.node, builder.end)
     return inferred
+
+
+#: The order in which explanations are preferred: the simplest first (`sync.explain`).
+_SIMPLEST = ("InVehicleRadius", "SpeedCondition", "InLocationRadius")
+
+
+def _explain_start(
+    event: Event,
+    activation: float,
+    motions: dict[str, Motion],
+    ego: str | None,
+    thresholds: Thresholds,
+    driving: bool,
+    speed_changes: dict[str, list[Event]],
+    step: float,
+) -> Explanation:
+    """Why `event` started after waiting since `activation` (when the node before finished).
+
+    The condition starts a flow after that node finished, and holds a flow before the
+    maneuver's node starts (which is when the maneuver shows, plus SHOWS_EARLY). On a noisy
+    recording a speed change's start is known only within its `start_range`: each start in
+    it (nearest the fitted one first) is tried, the simplest explanation found anywhere in it
+    is taken, and the change is retimed to start where that explanation puts it.
+    """
+    starts = [event.start]
+    if event.start_range is not None:
+        low, high = event.start_range
+        others = np.arange(max(low, activation + step), high + 1e-9, step)
+        starts += sorted((float(s) for s in others), key=lambda s: abs(s - event.start))
+
+    def explained(start: float) -> Explanation:
+        return explain(
+            event.actor,
+            start + SHOWS_EARLY - FLOW_DELAY,
+            activation + FLOW_DELAY,
+            motions,
+            ego,
+            thresholds,
+            driving=driving,
+            speed_changes=speed_changes,
+        )
+
+    found = [(start, explained(start)) for start in starts]
+    rank = {kind: k for k, kind in enumerate(_SIMPLEST)}
+    best_start, best = min(found, key=lambda pair: rank.get(pair[1].kind, len(rank)))
+    if best_start != event.start:
+        event.retime(best_start)
+    return best
 
 
 def _tail_for(event: Event, tails: list[_Tail], begin: _Tail, thresholds: Thresholds) -> _Tail:

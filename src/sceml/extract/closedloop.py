@@ -30,7 +30,7 @@ from .pipeline import Extraction
 from .recording import Recording, Track
 from .thresholds import Thresholds
 
-_SPEED_KINDS = (*LONGITUDINAL, "DriveDistance")
+_SPEED_KINDS = LONGITUDINAL
 _QUIET = ("KeepVelocity",)
 _CONDITIONS = (
     "InVehicleRadius",
@@ -163,19 +163,19 @@ def _waited_for(node: scm.GraphElement, run: Run) -> list[scm.ActionNode]:
 
 
 def allowed_error(found: Extraction, actor: str, within: float = 1.0) -> float:
-    """How far (m) the replay of `actor` may stray: `within`, or for an actor whose speed jumped
-    faster than its kind allows (noted by the extraction) the most a ramp at the limit with the
-    same midpoint can differ from a jump, (speed change)² / (8 × limit), plus what one sample
-    step of the jump's timing moves it (speed change × step) and 0.2 m."""
-    if not any(note.startswith(f"{actor}:") for note in found.notes):
-        return within
+    """How far (m) the replay of `actor` may stray: `within`, or for a speed change of the
+    actor that was recorded steeper than its kind allows and extracted at the limit (a stop
+    that jumps to standing; a step up is a DriveDistance, which replays it as it was) the most
+    a ramp at the limit with the same midpoint can differ from a jump, (speed change)² /
+    (8 × limit), plus what one sample step of the jump's timing moves it (speed change ×
+    step) and 0.2 m."""
     step = found.replay.run.step if found.replay is not None else 0.0
     bounds = [
         change**2 / (8 * float(str(e.parameters["rate"]))) + change * step + 0.2
         for a in found.actors
         if a.name == actor
         for e in a.maneuvers
-        if e.longitudinal
+        if e.limited
         for change in [
             abs(float(str(e.parameters.get("targetSpeed", 0.0))) - (e.from_speed or 0.0))
         ]

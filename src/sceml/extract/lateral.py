@@ -24,6 +24,9 @@ CROSSERS = ("Pedestrian", "Bicycle")
 _CROSS_ANGLE = 0.15
 #: Below this speed (m/s) the heading is not judged (a chord of 0.8 m over a 1 s window).
 _HEADING_SPEED = 0.8
+#: Nor where the recording's noise moves it by more than this (rad, one standard deviation):
+#: a third of a crossing's change, so that noise alone seldom makes one.
+_HEADING_ERROR = _CROSS_ANGLE / 3
 
 
 def path_events(
@@ -34,6 +37,7 @@ def path_events(
     moving = motion.moving
     # Slower than this the heading of a noisy track is mostly noise: it is not judged there.
     judged = moving & (motion.speed > max(thresholds.standing_speed, _HEADING_SPEED))
+    judged &= motion.heading_error <= _HEADING_ERROR
     turning = (np.abs(motion.turn_rate) > thresholds.yaw_rate) & judged
     settle = max(1, int(round(thresholds.smoothing_window / step / 2)))
     events: list[Event] = []
@@ -102,16 +106,23 @@ def _classify(
 
 def _turned(motion: Motion, first: int, last: int, span: int) -> float:
     """How far the heading turned from before `first` to after `last`: the medians over `span`
-    samples either side, which noise moves less than single samples."""
-    before = motion.heading[max(first - span, 0) : first + 1]
-    after = motion.heading[last : last + span + 1]
-    moving_before = motion.moving[max(first - span, 0) : first + 1]
-    moving_after = motion.moving[last : last + span + 1]
-    if moving_before.any():
-        before = before[moving_before]
-    if moving_after.any():
-        after = after[moving_after]
-    return float(np.median(after) - np.median(before))
+    samples either side, which noise moves less than single samples. Samples where the actor
+    moves with a heading the noise leaves unsure (setting off slowly) are left out: those where
+    it moves surely count, else those where it stands (its heading held); with neither on a
+    side, nothing is known to have turned (0)."""
+    sure = motion.moving & (motion.heading_error <= _HEADING_ERROR)
+    usable = sure | ~motion.moving
+
+    def median(lo: int, hi: int) -> float | None:
+        values = motion.heading[lo:hi]
+        for mask in (sure[lo:hi], usable[lo:hi]):
+            if mask.any():
+                return float(np.median(values[mask]))
+        return None
+
+    after = median(last, last + span + 1)
+    before = median(max(first - span, 0), first + 1)
+    return 0.0 if after is None or before is None else after - before
 
 
 def _lane_change(motion: Motion, first: int, last: int, thresholds: Thresholds) -> Event | None:
@@ -125,7 +136,8 @@ def _lane_change(motion: Motion, first: int, last: int, thresholds: Thresholds) 
     # Sideways is judged against the heading before the change; but within the smoothing's
     # first half window that heading already shows the change (its chord reaches into it),
     # so there the heading after it is taken: a lane change ends heading as it began.
-    if first >= reach // 2:
+    # So is a heading the noise leaves unsure (an actor setting off, whose chord is short).
+    if first >= reach // 2 and motion.heading_error[first] <= _HEADING_ERROR:
         h0 = float(motion.heading[first])
     else:
         h0 = float(np.median(motion.heading[last : last + reach + 1]))

@@ -7,6 +7,8 @@ then each one's start and end are refined by least squares against the profile a
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 from numpy.typing import NDArray
 from scipy.signal import savgol_filter
@@ -16,8 +18,25 @@ from .motion import Array, Motion
 from .thresholds import Thresholds
 
 
-def speed_events(motion: Motion, thresholds: Thresholds) -> list[Event]:
-    """The actor's speed changes as Accelerate, Decelerate and Stop events, in time order."""
+@dataclass(frozen=True)
+class RateLimits:
+    """The most an actor kind can accelerate and brake (m/s²; None: no limit), and the speed
+    (m/s) below which it stands."""
+
+    acceleration: float | None
+    deceleration: float | None
+    standing: float
+
+
+def speed_events(
+    motion: Motion, thresholds: Thresholds, limits: RateLimits | None = None
+) -> list[Event]:
+    """The actor's speed changes as Accelerate, Decelerate and Stop events, in time order.
+
+    With `limits`, a change of an actor already moving is fitted among the ramps its kind can
+    drive (a constrained least-squares fit); one from standing may still fit as a jump, which
+    `within_limits` makes a step.
+    """
     step = motion.step
     window = max(5, int(round(thresholds.smoothing_window / step)) | 1)
     acceleration = savgol_filter(
@@ -28,7 +47,7 @@ def speed_events(motion: Motion, thresholds: Thresholds) -> list[Event]:
     events = []
     bounds = [0, *[k for span in spans for k in span], len(motion.times) - 1]
     # The plateaus either side weigh in up to this many samples: enough to pin v0 and v1.
-    margin = int(3.0 / step)
+    margin = int(6.0 / step)
     edge = len(motion.times) - max(1, int(thresholds.smoothing_window / step))
     for i, (a, b) in enumerate(spans):
         if a >= edge:
@@ -46,17 +65,21 @@ def speed_events(motion: Motion, thresholds: Thresholds) -> list[Event]:
             # Only a ramp of an actor already moving is taken back to the start: a standing
             # actor's start is an event of its own, whose time a condition may explain.
             thresholds.smoothing_window if motion.moving[0] else 0.0,
+            limits,
         )
         if fitted is None:
             continue
-        t1, t2, v0, v1 = fitted
+        t1, t2, v0, v1, starts = fitted
         if t1 < thresholds.min_wait:
             t1 = float(motion.times[0])  # a change from the first moments: from the start
+            starts = None
         if abs(v1 - v0) < thresholds.min_speed_change:
             continue
         if v1 < v0 and t1 <= motion.times[0] and not motion.moving[0]:
             continue  # slowing down from the start of an actor that stands: the filter's edge
-        events.append(_event(motion.name, t1, t2, v0, v1, thresholds))
+        event = _event(motion.name, t1, t2, v0, v1, thresholds)
+        event.start_range = starts
+        events.append(event)
     return events
 
 
@@ -101,9 +124,11 @@ def _fit_ramp(
     after: int,
     step: float,
     anchor: float,
-) -> tuple[float, float, float, float] | None:
+    limits: RateLimits | None = None,
+) -> tuple[float, float, float, float, tuple[float, float] | None] | None:
     """Least-squares fit of the distance driven over [before, after]: speed v0 until t1, a
-    linear change to v1 at t2, then v1.
+    linear change to v1 at t2, then v1; and on a noisy recording the range of starts that
+    fit as well (`_start_range`), else None.
 
     For fixed t1 and t2 the distance is linear in (s0, v0, v1), so each candidate pair is one
     small linear least-squares problem (solved together, by their normal equations); the pairs
@@ -118,11 +143,11 @@ def _fit_ramp(
     reach = (max(b - a, 4) + 6) * step
     starts = np.arange(max(times[before], times[a] - reach), min(times[a] + reach, times[b]), step)
     ends = np.arange(max(times[a], times[b] - reach), min(times[b] + reach, times[after]), step)
-    coarse = _best_ramp(window, values, starts, ends)
+    coarse = _best_ramp(window, values, starts, ends, limits)
     if coarse is None:
         return None
     fine = np.arange(-step, step + 1e-9, step / 4)
-    refined = _best_ramp(window, values, coarse[0] + fine, coarse[1] + fine)
+    refined = _best_ramp(window, values, coarse[0] + fine, coarse[1] + fine, limits)
     t1, t2, v0, v1, error = refined or coarse
     variance = error / max(len(window) - 5, 1)
     if _steady_error(window, values) - error <= _SIGNIFICANT * variance:
@@ -132,10 +157,41 @@ def _fit_ramp(
         # with a short plateau that follows the noise. It is taken from the start when that
         # fits as well as noise allows: within a few times the noise's variance, which the
         # free fit's residual estimates (as in a likelihood-ratio test for one parameter more).
-        anchored = _best_ramp(window, values, np.array([times[0]]), coarse[1] + fine)
+        anchored = _best_ramp(window, values, np.array([times[0]]), coarse[1] + fine, limits)
         if anchored is not None and anchored[4] - error <= 6 * variance:
             t1, t2, v0, v1, error = anchored
-    return t1, t2, max(v0, 0.0), max(v1, 0.0)
+            return t1, t2, max(v0, 0.0), max(v1, 0.0), None
+    starts_range = _start_range(window, values, t1, t2, step, error, variance)
+    return t1, t2, max(v0, 0.0), max(v1, 0.0), starts_range
+
+
+#: A ramp whose squared error exceeds the best one's by less than this many times the noise's
+#: variance fits as well (the 95 % bound of a likelihood-ratio test for one parameter: the
+#: start, with the midpoint held).
+_AS_WELL = 3.84
+#: Below this spread (m²) of the residuals per sample a recording is clean: its starts are exact.
+_CLEAN_VARIANCE = 1e-4
+
+
+def _start_range(
+    window: Array, values: Array, t1: float, t2: float, step: float, error: float, variance: float
+) -> tuple[float, float] | None:
+    """The earliest and latest start of ramps with the midpoint of (t1, t2) that fit as well
+    as the best (squared `error`) within the noise's `variance`: how well the noise lets the
+    start be told. None on a clean recording, whose start is as fitted."""
+    if variance < _CLEAN_VARIANCE:
+        return None
+    bound = error + _AS_WELL * variance
+    middle = (t1 + t2) / 2
+    starts = np.arange(max(window[0], middle - 4.0), middle - step / 4, step / 4)
+    kept = []
+    for start in starts:
+        fitted = _best_ramp(window, values, np.array([start]), np.array([2 * middle - start]))
+        if fitted is not None and fitted[4] <= bound:
+            kept.append(float(start))
+    if not kept:
+        return None
+    return min(kept[0], t1), max(kept[-1], t1)
 
 
 #: How many times the noise's variance a ramp must explain beyond a steady speed to count
@@ -151,9 +207,10 @@ def _steady_error(window: Array, values: Array) -> float:
 
 
 def _best_ramp(
-    window: Array, values: Array, starts: Array, ends: Array
+    window: Array, values: Array, starts: Array, ends: Array, limits: RateLimits | None = None
 ) -> tuple[float, float, float, float, float] | None:
-    """The (t1, t2, v0, v1, squared error) of the candidate pairs that fits `values` best."""
+    """The (t1, t2, v0, v1, squared error) of the candidate pairs that fits `values` best;
+    with `limits`, of those a moving actor can drive (when there are any)."""
     t1, t2 = (grid.ravel() for grid in np.meshgrid(starts, ends, indexing="ij"))
     keep = (t2 > t1 + 1e-9) & (t1 >= window[0]) & (t2 <= window[-1])
     t1, t2 = t1[keep], t2[keep]
@@ -167,6 +224,13 @@ def _best_ramp(
     solution = np.linalg.solve(normal + 1e-9 * np.eye(3), right[..., None])[..., 0]
     fitted = np.einsum("pni,pi->pn", design, solution)
     errors = ((fitted - values) ** 2).sum(axis=1)
+    if limits is not None:
+        v0, v1 = solution[:, 1], solution[:, 2]
+        rate = np.abs(v1 - v0) / (t2 - t1)
+        allowed = np.where(v1 > v0, limits.acceleration or np.inf, limits.deceleration or np.inf)
+        possible = (v0 <= limits.standing) | (rate <= allowed * (1 + 1e-6))
+        if possible.any():
+            errors = np.where(possible, errors, np.inf)
     best = int(np.argmin(errors))
     return (
         float(t1[best]),
@@ -188,34 +252,110 @@ def _ramp_integral(t: Array, t1: Array, t2: Array) -> Array:
 
 
 def within_limits(
-    events: list[Event], kind: str, acceleration: float | None, deceleration: float | None
+    events: list[Event],
+    kind: str,
+    acceleration: float | None,
+    deceleration: float | None,
+    standing: float,
 ) -> list[str]:
-    """Slow down ramps steeper than the actor kind's plausibility limits (SCEML-L002); returns
-    a note for each.
+    """Make speed changes steeper than the actor kind's plausibility limits (SCEML-L002) into
+    what they were; returns a note for each.
 
-    A speed that jumps (a player's step change) becomes a ramp at the limit with the same
-    midpoint, so the actor covers the same distance by the ramp's end; in between it is off
-    by up to (speed change)² / (8 × limit).
+    A speed that jumps (a player's step change: the preview's DriveDistance, an esmini step
+    SpeedAction) is no motion at a rate. A jump from standing to a speed is extracted as a
+    step, a DriveDistance at the jump's midpoint (its distance is set by `drive_distances`),
+    which replays it as recorded. Other jumps become a ramp at the limit with the same
+    midpoint, so the actor covers the same distance by the ramp's end; in between it is off by
+    up to (speed change)² / (8 × limit). A DriveDistance to standing never finishes; one of an
+    actor that moved before is warned about for the carla profile (scenario_runner counts its
+    distance from the act's start, SCEML-Y003); and under
+    noise a steep ramp of a moving actor is often fitted as a near-jump, which a step would
+    then make worse.
     """
     notes = []
     for event in events:
-        if not event.longitudinal or event.from_speed is None:
+        if not event.longitudinal or event.from_speed is None or "rate" not in event.parameters:
             continue
         rate = float(str(event.parameters["rate"]))
         speeding_up = event.kind == "Accelerate"
         limit = acceleration if speeding_up else deceleration
-        if limit is None or rate <= limit:
-            continue
         middle = (event.start + event.end) / 2
-        half = abs(_target(event) - event.from_speed) / limit / 2
+        target = _target(event)
+        if limit is None or rate <= limit:
+            if limit is not None and event.start_range is not None:
+                # Only starts that keep the rate within the limit.
+                latest = middle - abs(target - event.from_speed) / (2 * limit)
+                low, high = event.start_range
+                event.start_range = (low, min(high, max(latest, event.start)))
+            continue
+        event.start_range = None
+        if target > standing and event.from_speed <= standing:
+            event.kind = "DriveDistance"
+            event.start = event.end = event.finish = middle
+            event.parameters = {"speed": round(target, 2)}
+            notes.append(
+                f"{event.actor}: the speed jumped from standing to {target:g} m/s at "
+                f"{middle:.2f} s ({rate:g} m/s², above the {kind} limit of {limit:g} m/s²); "
+                "it is extracted as a step of the speed, a DriveDistance"
+            )
+            continue
+        half = abs(target - event.from_speed) / limit / 2
         event.start, event.end = max(middle - half, 0.0), middle + half
         event.finish = event.end
         event.parameters["rate"] = float(limit)
+        event.limited = True
         notes.append(
             f"{event.actor}: the {event.kind} at {middle:.2f} s ran at {rate:g} m/s², above the "
             f"{kind} limit of {limit:g} m/s²; it is extracted at the limit"
         )
     return notes
+
+
+def drive_distances(events: list[Event], motion: Motion) -> None:
+    """Fit each step of the speed (DriveDistance) over all it shows, and give it its distance:
+    what the actor drove at that speed until its next maneuver started, or the recording
+    ended. The node then finishes when the actor next did something, as on the recording
+    (which shows no other end of a step), and that maneuver follows it."""
+    ordered = sorted(events, key=lambda e: e.start)
+    end = float(motion.times[-1])
+    for i, event in enumerate(ordered):
+        if event.kind != "DriveDistance":
+            continue
+        later = [e for e in ordered[i + 1 :] if e.start > event.start]
+        until = later[0].start if later else end
+        # The speed holds until the next speed change (a turn or crossing keeps it).
+        changes = [e.start for e in later if e.longitudinal]
+        _fit_step(event, motion, changes[0] if changes else end)
+        speed = float(str(event.parameters["speed"]))
+        distance = round(max(speed * (until - event.start), 0.1), 1)
+        event.parameters["distance"] = distance
+        event.finish = event.end = event.start + distance / speed
+
+
+def _fit_step(event: Event, motion: Motion, until: float) -> None:
+    """Refit a step from standing by least squares on the distance driven: s0 until the jump
+    at tj, then s0 + v (t - tj), over the standing before it and all the driving up to
+    `until`. The ramp fit looked at a few seconds either side; a step's speed is pinned far
+    better by everything after it, and a timing error of a tenth of a second would put the
+    actor a metre off for good (at 10 m/s)."""
+    step = motion.step
+    keep = (motion.times >= event.start - 3.0) & (motion.times <= until)
+    times, values = motion.times[keep], motion.along[keep]
+    if len(times) < 4:
+        return
+    jumps = event.start + np.arange(-2 * step, 2 * step + 1e-9, step / 10)
+    best: tuple[float, float, float] | None = None
+    for jump in jumps:
+        design = np.column_stack([np.ones_like(times), np.maximum(times - jump, 0.0)])
+        solution, *_ = np.linalg.lstsq(design, values, rcond=None)
+        error = float(((design @ solution - values) ** 2).sum())
+        if best is None or error < best[0]:
+            best = (error, float(jump), float(solution[1]))
+    assert best is not None
+    _, jump, speed = best
+    if speed > 0:
+        event.start = event.end = event.finish = jump
+        event.parameters["speed"] = round(speed, 2)
 
 
 def _target(event: Event) -> float:

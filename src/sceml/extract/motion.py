@@ -2,11 +2,12 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import NDArray
-from scipy.signal import savgol_filter
+from scipy.signal import savgol_coeffs, savgol_filter
 
 from ..errors import LoadError
 from .recording import Track
@@ -18,7 +19,8 @@ Array = NDArray[np.float64]
 @dataclass(frozen=True)
 class Motion:
     """One actor's motion on a uniform clock: smoothed x, y (m), speed (m/s), heading (rad,
-    unwrapped; held while standing) and arc length driven (m)."""
+    unwrapped; held while standing) and arc length driven (m); `heading_error` is the standard
+    deviation (rad) that the recording's noise gives the heading (0 on a clean recording)."""
 
     name: str
     times: Array
@@ -30,6 +32,7 @@ class Motion:
     turn_rate: Array
     arc: Array
     along: Array
+    heading_error: Array
 
     @property
     def step(self) -> float:
@@ -76,14 +79,77 @@ def smooth(track: Track, thresholds: Thresholds, step: float | None = None) -> M
     vy = savgol_filter(y, window, 3, deriv=1, delta=step, mode="interp")
     speed = np.hypot(vx, vy)
     moving = _moving(xs, ys, window // 2, step, thresholds.standing_speed)
+    # The filter's first and last half windows are extrapolations of a cubic: on noisy data
+    # their speed is several times noisier than inside (a standing bike "moves" at 3 m/s).
+    # Where a straight line through the raw samples of the edge window shows no motion that
+    # noise cannot explain, the actor stands there.
+    half = window // 2
+    for edge in (slice(0, window), slice(len(times) - window, len(times))):
+        if _stands(times[edge], x[edge], y[edge], thresholds.standing_speed):
+            ends = slice(0, half) if edge.start == 0 else slice(len(times) - half, len(times))
+            speed[ends] = 0.0
+            moving[ends] = False
     heading = _heading(track, times, xs, ys, moving, window // 2)
     turn_rate = savgol_filter(heading, window, 2, deriv=1, delta=step, mode="interp")
     lengths = np.hypot(np.diff(xs), np.diff(ys))
     # Standing still, the smoothed noise would add up to a distance never driven.
     lengths[~(moving[1:] | moving[:-1])] = 0.0
     arc = np.concatenate([[0.0], np.cumsum(lengths)])
-    along = _along(x, y, xs, ys, arc, heading, thresholds.standing_speed, speed)
-    return Motion(track.name, times, xs, ys, speed, moving, heading, turn_rate, arc, along)
+    noise = _noise(x, y, xs, ys, window)
+    along = _along(x, y, xs, ys, arc, heading, thresholds.standing_speed, speed, noise)
+    error = _heading_error(xs, ys, window, noise)
+    return Motion(track.name, times, xs, ys, speed, moving, heading, turn_rate, arc, along, error)
+
+
+def _noise(x: Array, y: Array, xs: Array, ys: Array, window: int) -> float:
+    """The standard deviation (m) of the position noise, from the residuals of the filter.
+
+    They keep 1 - h of the noise's variance, h being the filter's weight on a sample itself.
+    The spread is taken robustly (1.4826 times the median absolute residual, which is the
+    standard deviation for Gaussian noise): a clean recording of a sudden start has large
+    residuals only about the start, where the cubic rings, and stays clean.
+    """
+    half = window // 2
+    weight = float(savgol_coeffs(window, 3)[half])
+    inside = slice(half, len(x) - half) if len(x) > 2 * half else slice(None)
+    residual = np.concatenate([(x - xs)[inside], (y - ys)[inside]])
+    return float(1.4826 * np.median(np.abs(residual)) / math.sqrt(1 - weight))
+
+
+def _heading_error(xs: Array, ys: Array, window: int, noise: float) -> Array:
+    """The standard deviation (rad) that position noise gives the heading, the direction of
+    the chord across the window. The chord's two ends lie a window apart, each keeping h of
+    the noise's variance (the filter's weight on a sample itself: for a least-squares filter
+    the sum of its squared weights), so its error across is noise * sqrt(2 h), and the
+    heading's that over the chord's length.
+    """
+    half = window // 2
+    weight = float(savgol_coeffs(window, 3)[half])
+    chord = np.hypot(
+        _shifted(xs, half) - _shifted(xs, -half), _shifted(ys, half) - _shifted(ys, -half)
+    )
+    return noise * math.sqrt(2 * weight) / np.maximum(chord, 1e-9)
+
+
+#: How many standard errors a fitted speed must exceed to show motion rather than noise.
+_SIGNIFICANT_SPEED = 3.0
+
+
+def _stands(times: Array, x: Array, y: Array, standing: float) -> bool:
+    """Whether an actor stands over these raw samples: the slope of a straight line fitted to
+    x and to y (least squares) is below the standing speed, or within what the noise about
+    the line (estimated from the residuals) makes of a standing actor's slope."""
+    if len(times) < 4:
+        return False
+    t = times - times.mean()
+    spread = float((t**2).sum())
+    speeds, errors = [], []
+    for values in (x, y):
+        slope = float((t * (values - values.mean())).sum() / spread)
+        residual = values - values.mean() - slope * t
+        errors.append(float(np.sqrt((residual**2).sum() / (len(t) - 2) / spread)))
+        speeds.append(slope)
+    return bool(math.hypot(*speeds) < max(standing, _SIGNIFICANT_SPEED * math.hypot(*errors)))
 
 
 def _shifted(values: Array, by: int) -> Array:
@@ -130,7 +196,7 @@ def _heading(
     return heading
 
 
-#: Below this spread (m) of the raw positions about the smoothed path a recording is clean.
+#: Below this noise (m, `_noise`) a recording is clean.
 _CLEAN = 0.02
 
 
@@ -143,6 +209,7 @@ def _along(
     heading: Array,
     standing: float,
     speed: Array,
+    noise: float,
 ) -> Array:
     """Each raw sample's distance along the path.
 
@@ -151,7 +218,7 @@ def _along(
     is placed along the smoothed path instead: the smoothed arc plus its offset along the
     heading, which cuts tight corners by a few centimetres.
     """
-    if float(np.sqrt(np.mean((x - xs) ** 2 + (y - ys) ** 2))) < _CLEAN:
+    if noise < _CLEAN:
         lengths = np.hypot(np.diff(x), np.diff(y))
         lengths[(speed[1:] + speed[:-1]) / 2 <= standing / 10] = 0.0
         return np.concatenate([[0.0], np.cumsum(lengths)])

@@ -19,7 +19,7 @@ from .actors import ActorSpec, actor_kind, start_position
 from .assemble import Inferred, add_actor_graph
 from .events import Event
 from .lateral import path_events
-from .longitudinal import speed_events, within_limits
+from .longitudinal import RateLimits, drive_distances, speed_events, within_limits
 from .motion import Motion, sample_step, smooth
 from .recording import Recording, Track
 from .replay import ReplayFit, replay
@@ -102,9 +102,17 @@ def extract(
         models[track.name] = model
         notes += said
     inferred: list[Inferred] = []
+    speed_changes = {a.name: [e for e in a.maneuvers if e.longitudinal] for a in found}
     for actor in found:
         inferred += add_actor_graph(
-            builder, models[actor.name], list(actor.maneuvers), motions, models, ego, thresholds
+            builder,
+            models[actor.name],
+            list(actor.maneuvers),
+            motions,
+            models,
+            ego,
+            thresholds,
+            speed_changes,
         )
     if not builder.end.incoming:
         builder.flow(builder.root, builder.end)  # nobody did anything: the scenario is the start
@@ -140,11 +148,17 @@ def _actor(
 ) -> tuple[ExtractedActor, scm.Actor, list[str]]:
     """One actor: its kind, maneuvers, start and speed, added to the scenario; and notes."""
     kind = actor_kind(track, motion, spec, ego=track.name == ego)
-    speeds = speed_events(motion, thresholds)
+    rates = RateLimits(
+        limits.limit(kind, "max_acceleration"),
+        limits.limit(kind, "max_deceleration"),
+        thresholds.standing_speed,
+    )
+    speeds = speed_events(motion, thresholds, rates)
     notes = within_limits(
-        speeds, kind, limits.limit(kind, "max_acceleration"), limits.limit(kind, "max_deceleration")
+        speeds, kind, rates.acceleration, rates.deceleration, thresholds.standing_speed
     )
     events = sorted(speeds + path_events(motion, kind, thresholds, road_map), key=lambda e: e.start)
+    drive_distances(events, motion)
     speed = _initial_speed(motion, events, thresholds.standing_speed)
     length = spec.length if spec and spec.length else track.length
     width = spec.width if spec and spec.width else track.width

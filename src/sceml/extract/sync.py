@@ -17,6 +17,8 @@ from dataclasses import dataclass, field
 import numpy as np
 from numpy.typing import NDArray
 
+from ..simulate import DEFAULT_STEP
+from .events import Event
 from .motion import Array, Motion
 from .thresholds import Thresholds
 
@@ -62,14 +64,19 @@ def explain(
     thresholds: Thresholds,
     *,
     driving: bool,
+    speed_changes: dict[str, list[Event]] | None = None,
 ) -> Explanation:
-    """The best explanation of `actor` starting at `start` after waiting since `activation`."""
+    """The best explanation of `actor` starting at `start` after waiting since `activation`.
+
+    `speed_changes` are the speed changes extracted for each actor: a speed condition on
+    another actor is stated only at a speed its extracted change passes through.
+    """
     others = [m for name, m in motions.items() if name != actor]
     # The ego first: scenarios are written around it, so it is the likelier trigger.
     others.sort(key=lambda m: (m.name != ego, m.name))
     found = [
         *_vehicle_radius(actor, motions[actor], others, start, activation, thresholds),
-        *_speed(actor, others, start, activation, thresholds),
+        *_speed(others, start, activation, thresholds, speed_changes or {}),
         *_location(motions[actor], others, start, activation, thresholds),
     ]
     if not found:
@@ -167,7 +174,11 @@ def _vehicle_radius(
 
 
 def _speed(
-    actor: str, others: list[Motion], start: float, activation: float, thresholds: Thresholds
+    others: list[Motion],
+    start: float,
+    activation: float,
+    thresholds: Thresholds,
+    speed_changes: dict[str, list[Event]],
 ) -> list[Explanation]:
     found = []
     for other in others:
@@ -176,6 +187,8 @@ def _speed(
             continue
         speed = round(other.at(other.speed, start), 1)
         rising = other.at(acceleration, start) > 0
+        if not _passes(speed_changes.get(other.name, []), start, speed, rising, thresholds):
+            continue
         held = other.speed >= speed if rising else other.speed <= speed
         fires = _first(held, other.times, activation)
         if fires is None or abs(fires - start) > thresholds.sync_tolerance:
@@ -195,6 +208,28 @@ def _speed(
     return found
 
 
+def _passes(
+    changes: list[Event], start: float, speed: float, rising: bool, thresholds: Thresholds
+) -> bool:
+    """Whether one of the extracted speed changes runs at `start` (within the tolerance) and
+    passes through `speed` the same way, with a margin of the smallest speed change each side.
+
+    The smoothed speed of a noisy recording wanders by tenths of a m/s; a condition on a
+    value the extracted change never reaches (or passes long before) would never fire in the
+    scenario, and its actor would wait for ever.
+    """
+    margin = thresholds.min_speed_change / 2
+    tolerance = thresholds.sync_tolerance
+    for change in changes:
+        if change.from_speed is None or not change.start - tolerance <= start <= change.end:
+            continue
+        target = float(str(change.parameters.get("targetSpeed", change.parameters.get("speed", 0))))
+        low, high = sorted((change.from_speed, target))
+        if (target > change.from_speed) == rising and low + margin <= speed <= high - margin:
+            return True
+    return False
+
+
 def _location(
     own: Motion, others: list[Motion], start: float, activation: float, thresholds: Thresholds
 ) -> list[Explanation]:
@@ -204,9 +239,12 @@ def _location(
     for other in others:
         if other.at(other.speed, start) <= thresholds.standing_speed:
             continue
-        # The place is `radius` further on along the other's path, so that it enters the
-        # circle about that place at the start.
-        ahead = other.at(other.arc, start) + radius
+        # The place is `radius` further on along the other's path, less half a replay step's
+        # travel, so that it enters the circle about that place at the start, half a step
+        # clear of the boundary either side (a place right on it fires a step late or early
+        # in a replay, by the rounding of its coordinates).
+        margin = other.at(other.speed, start) * DEFAULT_STEP / 2
+        ahead = other.at(other.arc, start) + radius - margin
         when = float(np.interp(ahead, other.arc, other.times))
         x, y = other.position(when)
         heading = other.at(other.heading, when)

@@ -2,7 +2,8 @@
 
 Speed to Accelerate/Decelerate/Stop, longitudinal distance to Follow/Approach, a lane change by
 one lane to LaneChange, routing to TurnLeft/TurnRight/Cross (`geometry.py`), a polyline
-trajectory to FollowTrajectory (Cross for a SceML export's two-point crossing).
+trajectory to FollowTrajectory (Cross for a SceML export's two-point crossing); controller
+actions in `controllers.py`.
 """
 
 from __future__ import annotations
@@ -68,11 +69,15 @@ def map_action(build: Build, request: Request, motion: Motion) -> scm.ActionNode
 
 def _add(build: Build, request: Request, kind: str, **values: object) -> scm.ActionNode:
     node: scm.ActionNode = getattr(scm, kind)()
-    node.referenceActor = request.actor
+    if catalog.performed_by_actor(kind):
+        node.referenceActor = request.actor
     numeric = {spec.name for spec in catalog.parameters(kind)}
     for key, value in values.items():
         if value is None:
             continue
+        enum = node.eClass.findEStructuralFeature(key).eType
+        if isinstance(value, str) and hasattr(enum, "getEEnumLiteral"):
+            value = enum.getEEnumLiteral(value)
         node.eSet(key, traced.value(value) if key in numeric else value)  # type: ignore[arg-type]
     build.add(node, request.name)
     build.report.add(
@@ -318,3 +323,44 @@ def _is_self(vertex: etree._Element, actor: scm.Actor) -> bool:
         and float(here.get("dx", "0")) == 0.0
         and float(here.get("dy", "0")) == 0.0
     )
+
+
+#: LaneOffsetAction's dynamicsShape values, the same names as LaneChangeShape's.
+_SHAPES = ("sinusoidal", "linear", "cubic", "step")
+
+
+@_maps("PrivateAction/LateralAction/LaneOffsetAction")
+def _lane_offset(
+    build: Build, request: Request, action: etree._Element, motion: Motion
+) -> scm.ActionNode | str:
+    dynamics = action.find("LaneOffsetActionDynamics")
+    absolute = action.find("LaneOffsetTarget/AbsoluteTargetLaneOffset")
+    relative = action.find("LaneOffsetTarget/RelativeTargetLaneOffset")
+    target = absolute if absolute is not None else relative
+    shape = "sinusoidal" if dynamics is None else dynamics.get("dynamicsShape", "sinusoidal")
+    if target is None or shape not in _SHAPES:
+        return f"a lane offset with this target or shape ({shape}) has no SceML form"
+    if relative is not None and last_name(str(relative.get("entityRef"))) == request.actor.name:
+        return "a lane offset relative to the actor itself has no SceML form"
+    acceleration = None
+    if dynamics is not None and dynamics.get("maxLateralAcc") is not None:
+        acceleration = number(dynamics, "maxLateralAcc")
+    node = _add(
+        build,
+        request,
+        "LaneOffset",
+        offset=number(target, "value"),
+        maxLateralAcc=acceleration,  # unset: the language default, esmini's 0.5 m/s²
+        shape=shape,
+        continuous=action.get("continuous") == "true",
+    )
+    if relative is not None:
+        node.targetActor = build.actor(relative.get("entityRef"), relative)
+    return node
+
+
+#: What other modules use to register and add their own kinds (global_kinds.py).
+maps = _maps
+add_node = _add
+
+from . import controllers, global_kinds  # noqa: E402, F401  (register their actions' mappers)

@@ -18,6 +18,7 @@ import scemlmodel as scm
 
 from . import traced
 from .context import Build
+from .global_kinds import signal_condition, value_condition
 from .opaque import opaque_node
 from .placing import place
 from .positions import number
@@ -31,6 +32,9 @@ RULES = {
     "lessOrEqual": ("lessThan", True),
 }
 _BELOW = ("lessThan", "lessOrEqual")
+
+#: The ByValueConditions no actor fulfils, read by global_kinds.py.
+GLOBAL_CONDITIONS = ("ParameterCondition", "VariableCondition", "TrafficSignalCondition")
 
 Mapper = Callable[[Build, etree._Element, scm.Actor, str], "scm.ActionNode | str"]
 _MAPPERS: dict[str, Mapper] = {}
@@ -48,6 +52,9 @@ def condition_after(
     build: Build, condition: etree._Element, before: scm.GraphElement, wanted: str
 ) -> scm.GraphElement:
     """Nodes for `condition` activated by `before`; returns the node that finishes when it holds."""
+    by_value = condition.find("ByValueCondition/*")
+    if by_value is not None and by_value.tag in GLOBAL_CONDITIONS:
+        return _global(build, condition, by_value, before, wanted)
     by_entity = condition.find("ByEntityCondition")
     test = None if by_entity is None else by_entity.find("EntityCondition/*")
     triggering = None if by_entity is None else by_entity.find("TriggeringEntities")
@@ -80,6 +87,26 @@ def condition_after(
     for node in nodes:
         build.flow(node, join)
     return join
+
+
+def _global(
+    build: Build,
+    condition: etree._Element,
+    test: etree._Element,
+    before: scm.GraphElement,
+    wanted: str,
+) -> scm.GraphElement:
+    """A condition no actor fulfils: ParameterCondition or VariableCondition."""
+    if test.tag == "TrafficSignalCondition":
+        made: scm.ActionNode | str = signal_condition(build, test, wanted)
+    else:
+        made = value_condition(build, test, wanted, RULES)
+    if isinstance(made, str):
+        return _opaque(build, condition, build.default_actor(), before, wanted, made)
+    build.flow(before, made)
+    _report(build, condition, made, test)
+    _edge(build, condition, made)
+    return made
 
 
 def _opaque(

@@ -108,7 +108,9 @@ def _time_limit(group: etree._Element) -> float | None:
 
 def _ends(build: Build, trigger: Trigger, groups: list[Group]) -> list[scm.GraphElement]:
     """What the end node waits for, setting its policy."""
-    plain = all(not g.conditions and g.delay == 0 for g in groups)
+    # Plain: only elements to wait for, none of them delayed (a delayed one, as the export
+    # writes a wait inlined into the end, needs its TimeElapsed: `group_node` makes it).
+    plain = all(not g.conditions and all(d == 0 for _, d in g.after) for g in groups)
     if len(groups) == 1 and plain:
         return [n for n, _ in groups[0].after]
     if groups and plain and all(len(g.after) == 1 for g in groups):

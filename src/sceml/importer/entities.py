@@ -11,6 +11,7 @@ import scemlmodel as scm
 from .. import catalog
 from . import traced
 from .context import Build
+from .controllers import object_controller
 from .positions import number
 
 #: OpenSCENARIO vehicleCategory -> SceML actor kind (and whether that is a guess).
@@ -88,12 +89,7 @@ def _actor(build: Build, item: etree._Element) -> scm.Actor | None:
     if _is_marked_ego(body):
         actor.isEgo = True
     build.report.add("mapped", f"entity {name!r} -> {actor.eClass.name}", build.where(item))
-    if item.find("ObjectController") is not None:
-        build.report.add(
-            "not represented",
-            f"entity {name!r}: its controller (SceML has no controllers; players use their default)",
-            build.where(item.find("ObjectController")),
-        )
+    object_controller(build, actor, item)
     return actor
 
 

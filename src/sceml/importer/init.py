@@ -1,5 +1,5 @@
-"""Init to the root: start positions, initial speeds and the environment; any other Init
-action becomes an opaque node right after the root (it runs at the start, as it did)."""
+"""Init to the root: start positions, initial speeds, controllers and the environment; any other
+Init action becomes an opaque node right after the root (it runs at the start, as it did)."""
 
 from __future__ import annotations
 
@@ -12,6 +12,7 @@ import scemlmodel as scm
 from . import traced
 from .actions import Motion, Request, map_action
 from .context import Build
+from .controllers import init_controller
 from .opaque import opaque_node
 from .placing import place
 from .positions import number
@@ -49,8 +50,29 @@ def read_init(build: Build) -> list[scm.GraphElement]:
         elif item.tag == "GlobalAction" and item.find("EnvironmentAction") is not None:
             _environment(build, item.find("EnvironmentAction/Environment"))
         else:
-            kept.append(_keep(build, item, build.default_actor()))
+            kept.append(_global(build, item))
     return kept
+
+
+def _global(build: Build, element: etree._Element) -> scm.GraphElement:
+    """An Init global action as its node (a traffic signal state, a parameter set) performed at
+    the start, or an opaque node."""
+    wrapper = etree.Element("Action", name=f"init_{element.sourceline}")
+    wrapper.append(deepcopy(element))
+    request = Request(wrapper, build.default_actor(), f"Init_{_global_word(element)}")
+    made = map_action(build, request, Motion())
+    if isinstance(made, str):
+        return _keep(build, element, build.default_actor())
+    build.flow(build.root, made)
+    return made
+
+
+def _global_word(element: etree._Element) -> str:
+    """`TrafficSignalStateAction` for a GlobalAction holding one: the innermost element's tag."""
+    inner = element
+    while len(inner) and isinstance(inner[0].tag, str):
+        inner = inner[0]
+    return str(inner.tag)
 
 
 def _keep(build: Build, element: etree._Element, actor: scm.Actor) -> scm.GraphElement:
@@ -64,7 +86,10 @@ def _keep(build: Build, element: etree._Element, actor: scm.Actor) -> scm.GraphE
 
 
 def _private(build: Build, actor: scm.Actor, private: etree._Element) -> bool:
-    """Apply a teleport or speed action to the actor; False when it is something else."""
+    """Apply a teleport, speed or controller action to the actor; False when it is something
+    else."""
+    if init_controller(build, actor, private):
+        return True
     teleport = private.find("TeleportAction")
     if teleport is not None:
         start = place(build, teleport, initial=True)
@@ -76,6 +101,8 @@ def _private(build: Build, actor: scm.Actor, private: etree._Element) -> bool:
     follow = private.find("RoutingAction/FollowTrajectoryAction")
     if follow is not None and actor.startPosition is None:
         return _starts_on_trajectory(build, actor, private, follow)
+    if private.find("LateralAction/LaneOffsetAction") is not None:
+        return _from_the_start(build, actor, private)
     speed = private.find("LongitudinalAction/SpeedAction")
     if speed is not None and speed.find("SpeedActionTarget/RelativeTargetSpeed") is not None:
         return _relative_speed(build, actor, speed)
@@ -179,6 +206,18 @@ def _starts_on_trajectory(
         return True
     if isinstance(made, scm.FollowTrajectory) and len(made.waypoints) > 1:
         made.waypoints.remove(made.waypoints[0])  # the start itself
+    build.flow(build.root, made)
+    return True
+
+
+def _from_the_start(build: Build, actor: scm.Actor, private: etree._Element) -> bool:
+    """An Init action that takes time (a lane offset): its node right after the root, as
+    players run it from the start."""
+    wrapper = etree.Element("Action", name=f"Init_{actor.name}_{private.sourceline}")
+    wrapper.append(deepcopy(private))
+    made = map_action(build, Request(wrapper, actor, f"Init_{actor.name}"), Motion())
+    if isinstance(made, str):
+        return False
     build.flow(build.root, made)
     return True
 

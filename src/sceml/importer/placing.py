@@ -22,7 +22,7 @@ from ..maps.model import PositionError, WorldPose, wrap_angle
 from ..maps.resolve import road_to_lane
 from . import traced
 from .context import Build, last_name
-from .positions import number, position
+from .positions import lane_id, number, position
 
 #: Position kinds that name an entity, readable only where that entity's place is known.
 RELATIVE = frozenset(
@@ -62,6 +62,8 @@ def place(build: Build, holder: etree._Element | None, *, initial: bool) -> scm.
         return None
     if kind.tag == "RoadPosition":
         return _turned_to_the_road(build, kind)
+    if kind.tag == "LanePosition":
+        return _turned_to_the_lane(build, kind)
     if kind.tag in RELATIVE and not initial:
         return None
     try:
@@ -97,6 +99,27 @@ def _turned_to_the_road(build: Build, kind: etree._Element) -> scm.RoadPosition 
     )
 
 
+def _turned_to_the_lane(build: Build, kind: etree._Element) -> scm.LanePosition | None:
+    """A LanePosition with an absolute Orientation: the same heading relative to the lane's
+    direction of traffic at s (the model's h), exact, as that direction is fixed."""
+    assert build.road_map is not None
+    orientation = kind.find("Orientation")
+    try:
+        road, lane = str(kind.get("roadId")), lane_id(kind)
+        s, offset = number(kind, "s"), number(kind, "offset", 0.0)
+        along = build.road_map.lane_to_world(road, lane, s, offset).heading
+        h = number(orientation, "h") if orientation is not None else 0.0
+    except (PositionError, ValueError):
+        return None
+    return scm.LanePosition(
+        roadId=road,
+        laneId=lane,
+        s=traced.value(s),
+        offset=traced.value(offset),
+        h=scm.Value(value=wrap_angle(h - along)),
+    )
+
+
 def _in_its_lane(
     build: Build, given: scm.LanePosition, holder: etree._Element | None
 ) -> scm.LanePosition:
@@ -113,6 +136,8 @@ def _in_its_lane(
         return given
     if moved is None or isinstance(given.s.value, traced.Traced):
         return given  # off the road, or a distributed s: left as written
+    if given.h is not None:
+        moved.h = _same_heading(build, given, moved)
     where = None if holder is None else holder.find(".//LanePosition")
     build.report.add(
         "guessed",
@@ -121,6 +146,20 @@ def _in_its_lane(
         None if where is None else build.where(where),
     )
     return moved
+
+
+def _same_heading(
+    build: Build, given: scm.LanePosition, moved: scm.LanePosition
+) -> scm.ParameterValue:
+    """`given`'s heading relative to `moved`'s lane, which may carry traffic the other way."""
+    assert build.road_map is not None
+    h = given.h.value if isinstance(given.h, scm.Value) else None
+    if h is None or isinstance(h, traced.Traced):
+        return given.h
+    s = float(given.s.value)
+    old = build.road_map.lane_to_world(str(given.roadId), int(given.laneId), s).heading
+    new = build.road_map.lane_to_world(str(moved.roadId), int(moved.laneId), s).heading
+    return scm.Value(value=wrap_angle(float(h) + old - new))
 
 
 def _compute(build: Build, kind: etree._Element) -> scm.Position | None:
@@ -192,6 +231,9 @@ def _anchor(build: Build, kind: etree._Element) -> _Lane | None:
     if isinstance(start, scm.LanePosition) and road_map is not None:
         s, offset = float(start.s.value), float(start.offset.value) if start.offset else 0.0
         pose = road_map.lane_to_world(str(start.roadId), int(start.laneId), s, offset)
+        if start.h is not None:
+            turned = pose.heading + float(start.h.value)
+            pose = WorldPose(pose.x, pose.y, wrap_angle(turned))
         return _Lane(str(start.roadId), int(start.laneId), s, offset, pose)
     if isinstance(start, scm.WorldPosition):
         x, y = float(start.x.value), float(start.y.value)

@@ -45,13 +45,14 @@ def position(
                 laneId=lane_id(kind),
                 s=_value(kind, "s"),
                 offset=_value(kind, "offset", 0.0),
+                h=_relative_heading(kind),
             )
         if kind.tag == "RoadPosition":
             return scm.RoadPosition(
                 roadId=str(kind.get("roadId")),
                 s=_value(kind, "s"),
                 t=_value(kind, "t", 0.0),
-                h=_road_heading(kind),
+                h=_relative_heading(kind),
             )
         if kind.tag in _RELATIVE and actors is not None:
             return _relative(kind, actors)
@@ -60,11 +61,12 @@ def position(
     return None
 
 
-def _road_heading(kind: etree._Element) -> scm.Value | None:
-    """A RoadPosition's Orientation h (relative to the road, the default type); None when absent.
+def _relative_heading(kind: etree._Element) -> scm.Value | None:
+    """A Road- or LanePosition's Orientation h (relative to the road or lane, the default type);
+    None when absent.
 
-    An absolute orientation has no place in the model's road-relative h: ValueError keeps the
-    element for the caller's fallback.
+    An absolute orientation has no place in the model's relative h: ValueError keeps the element
+    for the caller's fallback (placing.py turns it with the map).
     """
     orientation = kind.find("Orientation")
     if orientation is None or orientation.get("h") is None:

@@ -61,6 +61,8 @@ class Slot:
     feature: str
     unit: str
     default: float | None
+    #: Unset has a meaning of its own (a lane or road position's h: the lane's direction).
+    optional: bool = False
 
     @property
     def is_module_parameter(self) -> bool:
@@ -134,7 +136,7 @@ def _slots_below(owner: EObject, prefix: str) -> Iterator[Slot]:
         default = spec.default
         if spec.per_actor_default:
             default = catalog.actor_dimensions(owner).get(spec.name)
-        yield Slot(f"{prefix}.{spec.name}", owner, spec.name, spec.unit, default)
+        yield Slot(f"{prefix}.{spec.name}", owner, spec.name, spec.unit, default, spec.optional)
     for reference in owner.eClass.eAllReferences():
         if not _is_nested_record(reference):
             continue
@@ -219,7 +221,7 @@ def unresolved(scenario: scm.Scenario, known: dict[str, Slot] | None = None) -> 
     missing = []
     for path, slot in known.items():
         held = slot.held()
-        unset_required = held is None and slot.default is None
+        unset_required = held is None and slot.default is None and not slot.optional
         if unset_required or not params.is_single_value(held):
             missing.append(path)
     return missing

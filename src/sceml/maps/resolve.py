@@ -99,7 +99,11 @@ def resolve(
         s, offset = nominal(position.s), nominal(position.offset, 0.0)
         if s is None or offset is None or not position.roadId or position.laneId is None:
             return None
-        return road_map.lane_to_world(str(position.roadId), int(position.laneId), s, offset)
+        pose = road_map.lane_to_world(str(position.roadId), int(position.laneId), s, offset)
+        h = nominal(position.h, 0.0)
+        if h is None:
+            return None
+        return WorldPose(pose.x, pose.y, wrap_angle(pose.heading + h))
     if isinstance(position, scm.RoadPosition):
         s, t = nominal(position.s), nominal(position.t, 0.0)
         if s is None or t is None or not position.roadId:

@@ -15,6 +15,7 @@ import os
 from collections.abc import Iterable
 from functools import cached_property
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -33,6 +34,14 @@ from .model import (
 from .planview import SAMPLE_STEP, ReferenceLine
 from .reader import MapError, parse_opendrive
 
+#: Slack of the road index (m) beyond a road's reach and twice the tolerance: half the sample
+#: step between the sampled polyline and the curve, and lanes that widen between two samples.
+_INDEX_MARGIN = 1.0
+#: How many points a map is asked about before the index is built.
+_UNINDEXED = 64
+#: How many answers of `world_to_lane` a map keeps (the oldest goes first).
+_ANSWERS_KEPT = 65536
+
 
 class RoadMap:
     """Roads and junctions of an OpenDRIVE file, with coordinate conversions.
@@ -48,6 +57,7 @@ class RoadMap:
         self.roads = {road.id: road for road in roads}
         self.junctions = {junction.id: junction for junction in junctions}
         self._lines: dict[str, ReferenceLine] = {}
+        self._answers: dict[tuple[float, float, float], tuple[LaneCoordinate, ...]] = {}
 
     # --- lanes -------------------------------------------------------------------------------
 
@@ -130,8 +140,24 @@ class RoadMap:
 
         Inside a junction several connecting roads overlap, so a point may lie on several lanes.
         """
+        # Rules ask about the same points again and again (a Cross's path, a start position
+        # named by many nodes): the answers are kept, a fresh list each time.
+        key = (x, y, tolerance)
+        known = self._answers.get(key)
+        if known is None:
+            known = self._answers[key] = tuple(self._lanes_at(x, y, tolerance))
+            if len(self._answers) > _ANSWERS_KEPT:
+                self._answers.pop(next(iter(self._answers)), None)
+        return list(known)
+
+    def _lanes_at(self, x: float, y: float, tolerance: float) -> list[LaneCoordinate]:
         found = []
-        for road in self.roads.values():
+        # A few questions are answered sooner by trying every road than by importing shapely
+        # and building the index (UIS1's validation asks a few dozen).
+        roads = (
+            self._near(x, y, tolerance) if len(self._answers) > _UNINDEXED else self.roads.values()
+        )
+        for road in roads:
             box = self._boxes.get(road.id)
             if box is None or not (
                 box[0] - tolerance <= x <= box[2] + tolerance
@@ -156,6 +182,49 @@ class RoadMap:
                         )
                     )
         return sorted(found, key=lambda c: (c.outside, abs(c.offset)))
+
+    def _near(self, x: float, y: float, tolerance: float) -> list[Road]:
+        """The roads that may have a lane within `tolerance` m of (x, y), in the map's order.
+
+        A road qualifies only when its reference line passes within its lanes' reach plus the
+        tolerance (twice: across and beyond either end) of the point; the index below finds
+        those lines without projecting onto each road. The margin covers the half sample step
+        between the polyline and the curve and lanes that widen between two samples.
+        """
+        import shapely  # about 10 ms, and only for maps that are asked about points
+
+        roads, tree, reach = self._index
+        if not roads:
+            return []
+        point = shapely.Point(x, y)
+        margin = 2 * tolerance + _INDEX_MARGIN
+        hits = tree.query(point, predicate="dwithin", distance=float(reach.max()) + margin)
+        if len(hits) == 0:
+            return []
+        hits = np.sort(hits)
+        close = shapely.distance(tree.geometries[hits], point) <= reach[hits] + margin
+        return [roads[i] for i in hits[close]]
+
+    @cached_property
+    def _index(self) -> tuple[list[Road], Any, np.ndarray]:
+        """The roads, an STRtree of their sampled reference lines and each road's reach."""
+        import shapely
+
+        roads = list(self.roads.values())
+        lines = [shapely.LineString(self.reference_line(road.id).xy) for road in roads]
+        reach = np.array([self._farthest_edge(road) for road in roads], dtype=float)
+        return roads, shapely.STRtree(lines), reach
+
+    def _farthest_edge(self, road: Road) -> float:
+        """How far the road's farthest lane edge lies from its reference line, at the sampled
+        s, either side: a lane position's |t| never exceeds it (plus the margin)."""
+        return max(
+            (
+                max((max(abs(b.inner), abs(b.outer)) for b in self.bands(road, s)), default=0.0)
+                for s in self.reference_line(road.id).s
+            ),
+            default=0.0,
+        )
 
     def traffic_heading(self, road_id: str, lane_id: int, s: float) -> float:
         """The direction of traffic on a lane at `s`."""
@@ -189,21 +258,30 @@ class RoadMap:
         return np.array(points)
 
     @cached_property
+    def _reach(self) -> dict[str, float]:
+        """How far each road's lanes reach from its reference line: its widest lane section
+        and its lane offset, at the sampled s."""
+        reaches = {}
+        for road in self.roads.values():
+            # The offset counts by its size wherever it is largest: a negative one moves the
+            # right lanes further out, and it may grow along the road.
+            reaches[road.id] = max(
+                (
+                    sum(abs(b.outer - b.inner) for b in self.bands(road, s))
+                    + (abs(piecewise(road.lane_offset, s)) if road.lane_offset else 0.0)
+                    for s in self.reference_line(road.id).s
+                ),
+                default=0.0,
+            )
+        return reaches
+
+    @cached_property
     def _boxes(self) -> dict[str, tuple[float, float, float, float]]:
         """Each road's bounding box, grown by its widest lane section and its lane offset."""
         boxes = {}
         for road in self.roads.values():
             line = self.reference_line(road.id)
-            # The offset counts by its size wherever it is largest: a negative one moves the
-            # right lanes further out, and it may grow along the road.
-            reach = max(
-                (
-                    sum(abs(b.outer - b.inner) for b in self.bands(road, s))
-                    + (abs(piecewise(road.lane_offset, s)) if road.lane_offset else 0.0)
-                    for s in line.s
-                ),
-                default=0.0,
-            )
+            reach = self._reach[road.id]
             low = line.xy.min(axis=0) - reach
             high = line.xy.max(axis=0) + reach
             boxes[road.id] = (float(low[0]), float(low[1]), float(high[0]), float(high[1]))

@@ -233,3 +233,12 @@ def _speed_rule(node: EObject, at: Moment) -> str | None:
         "equalTo": abs(speed - threshold) <= SPEED_SLACK,
     }.get(rule, True)
     return None if held else f"the speed was {speed:.2f} m/s, not {rule} {threshold:g} m/s"
+
+
+@goal("ActivateController", "AssignController", "OverrideController")
+def _at_once(node: EObject, at: Moment) -> str | None:
+    """A controller change completes in the step it starts (`meaning.completes_at_once`)."""
+    took = at.finish - at.start
+    if took > at.run.step + 1e-6:
+        return f"it took {took:.2f} s after its start; a controller change completes at once"
+    return None

@@ -44,8 +44,37 @@ _CONTROLS = {"longitudinal": ("speed",), "lateral": ("path",), "composite": ("sp
 
 
 def controls(kind: str) -> tuple[str, ...]:
-    """The parts of its actor a maneuver of `kind` controls (none for conditions)."""
+    """The parts of its actor a maneuver of `kind` controls (none for conditions and controller
+    changes)."""
     return _CONTROLS.get(catalog.category(kind) or "", ())
+
+
+# --- controllers ----------------------------------------------------------------------------------
+
+#: Categories whose nodes finish in the step they start. A controller change (ActivateController,
+#: AssignController, OverrideController) is an instant action to players (esmini 3.6 completes
+#: the ControllerAction and ActivateControllerAction in the step it starts them), so the export
+#: takes its event's completion as the node's finish; it controls no part of the actor itself:
+#: what the controller then does is the player's, and SceML's preview does not run it.
+INSTANT_CATEGORIES = ("controller",)
+#: The domains an activation switches, as OpenSCENARIO's ActivateControllerAction attributes
+#: (lighting and animation from 1.2) and SceML's ControllerActivation features, in that order.
+CONTROLLER_DOMAINS = ("lateral", "longitudinal", "lighting", "animation")
+#: OpenSCENARIO's OverrideControllerValueAction element for each ControllerOverrideKind, in the
+#: schema's order.
+OVERRIDE_ELEMENTS = {
+    "throttle": "Throttle",
+    "brake": "Brake",
+    "clutch": "Clutch",
+    "parkingBrake": "ParkingBrake",
+    "steeringWheel": "SteeringWheel",
+    "gear": "Gear",
+}
+
+
+def completes_at_once(kind: str) -> bool:
+    """Whether a node of `kind` finishes as soon as it starts (a controller change)."""
+    return catalog.category(kind) in INSTANT_CATEGORIES
 
 
 # --- speed ----------------------------------------------------------------------------------------
@@ -223,3 +252,59 @@ def _sign(value: float) -> float:
 def overtake_back_tolerance(gap: float) -> float:
     """How near the point `gap` m ahead of the target counts as there (a fast pass skips it)."""
     return max(1.0, gap / 2.0)
+
+
+# --- parameters and variables (the global kinds) -------------------------------------------------
+
+#: A SetParameter or SetVariable finishes in the step it starts: players complete a
+#: ParameterAction or VariableAction at once (esmini 3.6 logs the set and the action's
+#: completeState in the same step). esmini 3.6 does not run a ParameterAction's ModifyAction
+#: ("not supported yet"); a VariableAction's it does.
+GLOBAL_ACTION_STEPS = 0
+
+
+def _as_number(text: str) -> float | None:
+    try:
+        return float(text)
+    except ValueError:
+        return None
+
+
+def value_holds(current: str, rule: str, value: str) -> bool:
+    """Whether a ParameterCondition or VariableCondition holds: numbers compare as numbers
+    (esmini compares a double parameter numerically), other values as text, equalTo only."""
+    held, wanted = _as_number(current), _as_number(value)
+    if held is None or wanted is None:
+        return rule == "equalTo" and current.strip().lower() == value.strip().lower()
+    if rule == "lessThan":
+        return held < wanted
+    if rule == "greaterThan":
+        return held > wanted
+    return abs(held - wanted) < 1e-9
+
+
+def value_after(current: str, modify: str, value: str) -> str:
+    """The parameter's or variable's text after a SetParameter or SetVariable; ValueError when
+    adding to or multiplying something that is no number."""
+    if modify == "set":
+        return value
+    held, by = _as_number(current), _as_number(value)
+    if held is None or by is None:
+        raise ValueError(f"cannot {modify} {value!r} to {current!r}: both must be numbers")
+    result = held + by if modify == "add" else held * by
+    return repr(result) if result != int(result) else str(int(result))
+
+
+# --- lane offset ---------------------------------------------------------------------------------
+
+
+def lane_offset_duration(change: float, max_lateral_acc: float, shape: str) -> float:
+    """How long a LaneOffset takes to move `change` m sideways, its lateral acceleration peaking
+    at `max_lateral_acc` (esmini 3.6's TransitionDynamics): a half sine over π√(|Δ|/2a); cubic,
+    and linear read as cubic, √(6|Δ|/a); a step at once. It finishes then, continuous or not
+    (esmini ends the action when the offset is reached)."""
+    if shape == "step" or change == 0:
+        return 0.0
+    if shape == "sinusoidal":
+        return math.pi * math.sqrt(abs(change) / (2 * max_lateral_acc))
+    return math.sqrt(6 * abs(change) / max_lateral_acc)

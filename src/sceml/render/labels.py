@@ -21,6 +21,7 @@ from .. import catalog, params
 from ..errors import SceMLError
 from ..graph import actors, root_node
 from ..modules.resolve import resolved_definition
+from ..players.meaning import CONTROLLER_DOMAINS
 
 #: Features every action node has that labels show in other ways, or never.
 _NOT_PARAMETERS = {
@@ -133,6 +134,8 @@ def describe_position(position: EObject | None, scope: Scope) -> str:
         text = f"road {position.roadId} lane {position.laneId} s {describe_value(position.s, 'm', scope)}"
         if position.offset is not None and not _is_zero(_resolve(position.offset, scope)):
             text += f" offset {describe_value(position.offset, 'm', scope)}"
+        if position.h is not None:
+            text += f", h {describe_value(position.h, 'rad', scope)}"
         return text
     if isinstance(position, scm.RoadPosition):
         text = f"road {position.roadId} s {describe_value(position.s, 'm', scope)}"
@@ -251,7 +254,76 @@ def action_lines(node: scm.ActionNode, scope: Scope) -> list[str]:
     if isinstance(node, scm.OpaqueAction):
         runs = [f"maxRuns: {node.maxRuns}"] if node.maxRuns != 1 else []
         return [actor_line(node, scope), *opaque_lines(node), *runs]
+    if not catalog.performed_by_actor(node):
+        return global_lines(node)
+    if isinstance(node, scm.ControllerManeuver):
+        return [actor_line(node, scope), *controller_lines(node)]
     return [actor_line(node, scope), *(f"{k}: {v}" for k, v in parameter_items(node, scope))]
+
+
+#: How a global node reads: a rule or change as its operator.
+_OPERATORS = {
+    "greaterThan": ">",
+    "lessThan": "<",
+    "equalTo": "==",
+    "set": "=",
+    "add": "+=",
+    "multiply": "*=",
+}
+
+
+def global_lines(node: scm.ActionNode) -> list[str]:
+    """`global`, then what it reads or changes: `parameter Counter > 4`, `variable Counter += 2`,
+    `signal 1 = off;off;on` (a state set), `signal 1 == off;off;on` (a state awaited)."""
+    if isinstance(node, scm.TrafficSignalState | scm.TrafficSignalCondition):
+        operator = "==" if isinstance(node, scm.Condition) else "="
+        return ["global", f"signal {node.signalId or '(unnamed)'} {operator} {node.state or ''}"]
+    word = "variable" if node.eClass.findEStructuralFeature("variable") else "parameter"
+    named = str(node.eGet(word) or "") or "(unnamed)"
+    how = node.rule if isinstance(node, scm.Condition) else node.modify
+    operator = _OPERATORS.get(getattr(how, "name", ""), "?")
+    return ["global", f"{word} {named} {operator} {node.value or ''}".rstrip()]
+
+
+def controller_lines(node: scm.ControllerManeuver) -> list[str]:
+    """A controller change: the controller assigned, the domains switched, the inputs overridden."""
+    lines = []
+    if isinstance(node, scm.AssignController) and node.controller is not None:
+        lines.append(f"controller: {describe_controller(node.controller)}")
+        lines.extend(f"  {p.name} = {p.value}" for p in node.controller.properties)
+    switched = describe_activation(
+        node.activation if isinstance(node, scm.AssignController) else node
+    )
+    if switched:
+        lines.append(f"domains: {switched}")
+    if isinstance(node, scm.OverrideController):
+        lines.extend(describe_override(o) for o in node.overrides)
+    return lines
+
+
+def describe_controller(controller: scm.Controller) -> str:
+    """`ACCController`, with its type when it has one: `ACCController (longitudinal)`."""
+    kind = f" ({controller.controllerType})" if controller.controllerType else ""
+    return f"{controller.name or '?'}{kind}"
+
+
+def describe_activation(holder: object) -> str:
+    """The domains a node or an actor switches: `lateral on, longitudinal off`."""
+    parts = []
+    for domain in CONTROLLER_DOMAINS:
+        value = getattr(holder, domain, None)
+        if value is not None:
+            parts.append(f"{domain} {'on' if value else 'off'}")
+    return ", ".join(parts)
+
+
+def describe_override(override: scm.ControllerOverride) -> str:
+    """One overridden input: `brake = 0.5` or `throttle released`."""
+    kind = override.kind.name
+    if not override.active:
+        return f"{kind} released"
+    value = f"{override.value:g}" + (" rad" if kind == "steeringWheel" else "")
+    return f"{kind} = {value}"
 
 
 def root_lines(root: scm.RootNode | None, scenario: scm.Scenario) -> list[str]:
@@ -265,7 +337,8 @@ def root_lines(root: scm.RootNode | None, scenario: scm.Scenario) -> list[str]:
     lines.append("actors:")
     for actor in actors(scenario):
         ego = ", ego" if actor.isEgo else ""
-        lines.append(f"  {actor.name}: {actor.eClass.name}{ego}")
+        driven = f", {describe_controller(actor.controller)}" if actor.controller else ""
+        lines.append(f"  {actor.name}: {actor.eClass.name}{ego}{driven}")
     return lines
 
 

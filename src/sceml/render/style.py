@@ -50,7 +50,12 @@ CATEGORY_LOOKS = {
     "longitudinal": Look("sceml-longitudinal", "Longitudinal maneuver", _box("#ffe066", "#b08800")),
     "lateral": Look("sceml-lateral", "Lateral maneuver", _box("#f28b82", "#b3261e")),
     "composite": Look("sceml-composite", "Composite maneuver", _box("#81c995", "#2e7d32")),
+    # Grey-violet: no other category is violet, and it stays apart from the opaque grey.
+    "controller": Look("sceml-controller", "Controller change", _box("#8e7cc3", "#4b3b8a")),
     "condition": Look("sceml-condition", "Condition", _box("#8ab4f8", "#1a56b0", rounded=True)),
+    # Performed by no actor (a parameter, a variable, a traffic signal): orange, apart from the
+    # controller's violet and the longitudinal yellow.
+    "global": Look("sceml-global", "Global (no actor)", _box("#ffb74d", "#e65100")),
 }
 
 #: Fill colour per category, for tests and for the report's tables.
@@ -213,7 +218,9 @@ LEGEND_ENTRIES = (
     ("legend-longitudinal", CATEGORY_LOOKS["longitudinal"], "Accelerate"),
     ("legend-lateral", CATEGORY_LOOKS["lateral"], "TurnRight"),
     ("legend-composite", CATEGORY_LOOKS["composite"], "Overtake"),
+    ("legend-controller", CATEGORY_LOOKS["controller"], "ActivateController"),
     ("legend-condition", CATEGORY_LOOKS["condition"], "InVehicleRadius"),
+    ("legend-global", CATEGORY_LOOKS["global"], "SetParameter"),
     ("legend-join-all", JOIN_ALL, ""),
     ("legend-join-one", JOIN_ONE, ""),
     ("legend-end", END, "End"),
@@ -231,6 +238,7 @@ BT_LEGEND_ENTRIES = (
     ("legend-longitudinal", CATEGORY_LOOKS["longitudinal"], "Accelerate"),
     ("legend-lateral", CATEGORY_LOOKS["lateral"], "TurnRight"),
     ("legend-composite", CATEGORY_LOOKS["composite"], "Overtake"),
+    ("legend-controller", CATEGORY_LOOKS["controller"], "ActivateController"),
     ("legend-condition", CATEGORY_LOOKS["condition"], "InVehicleRadius"),
     ("legend-module", MODULE, "CrossingManeuver"),
     ("legend-bt-wait", BT_WAIT, ""),

@@ -397,3 +397,39 @@ class Overtake(Behaviour):
         x = lead.x + self.gap * math.cos(lead.heading)
         y = lead.y + self.gap * math.sin(lead.heading)
         return self.actor.distance_to(x, y) <= meaning.overtake_back_tolerance(self.gap) + 1e-9
+
+
+@kind("LaneOffset")
+class LaneOffset(Behaviour):
+    """Move sideways within the lane to the offset (from the lane's centre, or from the target
+    actor), along half a cosine over the distance driven in `players.meaning.lane_offset_duration`."""
+
+    def start(self, world: World) -> None:
+        node, actor = self.node, self.actor
+        offset = concrete(node, "offset")
+        if node.targetActor is not None:
+            other = world.actor(node.targetActor, self.name)
+            dx, dy = other.x - actor.x, other.y - actor.y
+            across = -dx * math.sin(actor.heading) + dy * math.cos(actor.heading)
+            amount = across + offset
+        else:
+            spot = actor.path.spot(actor.d)
+            # The offset is along the road's t (esmini), the actor's lateral along its travel.
+            forward = spot is None or spot.forward
+            amount = (offset if forward else -offset) - actor.lateral
+        if node.shape.name not in ("sinusoidal", "step"):
+            world.note(f"{self.name}: a {node.shape.name} lane offset is previewed as sinusoidal")
+        duration = meaning.lane_offset_duration(
+            amount, concrete(node, "maxLateralAcc"), node.shape.name
+        )
+        actor.shift = Shift(actor.d, max(actor.speed, 0.0) * duration, amount)
+
+    def done(self, world: World) -> bool:
+        shift = self.actor.shift
+        if shift is not None and shift.progress(self.actor.d) < 1.0:
+            return False
+        self.actor.settle_shift()
+        return True
+
+    def release(self, world: World) -> None:
+        self.actor.settle_shift()

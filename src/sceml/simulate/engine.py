@@ -24,7 +24,9 @@ from pyecore.ecore import EObject
 import scemlmodel as scm
 
 from ..graph import predecessors, successors
+from ..players import meaning
 from ..players.flows import flow_steps, inlined
+from . import global_values
 from .behaviours import Behaviour, behaviour_for
 from .conditions import Test, condition_for
 from .run import END_NODE, MAX_DURATION, NodeRecord
@@ -198,10 +200,16 @@ class Scheduler:
         node = state.node
         if isinstance(node, scm.Condition):
             state.test = condition_for(node, self.world)
-            if state.test is None:
+            if isinstance(node, scm.TrafficSignalCondition):
+                state.note = global_values.NO_SIGNALS.format(what="it never holds")
+            elif state.test is None:
                 state.note = "this condition kind is not simulated: it never holds"
         elif isinstance(node, scm.Maneuver):
             return self._start_maneuver(state)
+        elif isinstance(node, scm.GlobalAction):
+            # Players complete a global action in the step it starts.
+            state.note = global_values.apply(node, self.world) or ""
+            return [state]
         elif not isinstance(node, scm.EndNode | scm.JoiningPolicy | scm.InPort | scm.OutPort):
             state.note = f"a {state.kind} is not simulated: it finishes at once"
             return [state]
@@ -211,6 +219,12 @@ class Scheduler:
         return [state] if self._done(state) else []
 
     def _start_maneuver(self, state: NodeState) -> list[NodeState]:
+        if meaning.completes_at_once(state.kind):
+            state.note = (
+                f"{state.kind}, a controller change, finishes at once; the preview runs no "
+                "controller and ignores what it would do"
+            )
+            return [state]
         behaviour = behaviour_for(state.node, self.world)
         if behaviour is None:
             state.note = f"{state.kind} is not simulated: it finishes at once"

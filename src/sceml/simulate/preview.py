@@ -18,6 +18,7 @@ from ..maps.resolve import start_poses
 from ..modules.flatten import Flattened, expand
 from ..params import concrete
 from .engine import Scheduler, run_schedule
+from .global_values import initial_values
 from .limits import located_in, refuse_unresolved, refuse_unusable
 from .metrics import pair_metrics
 from .run import ActorInfo, Run
@@ -80,7 +81,7 @@ def _simulate(
     assert flat_root is not None
     if road_map is None:
         road_map = _road_map(flat_root, scenario_file, allowed_roots_of(scenario))
-    world = World(road_map, {}, step)
+    world = World(road_map, {}, step, values=initial_values(flat_root))
     starts = start_poses(scenario_actors(flat), road_map)
     for actor in scenario_actors(flat):
         world.actors[str(actor.name)] = make_actor(actor, road_map, starts)

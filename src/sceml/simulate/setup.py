@@ -63,6 +63,11 @@ def _on_lane(
         )
     s, offset = concrete(position, "s"), concrete(position, "offset")
     road_map.band(str(position.roadId), int(position.laneId), s)  # PositionError when off the map
+    if position.h is not None and concrete(position, "h") != 0.0:
+        # turned against its lane: placed as at that world pose, as a turned road position is
+        pose = road_map.lane_to_world(str(position.roadId), int(position.laneId), s, offset)
+        turned = WorldPose(pose.x, pose.y, pose.heading + concrete(position, "h"))
+        return _in_world(actor, _world(turned), road_map, size, speed)
     spot = lanes.start_spot(road_map, str(position.roadId), int(position.laneId), s)
     lateral = offset if spot.forward else -offset
     return Actor(*_identity(actor), size, lanes.lane_path(road_map, spot), speed, lateral)

@@ -32,6 +32,9 @@ class World:
     dt: float
     t: float = 0.0
     notes: list[str] = field(default_factory=list)
+    #: The scenario's parameters and variables by (variable?, name): their current text, set
+    #: from the root's declarations and changed by SetParameter and SetVariable.
+    values: dict[tuple[bool, str], str] = field(default_factory=dict)
 
     def actor(self, participant: EObject | None, node: str) -> Actor:
         """The actor a node's reference or target names."""

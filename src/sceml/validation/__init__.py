@@ -9,6 +9,7 @@ Importing this package registers every rule of SPEC §6 (one module per area) in
 
 from . import (
     actors,
+    controllers,
     map_rules,
     modules,
     opaque,
@@ -42,6 +43,7 @@ __all__ = [
 # The rule modules register themselves on import; naming them keeps linters from dropping them.
 _RULE_MODULES = (
     actors,
+    controllers,
     map_rules,
     modules,
     opaque,

@@ -45,11 +45,19 @@ def label(participant: EObject) -> str:
     "SCEML-A001",
     ERROR,
     "ActionNode",
-    "every maneuver and condition has a reference actor",
+    "every maneuver and condition has a reference actor; a global kind (the parameter, variable "
+    "and traffic signal nodes) has none",
 )
 def has_reference_actor(node: scm.ActionNode, context: Context) -> Iterator[Finding]:
-    if node.referenceActor is None:
+    global_kind = not catalog.performed_by_actor(node.eClass.name)
+    if node.referenceActor is None and not global_kind:
         yield node, f"{node.eClass.name} {node.name!r} has no reference actor"
+    if node.referenceActor is not None and global_kind:
+        yield (
+            node,
+            f"{node.eClass.name} {node.name!r} is performed by no actor; "
+            f"its reference actor {label(node.referenceActor)} has no meaning",
+        )
 
 
 @constraint(

@@ -146,6 +146,8 @@ READS: dict[str, Reads] = {
     "SCEML-P006": Reads(_VALUE),
     "SCEML-P007": Reads(_VALUE),
     "SCEML-P008": Reads(_VALUE, _MODULES),  # its module's parameters
+    # the root's declarations: their names and whether each is a variable
+    "SCEML-P009": Reads(_SELF, Aspect.STRUCTURE | Aspect.ATTRIBUTES),
     # plausibility.py: the performer's kind
     "SCEML-L001": Reads(_VALUE),
     "SCEML-L002": Reads(_VALUE),
@@ -156,6 +158,7 @@ READS: dict[str, Reads] = {
     "SCEML-R003": Reads(_VALUE, _LEVEL),
     # A relative start reads the starts of the actors it is placed after.
     "SCEML-R004": Reads(_VALUE, _LEVEL | Aspect.CAST | Aspect.POSITIONS),
+    "SCEML-R009": Reads(_VALUE, _LEVEL | Aspect.CAST | Aspect.POSITIONS),
     "SCEML-R005": Reads(_VALUE, _LEVEL | Aspect.CAST),
     "SCEML-R006": Reads(_VALUE, _ROUTE),
     "SCEML-R007": Reads(_VALUE, _ROUTE),
@@ -171,10 +174,16 @@ READS: dict[str, Reads] = {
     "SCEML-E003": Reads(aspects=_EXPANSION | _LEVEL),
     "SCEML-E004": Reads(_SELF),
     "SCEML-E005": Reads(_SELF),
-    # The node's own measure settings against the target version.
+    # The node's own measure or controller settings, or the actor's controller, against the
+    # target version.
     "SCEML-E008": Reads(_SELF),
     # opaque.py
     "SCEML-E006": Reads(_SELF),
+    # controllers.py: the node's or actor's own controller, activation and overrides (contents)
+    "SCEML-K001": Reads(_SELF),
+    "SCEML-K002": Reads(_SELF),
+    "SCEML-K003": Reads(_SELF),
+    "SCEML-K004": Reads(_SELF),
     "SCEML-E007": Reads(_SELF),
 }
 

@@ -23,7 +23,6 @@ from pathlib import Path
 import scemlmodel as scm
 
 from .. import catalog
-from ..config import load_config
 from ..errors import LoadError, SceMLError
 
 #: The limit names a table may use, with what each bounds.
@@ -84,6 +83,10 @@ def _kind_chain(kind: str) -> tuple[str, ...]:
 
 def load_limits(path: str | Path, base: Limits | None = None) -> Limits:
     """Read a YAML or TOML limits file and lay it over `base` (the built-in table by default)."""
+    # Here rather than at the top: the reader imports PyYAML, which `sceml validate` without
+    # --limits never needs (start-up, issue 31).
+    from ..config import load_config
+
     path = Path(path)
     try:
         data = load_config(path, "limits file")

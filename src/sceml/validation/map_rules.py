@@ -398,6 +398,20 @@ def _ancestors(node: EObject, flows: Flows, context: Context) -> set[EObject]:
     )
 
 
+def _actions_by_actor(flows: Flows, context: Context) -> dict[object, list[scm.ActionNode]]:
+    """Each actor's action nodes in the graph's order (once per run and graph), so that a
+    departure looks at one actor's nodes rather than at every node of the graph."""
+
+    def group() -> dict[object, list[scm.ActionNode]]:
+        by_actor: dict[object, list[scm.ActionNode]] = {}
+        for n in flows.nodes:
+            if isinstance(n, scm.ActionNode):
+                by_actor.setdefault(n.referenceActor, []).append(n)
+        return by_actor
+
+    return context.memo(("actions by actor", id(flows)), group)
+
+
 def _departure(node: scm.ActionNode, context: Context) -> tuple[EObject | None, bool]:
     """Where the actor is when `node` starts: the destination of its latest earlier routed
     maneuver or trajectory, else its start position; and whether a lane change or overtake of
@@ -406,11 +420,7 @@ def _departure(node: scm.ActionNode, context: Context) -> tuple[EObject | None, 
     flows = _flows_of(node, context)
     earlier = _ancestors(node, flows, context)
     # In the graph's own order, so that of two parallel latest maneuvers the same one counts.
-    mine = [
-        n
-        for n in flows.nodes
-        if n in earlier and isinstance(n, scm.ActionNode) and n.referenceActor is actor
-    ]
+    mine = [n for n in _actions_by_actor(flows, context).get(actor, ()) if n in earlier]
     routed = [n for n in mine if isinstance(n, scm.RoutedManeuver | scm.FollowTrajectory)]
     before_others = set().union(*(_ancestors(o, flows, context) for o in routed))
     latest = [n for n in routed if n not in before_others]

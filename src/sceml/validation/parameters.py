@@ -11,6 +11,7 @@ import scemlmodel as scm
 
 from .. import catalog
 from ..diagnostics import Severity
+from ..graph import root_node
 from ..params import describe
 from .context import Context, is_kind
 from .registry import Finding, constraint
@@ -218,3 +219,30 @@ def parameter_ref_in_its_module(ref: scm.ParameterRef, context: Context) -> Iter
         yield ref, f"{parameter_path(ref)} refers to a module parameter outside any module"
     elif ref.parameter is None or ref.parameter not in set(module.parameters):
         yield ref, f"{parameter_path(ref)} refers to no parameter of module {module.name!r}"
+
+
+#: The global kinds that name a parameter or variable: the feature naming it, and a variable?
+_NAMING = {
+    "ParameterCondition": ("parameter", False),
+    "SetParameter": ("parameter", False),
+    "VariableCondition": ("variable", True),
+    "SetVariable": ("variable", True),
+}
+
+
+@constraint(
+    "SCEML-P009",
+    ERROR,
+    tuple(_NAMING),
+    "a parameter or variable node names one the root declares (RootNode.declarations); an "
+    "empty name, as CARLA's criteria write, is left alone",
+)
+def global_value_declared(node: scm.ActionNode, context: Context) -> Iterator[Finding]:
+    feature, variable = _NAMING[node.eClass.name]
+    name = str(node.eGet(feature) or "")
+    root = root_node(node.eContainer()) if isinstance(node.eContainer(), scm.Scenario) else None
+    if not name or root is None:
+        return
+    if not any(d.name == name and bool(d.variable) == variable for d in root.declarations):
+        what = "variable" if variable else "parameter"
+        yield node, f"{node.name!r} names the {what} {name!r}, which the root does not declare"

@@ -123,9 +123,10 @@ def kinds_exportable(scenario: scm.Scenario, context: Context) -> Iterator[Findi
 @constraint(
     "SCEML-E008",
     ERROR,
-    ("TimeToCollision", "TimeHeadway"),
-    "with a target OpenSCENARIO version or export profile given, every node's settings can be "
-    "said in it (1.0 has no relativeDistanceType or coordinateSystem)",
+    ("TimeToCollision", "TimeHeadway", "ActivateController", "AssignController", "Actor"),
+    "with a target OpenSCENARIO version or export profile given, every node's and actor's "
+    "settings can be said in it (1.0 has no relativeDistanceType or coordinateSystem, no "
+    "assignment that activates; before 1.2 no lighting or animation domain, no controllerType)",
 )
 def settings_exportable(node: EObject, context: Context) -> Iterator[Finding]:
     if context.osc_version is None and context.osc_profile is None:

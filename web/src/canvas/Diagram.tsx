@@ -8,9 +8,15 @@ import { resolveLook } from "../lib/looks";
 import { PALETTE_MIME } from "../panels/Palette";
 import type { DiagramState } from "../state/useDiagramState";
 import type { PaletteItem, View, XY } from "../types";
+import { useStable } from "../state/useStable";
 import { DiagramContext } from "./context";
 import { nodeTypes } from "./nodeTypes";
 import type { DiagramNode } from "./types";
+
+const MULTI_SELECTION_KEYS = ["Shift", "Meta", "Control"];
+const PRO_OPTIONS = { hideAttribution: true };
+const DEFAULT_EDGE_OPTIONS = { type: "default" };
+const MINIMAP_STYLE = { width: 170, height: 120 };
 
 interface Props {
   view: View | null;
@@ -41,6 +47,18 @@ export function Diagram({ view, state, direction, toggleExpanded, connectFrom, k
     [style, direction, readOnly, toggle, connectFrom, keyConnect],
   );
 
+  // Every prop React Flow gets must keep its identity across renders: its StoreUpdater writes
+  // each changed prop into the store, one update per prop, and every update runs the selector
+  // of every node, edge and minimap node (at 500 nodes that was most of an edit's time).
+  const connect = useStable((connection: Connection) => onConnect(connection.source, connection.target));
+  const dragStop = useStable((_event: unknown, _node: DiagramNode, dragged: DiagramNode[]) => {
+    const positions: Record<string, XY> = {};
+    for (const node of dragged) {
+      if (!node.parentId) positions[node.id] = { x: Math.round(node.position.x), y: Math.round(node.position.y) };
+    }
+    if (Object.keys(positions).length > 0) onMoved(positions);
+  });
+
   const onDrop = (event: DragEvent) => {
     const data = event.dataTransfer.getData(PALETTE_MIME);
     if (!data || readOnly) return;
@@ -48,10 +66,10 @@ export function Diagram({ view, state, direction, toggleExpanded, connectFrom, k
     onDropItem(JSON.parse(data) as PaletteItem, flow.screenToFlowPosition({ x: event.clientX, y: event.clientY }));
   };
 
-  const minimapColour = (node: DiagramNode) => {
-    if (node.type === "frame") return "transparent";
-    return resolveLook(view?.style, node.data.node.look).fill;
-  };
+  const minimapColour = useCallback(
+    (node: DiagramNode) => (node.type === "frame" ? "transparent" : resolveLook(style, node.data.node.look).fill),
+    [style],
+  );
 
   return (
     <DiagramContext.Provider value={context}>
@@ -62,31 +80,25 @@ export function Diagram({ view, state, direction, toggleExpanded, connectFrom, k
           nodeTypes={nodeTypes}
           onNodesChange={state.onNodesChange}
           onEdgesChange={state.onEdgesChange}
-          onConnect={(connection: Connection) => onConnect(connection.source, connection.target)}
-          onNodeDragStop={(_event, _node, dragged) => {
-            const positions: Record<string, XY> = {};
-            for (const node of dragged) {
-              if (!node.parentId) positions[node.id] = { x: Math.round(node.position.x), y: Math.round(node.position.y) };
-            }
-            if (Object.keys(positions).length > 0) onMoved(positions);
-          }}
+          onConnect={connect}
+          onNodeDragStop={dragStop}
           nodesDraggable={!readOnly}
           nodesConnectable={!readOnly}
           edgesReconnectable={false}
           deleteKeyCode={null}
           selectionKeyCode="Shift"
-          multiSelectionKeyCode={["Shift", "Meta", "Control"]}
+          multiSelectionKeyCode={MULTI_SELECTION_KEYS}
           selectionOnDrag={false}
           panOnDrag
           minZoom={0.02}
           onlyRenderVisibleElements
           maxZoom={2.5}
           connectionRadius={30}
-          proOptions={{ hideAttribution: true }}
-          defaultEdgeOptions={{ type: "default" }}
+          proOptions={PRO_OPTIONS}
+          defaultEdgeOptions={DEFAULT_EDGE_OPTIONS}
         >
           <Background gap={20} color="#e0e4e8" />
-          <MiniMap<DiagramNode> pannable zoomable style={{ width: 170, height: 120 }} nodeColor={minimapColour} nodeStrokeColor="#37474f" nodeStrokeWidth={2} />
+          <MiniMap<DiagramNode> pannable zoomable style={MINIMAP_STYLE} nodeColor={minimapColour} nodeStrokeColor="#37474f" nodeStrokeWidth={2} />
           <Controls showInteractive={false} showFitView={false} />
         </ReactFlow>
         <div className="connect-hint" aria-live="polite">

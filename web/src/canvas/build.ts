@@ -5,13 +5,24 @@ import type { Shown } from "../lib/graph";
 import { childrenOf } from "../lib/graph";
 import type { Layout, Measures } from "../lib/layout";
 import { componentOf } from "../lib/looks";
-import { frameHeaderHeight, LINE_PX, measureText, nodeSize, TITLE_PX } from "../lib/sizes";
+import { frameHeaderHeight, LINE_PX, measureText, nodeSize, TITLE_PX, type Size } from "../lib/sizes";
 import type { ViewNode } from "../types";
 import { nodeType } from "./nodeTypes";
 import type { DiagramEdge, DiagramNode } from "./types";
 
+// Sizes by node object: a patch keeps the objects of unchanged nodes, so an edit measures the
+// text of the nodes it changed, not of every node.
+const sized = new WeakMap<ViewNode, Size>();
+
 export const measures: Measures = {
-  size: nodeSize,
+  size: (node: ViewNode) => {
+    let size = sized.get(node);
+    if (!size) {
+      size = nodeSize(node);
+      sized.set(node, size);
+    }
+    return size;
+  },
   header: (node: ViewNode) => {
     const title = node.name ? `${node.name}: ${node.title}` : node.title;
     const widths = [measureText(title, TITLE_PX + 2, true) + 90, ...node.lines.map((l) => measureText(l, LINE_PX, false))];
@@ -29,7 +40,7 @@ export function flowNodes(
 ): DiagramNode[] {
   const children = childrenOf(allNodes);
   return shown.nodes.map((node) => {
-    const size = layout.sizes.get(node.id) ?? nodeSize(node);
+    const size = layout.sizes.get(node.id) ?? measures.size(node);
     const expanded = shown.frames.has(node.id);
     const canExpand = componentOf(node.look) === "module" && (children.get(node.id)?.length ?? 0) > 0;
     const inner = node.parent !== null && shown.frames.has(node.parent);

@@ -1,16 +1,19 @@
 // Which component draws which node.
 
+import { memo } from "react";
 import { componentOf } from "../lib/looks";
 import { ActionNode, EndNode, FrameNode, JoinNode, ModuleNode, PortNode, RootNode } from "./nodes";
 
+// Memoised: a node whose props are the same objects (the page keeps unchanged nodes' objects
+// across patches) is not drawn again when another node changes.
 export const nodeTypes = {
-  action: ActionNode,
-  root: RootNode,
-  join: JoinNode,
-  end: EndNode,
-  port: PortNode,
-  module: ModuleNode,
-  frame: FrameNode,
+  action: memo(ActionNode),
+  root: memo(RootNode),
+  join: memo(JoinNode),
+  end: memo(EndNode),
+  port: memo(PortNode),
+  module: memo(ModuleNode),
+  frame: memo(FrameNode),
 };
 
 /** The React Flow type that draws a node. */

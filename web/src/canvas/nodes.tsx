@@ -157,6 +157,8 @@ export function FrameNode({ data, selected }: Props) {
       </div>
       <ExpandToggle id={data.node.id} expanded />
       <ProblemBadge node={data.node} />
+      {/* Where edges into the use end: on the frame's border, clear of the header's text. */}
+      <Handles connectable={false} />
     </div>
   );
 }

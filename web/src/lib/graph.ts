@@ -40,8 +40,10 @@ export function shownGraph(nodes: ViewNode[], edges: ViewEdge[], expanded: Set<s
   nodes.filter((node) => node.parent === null || !byId.has(node.parent)).forEach(visit);
   const visible = new Set(shown.map((node) => node.id));
 
-  // An edge end inside a collapsed use is drawn at that use; an end at an expanded use is drawn
-  // at its in-port (incoming) or out-port (outgoing).
+  // An edge end inside a collapsed use is drawn at that use. An edge into an expanded use ends
+  // at its frame's border (the in-port sits just inside, under the header: an edge drawn to the
+  // port would cross the header's text); an edge out of it starts at its out-port, at the
+  // frame's far end.
   const drawnAt = (id: string): string | null => {
     let current = byId.get(id);
     while (current && !visible.has(current.id)) {
@@ -49,16 +51,14 @@ export function shownGraph(nodes: ViewNode[], edges: ViewEdge[], expanded: Set<s
     }
     return current ? current.id : null;
   };
-  const port = (use: string, look: string) =>
-    (children.get(use) ?? []).find((child) => child.look === look)?.id ?? use;
+  const outPort = (use: string) => (children.get(use) ?? []).find((child) => child.look === "outPort")?.id ?? use;
   const result: ViewEdge[] = [];
   const seen = new Set<string>();
   for (const edge of edges) {
     let source = drawnAt(edge.source);
-    let target = drawnAt(edge.target);
+    const target = drawnAt(edge.target);
     if (source === null || target === null) continue;
-    if (frames.has(source)) source = port(source, "outPort");
-    if (frames.has(target)) target = port(target, "inPort");
+    if (frames.has(source)) source = outPort(source);
     const key = `${source}->${target}`;
     if (source === target || seen.has(key)) continue;
     seen.add(key);

@@ -1,6 +1,5 @@
 // Automatic layout with ELK (layered): for nodes without a saved position, and for "Arrange".
 
-import ELK from "elkjs/lib/elk.bundled.js";
 import type { ElkExtendedEdge, ElkNode } from "elkjs/lib/elk-api";
 import type { ViewNode, XY } from "../types";
 import type { Shown } from "./graph";
@@ -21,7 +20,14 @@ export interface Measures {
   header: (node: ViewNode) => Size;
 }
 
-const elk = new ELK();
+// ELK is 1.6 MB of the page's 1.9 MB script: it is loaded when a layout first needs it, not
+// before the first paint of a file whose nodes all have their places.
+type Engine = { layout: (graph: ElkNode) => Promise<ElkNode> };
+let engine: Promise<Engine> | null = null;
+function elk(): Promise<Engine> {
+  engine ??= import("elkjs/lib/elk.bundled.js").then(({ default: ELK }) => new ELK());
+  return engine;
+}
 const FRAME_PAD = 16;
 
 function options(direction: Direction): Record<string, string> {
@@ -96,7 +102,7 @@ async function layoutLevel(
   // is the common case after the first edit, and ELK is most of a large graph's redraw.
   const placed = keepSaved && members.every((node) => node.position !== null);
   const graph: ElkNode = { id: parent ?? "__root__", layoutOptions: options(direction), children, edges };
-  const result = placed ? { children: [], width: 0, height: 0 } : await elk.layout(graph);
+  const result = placed ? { children: [], width: 0, height: 0 } : await (await elk()).layout(graph);
   for (const child of result.children ?? []) {
     positions.set(child.id, { x: Math.round(child.x ?? 0), y: Math.round(child.y ?? 0) });
   }

@@ -24,7 +24,7 @@ const param = (key: string, label: string, required = false): PositionInput => (
 /** The inputs of each position type: protocol key and the word in the input's label. */
 export const POSITION_INPUTS: Record<Exclude<PositionType, "none">, PositionInput[]> = {
   world: [param("x", "x", true), param("y", "y", true), param("z", "z"), param("h", "heading")],
-  lane: [name("roadId", "road"), integer("laneId", "lane"), param("s", "s", true), param("offset", "offset")],
+  lane: [name("roadId", "road"), integer("laneId", "lane"), param("s", "s", true), param("offset", "offset"), param("h", "heading")],
   road: [name("roadId", "road"), param("s", "s", true), param("t", "t"), param("h", "heading")],
   relativeLane: [name("entity", "from"), integer("dLane", "lanes", false), param("ds", "ds"), param("offset", "offset")],
   relativeRoad: [name("entity", "from"), param("ds", "ds"), param("dt", "dt")],

@@ -1,9 +1,9 @@
 // The palette: the view's groups, coloured by their look; drag an item onto the canvas, or
 // click / press Enter to add it in the middle of the view.
 
-import { useState } from "react";
+import { memo, useState } from "react";
 import { resolveLook } from "../lib/looks";
-import type { PaletteItem, View } from "../types";
+import type { PaletteGroup, PaletteItem, Style } from "../types";
 
 export const PALETTE_MIME = "application/x-sceml-palette";
 /** The search field's id: "/" anywhere on the page focuses it. */
@@ -16,14 +16,16 @@ function matches(item: PaletteItem, query: string): boolean {
 }
 
 interface Props {
-  view: View;
+  palette: PaletteGroup[];
+  style: Style;
+  disabled: boolean;
   onAdd: (item: PaletteItem) => void;
 }
 
-export function Palette({ view, onAdd }: Props) {
-  const disabled = view.readOnly;
+// Memoised on the view's parts it shows, which patches keep as they were unless they changed.
+export const Palette = memo(function Palette({ palette, style, disabled, onAdd }: Props) {
   const [query, setQuery] = useState("");
-  const groups = view.palette
+  const groups = palette
     .map((group) => ({ ...group, items: group.items.filter((item) => matches(item, query)) }))
     .filter((group) => group.items.length > 0);
   const first = groups[0]?.items[0];
@@ -51,7 +53,7 @@ export function Palette({ view, onAdd }: Props) {
       />
       {groups.length === 0 && <p className="hint">Nothing in the palette matches “{query}”.</p>}
       {groups.map((group) => {
-        const look = resolveLook(view.style, group.look);
+        const look = resolveLook(style, group.look);
         return (
           <section key={group.group} className="palette-group">
             <h3 style={{ borderLeftColor: look.border }}>{group.label}</h3>
@@ -80,4 +82,4 @@ export function Palette({ view, onAdd }: Props) {
       })}
     </aside>
   );
-}
+});

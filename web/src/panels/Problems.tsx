@@ -1,5 +1,6 @@
 // The problems list: every diagnostic of the view; a click shows its node.
 
+import { memo } from "react";
 import type { Diagnostic } from "../types";
 
 const ICONS = { error: "✖", warning: "⚠", info: "ℹ" } as const;
@@ -9,7 +10,8 @@ interface Props {
   onShow: (diagnostic: Diagnostic) => void;
 }
 
-export function Problems({ diagnostics, onShow }: Props) {
+// Memoised: a patch that leaves the problems as they were keeps the same list object.
+export const Problems = memo(function Problems({ diagnostics, onShow }: Props) {
   return (
     <section className="problems" role="region" aria-label="Problems">
       <h2>
@@ -33,4 +35,4 @@ export function Problems({ diagnostics, onShow }: Props) {
       )}
     </section>
   );
-}
+});

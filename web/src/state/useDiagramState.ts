@@ -7,6 +7,7 @@ import { flowEdges, flowNodes, measures } from "../canvas/build";
 import type { DiagramEdge, DiagramNode } from "../canvas/types";
 import { shownGraph } from "../lib/graph";
 import { layoutGraph, remeasured, structureKey, type Direction, type Layout } from "../lib/layout";
+import { storedLayout, storeLayout } from "../lib/layoutCache";
 import type { View, XY } from "../types";
 
 export interface DiagramState {
@@ -32,6 +33,10 @@ function reuse<T extends { id: string }>(next: T[], before: Map<string, T>, same
   });
 }
 
+function sameItems<T>(a: T[], b: T[]): boolean {
+  return a.length === b.length && a.every((item, index) => item === b[index]);
+}
+
 function sameNode(old: DiagramNode, next: DiagramNode): boolean {
   return (
     old.type === next.type &&
@@ -46,7 +51,8 @@ function sameNode(old: DiagramNode, next: DiagramNode): boolean {
     old.zIndex === next.zIndex &&
     old.data.expanded === next.data.expanded &&
     old.data.canExpand === next.data.canExpand &&
-    JSON.stringify(old.data.node) === JSON.stringify(next.data.node)
+    // Patches keep an unchanged node's object: the comparison of its content is the rare case.
+    (old.data.node === next.data.node || JSON.stringify(old.data.node) === JSON.stringify(next.data.node))
   );
 }
 
@@ -91,7 +97,11 @@ export function useDiagramState(
     const shown = shownGraph(view.nodes, view.edges, expanded);
     const key = structureKey(shown, direction);
     const last = lastLayout.current;
-    const known = last?.key === key ? remeasured(last.layout, shown, measures) : null;
+    const file = `${view.document.path}#${view.document.module ?? ""}`;
+    // The layout drawn last, or one this browser made for this file before (a reload).
+    const earlier = last?.key === key ? last.layout : storedLayout(file, key);
+    const known = earlier ? remeasured(earlier, shown, measures) : null;
+    if (earlier && known && last?.key !== key) lastLayout.current = { key, layout: earlier };
     // Read-only, an expanded use cannot make room by an Arrange step: lay it all out anew.
     const fresh = view.readOnly && shown.frames.size > 0;
     const started = performance.now();
@@ -101,7 +111,12 @@ export function useDiagramState(
       performance.measure(known ? "sceml-layout-reused" : "sceml-layout", { start: started });
       if (cancelled) return;
       // Kept with the sizes ELK saw, so that growth is measured from them, not step by step.
-      if (!known) lastLayout.current = { key, layout };
+      if (!known) {
+        lastLayout.current = { key, layout };
+        // Kept for a reload only when ELK placed something (a top-level node without a saved
+        // place, or the inside of a frame): saved places need no keeping.
+        if (shown.nodes.some((node) => (node.parent === null ? node.position === null : shown.frames.has(node.parent)))) storeLayout(file, key, layout);
+      }
       const chosen = pending.current;
       pending.current = null;
       const selectedNodes = chosen ?? selection.current.nodes;
@@ -109,8 +124,10 @@ export function useDiagramState(
       // Unchanged nodes and edges keep their objects, so React Flow redraws only what changed.
       const nextNodes = reuse(flowNodes(shown, layout, view.nodes, selectedNodes, view.readOnly), drawn.current.nodes, sameNode);
       const nextEdges = reuse(flowEdges(shown, selectedEdges, view.readOnly), drawn.current.edges, sameEdge);
-      setNodes(nextNodes);
-      setEdges(nextEdges);
+      // The same list keeps its array: React Flow runs every node's and edge's selector on
+      // each update of its store, so an update that changes nothing is worth skipping.
+      setNodes((current) => (sameItems(current, nextNodes) ? current : nextNodes));
+      setEdges((current) => (sameItems(current, nextEdges) ? current : nextEdges));
       // A new object for every layout: expanding a use lays out the same view again, and the
       // page fits the view after that layout (a same-object update would not be seen).
       setLaidOut({ ...view });

@@ -1,0 +1,25 @@
+"""LaneOffset: a LaneOffsetAction to an absolute offset, or one relative to the target actor."""
+
+from __future__ import annotations
+
+import scemlmodel as scm
+
+from .actions import Plan, planner
+from .context import Action, Context, Event
+from .triggers import Group
+
+
+@planner("LaneOffset", one_event=True)
+def plan_lane_offset(ctx: Context, node: scm.LaneOffset, groups: list[Group]) -> Plan:
+    """The action (every version and profile); the event completes when the offset is reached,
+    which esmini 3.6 also does for a continuous one (`players.meaning.lane_offset_duration`)."""
+    name = ctx.event_names[node]
+    data = {
+        "continuous": "true" if node.continuous else "false",
+        "shape": node.shape.name,
+        "max_lateral_acc": ctx.values.text(node, "maxLateralAcc"),
+        "value": ctx.values.text(node, "offset"),
+        "entity": None if node.targetActor is None else ctx.entity(node.targetActor),
+    }
+    action = Action(ctx.action_name(name), "lane_offset", data)
+    return [Event(name, ctx.entity(node.referenceActor), [action], groups)], name
