@@ -901,12 +901,16 @@ class DiscreteDistribution(Distribution):
 @abstract
 class ActionNode(ModuleElement):
     """A maneuver or condition. The reference actor performs the maneuver or must fulfil the condition; some kinds also need a target actor."""
+    maxRuns = EAttribute(eType=EInt, unique=True, derived=False, changeable=True, default_value=1)
     referenceActor = EReference(ordered=True, unique=True, containment=False, derived=False)
     targetActor = EReference(ordered=True, unique=True, containment=False, derived=False)
 
-    def __init__(self, *, referenceActor=None, targetActor=None, **kwargs):
+    def __init__(self, *, referenceActor=None, targetActor=None, maxRuns=None, **kwargs):
 
         super().__init__(**kwargs)
+
+        if maxRuns is not None:
+            self.maxRuns = maxRuns
 
         if referenceActor is not None:
             self.referenceActor = referenceActor

@@ -11,7 +11,16 @@ from sceml.model.compare import differences
 from sceml.model.loading import load
 from sceml.model.traversal import features
 
-_SKIPPED = {"name", "referenceActor", "targetActor", "incoming", "outgoing", "diagramPosition"}
+#: Not set by parameter or position ops (maxRuns: every node of UIS1 runs once, the default).
+_SKIPPED = {
+    "name",
+    "referenceActor",
+    "targetActor",
+    "incoming",
+    "outgoing",
+    "diagramPosition",
+    "maxRuns",
+}
 
 
 def node_ops(node: Any, node_id: str) -> list[dict[str, Any]]:

@@ -23,7 +23,8 @@ def test_a_global_node_is_added_and_edited_without_an_actor(uis1: EditorSession)
     (made,) = (node(view, i) for i in view["created"])
     names = [f["name"] for f in made["fields"]]
     assert "referenceActor" not in names and "targetActor" not in names
-    assert names[1:] == ["parameter", "value", "modify"]
+    # How many times it runs (maxRuns) is the one field every action node has.
+    assert names[1:] == ["parameter", "value", "modify", "maxRuns"]
     assert field(made, "modify") == {
         "name": "modify",
         "label": "Modify",

@@ -158,3 +158,15 @@ def test_emf_reads_and_writes_imported_controllers(emf: Harness, tmp_path: Path)
     assert (assign.activation.longitudinal, assign.activation.lateral) == (True, None)
     ego = next(a for a in load(out / "controller_object.xmi").root.nodes[0].actors)
     assert [(p.name, p.value) for p in ego.controller.properties][1] == ("timeGap", "2.0")
+
+
+def test_emf_keeps_how_many_times_an_imported_node_runs(emf: Harness, tmp_path: Path) -> None:
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    import_to_file(FILES / "repeats.xosc", source / "repeats.xmi")
+    assert 'maxRuns="3"' in (source / "repeats.xmi").read_text()
+    result = emf.run("roundtrip", ECORE, source, out, Path("repeats.xmi"))
+    assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+    assert 'maxRuns="3"' in (out / "repeats.xmi").read_text()
+    assert differences(load(source / "repeats.xmi").root, load(out / "repeats.xmi").root) == []

@@ -83,13 +83,13 @@ HAND_WRITTEN = {
             "FollowTrajectory",
             "InLocationRadius",
             "JoinAllFinished",
-            # The end: the StopTrigger, or the unnamed branches once its 25 s have passed.
+            # The unnamed branches joined with the StopTrigger's wait: they reach the end, and
+            # the StopTrigger alone decides when the run ends.
             "JoinAllFinished",
             "OpaqueAction",
             "OpaqueAction",
             "RootNode",
             "Stop",
-            "TimeElapsed",
             "TimeElapsed",
             # Between reference points (freespace="false"), kept as the node's freespace.
             "TimeToCollision",
@@ -121,13 +121,13 @@ HAND_WRITTEN = {
             "Decelerate",
             "EndNode",
             "InVehicleRadius",
-            # The end: the StopTrigger, or the unnamed branch once its 60 s have passed.
+            # The unnamed branch joined with the StopTrigger's condition: it reaches the end,
+            # and the condition alone decides when the run ends.
             "JoinAllFinished",
             "LaneChange",
             "LaneOffset",
             "RootNode",
             "SpeedCondition",
-            "TimeElapsed",
             "TimeElapsed",
             # The odometer since the start, as SceML's TraveledDistance counts.
             "TraveledDistance",

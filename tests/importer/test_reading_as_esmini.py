@@ -17,6 +17,7 @@ from click.testing import CliRunner
 
 import scemlmodel as scm
 from sceml.cli import cli
+from sceml.export import build_xosc
 from sceml.importer import XoscImportError, import_file
 from sceml.maps import load_map
 from sceml.maps.resolve import start_poses
@@ -417,9 +418,21 @@ def test_a_stop_trigger_ends_the_run_without_waiting_for_branches_it_does_not_na
     imported = import_file(path)
     end = next(n for n in imported.scenario.nodes if isinstance(n, scm.EndNode))
     assert end.policy is scm.JoinPolicy.joinOne
-    inputs = {f.source.eClass.name for f in end.incoming}
-    # Three seconds after Go, or once the branch the StopTrigger does not name is done.
-    assert inputs == {"TimeElapsed", "Stop"}
+    inputs = {f.source.eClass.name: f.source for f in end.incoming}
+    # Three seconds after Go; the branch the StopTrigger does not name reaches the end only
+    # together with those three seconds, so it can neither end the run sooner nor later.
+    assert set(inputs) == {"TimeElapsed", "JoinAllFinished"}
+    assert inputs["TimeElapsed"].duration.value == 3.0
+    rest = {f.source.eClass.name: f.source for f in inputs["JoinAllFinished"].incoming}
+    assert set(rest) == {"Stop", "TimeElapsed"}
+    assert rest["TimeElapsed"] is inputs["TimeElapsed"]
+    # Written back, the StopTrigger is Go's end and 3 s, and the time limit: Never is not in it.
+    stop = build_xosc(imported.scenario, version="1.1", source_path=path).tree.find(
+        "Storyboard/StopTrigger"
+    )
+    refs = [c.get("storyboardElementRef") for c in stop.iter("StoryboardElementStateCondition")]
+    assert refs == ["Go"]
+    assert [c.get("delay") for c in stop.iter("Condition")][0] == "3.0"
 
 
 def test_a_time_only_stop_trigger_makes_the_run_last_that_long(tmp_path: Path) -> None:
@@ -508,7 +521,7 @@ def test_a_lane_offset_reaching_into_the_next_lane_is_that_lane(tmp_path: Path) 
     assert lane(start) == ("1", -1, 70.0, -1.0)
 
 
-def test_with_a_time_limit_too_the_other_branches_end_the_run_only_after_it(
+def test_with_a_time_limit_too_it_is_the_maximum_duration_and_the_stop_alone_ends_the_run(
     tmp_path: Path,
 ) -> None:
     path = scenario(
@@ -529,10 +542,11 @@ def test_with_a_time_limit_too_the_other_branches_end_the_run_only_after_it(
         "</ByValueCondition></Condition></ConditionGroup>",
     )
     imported = import_file(path)
+    root = next(n for n in imported.scenario.nodes if isinstance(n, scm.RootNode))
+    assert root.maxDuration.value == 300.0
     rest = next(n for n in imported.scenario.nodes if n.name == "branches_done")
-    waits = {f.source.eClass.name: f.source for f in rest.incoming}
-    assert set(waits) == {"Stop", "TimeElapsed"}
-    assert waits["TimeElapsed"].duration.value == 300.0
+    # Later (the branch not named) joined with Go (what the StopTrigger waits for).
+    assert sorted(f.source.name for f in rest.incoming) == ["Go", "Later"]
 
 
 def test_the_conditions_of_one_group_are_a_group_not_a_chain(tmp_path: Path) -> None:
@@ -559,3 +573,79 @@ def test_the_conditions_of_one_group_are_a_group_not_a_chain(tmp_path: Path) -> 
     assert all([f.source for f in c.incoming] == [go] for c in checks)
     joins = {f.target.name for c in checks for f in c.outgoing}
     assert len(joins) == 1
+
+
+# --- same run: opaque conditions and relative speeds ---------------------------------------
+
+STAND_STILL = (
+    '<ConditionGroup><Condition name="Still" delay="4" conditionEdge="rising"><ByEntityCondition>'
+    '<TriggeringEntities triggeringEntitiesRule="any"><EntityRef entityRef="Ego"/>'
+    '</TriggeringEntities><EntityCondition><StandStillCondition duration="1"/>'
+    "</EntityCondition></ByEntityCondition></Condition></ConditionGroup>"
+)
+
+
+def test_an_opaque_conditions_delay_is_waited_for_once(tmp_path: Path) -> None:
+    imported = import_file(scenario(tmp_path, stop=STAND_STILL))
+    kept = next(n for n in imported.scenario.nodes if isinstance(n, scm.OpaqueAction))
+    wait = next(f.target for f in kept.outgoing)
+    # The 4 s are the TimeElapsed after the node; the kept XML no longer waits for them too.
+    assert isinstance(wait, scm.TimeElapsed)
+    assert wait.duration.value == 4.0
+    assert 'delay="0"' in kept.xml
+    assert 'conditionEdge="rising"' in kept.xml
+    stop = build_xosc(imported.scenario, version="1.1", source_path=tmp_path / "s.xosc").tree
+    kept_xml = [c for c in stop.iter("Condition") if c.find(".//StandStillCondition") is not None]
+    waits = [
+        c.get("delay")
+        for c in stop.iterfind("Storyboard/StopTrigger//Condition")
+        if c.find(".//StoryboardElementStateCondition") is not None
+    ]
+    # Written back: the kept condition without its delay, and 4 s on what follows it, once.
+    assert [c.get("delay") for c in kept_xml] == ["0"]
+    assert waits == ["4.0"]
+
+
+def test_a_story_relative_target_speed_gives_the_speed_of_a_later_lane_change(
+    tmp_path: Path,
+) -> None:
+    relative = (
+        '<Event name="Follow" priority="overwrite"><Action name="FollowAction"><PrivateAction>'
+        '<LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="step" value="0" '
+        'dynamicsDimension="time"/><SpeedActionTarget><RelativeTargetSpeed entityRef="Lead" '
+        'value="1.5" speedTargetValueType="factor" continuous="true"/></SpeedActionTarget>'
+        "</SpeedAction></LongitudinalAction></PrivateAction></Action><StartTrigger>"
+        '<ConditionGroup><Condition name="FollowWhen" delay="0" conditionEdge="none">'
+        f"<ByValueCondition>{AT_START}</ByValueCondition></Condition></ConditionGroup>"
+        "</StartTrigger></Event>"
+    )
+    change = (
+        '<Event name="Change" priority="overwrite"><Action name="ChangeAction"><PrivateAction>'
+        '<LateralAction><LaneChangeAction><LaneChangeActionDynamics dynamicsShape="sinusoidal" '
+        'value="3" dynamicsDimension="time"/><LaneChangeTarget><RelativeTargetLane '
+        'entityRef="Ego" value="1"/></LaneChangeTarget></LaneChangeAction></LateralAction>'
+        '</PrivateAction></Action><StartTrigger><ConditionGroup><Condition name="ChangeWhen" '
+        'delay="0" conditionEdge="none"><ByValueCondition><SimulationTimeCondition value="2" '
+        'rule="greaterThan"/></ByValueCondition></Condition></ConditionGroup></StartTrigger>'
+        "</Event>"
+    )
+    lead_speed = (
+        '<Private entityRef="Lead"><PrivateAction><TeleportAction><Position>'
+        '<LanePosition roadId="1" laneId="-1" s="80" offset="0"/></Position></TeleportAction>'
+        "</PrivateAction><PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics "
+        'dynamicsShape="step" value="0" dynamicsDimension="time"/><SpeedActionTarget>'
+        '<AbsoluteTargetSpeed value="20"/></SpeedActionTarget></SpeedAction>'
+        "</LongitudinalAction></PrivateAction></Private>"
+    )
+    path = scenario(
+        tmp_path,
+        entities=f'<ScenarioObject name="Ego">{CAR}</ScenarioObject>'
+        f'<ScenarioObject name="Lead">{CAR}</ScenarioObject>',
+        init=LANE_START.format(name="Ego", position=EGO_START) + lead_speed,
+        maneuvers=f'<Maneuver name="M">{relative}{change}</Maneuver>',
+    )
+    imported = import_file(path)
+    lane_change = next(n for n in imported.scenario.nodes if isinstance(n, scm.LaneChange))
+    # Lead drives 20 m/s, Ego 1.5 times that: 3 s of lane change at 30 m/s are 90 m.
+    assert lane_change.distance.value == 90.0
+    assert guessed(imported, "relative target speed taken as 30 m/s")

@@ -267,6 +267,21 @@ def duplicate_names(out: Path) -> None:
     save(b.scenario, out, "s013-duplicate-names.xmi")
 
 
+@case("s014-runs", "SCEML-S014")
+def impossible_runs(out: Path) -> None:
+    b, ego = scenario()
+    b.chain(
+        b.root,
+        b.add("TimeElapsed", ego, name="Again", duration=1.0, maxRuns=2),
+        b.add("Accelerate", ego, name="Never", targetSpeed=10.0, rate=1.0, maxRuns=0),
+        b.add("Accelerate", ego, name="Thrice", targetSpeed=12.0, rate=1.0, maxRuns=3),
+        # Written as its event and the event of its finish: players cannot repeat both.
+        b.add("KeepVelocity", ego, name="HoldTwice", duration=2.0, maxRuns=2),
+        b.end,
+    )
+    save(b.scenario, out, "s014-runs.xmi")
+
+
 # Actors --------------------------------------------------------------------------------------
 
 

@@ -14,7 +14,7 @@ from typing import Any
 import scemlmodel as scm
 
 from ..xosc import meaning
-from ..xosc.support import MAPPED_KINDS
+from ..xosc.support import MAPPED_KINDS, REPEATABLE_KINDS
 from .context import Action, Context, Event
 from .entities import performance_of
 from .speeds import speed_dynamics
@@ -27,16 +27,26 @@ Plan = tuple[list[Event], Finish]
 Planner = Callable[[Context, scm.GraphElement, list[Group]], Plan]
 
 PLANNERS: dict[str, Planner] = {}
+#: Kinds written as one event: only they can run more than once (maximumExecutionCount is an
+#: event's; a node written as an event and its finish marker cannot repeat them together).
+ONE_EVENT: set[str] = set()
 
 
-def planner(*kinds: str) -> Callable[[Planner], Planner]:
-    """Register a planner for node kinds; each must be listed in `support.MAPPED_KINDS`."""
+def planner(*kinds: str, one_event: bool = False) -> Callable[[Planner], Planner]:
+    """Register a planner for node kinds; each must be listed in `support.MAPPED_KINDS`, and a
+    kind written as one event (`one_event`) in `support.REPEATABLE_KINDS` too."""
 
     def register(function: Planner) -> Planner:
         for kind in kinds:
             if kind not in MAPPED_KINDS:
                 raise AssertionError(f"{kind} has a planner but is not in MAPPED_KINDS")
+            if one_event != (kind in REPEATABLE_KINDS):
+                raise AssertionError(
+                    f"{kind}: one_event={one_event} disagrees with REPEATABLE_KINDS"
+                )
             PLANNERS[kind] = function
+            if one_event:
+                ONE_EVENT.add(kind)
         return function
 
     return register
@@ -85,7 +95,7 @@ def plan_join(ctx: Context, node: scm.GraphElement, groups: list[Group]) -> Plan
     return marker_plan(ctx, node, groups, ctx.ego)
 
 
-@planner("Accelerate", "Decelerate", "Stop")
+@planner("Accelerate", "Decelerate", "Stop", one_event=True)
 def plan_speed(ctx: Context, node: scm.ActionNode, groups: list[Group]) -> Plan:
     """A SpeedAction to the target speed at the given rate; it completes when the speed is reached."""
     target = "0.0" if isinstance(node, scm.Stop) else ctx.values.text(node, "targetSpeed")
@@ -201,7 +211,7 @@ def plan_distance_keeping(ctx: Context, node: scm.ActionNode, groups: list[Group
     return [event, done], done.name
 
 
-@planner("LaneChange")
+@planner("LaneChange", one_event=True)
 def plan_lane_change(ctx: Context, node: scm.LaneChange, groups: list[Group]) -> Plan:
     """LaneChangeAction `lanes` lanes to the left (+) or right (-) of the actor's own lane or of
     the target actor's, or into the absolute `targetLane`, shaped as the node says."""

@@ -33,6 +33,8 @@ class Event:
     actor: str
     actions: list[Action]
     groups: list[Group]
+    #: maximumExecutionCount: how many times the event may run (the node's maxRuns).
+    runs: int = 1
 
 
 @dataclass

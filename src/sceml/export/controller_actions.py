@@ -17,14 +17,14 @@ from .controllers import activation, controller, override, released
 from .triggers import Group
 
 
-@planner("ActivateController")
+@planner("ActivateController", one_event=True)
 def plan_activate(ctx: Context, node: scm.ActivateController, groups: list[Group]) -> Plan:
     """An ActivateControllerAction switching the domains the node sets."""
     data = {"domains": activation(node), "wrapped": ctx.traits.controller_action}
     return _instant(ctx, node, groups, "controller_activate", data)
 
 
-@planner("AssignController")
+@planner("AssignController", one_event=True)
 def plan_assign(ctx: Context, node: scm.AssignController, groups: list[Group]) -> Plan:
     """An AssignControllerAction; in 1.0 with the six released inputs the schema requires."""
     held = node.controller if node.controller is not None else scm.Controller()
@@ -37,7 +37,7 @@ def plan_assign(ctx: Context, node: scm.AssignController, groups: list[Group]) -
     return _instant(ctx, node, groups, "controller_assign", data)
 
 
-@planner("OverrideController")
+@planner("OverrideController", one_event=True)
 def planoverride(ctx: Context, node: scm.OverrideController, groups: list[Group]) -> Plan:
     """An OverrideControllerValueAction with the node's inputs, in the schema's order."""
     order = list(OVERRIDE_ELEMENTS)

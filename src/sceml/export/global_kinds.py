@@ -41,7 +41,7 @@ def plan_value_condition(ctx: Context, node: scm.ActionNode, groups: list[Group]
     return [Event(name, ctx.ego, [marker], with_extra(groups, check))], name
 
 
-@planner("SetParameter", "SetVariable")
+@planner("SetParameter", "SetVariable", one_event=True)
 def plan_value_action(ctx: Context, node: scm.ActionNode, groups: list[Group]) -> Plan:
     """A ParameterAction or VariableAction: SetAction, or ModifyAction's AddValue or
     MultiplyByValue; it completes at once."""
@@ -57,7 +57,7 @@ def plan_value_action(ctx: Context, node: scm.ActionNode, groups: list[Group]) -
     return [Event(name, ctx.ego, [action], groups)], name
 
 
-@planner("TrafficSignalState")
+@planner("TrafficSignalState", one_event=True)
 def plan_signal_state(ctx: Context, node: scm.TrafficSignalState, groups: list[Group]) -> Plan:
     """A TrafficSignalStateAction (InfrastructureAction in every version); it completes at once."""
     name = ctx.event_names[node]

@@ -9,7 +9,7 @@ from .context import Action, Context, Event
 from .triggers import Group
 
 
-@planner("LaneOffset")
+@planner("LaneOffset", one_event=True)
 def plan_lane_offset(ctx: Context, node: scm.LaneOffset, groups: list[Group]) -> Plan:
     """The action (every version and profile); the event completes when the offset is reached,
     which esmini 3.6 also does for a continuous one (`xosc.meaning.lane_offset_duration`)."""

@@ -47,7 +47,7 @@ def _body(element: etree._Element) -> Markup:
     return Markup(etree.tostring(children[0], encoding="unicode", with_tail=False))
 
 
-@planner("OpaqueAction")
+@planner("OpaqueAction", one_event=True)  # a kept Action; a kept Condition is no repeat
 def plan_opaque(ctx: Context, node: scm.OpaqueAction, groups: list[Group]) -> Plan:
     """The kept Action as the node's event, or the kept Condition on a marker event.
 

@@ -70,11 +70,29 @@ def activation(finishes: list[Finish], one: bool, by: str) -> list[Group]:
     """
     alternatives = [_groups_of(finish, by) for finish in finishes]
     if one:
-        return [group for groups in alternatives for group in groups]
+        return _absorbed([group for groups in alternatives for group in groups])
     combined: list[Group] = [[]]
     for groups in alternatives:
         combined = [[*before, *group] for before in combined for group in groups]
-    return combined
+    return _absorbed(combined)
+
+
+def _absorbed(groups: list[Group]) -> list[Group]:
+    """The groups without those that test all another group tests and more: the other holds
+    whenever they do, so the OR means the same without them (an imported StopTrigger joins the
+    branches it does not name with its own condition, which alone decides)."""
+    tests = [{_test(condition) for condition in group} for group in groups]
+    return [
+        group
+        for i, group in enumerate(groups)
+        if not any(j != i and other < tests[i] for j, other in enumerate(tests))
+    ]
+
+
+def _test(condition: Condition) -> tuple[object, ...]:
+    """What a condition tests, whatever its name."""
+    values = tuple(sorted((key, str(value)) for key, value in condition.data.items()))
+    return (condition.kind, condition.ref, condition.delay, values)
 
 
 def _groups_of(finish: Finish, by: str) -> list[Group]:

@@ -156,9 +156,27 @@ def _plan(ctx: Context, nodes: list[scm.GraphElement]) -> tuple[list[Event], dic
         node_events, finish = planner(
             ctx, node, activation(before, graph.finishes_with_first(node), ctx.event_names[node])
         )
-        events.extend(node_events)
+        events.extend(_repeated(node, node_events))
         finishes[node] = finish
     return events, finishes
+
+
+def _repeated(node: scm.GraphElement, events: list[Event]) -> list[Event]:
+    """The node's event with its maxRuns as the maximumExecutionCount.
+
+    Only a node written as one event can repeat: a node written as several (a wait and what
+    it waits for) would repeat them out of step.
+    """
+    runs = getattr(node, "maxRuns", 1)
+    if runs == 1:
+        return events
+    if len(events) != 1:
+        raise MappingError(
+            f"{node.eClass.name} runs {runs} times, but it is written as "
+            f"{len(events)} events: only a node written as one event can repeat",
+            element=str(node.name),
+        )
+    return [replace(events[0], runs=runs)]
 
 
 def _groups(ctx: Context, actors: list[scm.Actor], events: list[Event]) -> list[dict[str, Any]]:

@@ -99,6 +99,7 @@ def _speed(
 ) -> scm.ActionNode | str:
     target = speed.find("SpeedActionTarget/AbsoluteTargetSpeed")
     if target is None:
+        _relative_speed(build, request, speed, motion)
         return "a relative target speed has no SceML kind"
     value = number(target, "value")
     actor = str(request.actor.name)
@@ -118,6 +119,21 @@ def _speed(
     if kind == "Stop":
         return _add(build, request, kind, rate=rate)
     return _add(build, request, kind, targetSpeed=value, rate=rate)
+
+
+def _relative_speed(build: Build, request: Request, speed: etree._Element, motion: Motion) -> None:
+    """The speed a relative target speed reaches, from the other actor's speed known so far,
+    so that later actions given in time (a lane change's duration) get their length."""
+    target = speed.find("SpeedActionTarget/RelativeTargetSpeed")
+    other = None if target is None else build.actor(target.get("entityRef"), target)
+    base = None if other is None else motion.speed.get(str(other.name))
+    if target is None or other is None or base is None:
+        return
+    value = number(target, "value")
+    reached = base * value if target.get("speedTargetValueType") == "factor" else base + value
+    motion.speed[str(request.actor.name)] = reached
+    message = f"the relative target speed taken as {reached:g} m/s, from {other.name}'s"
+    _guess(build, request, message)
 
 
 def _rate(

@@ -10,6 +10,7 @@ With several triggering entities there is one node per entity, joined: `any` by 
 from __future__ import annotations
 
 from collections.abc import Callable
+from copy import deepcopy
 
 from lxml import etree
 
@@ -116,7 +117,13 @@ def _opaque(
     wanted: str,
     why: str,
 ) -> scm.GraphElement:
-    node = opaque_node(build, condition, actor, wanted, why)
+    kept = condition
+    if condition.get("delay") not in (None, "0", "0.0"):
+        # The trigger reader already made the delay a TimeElapsed after this node: kept in
+        # the XML as well, the export would wait for it twice.
+        kept = deepcopy(condition)
+        kept.set("delay", "0")
+    node = opaque_node(build, kept, actor, wanted, why, build.where(condition))
     build.flow(before, node)
     return node
 

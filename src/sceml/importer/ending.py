@@ -2,7 +2,8 @@
 
 Groups that are only `SimulationTime > T` give the maximum duration; the others are what the end
 node waits for (one group: join-all over its elements; one per element: join-one). Every node
-must reach the end in SceML, so branches the StopTrigger does not name also flow into it.
+must reach the end in SceML, so branches the StopTrigger does not name also flow into it, through
+a join-all with the stop (which then alone decides when the run ends, as in OpenSCENARIO).
 """
 
 from __future__ import annotations
@@ -52,19 +53,12 @@ def read_stop(build: Build, storyboard: Storyboard) -> None:
             + (f" and {min(limits):g} s" if limits else ""),
         )
     elif others:
-        if limits:
-            # With a time limit too, the original runs on to it when the StopTrigger's
-            # elements never finish: the other branches end the run only once it has passed.
-            limit = min(limits)
-            others.append(
-                trigger.timed(build.root, limit, "stop_time", "TimeElapsed", trigger.actor)
-            )
         ends = _stop_or_rest(build, ends, others)
         build.report.add(
             "guessed",
-            "the end comes when the StopTrigger holds, or once "
-            f"{', '.join(str(n.name) for n in others)} (which it does not name) have all "
-            "finished: every SceML branch must reach the end",
+            "the end comes when the StopTrigger holds; "
+            f"{', '.join(str(n.name) for n in others)} (which it does not name) reach the end "
+            "through a join with it: every SceML branch must reach the end",
             build.where(stop),
         )
     for node in [*ends, *([] if groups else others)] or [build.root]:
@@ -74,11 +68,15 @@ def read_stop(build: Build, storyboard: Storyboard) -> None:
 def _stop_or_rest(
     build: Build, ends: list[scm.GraphElement], others: list[scm.GraphElement]
 ) -> list[scm.GraphElement]:
-    """The end's inputs when the StopTrigger does not name every branch: the stop, or the rest.
+    """The end's inputs when the StopTrigger does not name every branch: the stop, and the
+    other branches joined with the stop.
 
-    OpenSCENARIO stops when the StopTrigger holds, whatever else is running; waiting for the
-    other branches as well (a join-all) would keep a run going that the original ended.
+    OpenSCENARIO stops when the StopTrigger holds, whatever else is running or has finished.
+    The other branches must reach the end in SceML; met in a join-all with the stop itself,
+    they can neither end the run earlier (as a join-one with them would) nor keep it going
+    (as a join-all at the end would), so the end comes exactly when the stop holds.
     """
+    stop = ends[0]
     if len(ends) > 1:
         kind = (
             scm.JoinOneFinished
@@ -88,14 +86,11 @@ def _stop_or_rest(
         stop = build.add(kind(), "stop_holds")
         for end in ends:
             build.flow(end, stop)
-        ends = [stop]
-    rest = others[0]
-    if len(others) > 1:
-        rest = build.add(scm.JoinAllFinished(), "branches_done")
-        for other in others:
-            build.flow(other, rest)
+    rest = build.add(scm.JoinAllFinished(), "branches_done")
+    for other in [*others, stop]:
+        build.flow(other, rest)
     build.end.policy = scm.JoinPolicy.joinOne
-    return [*ends, rest]
+    return [stop, rest]
 
 
 def _time_limit(group: etree._Element) -> float | None:

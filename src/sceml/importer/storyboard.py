@@ -14,6 +14,7 @@ from lxml import etree
 import scemlmodel as scm
 
 from ..model import params
+from ..xosc.support import repeatable
 from . import markers, traced
 from .actions import Motion, Request, map_action
 from .context import Build, last_name
@@ -92,13 +93,6 @@ class Storyboard:
                         # (`cut-in_cr`: every event's action is called `Action`).
                         qualified = f"{event.get('name')}::{action.get('name')}"
                         self.actions.setdefault(qualified, (name, index))
-                    count = int(event.get("maximumExecutionCount", "1"))
-                    if count > 1:
-                        self.build.report.add(
-                            "not represented",
-                            f"event {name!r} may run {count} times; SceML runs each node once",
-                            self.build.where(event),
-                        )
 
     def _unique(self, name: str, maneuver: etree._Element, event: etree._Element) -> str:
         """The event's name, or, when an earlier event has it, `name_in_<maneuver>[_n]`.
@@ -202,12 +196,37 @@ class Storyboard:
                 nodes.append(made)
                 if _is_step_speed(action):
                     after[str(each.name)] = made
+        self._runs(info, nodes)
         if len(nodes) == 1:
             return nodes[0]
         join = self.build.add(scm.JoinAllFinished(), f"{info.name}_done")
         for made in nodes:
             self.build.flow(made, join)
         return join
+
+    def _runs(self, info: Event, nodes: list[scm.GraphElement]) -> None:
+        """The event's maximumExecutionCount as its node's maxRuns (one action, of a kind the
+        export writes as one event); otherwise reported: SceML repeats nodes one by one, not a
+        group, and players cannot repeat an event together with the event of its finish."""
+        count = int(info.element.get("maximumExecutionCount", "1"))
+        if count <= 1:
+            return
+        node = nodes[0] if len(nodes) == 1 else None
+        if isinstance(node, scm.ActionNode) and repeatable(node.eClass.name):
+            node.maxRuns = count
+            self.build.report.add(
+                "mapped",
+                f"{node.name}: maximumExecutionCount {count} -> maxRuns",
+                self.build.where(info.element),
+                str(node.name),
+            )
+            return
+        self.build.report.add(
+            "not represented",
+            f"event {info.name!r} may run {count} times; SceML repeats only a node of one "
+            "action that is written back as one event",
+            self.build.where(info.element),
+        )
 
     def _report_marker(self, info: Event, node: scm.GraphElement) -> None:
         told = any(entry.node == node.name for entry in self.build.report.entries)

@@ -185,7 +185,7 @@ _MEASURE = {"freespace": True, "relativeDistanceType": "euclidean", "coordinateS
 
 #: Attributes shown only when they differ from these defaults (a LaneChange of one lane,
 #: sinusoidal, stays the box it was before these features existed).
-_QUIET_DEFAULTS: dict[str, object] = {"lanes": 1, "shape": "sinusoidal"}
+_QUIET_DEFAULTS: dict[str, object] = {"lanes": 1, "shape": "sinusoidal", "maxRuns": 1}
 
 
 def _quiet(node: EObject, name: str, held: object) -> bool:
@@ -252,7 +252,8 @@ def _reference_items(name: str, held: object, unit: str, scope: Scope) -> Iterat
 def action_lines(node: scm.ActionNode, scope: Scope) -> list[str]:
     """The lines under an action node's kind: its actors, then `name: value` per set parameter."""
     if isinstance(node, scm.OpaqueAction):
-        return [actor_line(node, scope), *opaque_lines(node)]
+        runs = [f"maxRuns: {node.maxRuns}"] if node.maxRuns != 1 else []
+        return [actor_line(node, scope), *opaque_lines(node), *runs]
     if not catalog.performed_by_actor(node):
         return global_lines(node)
     if isinstance(node, scm.ControllerManeuver):

@@ -55,13 +55,19 @@ class NodeState:
     #: When a trigger that holds in the instant started it (`xosc.flows.inlined`); its
     #: behaviour begins at the next step.
     since: float | None = None
+    #: How many times the node may run (`maxRuns`), and the runs finished so far.
+    max_runs: int = 1
+    runs: int = 0
+    #: When its first run started (the timeline shows the first start and the last finish).
+    first_started: float | None = None
 
     def ready(self) -> bool:
         done = [p.finished is not None for p in self.predecessors]
         return bool(done) and (all(done) if self.needs_all else any(done))
 
     def record(self) -> NodeRecord:
-        return NodeRecord(self.name, self.kind, self.actor, self.started, self.finished, self.note)
+        started = self.started if self.first_started is None else self.first_started
+        return NodeRecord(self.name, self.kind, self.actor, started, self.finished, self.note)
 
 
 class Scheduler:
@@ -119,6 +125,9 @@ class Scheduler:
             state = queue.popleft()
             if state.finished is not None:
                 continue
+            if state.runs + 1 < state.max_runs:
+                queue.extend(self._run_again(state))
+                continue
             self._finish(state)
             if isinstance(state.node, scm.EndNode):
                 self.ended = True
@@ -137,6 +146,32 @@ class Scheduler:
                         self.ready.append((round(self.world.t + self.world.dt, 9), successor))
                     else:
                         queue.extend(self._activate(successor))
+
+    def _run_again(self, state: NodeState) -> list[NodeState]:
+        """A run of a node with runs left has finished: it waits for its activation to hold
+        anew. A condition before it is checked again (the node runs once it holds again); any
+        other predecessor stays finished, so the node runs again one step later, as a player
+        restarts an event whose trigger still holds. The conditions that hold at once."""
+        state.runs += 1
+        if state.first_started is None:
+            state.first_started = state.started
+        if state in self.active:
+            self.active.remove(state)
+        state.started, state.since, state.test, state.behaviour = None, None, None, None
+        for key, owner in list(self.owners.items()):
+            if owner is state:
+                del self.owners[key]
+        conditions = [p for p in state.predecessors if isinstance(p.node, scm.Condition)]
+        if not conditions:
+            self.ready.append((round(self.world.t + self.world.dt, 9), state))
+            return []
+        holding = []
+        for before in conditions:
+            if before.first_started is None:
+                before.first_started = before.started
+            before.finished = None
+            holding.extend(self._activate(before))
+        return holding
 
     def _activated_at(self, state: NodeState) -> float:
         """When a ready node is activated: each finished predecessor's finish plus what its
@@ -223,6 +258,7 @@ def _state(node: EObject) -> NodeState:
         node.eClass.name,
         str(actor.name) if actor is not None else None,
         needs_all,
+        max_runs=max(1, int(getattr(node, "maxRuns", 1))),
     )
 
 

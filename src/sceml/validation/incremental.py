@@ -116,6 +116,7 @@ READS: dict[str, Reads] = {
     "SCEML-S011": Reads(_SELF),  # the graphs of its ends
     "SCEML-S012": Reads(aspects=_SHAPE),
     "SCEML-S013": Reads(aspects=_SHAPE),
+    "SCEML-S014": Reads(_SELF),
     # simultaneity.py
     "SCEML-C001": Reads(aspects=_EXPANSION),
     # modules.py

@@ -213,3 +213,35 @@ def node_names_unique(graph: scm.Graph, context: Context) -> Iterator[Finding]:
         elif counts[node.name] > 1 and node.name not in reported:
             reported.add(node.name)
             yield node, f"{counts[node.name]} nodes are named {node.name!r}"
+
+
+@constraint(
+    "SCEML-S014",
+    ERROR,
+    "ActionNode",
+    "a node runs at least once, and more than once only if it is a maneuver players repeat",
+    source="engineer",
+)
+def runs_are_possible(node: scm.ActionNode, context: Context) -> Iterator[Finding]:
+    from ..xosc.support import repeatable  # the export's planners agree on which kinds can
+
+    runs = node.maxRuns
+    if runs < 1:
+        yield node, f"{node.name!r} may run {runs} times: a node runs at least once (maxRuns 1)"
+    elif runs > 1 and isinstance(node, scm.Condition):
+        # A condition finishes once it holds; players have no condition that holds again.
+        yield (
+            node,
+            (
+                f"condition {node.name!r} may run {runs} times: a condition finishes once it "
+                "holds; repeat the maneuver after it instead"
+            ),
+        )
+    elif runs > 1 and not repeatable(node.eClass.name):
+        yield (
+            node,
+            (
+                f"{node.eClass.name} {node.name!r} may run {runs} times, but it is written as an "
+                "event and the event of its finish, which players cannot repeat together"
+            ),
+        )

@@ -8,8 +8,10 @@ from .schema import SUPPORTED_VERSIONS as VERSIONS
 __all__ = [
     "CARLA_VERSION",
     "MAPPED_KINDS",
+    "REPEATABLE_KINDS",
     "PROFILES",
     "default_version",
+    "repeatable",
     "unsupported_reason",
     "unsupported_setting",
 ]
@@ -56,6 +58,26 @@ MAPPED_KINDS = frozenset(
     }
 )
 
+#: The kinds the exporter writes as one event, so that they can run more than once (`maxRuns`:
+#: maximumExecutionCount is an event's; a node written as an event and its finish marker cannot
+#: repeat them together). `sceml.export.actions.planner(one_event=True)` must agree.
+REPEATABLE_KINDS = frozenset(
+    {
+        "Accelerate",
+        "ActivateController",
+        "AssignController",
+        "Decelerate",
+        "LaneChange",
+        "LaneOffset",
+        "OpaqueAction",
+        "OverrideController",
+        "SetParameter",
+        "SetVariable",
+        "Stop",
+        "TrafficSignalState",
+    }
+)
+
 #: Node kinds that never become events: the root starts the act, the end feeds the StopTrigger,
 #: module uses are flattened away before mapping.
 STRUCTURAL = ("RootNode", "EndNode", "ModuleUse")
@@ -77,6 +99,11 @@ SINCE: dict[str, tuple[str, str | None]] = {
     "VariableCondition": ("1.2", _VARIABLES),
     "SetVariable": ("1.2", _VARIABLES),
 }
+
+
+def repeatable(kind_name: str) -> bool:
+    """Whether a node of this kind can run more than once when exported (`maxRuns`)."""
+    return kind_name in REPEATABLE_KINDS
 
 
 def unsupported_reason(kind_name: str, version: str, profile: str = "generic") -> str | None:
