@@ -14,10 +14,13 @@ from sceml.migrations import History
 REPO = Path(__file__).resolve().parents[1]
 METAMODEL = REPO / "metamodel"
 HISTORY_10 = METAMODEL / "history" / "1.0"
+#: The repository's current release, and the one a test's own next release is.
+CURRENT = History(METAMODEL).current.version
+NEXT = f"{CURRENT.split('.')[0]}.{int(CURRENT.split('.')[1]) + 1}"
 
 
 def next_release(
-    folder: Path, edit: Callable[[str], str], migration: str | None, version: str = "1.2"
+    folder: Path, edit: Callable[[str], str], migration: str | None, version: str = NEXT
 ) -> History:
     """Edit the copy's .ecore into release `version` and add the migration step to it."""
     history = History(folder)

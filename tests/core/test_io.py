@@ -112,7 +112,7 @@ def test_missing_file(tmp_path: Path) -> None:
 def test_malformed_xml_names_file_and_line(tmp_path: Path) -> None:
     bad = tmp_path / "bad.xmi"
     bad.write_text(
-        '<?xml version="1.0"?>\n<scemlmodel:Scenario xmlns:scemlmodel="https://sceml.org/metamodel/1.1">\n<nodes>\n'
+        '<?xml version="1.0"?>\n<scemlmodel:Scenario xmlns:scemlmodel="https://sceml.org/metamodel/1.2">\n<nodes>\n'
     )
     with pytest.raises(LoadError) as caught:
         load(bad)
@@ -135,7 +135,7 @@ def test_wrong_root_element(tmp_path: Path) -> None:
     other = tmp_path / "flow.xmi"
     other.write_text(
         '<?xml version="1.0"?>\n<scemlmodel:Flow xmlns:xmi="http://www.omg.org/XMI" '
-        'xmlns:scemlmodel="https://sceml.org/metamodel/1.1" xmi:version="2.0"/>\n'
+        'xmlns:scemlmodel="https://sceml.org/metamodel/1.2" xmi:version="2.0"/>\n'
     )
     with pytest.raises(LoadError, match="expected a Scenario or Library"):
         load(other)

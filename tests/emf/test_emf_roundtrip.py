@@ -31,7 +31,7 @@ def emf_written(emf: Harness, tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 def test_metamodel_passes_emf_diagnostician(emf: Harness) -> None:
     result = emf.run("check-ecore", ECORE)
-    assert result.stdout.splitlines() == ["PACKAGE scemlmodel https://sceml.org/metamodel/1.1"]
+    assert result.stdout.splitlines() == ["PACKAGE scemlmodel https://sceml.org/metamodel/1.2"]
 
 
 def test_diagnostician_is_able_to_complain(emf: Harness, tmp_path: Path) -> None:

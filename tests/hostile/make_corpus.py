@@ -17,14 +17,17 @@ import sys
 from dataclasses import dataclass
 from pathlib import Path
 
+import scemlmodel
+
 HERE = Path(__file__).resolve().parent
 CORPUS = HERE / "corpus"
 EXAMPLES = HERE.parents[1] / "examples"
 
 XML_HEAD = '<?xml version="1.0" encoding="UTF-8"?>\n'
+#: The current release's namespace, so that the corpus tests the files of this release.
 NS = (
     'xmlns:xmi="http://www.omg.org/XMI" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance" '
-    'xmlns:scemlmodel="https://sceml.org/metamodel/1.1" xmi:version="2.0"'
+    f'xmlns:scemlmodel="{scemlmodel.nsURI}" xmi:version="2.0"'
 )
 
 

@@ -228,7 +228,7 @@ def test_100k_nested_elements_are_a_clean_error(tmp_path: Path) -> None:
     deep = tmp_path / "deep.xmi"
     body = "<nodes>" * 100_000 + "</nodes>" * 100_000
     deep.write_text(
-        f'<?xml version="1.0"?>\n<s:Scenario xmlns:s="https://sceml.org/metamodel/1.1">{body}</s:Scenario>'
+        f'<?xml version="1.0"?>\n<s:Scenario xmlns:s="https://sceml.org/metamodel/1.2">{body}</s:Scenario>'
     )
     exit_code, output = run(["info", str(deep)])
     assert exit_code == 2 and "Excessive depth" in output

@@ -7,8 +7,10 @@ import sys
 from pathlib import Path
 
 from metamodel_releases import (
+    CURRENT,
     HISTORY_10,
     METAMODEL,
+    NEXT,
     edit_ecore,
     load_with_ecore,
     migrated_copy,
@@ -28,7 +30,7 @@ def _rename_drive_distance(text: str) -> str:
 def test_the_repository_passes() -> None:
     result = check_release(History(METAMODEL))
     assert result.problems == []
-    assert result.last_release in ("1.0", "1.1")
+    assert result.last_release in ("1.0", "1.1", "1.2")
 
 
 def test_the_cli_check_passes_on_the_repository() -> None:
@@ -46,7 +48,7 @@ def test_the_cli_check_passes_on_the_repository() -> None:
         text=True,
     )
     assert run.returncode == 0, run.stderr
-    assert "metamodel release 1.1" in run.stdout
+    assert f"metamodel release {CURRENT}" in run.stdout
 
 
 def test_an_additive_change_passes_without_a_release(metamodel_copy: Path) -> None:
@@ -74,13 +76,14 @@ def test_a_new_release_without_the_operation_still_fails(metamodel_copy: Path) -
     history = next_release(metamodel_copy, _rename_drive_distance, "operations: []\n")
     problems = check_release(history).problems
     assert len(problems) == 1
-    assert "DriveDistance.distance" in problems[0] and "1.1-to-1.2.yaml" in problems[0]
+    assert "DriveDistance.distance" in problems[0] and f"{CURRENT}-to-{NEXT}.yaml" in problems[0]
 
 
 def test_a_new_release_without_a_step_fails(metamodel_copy: Path) -> None:
     history = next_release(metamodel_copy, _rename_drive_distance, None)
     assert any(
-        "no migration step from release 1.1 to 1.2" in p for p in check_release(history).problems
+        f"no migration step from release {CURRENT} to {NEXT}" in p
+        for p in check_release(history).problems
     )
 
 
@@ -93,10 +96,10 @@ def test_the_migration_makes_it_pass_and_old_files_load(
         "operations:\n  - rename_feature: {class: DriveDistance, from: distance, to: length}\n",
     )
     assert check_release(history).problems == []
-    # A 1.0 file goes through both steps and loads with the 1.2 metamodel, value kept.
+    # A 1.0 file goes through every step and loads with the next metamodel, value kept.
     source = HISTORY_10 / "examples" / "uis2-concrete.xmi"
     target, report = migrated_copy(source, tmp_path / "uis2.xmi", history)
-    assert report is not None and (report.from_release, report.to_release) == ("1.0", "1.2")
+    assert report is not None and (report.from_release, report.to_release) == ("1.0", NEXT)
     [change] = report.changes
     assert (change.operation, change.element, change.line, change.detail) == (
         "rename_feature",
@@ -112,7 +115,7 @@ def test_the_migration_makes_it_pass_and_old_files_load(
 def test_the_package_must_record_its_release(metamodel_copy: Path) -> None:
     history = edit_ecore(
         metamodel_copy,
-        lambda text: text.replace('key="version" value="1.1"', 'key="version" value="1.0"'),
+        lambda text: text.replace(f'key="version" value="{CURRENT}"', 'key="version" value="1.0"'),
     )
     assert any("records release '1.0'" in p for p in check_release(history).problems)
 
@@ -125,5 +128,6 @@ def test_a_step_naming_what_the_release_lacks_fails(metamodel_copy: Path) -> Non
         "  - rename_feature: {class: Follow, from: gap, to: distance}\n",
     )
     assert any(
-        "Follow has no feature 'gap' in release 1.1" in p for p in check_release(history).problems
+        f"Follow has no feature 'gap' in release {CURRENT}" in p
+        for p in check_release(history).problems
     )

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
-from metamodel_releases import HISTORY_10
+from metamodel_releases import CURRENT, HISTORY_10
 
 from sceml.cli import cli
 
@@ -29,7 +29,7 @@ def invoke(*args: str | Path) -> tuple[int, str, str]:
 def test_other_commands_read_old_files_with_a_notice(old_examples: Path) -> None:
     status, out, err = invoke("info", old_examples / "uis2-concrete.xmi")
     assert status == 0 and "scenario 'UIS2'" in out
-    assert "uis2-concrete.xmi: saved with metamodel release 1.0; read as release 1.1" in err
+    assert f"uis2-concrete.xmi: saved with metamodel release 1.0; read as release {CURRENT}" in err
     assert "sceml migrate" in err
 
 
@@ -49,9 +49,9 @@ def test_migrate_in_place_with_backup(old_examples: Path) -> None:
     original = scenario.read_bytes()
     status, out, _ = invoke("migrate", "--in-place", "--backup", scenario)
     assert status == 0
-    assert "release 1.0 -> 1.1, 0 change(s)" in out
+    assert f"release 1.0 -> {CURRENT}, 0 change(s)" in out
     assert (old_examples / "uis1-concrete.xmi.1.0.bak").read_bytes() == original
-    assert b"metamodel/1.1" in scenario.read_bytes()
+    assert f"metamodel/{CURRENT}".encode() in scenario.read_bytes()
     status, out, _ = invoke("migrate", "--in-place", scenario)
     assert status == 0 and "already of the current metamodel release; left as it is" in out
 
@@ -62,7 +62,7 @@ def test_migrate_several_files_into_a_folder_as_json(old_examples: Path, tmp_pat
     assert status == 0
     rows = json.loads(out)
     assert [Path(r["written"]).name for r in rows] == ["uis1-functional.xmi", "uis2-functional.xmi"]
-    assert all(r["migration"]["from"] == "1.0" and r["migration"]["to"] == "1.1" for r in rows)
+    assert all(r["migration"]["from"] == "1.0" and r["migration"]["to"] == CURRENT for r in rows)
     assert files[0].read_bytes().count(b"metamodel/1.0") == 1  # the originals are untouched
 
 

@@ -39,17 +39,17 @@ def test_release_1_0_is_kept_with_its_material() -> None:
 
 
 def test_the_current_release_is_newer_than_1_0_and_the_package_says_which() -> None:
-    assert scm.nsURI == "https://sceml.org/metamodel/1.1"
-    assert installed().current.version == "1.1"
+    assert scm.nsURI == "https://sceml.org/metamodel/1.2"
+    assert installed().current.version == "1.2"
     assert check_release().problems == []
 
 
 @pytest.mark.parametrize("path", MATERIAL, ids=_id)
 def test_old_files_load_migrated_and_validate_clean(path: Path) -> None:
     document = load(path)
-    if 'metamodel/1.1"' not in path.read_text():
+    if f'{scm.nsURI}"' not in path.read_text():
         report = document.migration
-        assert report is not None and report.to_release == "1.1"
+        assert report is not None and report.to_release == installed().current.version
         assert report.from_release == path.relative_to(METAMODEL / "history").parts[0]
     errors = [d for d in validate(document.root, document=document) if d.severity >= Severity.ERROR]
     assert errors == []
@@ -124,7 +124,7 @@ def test_migrate_writes_current_files_that_load_without_migration(tmp_path: Path
         assert outcome.report is not None and outcome.written == path
         assert outcome.backup is not None and outcome.backup.read_bytes().count(b"metamodel/1.0")
     for path in sorted(examples.rglob("*.xmi")):
-        assert b'xmlns:scemlmodel="https://sceml.org/metamodel/1.1"' in path.read_bytes()
+        assert f'xmlns:scemlmodel="{scm.nsURI}"'.encode() in path.read_bytes()
         document = load(path)
         assert document.migrations() == []
 
@@ -144,9 +144,9 @@ def test_a_newer_release_than_this_sceml_is_refused(tmp_path: Path) -> None:
     newer.write_text(
         (REPO / "examples" / "uis1-functional.xmi")
         .read_text()
-        .replace("metamodel/1.1", "metamodel/7.0")
+        .replace(scm.nsURI, "https://sceml.org/metamodel/7.0")
     )
-    with pytest.raises(LoadError, match="release 7.0, newer than this SceML's 1.1") as caught:
+    with pytest.raises(LoadError, match="release 7.0, newer than this SceML's 1.2") as caught:
         load(newer)
     assert caught.value.line == 2
 
@@ -156,7 +156,7 @@ def test_an_unknown_old_release_is_refused(tmp_path: Path) -> None:
     odd.write_text(
         (REPO / "examples" / "uis1-functional.xmi")
         .read_text()
-        .replace("metamodel/1.1", "metamodel/0.9")
+        .replace(scm.nsURI, "https://sceml.org/metamodel/0.9")
     )
     with pytest.raises(LoadError, match="release 0.9, which no SceML released"):
         load(odd)
