@@ -156,12 +156,10 @@ def _gradual(
 ) -> bool:
     """A gradual Init speed change: a speed maneuver right after the root, as players run it
     (the actor starts at the speed it had, and reaches the target at the given rate)."""
-    wrapper = etree.Element("Action", name=f"Init_{actor.name}_speed")
-    wrapper.append(deepcopy(private))
     name = str(actor.name)
     before = build.init_speeds.get(name, _speed_of(actor))
     motion = Motion(speed={name: before})
-    made = map_action(build, Request(wrapper, actor, f"Init_{name}_speed"), motion)
+    made = _as_story_action(build, actor, private, f"Init_{name}_speed", motion)
     if isinstance(made, str):
         return False
     build.flow(build.root, made)
@@ -196,11 +194,9 @@ def _starts_on_trajectory(
         f"{actor.name}: start position at the first point of its Init trajectory",
         build.where(first),
     )
-    wrapper = etree.Element("Action", name=f"Init_{actor.name}_trajectory")
-    wrapper.append(deepcopy(private))
     name = str(actor.name)
     motion = Motion(speed={name: build.init_speeds.get(name, _speed_of(actor))})
-    made = map_action(build, Request(wrapper, actor, f"Init_{name}_trajectory"), motion)
+    made = _as_story_action(build, actor, private, f"Init_{name}_trajectory", motion)
     if isinstance(made, str):
         _keep(build, private, actor)  # the start is known; the trajectory stays as it was read
         return True
@@ -213,13 +209,33 @@ def _starts_on_trajectory(
 def _from_the_start(build: Build, actor: scm.Actor, private: etree._Element) -> bool:
     """An Init action that takes time (a lane offset): its node right after the root, as
     players run it from the start."""
-    wrapper = etree.Element("Action", name=f"Init_{actor.name}_{private.sourceline}")
-    wrapper.append(deepcopy(private))
-    made = map_action(build, Request(wrapper, actor, f"Init_{actor.name}"), Motion())
+    made = _as_story_action(
+        build,
+        actor,
+        private,
+        f"Init_{actor.name}",
+        Motion(),
+        f"Init_{actor.name}_{private.sourceline}",
+    )
     if isinstance(made, str):
         return False
     build.flow(build.root, made)
     return True
+
+
+def _as_story_action(
+    build: Build,
+    actor: scm.Actor,
+    private: etree._Element,
+    hint: str,
+    motion: Motion,
+    wrapper_name: str | None = None,
+) -> scm.ActionNode | str:
+    """An Init PrivateAction mapped as the storyboard action it would be (wrapped in an Action
+    named `wrapper_name`, else `hint`): its node, or why it has none."""
+    wrapper = etree.Element("Action", name=wrapper_name or hint)
+    wrapper.append(deepcopy(private))
+    return map_action(build, Request(wrapper, actor, hint), motion)
 
 
 def _speed_of(actor: scm.Actor) -> float:
