@@ -25,7 +25,7 @@ from ..levels.paths import LevelError
 from ..levels.sampling import STRATEGIES, plan_for, values_at
 from ..levels.space import parameter_space
 from ..model.documents import Document
-from ..model.graph import root_node
+from ..model.graph import level_text
 from ..model.loading import load_scenario
 from ..validation import validate
 from ..xosc.schema import SUPPORTED_VERSIONS
@@ -239,8 +239,7 @@ def _ranges(indices: list[int]) -> str:
 
 
 def _require_logical(scenario: scm.Scenario, file: Path) -> None:
-    root = root_node(scenario)
-    level = str(root.level.name) if root is not None and root.level is not None else "?"
+    level = level_text(scenario)
     if level != "logical":
         raise LevelError(f"only logical scenarios are sampled; this one is {level}", file=file)
 

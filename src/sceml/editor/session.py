@@ -18,7 +18,7 @@ from ..export.writer import ExportError, InvalidOutputError, export_to_file
 from ..files.safefiles import reading_roots
 from ..model.build import ScenarioBuilder
 from ..model.documents import Document, new_resource_set
-from ..model.graph import root_node
+from ..model.graph import scenario_level
 from ..model.loading import load, load_library
 from ..model.saving import save as io_save
 from ..modules.library import definition_named
@@ -225,9 +225,9 @@ class EditorSession:
     @property
     def level(self) -> str:
         """The scenario's abstraction level (a module shows its values as logical ones)."""
-        root = root_node(self.graph) if isinstance(self.graph, scm.Scenario) else None
-        if root is not None and root.level is not None:
-            return str(root.level.name)
+        level = scenario_level(self.graph) if isinstance(self.graph, scm.Scenario) else None
+        if level is not None:
+            return level
         return "logical" if self.module is not None else self.options.level
 
     def diagnostics(self) -> list[Diagnostic]:

@@ -68,7 +68,7 @@ def level_problems(scenario: scm.Scenario) -> list[Diagnostic]:
     root = graph.root_node(scenario)
     if root is None:
         return [error(LEVEL, "the scenario has no root node, so no abstraction level")]
-    level = root.level.name if root.level is not None else "functional"
+    level = graph.scenario_level(scenario)
     if level != "concrete":
         return [
             error(

@@ -43,6 +43,35 @@ def root_node(scenario: scm.Scenario) -> scm.RootNode | None:
     return next(iter(nodes_of(scenario, scm.RootNode)), None)
 
 
+#: How a level is shown where there is none to show (a scenario without a root node).
+NO_LEVEL_TEXT = "?"
+
+
+def root_level(root: scm.RootNode) -> str:
+    """A root node's abstraction level: `functional`, `logical` or `concrete`.
+
+    One set to nothing has the metamodel's default (`RootNode.level`, functional), as a file
+    that leaves the attribute out does.
+    """
+    level = root.level if root.level is not None else scm.RootNode.level.get_default_value()
+    return str(level.name)
+
+
+def scenario_level(scenario: scm.Scenario) -> str | None:
+    """The scenario's abstraction level (its root node's), or None when it has no root node.
+
+    The one reading of the level: validation, export, the preview, sampling, the diagrams and
+    the editor all read it from here.
+    """
+    root = root_node(scenario)
+    return root_level(root) if root is not None else None
+
+
+def level_text(scenario: scm.Scenario) -> str:
+    """The scenario's level as diagrams, messages and reports show it: NO_LEVEL_TEXT for none."""
+    return scenario_level(scenario) or NO_LEVEL_TEXT
+
+
 def end_node(scenario: scm.Scenario) -> scm.EndNode | None:
     """The scenario's first EndNode, or None."""
     return next(iter(nodes_of(scenario, scm.EndNode)), None)

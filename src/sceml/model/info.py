@@ -11,7 +11,7 @@ from pyecore.ecore import EObject, EProxy
 import scemlmodel as scm
 
 from . import catalog
-from .graph import actors, root_node
+from .graph import actors, root_node, scenario_level
 
 
 @dataclass
@@ -86,7 +86,7 @@ def summarize(root: scm.Scenario | scm.Library) -> Summary:
     summary = Summary(
         kind="scenario",
         name=str(rootnode.scenarioName or "") if rootnode else "",
-        level=rootnode.level.name if rootnode and rootnode.level else None,
+        level=scenario_level(root),
         map=rootnode.map if rootnode else None,
         node_counts=_count_nodes(list(root.nodes)),
         flows=len(root.flows),

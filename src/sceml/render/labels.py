@@ -19,7 +19,7 @@ import scemlmodel as scm
 
 from ..errors import SceMLError
 from ..model import catalog, params
-from ..model.graph import actors, root_node
+from ..model.graph import actors, root_level, root_node
 from ..modules.resolve import resolved_definition
 from ..xosc.meaning import CONTROLLER_DOMAINS
 
@@ -330,7 +330,7 @@ def root_lines(root: scm.RootNode | None, scenario: scm.Scenario) -> list[str]:
     """The root box: level, map, duration and one line per actor."""
     if root is None:
         return ["(no root node)"]
-    lines = [f"level: {root.level.name if root.level else '?'}"]
+    lines = [f"level: {root_level(root)}"]
     lines.append(f"map: {root.map or '(none)'}")
     if root.maxDuration is not None:
         lines.append(f"max duration: {params.describe(root.maxDuration, 's')}")

@@ -25,7 +25,7 @@ from ..maps.reference import map_reference
 from ..maps.resolve import is_relative, start_poses
 from ..model import catalog
 from ..model.documents import allowed_roots_of
-from ..model.graph import actors, root_node, topological_order
+from ..model.graph import actors, level_text, root_node, topological_order
 from ..modules import flatten
 from .flow import RenderError
 from .labels import scenario_title
@@ -183,7 +183,7 @@ def build_scene(scenario: scm.Scenario, scenario_file: str | Path | None) -> Map
     scene = MapScene(
         load_map(reference.path, reference.roots),
         scenario_title(scenario),
-        str(root.level.name) if root is not None and root.level is not None else "?",
+        level_text(scenario),
     )
     flat = _flattened(scenario, scene.notes)
     _add_actors(scene, flat)

@@ -8,7 +8,7 @@ import scemlmodel as scm
 
 from ..errors import SceMLError
 from ..model.documents import Document
-from ..model.graph import root_node
+from ..model.graph import scenario_level
 from ..simulate.preview import simulate
 from ..simulate.run import Run
 from ..simulate.timeline import LABEL, ROW, WIDTH, timeline_svg
@@ -24,8 +24,7 @@ def report_figure(document: Document) -> Figure | None:
     scenario = document.root
     if not isinstance(scenario, scm.Scenario):
         return None
-    root = root_node(scenario)
-    if root is None or root.level is None or root.level.name != "concrete":
+    if scenario_level(scenario) != "concrete":
         return None
     try:
         run = simulate(scenario, document.path)

@@ -14,7 +14,7 @@ from ..maps.reference import map_reference
 from ..maps.resolve import start_poses
 from ..model.documents import allowed_roots_of
 from ..model.graph import actors as scenario_actors
-from ..model.graph import root_node
+from ..model.graph import root_node, scenario_level
 from ..model.params import concrete
 from ..modules.flatten import Flattened, expand
 from .engine import Scheduler, run_schedule
@@ -62,7 +62,7 @@ def _simulate(
     root = root_node(scenario)
     if root is None:
         raise SimulationError("the scenario has no root node")
-    level = root.level.name if root.level is not None else "functional"
+    level = scenario_level(scenario)
     if level != "concrete":
         raise SimulationError(
             f"the preview runs concrete scenarios; this one is {level} "

@@ -13,7 +13,7 @@ import scemlmodel as scm
 
 from ..model import catalog
 from ..model.documents import Document
-from ..model.graph import root_node
+from ..model.graph import scenario_level
 from ..modules.expansion import Expansion, expansion
 from .limits import Limits
 
@@ -84,9 +84,7 @@ class Context:
             top = container
         top = self._expanded_in(top)
         if top not in self._levels:
-            root = root_node(top) if isinstance(top, scm.Scenario) else None
-            level = root.level if root is not None else None
-            self._levels[top] = str(level.name) if level is not None else None
+            self._levels[top] = scenario_level(top) if isinstance(top, scm.Scenario) else None
         return self._levels[top]
 
     def definition_of(self, use: scm.ModuleUse) -> scm.ModuleDefinition | None:
