@@ -5,29 +5,22 @@ from __future__ import annotations
 import atexit
 import gc
 import sys
-import time
-from collections import Counter
-from functools import partial
 from pathlib import Path
 
 import click
-import numpy as np
 
-import scemlmodel as scm
-
-from ..diagnostics import Severity
-from ..errors import ArgumentError, SceMLError
-from ..executors import check, open_executor
-from ..levels.batch import BatchConfig, BatchResult, Rows, run_batch
-from ..levels.counts import SAMPLE_MEMORY_BYTES, check_count, parse_count
-from ..levels.manifest import SampleRecord, write_manifest
-from ..levels.paths import LevelError
-from ..levels.sampling import STRATEGIES, plan_for, values_at
-from ..levels.space import parameter_space
-from ..model.documents import Document
-from ..model.graph import level_text
-from ..model.loading import load_scenario
-from ..validation import validate
+from ..executors import check
+from ..levels.counts import parse_count
+from ..levels.sampling import STRATEGIES
+from ..levels.to_folder import (
+    FORMATS,
+    SampleRequest,
+    SamplingOutcome,
+    blocking_problems,
+    load_logical,
+    plan_sampling,
+    sample_to_folder,
+)
 from ..xosc.schema import SUPPORTED_VERSIONS
 from .common import (
     Parsed,
@@ -39,11 +32,6 @@ from .common import (
     output_folder,
     seed_option,
 )
-
-_FORMATS = {"xmi": ("xmi",), "xosc": ("xosc",), "both": ("xosc", "xmi")}
-
-# scipy's Latin hypercube holds about four float64 arrays of the design's shape at once.
-_LHS_ROW_BYTES = 32
 
 # A run leaves a large heap (scipy, imported to draw from normal distributions, and the model),
 # which the interpreter's last garbage collections walked for 0.1-0.2 s after the manifest was
@@ -73,7 +61,7 @@ atexit.register(gc.freeze)
 @click.option(
     "--format",
     "file_format",
-    type=click.Choice(sorted(_FORMATS)),
+    type=click.Choice(sorted(FORMATS)),
     default="xosc",
     show_default=True,
     help="Write each sample as OpenSCENARIO (.xosc, XSD-checked), as SceML (.xmi), or both.",
@@ -123,103 +111,41 @@ def sample(
     The files are the same whichever executor runs the samples.
     """
     check(executor, scheduler)
-    try:
-        document = load_scenario(logical, allow=allow)
-        scenario = document.root
-        _require_logical(scenario, logical)
-        _require_valid(document, logical)
-        space = parameter_space(scenario)
-        if index is not None and strategy == "lhs" and n is None:
-            raise click.UsageError("--index with --strategy lhs needs the --n of the run")
-        plan = plan_for(space, strategy, n, seed)  # type: ignore[arg-type]
-        if index is None:
-            _check_size(plan.n, len(space.dimensions), _FORMATS[file_format], logical, out_dir, n)
-        elif strategy == "lhs":  # one sample of a Latin hypercube needs the whole design drawn
-            check_count(
-                plan.n,
-                "rows of the Latin hypercube",
-                memory_each=_LHS_ROW_BYTES * max(1, len(space.dimensions)),
-                hint="one sample of it is reproduced by drawing them all; ask for fewer with --n",
-            )
-        indices = np.arange(plan.n) if index is None else np.array([index])
-        # A whole run's values are drawn while the workers start: drawing takes a while (scipy,
-        # for a normal distribution, takes half a second to import), and so does their setup.
-        rows: Rows = partial(values_at, space, plan, indices)
-        if index is not None:
-            rows = one = values_at(space, plan, indices)  # refuses an index out of range, here
-    except SceMLError as error:
-        if not isinstance(error, ArgumentError):  # e.g. a grid too large: the file is the cause
-            error.file = error.file or str(logical)
-        raise
-    config = BatchConfig(
-        logical=logical,
-        out_dir=out_dir,
-        paths=space.paths,
-        formats=_FORMATS[file_format],
-        osc_version=osc_version,
-        stem=logical.stem.removesuffix("-logical"),
-        allow=allow,
-        width=max(5, len(str(max(plan.n - 1, 0)))),
+    document = load_logical(logical, allow)
+    errors = blocking_problems(document)
+    echo_diagnostics(errors, document, logical)
+    if errors:
+        raise click.exceptions.Exit(1)
+    if index is not None and strategy == "lhs" and n is None:
+        raise click.UsageError("--index with --strategy lhs needs the --n of the run")
+    request = SampleRequest(
+        logical, strategy, n, seed, out_dir, file_format, osc_version, index, allow
     )
-    started = time.perf_counter()
-    result = _run(config, indices, rows, executor, scheduler, workers)
-    records = result.records
-    elapsed = time.perf_counter() - started
-    if index is None:
-        run = {
-            "logical": str(logical),
-            "strategy": strategy,
-            "n": plan.n,
-            "seed": seed,
-            "format": file_format,
-            "osc_version": osc_version,
-        }
-        if result.interrupted:
-            run["interrupted"] = True
-        write_manifest(out_dir, space.paths, records, run)
-    else:
-        for path, value in zip(space.paths, one[0], strict=True):
-            click.echo(f"{path} = {float(value)!r}")
-    click.echo(_summary(records, elapsed))
-    _exit_status(result, len(indices))
+    planned = plan_sampling(document, request)
+    # The bar is for a person at a terminal; logs and pipes would only get a stray label.
+    hidden = not sys.stderr.isatty()
+    with click.progressbar(
+        length=len(planned.indices), label="sampling", file=sys.stderr, hidden=hidden
+    ) as bar:
+        outcome = sample_to_folder(
+            planned, executor=executor, scheduler=scheduler, workers=workers, progress=bar.update
+        )
+    for path, value in outcome.values.items():
+        click.echo(f"{path} = {value!r}")
+    click.echo(_summary(outcome))
+    _exit_status(outcome, len(planned.indices))
 
 
-def _check_size(
-    count: int,
-    dimensions: int,
-    formats: tuple[str, ...],
-    logical: Path,
-    out_dir: Path,
-    n: int | None,
-) -> None:
-    """Refuse a run whose samples this machine cannot hold, before anything is allocated."""
-    # A sample file is about the size of the logical file it comes from (an .xosc about twice).
-    per_file = 2 * logical.stat().st_size
-    hint = (
-        "ask for fewer with --n"
-        if n is not None
-        else "the grid has that many points; cap it with --n"
-    )
-    check_count(
-        count,
-        "samples",
-        memory_each=SAMPLE_MEMORY_BYTES + 8 * dimensions,
-        disk_each=per_file * len(formats),
-        folder=out_dir,
-        hint=hint,
-    )
-
-
-def _exit_status(result: BatchResult, planned: int) -> None:
-    records = result.records
-    if result.interrupted:
+def _exit_status(outcome: SamplingOutcome, planned: int) -> None:
+    records = outcome.records
+    if outcome.result.interrupted:
         click.echo(
             f"Interrupted: {len(records)} of {planned} samples done; the manifest lists what "
             "was written.",
             err=True,
         )
         raise click.exceptions.Exit(130)
-    failed = sorted(r.index for r in records if r.status == "failed")
+    failed = outcome.failed
     if failed:
         click.echo(f"Error: samples lost with their worker: {_ranges(failed)}", err=True)
         raise click.exceptions.Exit(1)
@@ -238,51 +164,17 @@ def _ranges(indices: list[int]) -> str:
     return ", ".join(f"{a}-{b}" if a != b else f"{a}" for a, b in spans)
 
 
-def _require_logical(scenario: scm.Scenario, file: Path) -> None:
-    level = level_text(scenario)
-    if level != "logical":
-        raise LevelError(f"only logical scenarios are sampled; this one is {level}", file=file)
-
-
-def _require_valid(document: Document, file: Path) -> None:
-    # Samples only change numbers: rules about structure, actors and modules are checked once here.
-    found = validate(document.root, document=document)
-    errors = [d for d in found if d.severity >= Severity.ERROR]
-    echo_diagnostics(errors, document, file)
-    if errors:
-        raise click.exceptions.Exit(1)
-
-
-def _run(
-    config: BatchConfig,
-    indices: np.ndarray,
-    rows: Rows,
-    executor: str,
-    scheduler: str | None,
-    workers: int | None,
-) -> BatchResult:
-    # The bar is for a person at a terminal; logs and pipes would only get a stray label.
-    hidden = not sys.stderr.isatty()
-    with (
-        open_executor(executor, workers=workers, scheduler=scheduler) as runner,
-        click.progressbar(
-            length=len(indices), label="sampling", file=sys.stderr, hidden=hidden
-        ) as bar,
-    ):
-        return run_batch(config, indices, rows, executor=runner, progress=bar.update)
-
-
-def _summary(records: list[SampleRecord], elapsed: float) -> str:
-    written = sum(1 for r in records if r.status == "written")
-    failed = sum(1 for r in records if r.status == "failed")
-    reasons = Counter(r.reason for r in records if r.status == "skipped")
-    skipped = sum(reasons.values())
+def _summary(outcome: SamplingOutcome) -> str:
+    reasons = outcome.skipped
     why = (
         f" ({'; '.join(f'{reason}: {count}' for reason, count in reasons.most_common())})"
         if reasons
         else ""
     )
-    files = sum(len(r.files) for r in records)
-    rate = files / elapsed if elapsed > 0 else 0.0
-    lost = f", {failed} failed" if failed else ""
-    return f"{written} written, {skipped} skipped{why}{lost}, {elapsed:.2f} s, {rate:.0f} files/s"
+    elapsed = outcome.elapsed
+    rate = outcome.files / elapsed if elapsed > 0 else 0.0
+    lost = f", {len(outcome.failed)} failed" if outcome.failed else ""
+    return (
+        f"{outcome.written} written, {sum(reasons.values())} skipped{why}{lost}, "
+        f"{elapsed:.2f} s, {rate:.0f} files/s"
+    )
