@@ -9,10 +9,9 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
-import sceml.explore as explore_package
 from sceml.cli import cli
 from sceml.errors import SaveError
-from sceml.explore import outputs as explore_outputs
+from sceml.explore import to_folder as explore_to_folder
 
 from .confined import sceml
 
@@ -139,7 +138,7 @@ def test_explore_writes_all_outputs_or_none(
     def fails(*args: object) -> None:
         raise SaveError("cannot write: disk full", file="parameter-space.png")
 
-    monkeypatch.setattr(explore_outputs, "plot_space", fails)
+    monkeypatch.setattr(explore_to_folder, "plot_space", fails)
     code, output = explore(examples_copy, out)
     assert code == 1 and "disk full" in output, output
     assert {p.name: p.read_bytes() for p in out.iterdir()} == before  # untouched, no staged file
@@ -154,7 +153,7 @@ def test_explore_interrupted_exits_130_and_writes_nothing(
     def interrupted(*args: object, **kwargs: object) -> None:
         raise KeyboardInterrupt
 
-    monkeypatch.setattr(explore_package, "explore", interrupted)
+    monkeypatch.setattr(explore_to_folder, "explore", interrupted)
     out = examples_copy / "explored"
     code, output = explore(examples_copy, out)
     assert code == 130, output

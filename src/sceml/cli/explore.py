@@ -5,15 +5,11 @@ from __future__ import annotations
 import sys
 from contextlib import nullcontext
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 import click
 
-from ..executors import Executor, check, open_executor
-from ..files.outputset import output_set
-from ..files.writing import make_folder, remove_folders, write_atomically
+from ..executors import check
 from ..levels.counts import parse_count
-from ..model.documents import Document
 from ..model.loading import load_scenario
 from ..xosc.schema import SUPPORTED_VERSIONS
 from .common import (
@@ -25,9 +21,6 @@ from .common import (
     output_folder,
     seed_option,
 )
-
-if TYPE_CHECKING:
-    from ..explore import Exploration
 
 _METRICS = ("min-ttc", "min-distance", "collision", "pet")
 
@@ -105,88 +98,46 @@ def explore_command(
     Each batch of runs (the design, then each refinement) is simulated on --executor; the runs,
     and so every file written, are the same whichever executor runs them.
     """
-    from ..explore.outputs import plot_space, runs_csv, write_critical
+    from ..explore.to_folder import ExploreRequest, check_budget, explore_to_folder
 
     check(executor, scheduler)
     document = load_scenario(logical, allow=allow)
-    _check_budget(document, budget, step)
-    # Made before the search, so that an output that cannot be written fails now, not after it.
-    created = make_folder(out_dir)
-    try:
-        with open_executor(executor, workers=workers, scheduler=scheduler) as runner:
-            found = _search(
-                document, logical, runner, allow, metric=metric, budget=budget, seed=seed, step=step
-            )
-        # All outputs or none: a plot that fails must not leave runs.csv alone.
-        with output_set() as outputs:
-            runs = outputs.stage(out_dir / "runs.csv")
-            write_atomically(runs, runs_csv(found).encode("utf-8"))
-            plot_space(found, outputs.stage(out_dir / "parameter-space.png"))
-            critical = write_critical(
-                found, document.root, logical, out_dir, top, osc_version, stage=outputs.stage
-            )
-    except BaseException as error:
-        remove_folders(created)  # where nothing was written
-        if isinstance(error, KeyboardInterrupt):  # as sample: 130, and what became of the outputs
-            click.echo("Interrupted: no output was written.", err=True)
-            raise click.exceptions.Exit(130) from None
-        raise
-    ran = [e for e in found.evaluations if e.run is not None]
-    collisions = sum(1 for e in ran if e.run is not None and e.run.collided)
-    click.echo(
-        f"{len(found.evaluations)} runs ({len(found.evaluations) - len(ran)} failed), "
-        f"{collisions} with a collision; metric {metric}"
-    )
-    for rank, (evaluation, files, problem) in enumerate(critical, start=1):
-        values = ", ".join(
-            f"{p}={v:.4g}" for p, v in zip(found.space.paths, evaluation.values, strict=True)
-        )
-        click.echo(f"  #{rank} score {evaluation.score:.3g}: {values} -> {files[0].name}")
-        if problem:
-            click.echo(f"    no .xosc: {problem}", err=True)
-    click.echo(f"wrote {out_dir / 'runs.csv'}, {out_dir / 'parameter-space.png'}")
-
-
-def _check_budget(document: Document, budget: int, step: float) -> None:
-    """Refuse, before anything runs, a budget whose runs would not fit in memory."""
-    from ..levels.counts import check_count
-    from ..simulate.limits import run_samples
-
     if budget < 2:
         raise click.BadParameter("the budget must allow at least 2 runs", param_hint="'--budget'")
-    # Each run keeps its trajectories (about 40 bytes a sample) for the ranking and the plot.
-    each = 40 * run_samples(document.root, step) + 8192
-    check_count(budget, "runs", memory_each=each, hint="ask for fewer with --budget")
-
-
-def _search(
-    document: Document,
-    logical: Path,
-    runner: Executor,
-    allow: tuple[Path, ...],
-    *,
-    metric: str,
-    budget: int,
-    seed: int,
-    step: float,
-) -> Exploration:
-    """The search, with a progress bar when a person is watching."""
-    from ..explore import explore
-
+    check_budget(document, budget, step)
+    request = ExploreRequest(metric, budget, seed, step, top, osc_version, allow)
+    # The bar is for a person watching; logs and pipes get none.
     bar = (
         click.progressbar(length=budget, label="exploring", file=sys.stderr)
         if sys.stderr.isatty()
         else None
     )
-    with bar if bar is not None else nullcontext():
-        return explore(
-            document.root,
-            logical,
-            metric=metric,
-            budget=budget,
-            seed=seed,
-            step=step,
-            progress=bar.update if bar is not None else None,
-            executor=runner,
-            allow=allow,
+    try:
+        with bar if bar is not None else nullcontext():
+            outcome = explore_to_folder(
+                document,
+                logical,
+                out_dir,
+                request,
+                executor=executor,
+                scheduler=scheduler,
+                workers=workers,
+                progress=bar.update if bar is not None else None,
+            )
+    except KeyboardInterrupt:  # as sample: 130, and what became of the outputs
+        click.echo("Interrupted: no output was written.", err=True)
+        raise click.exceptions.Exit(130) from None
+    found = outcome.exploration
+    click.echo(
+        f"{len(found.evaluations)} runs ({outcome.failed} failed), "
+        f"{outcome.collisions} with a collision; metric {metric}"
+    )
+    for rank, critical in enumerate(outcome.critical, start=1):
+        evaluation = critical.evaluation
+        values = ", ".join(
+            f"{p}={v:.4g}" for p, v in zip(found.space.paths, evaluation.values, strict=True)
         )
+        click.echo(f"  #{rank} score {evaluation.score:.3g}: {values} -> {critical.files[0].name}")
+        if critical.problem:
+            click.echo(f"    no .xosc: {critical.problem}", err=True)
+    click.echo(f"wrote {outcome.runs_csv}, {outcome.plot}")
