@@ -11,6 +11,7 @@ import scemlmodel as scm
 from sceml.errors import SaveError
 from sceml.model.build import ScenarioBuilder
 from sceml.model.compare import differences
+from sceml.model.graph import actors as scenario_actors
 from sceml.model.graph import predecessors, successors
 from sceml.model.loading import load
 from sceml.model.saving import save
@@ -24,6 +25,7 @@ from sceml.modules import (
     parse_role,
     store,
 )
+from sceml.modules.extract import plan_extraction
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 BIKE_BRANCH = ["InVehicleRadius_1", "Accelerate_2", "Cross_1", "InLocationRadius_2"]
@@ -260,3 +262,32 @@ def test_a_failed_save_leaves_both_files_as_they_were(examples_copy: Path, monke
         extract_file(path, BIKE_BRANCH, "BikeCrossing", library_path)
     assert (path.read_bytes(), library_path.read_bytes()) == before
     assert sorted(p.name for p in examples_copy.rglob(".*.tmp")) == []
+
+
+def test_planning_an_extraction_leaves_the_scenario_and_says_what_extract_would_do(
+    canonical,
+) -> None:
+    scenario = uis1()
+    library = scm.Library(name="lib")
+    plan = plan_extraction(scenario, BIKE_BRANCH, "BikeCrossing", library)
+    assert canonical(scenario) == canonical(uis1())  # unchanged
+    assert [str(d.name) for d in library.modules] == ["BikeCrossing"]
+    assert plan.use.definition is library.modules[0] and plan.use.eContainer() is None
+    assert list(plan.use.incoming) == [] and list(plan.use.outgoing) == []
+    own = {str(n.name): n for n in scenario.nodes}
+    actors = {str(a.name): a for a in scenario_actors(scenario)}
+    assert {b.role: b.actor for b in plan.use.bindings} == {
+        "bike": actors["bike"],
+        "ego": actors["ego"],
+    }
+    assert plan.region.nodes == [own[name] for name in BIKE_BRANCH]
+    # The bike branch starts the scenario's node list after Root, End and the ego's three nodes.
+    assert [str(n.name) for n in scenario.nodes][plan.position] == "InVehicleRadius_1"
+    assert plan.connections() == [(own["Root"], plan.use), (plan.use, own["End"])]
+    # extract itself, on another copy, puts its use at that place with those flows.
+    other = uis1()
+    use = extract(other, BIKE_BRANCH, "BikeCrossing", scm.Library(name="lib"))
+    assert list(other.nodes).index(use) == plan.position
+    assert [str(n.name) for n in predecessors(use)] == ["Root"]
+    assert [str(n.name) for n in successors(use)] == ["End"]
+    assert plan.use.name == use.name == "BikeCrossing_1"

@@ -1,23 +1,21 @@
 """The extract_module operation: selected nodes become a library module, used in their place.
 
-The module is built by `sceml.modules.extract` on a copy of the scenario and written to its
-library at once; undo puts the library file back as it was (and redo writes it again). The live scenario is then changed
-through the recorder like any other edit, so undo gives back the very same nodes and flows.
+The module is built by `sceml.modules.extract.plan_extraction` (on a copy of the scenario) and
+written to its library at once; undo puts the library file back as it was (and redo writes it
+again). The live scenario is then changed as the Extraction says, through the recorder like
+any other edit, so undo gives back the very same nodes and flows.
 """
 
 from __future__ import annotations
 
 from typing import Any
 
-from pyecore.ecore import EObject
-
 import scemlmodel as scm
 
 from ..errors import SceMLError
 from ..files.writing import write_atomically
-from ..model.copying import Copier
 from ..model.saving import save
-from ..modules.extract import extract, find_region
+from ..modules.extract import Extraction, plan_extraction
 from .context import EditContext, argument, check_text, require
 from .errors import OperationError
 from .node_ops import detach_flow
@@ -35,12 +33,11 @@ def extract_module(ctx: EditContext, op: dict[str, Any]) -> None:
     library, path = ctx.find_library(library_text, True)
     previous = path.read_bytes() if path.is_file() else None
     try:
-        region = find_region(ctx.graph, nodes)
-        built = _build_module(ctx.graph, nodes, name, library)
+        extraction = plan_extraction(ctx.graph, [str(node.name) for node in nodes], name, library)
     except SceMLError as error:
         _forget(library, name)
         raise OperationError(error.message) from None
-    definition = built[2]
+    definition = extraction.use.definition
 
     def write() -> None:
         if definition not in library.modules:
@@ -60,20 +57,7 @@ def extract_module(ctx: EditContext, op: dict[str, Any]) -> None:
             write_atomically(path, previous)
 
     ctx.rec.outside(library, write, unwrite)
-    _replace(ctx, region.nodes, region.source, region.targets, built)
-
-
-def _build_module(
-    scenario: scm.Scenario, nodes: list[scm.GraphElement], name: str, library: scm.Library
-) -> tuple[str, list[tuple[str, EObject]], scm.ModuleDefinition]:
-    """Run extract on a copy; the use's name and bindings (to live actors), the new definition."""
-    copier = Copier()
-    duplicate = copier.copy(scenario)
-    copier.copy_references()
-    live = {copy: original for original, copy in copier.copies.items()}
-    use = extract(duplicate, [str(node.name) for node in nodes], name, library)
-    bindings = [(str(b.role), live.get(b.actor, b.actor)) for b in use.bindings]
-    return str(use.name), bindings, use.definition
+    _replace(ctx, extraction)
 
 
 def _forget(library: scm.Library, name: str) -> None:
@@ -82,32 +66,24 @@ def _forget(library: scm.Library, name: str) -> None:
             library.modules.remove(definition)
 
 
-def _replace(
-    ctx: EditContext,
-    nodes: list[scm.GraphElement],
-    source: scm.GraphElement,
-    targets: list[scm.GraphElement],
-    built: tuple[str, list[tuple[str, EObject]], scm.ModuleDefinition],
-) -> None:
-    use_name, bindings, definition = built
-    use = scm.ModuleUse(name=use_name)
-    use.definition = definition
-    for role, actor in bindings:
-        use.bindings.append(scm.RoleBinding(role=role, actor=actor))
+def _replace(ctx: EditContext, extraction: Extraction) -> None:
+    """Apply the extraction to the live scenario through the recorder, so that undo gives back
+    the very same nodes and flows."""
+    nodes, use = extraction.region.nodes, extraction.use
+    # Drawn where the selection was, at the middle of its nodes.
     placed = [n.diagramPosition for n in nodes if n.diagramPosition is not None]
     if placed:
         x = sum(p.x for p in placed) / len(placed)
         y = sum(p.y for p in placed) / len(placed)
         use.diagramPosition = scm.DiagramPosition(x=x, y=y)
-    index = min(list(ctx.graph.nodes).index(n) for n in nodes)
     members = set(nodes)
     for flow in [f for f in ctx.graph.flows if f.source in members or f.target in members]:
         detach_flow(ctx, flow)
     for node in nodes:
         ctx.rec.remove(ctx.graph, "nodes", node)
-    ctx.rec.insert(ctx.graph, "nodes", use, index)
+    ctx.rec.insert(ctx.graph, "nodes", use, extraction.position)
     ctx.created.append(ctx.ids.of(use, "n"))
-    for start, end in [(source, use), *((use, target) for target in targets)]:
+    for start, end in extraction.connections():
         flow = scm.Flow()
         ctx.rec.insert(ctx.graph, "flows", flow)
         ctx.rec.set(flow, "source", start)

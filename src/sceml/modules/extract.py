@@ -24,7 +24,7 @@ import scemlmodel as scm
 
 from ..model import catalog
 from ..model.build import ModuleBuilder
-from ..model.copying import copy_tree
+from ..model.copying import Copier, copy_tree
 from ..model.graph import predecessors, root_node, successors, topological_order
 from ..model.params import as_parameter
 from .errors import ExtractError
@@ -48,6 +48,40 @@ class Region:
     entries: list[scm.GraphElement]
     exit: scm.GraphElement
     targets: list[scm.GraphElement]
+
+
+@dataclass
+class Extraction:
+    """What extracting would do to a scenario, worked out on a copy of it (`plan_extraction`).
+
+    The scenario is not changed: a caller applies it in its own way (the editor through its
+    undo recorder) by removing the region's nodes and their flows, putting `use` at `position`
+    among the scenario's nodes, and adding the flows `connections` names.
+    """
+
+    #: The selection, in the scenario's own nodes.
+    region: Region
+    #: The use that takes the selection's place; in no graph yet, bound to the scenario's actors.
+    use: scm.ModuleUse
+    #: Where the use goes among the scenario's nodes: where the selection's first node was.
+    position: int
+
+    def connections(self) -> list[tuple[scm.GraphElement, scm.GraphElement]]:
+        """The flows (source, target) that connect the use in the selection's place."""
+        return connections(self.region, self.use)
+
+
+def connections(
+    region: Region, use: scm.ModuleUse
+) -> list[tuple[scm.GraphElement, scm.GraphElement]]:
+    """The use's flows in the selection's place: from the selection's source to the use, and
+    from the use to every node that followed the selection's exit (SPEC §3: same meaning)."""
+    return [(region.source, use), *((use, target) for target in region.targets)]
+
+
+def position_of(scenario: scm.Scenario, region: Region) -> int:
+    """Where the use goes among the scenario's nodes: where the selection's first node was."""
+    return min(list(scenario.nodes).index(n) for n in region.nodes)
 
 
 def parse_role(text: str) -> tuple[str, RoleSpec]:
@@ -163,17 +197,44 @@ def extract(
     library.modules.append(definition)
     builder = ModuleBuilder(definition)
     role_of = {actor: builder.role(spec.name, *spec.kinds) for actor, spec in actor_roles.items()}
-    position = min(list(scenario.nodes).index(n) for n in region.nodes)
+    position = position_of(scenario, region)
     _move(scenario, region, builder, role_of)
     overrides = _parametrize(builder, region.nodes) if parametrize else {}
     bindings = {role.name: actor for actor, role in role_of.items()}
     use = instantiate(scenario, definition, bindings, overrides)
     scenario.nodes.remove(use)
     scenario.nodes.insert(position, use)
-    scenario.flows.append(scm.Flow(source=region.source, target=use))
-    for target in region.targets:
-        scenario.flows.append(scm.Flow(source=use, target=target))
+    for source, target in connections(region, use):
+        scenario.flows.append(scm.Flow(source=source, target=target))
     return use
+
+
+def plan_extraction(
+    scenario: scm.Scenario,
+    node_names: Sequence[str],
+    name: str,
+    library: scm.Library,
+    *,
+    roles: Mapping[str, RoleSpec] | None = None,
+    parametrize: bool = False,
+) -> Extraction:
+    """`extract` run on a copy of the scenario: the new module is added to `library`, the
+    scenario is left as it is, and the Extraction says how to change it (see there).
+
+    For callers that change the scenario in their own way, e.g. with undo.
+    """
+    region = find_region(scenario, _select(scenario, node_names))
+    copier = Copier()
+    duplicate = copier.copy(scenario)
+    copier.copy_references()
+    original = {copy: source for source, copy in copier.copies.items()}
+    use = extract(duplicate, node_names, name, library, roles=roles, parametrize=parametrize)
+    duplicate.nodes.remove(use)
+    for flow in [*use.incoming, *use.outgoing]:  # the copy's flows, thrown away with it
+        flow.source = flow.target = None
+    for binding in use.bindings:
+        binding.actor = original.get(binding.actor, binding.actor)
+    return Extraction(region, use, position_of(scenario, region))
 
 
 def _select(scenario: scm.Scenario, node_names: Sequence[str]) -> list[scm.GraphElement]:
@@ -309,4 +370,14 @@ def _feature_path(node: EObject, holder: EObject) -> list[str]:
     return list(reversed(steps))
 
 
-__all__ = ["Region", "RoleSpec", "extract", "find_region", "parse_role"]
+__all__ = [
+    "Extraction",
+    "Region",
+    "RoleSpec",
+    "connections",
+    "extract",
+    "find_region",
+    "parse_role",
+    "plan_extraction",
+    "position_of",
+]
