@@ -196,12 +196,15 @@ def input_file(name: str = "file") -> Callable[[F], F]:
     return click.argument(name, type=click.Path(exists=True, dir_okay=False, path_type=Path))
 
 
-def output_file(help: str, *, metavar: str | None = None) -> Callable[[F], F]:
-    """-o/--output, required: the one file a command writes."""
+def output_file(
+    help: str, *, metavar: str | None = None, required: bool = True
+) -> Callable[[F], F]:
+    """-o/--output: the one file a command writes (if not `required`, None when not given)."""
     return click.option(
         "-o",
         "--output",
-        required=True,
+        required=required,
+        default=None,
         type=click.Path(dir_okay=False, path_type=Path),
         metavar=metavar,
         help=help,
@@ -224,6 +227,30 @@ def output_folder(help: str) -> Callable[[F], F]:
 #: --seed, on every command that draws random numbers.
 seed_option = click.option(
     "--seed", type=click.IntRange(min=0), default=0, show_default=True, help="Seed."
+)
+
+
+def written_version_option(help: str) -> Callable[[F], F]:
+    """--osc-version of the .xosc files a batch writes: any supported version, the newest by
+    default."""
+    from ..xosc.schema import SUPPORTED_VERSIONS
+
+    return click.option(
+        "--osc-version",
+        type=click.Choice(SUPPORTED_VERSIONS),
+        default=SUPPORTED_VERSIONS[-1],
+        show_default=True,
+        help=help,
+    )
+
+
+#: --workers, on every command that runs batch work (with `executor_options`).
+workers_option = click.option(
+    "--workers",
+    type=click.IntRange(min=1),
+    default=None,
+    help="Worker processes of the processes executor, or of the dask executor's LocalCluster "
+    "[default: the number of CPUs].",
 )
 
 
@@ -257,12 +284,9 @@ def report_options(json_help: str) -> Callable[[F], F]:
     """The options of every command that writes a diagnostics report: --format, --strict, -o."""
 
     def decorate(command: F) -> F:
-        command = click.option(
-            "-o",
-            "--output",
-            type=click.Path(dir_okay=False, path_type=Path),
-            default=None,
-            help="Write the report to this file (atomically) instead of standard output.",
+        command = output_file(
+            "Write the report to this file (atomically) instead of standard output.",
+            required=False,
         )(command)
         command = click.option(
             "--strict", is_flag=True, help="Count warnings as errors (exit 1, JUnit failures)."

@@ -8,7 +8,7 @@ import click
 
 from ..diff import Change, compare_files
 from ..diff.reports import FORMATS, DiffReport
-from .common import SceMLCommand, emit_report
+from .common import SceMLCommand, emit_report, output_file
 
 #: What git passes a `diff.<driver>.command`: path old-file old-hex old-mode new-file new-hex new-mode.
 GIT_ARGUMENTS = 7
@@ -26,12 +26,8 @@ GIT_ARGUMENTS = 7
     "markdown: a pull-request comment; junit: one test case per change, failing when it "
     "touches an --exit-code part; html: the new diagram with the changes marked, listed beside it.",
 )
-@click.option(
-    "-o",
-    "--output",
-    type=click.Path(dir_okay=False, path_type=Path),
-    default=None,
-    help="Write the report to this file (atomically) instead of standard output.",
+@output_file(
+    "Write the report to this file (atomically) instead of standard output.", required=False
 )
 @click.option(
     "--no-layout",

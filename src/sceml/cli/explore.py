@@ -11,7 +11,6 @@ import click
 from ..executors import check
 from ..levels.counts import parse_count
 from ..model.loading import load_scenario
-from ..xosc.schema import SUPPORTED_VERSIONS
 from .common import (
     Parsed,
     SceMLCommand,
@@ -20,6 +19,8 @@ from .common import (
     input_file,
     output_folder,
     seed_option,
+    workers_option,
+    written_version_option,
 )
 
 _METRICS = ("min-ttc", "min-distance", "collision", "pet")
@@ -56,21 +57,9 @@ _METRICS = ("min-ttc", "min-distance", "collision", "pet")
     show_default=True,
     help="How many of the most critical runs to write as concrete .xmi and .xosc.",
 )
-@click.option(
-    "--osc-version",
-    type=click.Choice(SUPPORTED_VERSIONS),
-    default=SUPPORTED_VERSIONS[-1],
-    show_default=True,
-    help="OpenSCENARIO version of the .xosc files.",
-)
+@written_version_option("OpenSCENARIO version of the .xosc files.")
 @click.option("--step", type=click.FloatRange(min=0.001, max=1.0), default=0.05, show_default=True)
-@click.option(
-    "--workers",
-    type=click.IntRange(min=1),
-    default=None,
-    help="Worker processes of the processes executor, or of the dask executor's LocalCluster "
-    "[default: the number of CPUs].",
-)
+@workers_option
 @executor_options
 @allow_option
 def explore_command(

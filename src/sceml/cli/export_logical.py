@@ -9,19 +9,12 @@ import click
 from ..export.writer import header_date
 from ..levels.pvd import MODES, export_distribution
 from ..xosc.schema import DISTRIBUTION_VERSIONS
-from .common import Parsed, SceMLCommand, allow_option, input_file
+from .common import Parsed, SceMLCommand, allow_option, input_file, output_folder
 
 
 @click.command("export-distribution", cls=SceMLCommand)
 @input_file("logical")
-@click.option(
-    "-o",
-    "--output",
-    "out_dir",
-    type=click.Path(file_okay=False, path_type=Path),
-    required=True,
-    help="Folder for <name>.xosc (parameterized) and <name>.pvd.xosc (the distribution).",
-)
+@output_folder("Folder for <name>.xosc (parameterized) and <name>.pvd.xosc (the distribution).")
 @click.option(
     "--osc-version",
     type=click.Choice(DISTRIBUTION_VERSIONS),

@@ -11,7 +11,7 @@ import click
 from ..model.loading import load_library
 from ..modules import extract_file, list_definitions, parse_role, show
 from ..modules.library import DefinitionDetail, DefinitionSummary, ParameterInfo, Size
-from .common import SceMLGroup, allow_option
+from .common import SceMLGroup, allow_option, output_file
 
 _EXISTING_FILE = click.Path(exists=True, dir_okay=False, path_type=Path)
 
@@ -76,13 +76,7 @@ def show_command(library: Path, name: str, as_json: bool, allow: tuple[Path, ...
     metavar="LIB",
     help="Library file to add the module to; created if it does not exist.",
 )
-@click.option(
-    "-o",
-    "--output",
-    type=click.Path(dir_okay=False, path_type=Path),
-    default=None,
-    help="Write the changed scenario here instead of over FILE.",
-)
+@output_file("Write the changed scenario here instead of over FILE.", required=False)
 @click.option(
     "--role",
     "role_options",

@@ -21,7 +21,6 @@ from ..levels.to_folder import (
     plan_sampling,
     sample_to_folder,
 )
-from ..xosc.schema import SUPPORTED_VERSIONS
 from .common import (
     Parsed,
     SceMLCommand,
@@ -31,6 +30,8 @@ from .common import (
     input_file,
     output_folder,
     seed_option,
+    workers_option,
+    written_version_option,
 )
 
 # A run leaves a large heap (scipy, imported to draw from normal distributions, and the model),
@@ -66,20 +67,8 @@ atexit.register(gc.freeze)
     show_default=True,
     help="Write each sample as OpenSCENARIO (.xosc, XSD-checked), as SceML (.xmi), or both.",
 )
-@click.option(
-    "--osc-version",
-    type=click.Choice(SUPPORTED_VERSIONS),
-    default=SUPPORTED_VERSIONS[-1],
-    show_default=True,
-    help="OpenSCENARIO version of the .xosc files.",
-)
-@click.option(
-    "--workers",
-    type=click.IntRange(min=1),
-    default=None,
-    help="Worker processes of the processes executor, or of the dask executor's LocalCluster "
-    "[default: the number of CPUs].",
-)
+@written_version_option("OpenSCENARIO version of the .xosc files.")
+@workers_option
 @click.option(
     "--index",
     type=click.IntRange(min=0),

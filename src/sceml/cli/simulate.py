@@ -16,7 +16,7 @@ from ..model.loading import load_scenario
 from ..simulate import DEFAULT_STEP, Run, simulate
 from ..simulate.outputs import summary, trajectories_csv
 from ..simulate.timeline import shown_nodes
-from .common import SceMLCommand, allow_option, input_file
+from .common import SceMLCommand, allow_option, input_file, output_file
 
 #: Runs with more steps than this show a progress bar (when a person is watching).
 _BAR_STEPS = 2000
@@ -24,13 +24,10 @@ _BAR_STEPS = 2000
 
 @click.command(cls=SceMLCommand)
 @input_file()
-@click.option(
-    "-o",
-    "--output",
-    type=click.Path(dir_okay=False, path_type=Path),
-    default=None,
-    help="The preview page (HTML, self-contained) [default: FILE's name with -preview.html, "
+@output_file(
+    "The preview page (HTML, self-contained) [default: FILE's name with -preview.html, "
     "in the current folder].",
+    required=False,
 )
 @click.option(
     "--csv",
