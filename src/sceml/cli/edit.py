@@ -9,6 +9,7 @@ import click
 
 import scemlmodel as scm
 
+from ..model.graph import DEFAULT_LEVEL
 from .common import SceMLCommand
 
 
@@ -25,7 +26,7 @@ from .common import SceMLCommand
 @click.option(
     "--level",
     type=click.Choice([level.name for level in scm.AbstractionLevel.eLiterals]),
-    default="functional",
+    default=DEFAULT_LEVEL,
     show_default=True,
     help="Abstraction level of a new scenario (when FILE does not exist yet).",
 )

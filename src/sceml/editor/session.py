@@ -18,7 +18,7 @@ from ..export.writer import ExportError, InvalidOutputError, export_to_file
 from ..files.safefiles import reading_roots
 from ..model.build import ScenarioBuilder
 from ..model.documents import Document, new_resource_set
-from ..model.graph import scenario_level
+from ..model.graph import DEFAULT_LEVEL, scenario_level
 from ..model.loading import load, load_library
 from ..model.saving import save as io_save
 from ..modules.library import definition_named
@@ -42,7 +42,7 @@ class SessionOptions:
     """How a session was started: read-only, the level of a new scenario, extra libraries."""
 
     read_only: bool = False
-    level: str = "functional"
+    level: str = DEFAULT_LEVEL
     libraries: list[Path] = field(default_factory=list)
     #: Folders the editor may also read and write (`--allow`), beyond `reading_roots`.
     allow: list[Path] = field(default_factory=list)

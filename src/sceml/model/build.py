@@ -19,6 +19,7 @@ import scemlmodel as scm
 from ..errors import BuildError
 from . import catalog
 from .copying import detached
+from .graph import DEFAULT_LEVEL
 from .params import ParameterInput, as_parameter
 
 
@@ -274,7 +275,7 @@ class ScenarioBuilder(GraphBuilder):
         name: str,
         *,
         map: str | None = None,
-        level: str = "functional",
+        level: str = DEFAULT_LEVEL,
         max_duration: ParameterInput | None = None,
         date: str | None = None,
         description: str | None = None,

@@ -43,6 +43,9 @@ def root_node(scenario: scm.Scenario) -> scm.RootNode | None:
     return next(iter(nodes_of(scenario, scm.RootNode)), None)
 
 
+#: The level of a root node that names none, and of a new scenario: the metamodel's default.
+DEFAULT_LEVEL = str(scm.RootNode.level.get_default_value().name)
+
 #: How a level is shown where there is none to show (a scenario without a root node).
 NO_LEVEL_TEXT = "?"
 
@@ -53,8 +56,7 @@ def root_level(root: scm.RootNode) -> str:
     One set to nothing has the metamodel's default (`RootNode.level`, functional), as a file
     that leaves the attribute out does.
     """
-    level = root.level if root.level is not None else scm.RootNode.level.get_default_value()
-    return str(level.name)
+    return str(root.level.name) if root.level is not None else DEFAULT_LEVEL
 
 
 def scenario_level(scenario: scm.Scenario) -> str | None:
