@@ -6,7 +6,9 @@ from pathlib import Path
 
 import pytest
 
+from sceml.cli.explore import explore_command
 from sceml.errors import SceMLError
+from sceml.explore import METRICS
 from sceml.explore.to_folder import ExploreRequest, check_budget, explore_to_folder
 from sceml.model.loading import load_scenario
 
@@ -46,3 +48,18 @@ def test_a_failed_search_leaves_no_folder(tmp_path: Path) -> None:
 def test_a_budget_beyond_memory_is_refused_before_anything_runs() -> None:
     with pytest.raises(SceMLError, match="runs would take about .* of memory"):
         check_budget(load_scenario(UIS1), 10**15, 0.05)
+
+
+def test_the_command_offers_the_metrics_the_search_knows() -> None:
+    # The command names them itself so as not to import the preview before it runs.
+    [metric] = [p for p in explore_command.params if p.name == "metric"]
+    assert (
+        sorted(metric.type.choices)
+        == sorted(METRICS)
+        == [  # type: ignore[attr-defined]
+            "collision",
+            "min-distance",
+            "min-ttc",
+            "pet",
+        ]
+    )
