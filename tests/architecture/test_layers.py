@@ -144,3 +144,24 @@ def test_imports_are_read_relative_to_their_file(
     file.write_text(source)
     monkeypatch.setattr(sys.modules[__name__], "PACKAGE", tmp_path / "sceml")
     assert {target for _, target in imported(file)} == expected
+
+
+def test_only_the_cli_talks() -> None:
+    # Library code never prints: the workflows return results and the commands show them.
+    talking = []
+    for path in sources():
+        if "cli" in path.relative_to(PACKAGE).parts:
+            continue
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.Call) and getattr(node.func, "id", None) == "print":
+                talking.append(f"{path.relative_to(ROOT)}:{node.lineno}: print()")
+            names = (
+                [alias.name for alias in node.names]
+                if isinstance(node, ast.Import)
+                else [node.module or ""]
+                if isinstance(node, ast.ImportFrom)
+                else []
+            )
+            if any(name.split(".")[0] == "click" for name in names):
+                talking.append(f"{path.relative_to(ROOT)}:{node.lineno}: imports click")
+    assert talking == []
