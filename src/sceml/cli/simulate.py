@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import json
 import sys
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
@@ -10,11 +9,9 @@ from pathlib import Path
 
 import click
 
-from ..files.outputset import output_set
-from ..files.writing import write_atomically
 from ..model.loading import load_scenario
 from ..simulate import DEFAULT_STEP, Run, simulate
-from ..simulate.outputs import summary, trajectories_csv
+from ..simulate.outputs import write_run
 from ..simulate.timeline import shown_nodes
 from .common import SceMLCommand, allow_option, input_file, output_file
 
@@ -72,21 +69,11 @@ def simulate_command(
     document = load_scenario(file, allow=allow)
     with _progress() as progress:
         run = simulate(document.root, file, step=step, progress=progress)
-    from ..simulate.page import preview_page  # matplotlib's helpers: loaded only for the page
-
     page = output or Path(f"{file.stem}-preview.html")
-    # The page, CSV and JSON appear together or not at all (a CSV that cannot be written
-    # must not leave the page of the run behind).
-    with output_set() as outputs:
-        write_atomically(outputs.stage(page), preview_page(run, document.root, file).encode())
-        if csv_path is not None:
-            write_atomically(outputs.stage(csv_path), trajectories_csv(run).encode("utf-8"))
-        if json_path is not None:
-            text = json.dumps(summary(run), indent=2) + "\n"
-            write_atomically(outputs.stage(json_path), text.encode("utf-8"))
+    written = write_run(run, document.root, file, page, csv_path, json_path)
     for line in describe(run):
         click.echo(line)
-    click.echo(f"wrote {page}" + "".join(f", {p}" for p in (csv_path, json_path) if p))
+    click.echo(f"wrote {', '.join(map(str, written))}")
 
 
 def describe(run: Run) -> Iterator[str]:

@@ -1,15 +1,45 @@
-"""A run as files: the trajectories as CSV and a JSON summary (timeline, metrics, end)."""
+"""A run as files: the preview page, the trajectories as CSV and a JSON summary (timeline,
+metrics, end)."""
 
 from __future__ import annotations
 
 import csv
 import io
+import json
 import math
+from pathlib import Path
 from typing import Any
 
+import scemlmodel as scm
+
+from ..files.outputset import output_set
+from ..files.writing import write_atomically
 from .run import Run
 
 CSV_COLUMNS = ("time", "actor", "x", "y", "heading", "speed")
+
+
+def write_run(
+    run: Run,
+    scenario: scm.Scenario,
+    scenario_file: Path,
+    page: Path,
+    csv_path: Path | None = None,
+    json_path: Path | None = None,
+) -> list[Path]:
+    """Write the run's page (and, if asked, its CSV and JSON): all of them or, when one cannot
+    be written, none (a CSV that fails must not leave the page of the run behind). The files
+    written, page first."""
+    from .page import preview_page  # matplotlib's helpers: loaded only for the page
+
+    with output_set() as outputs:
+        write_atomically(outputs.stage(page), preview_page(run, scenario, scenario_file).encode())
+        if csv_path is not None:
+            write_atomically(outputs.stage(csv_path), trajectories_csv(run).encode("utf-8"))
+        if json_path is not None:
+            text = json.dumps(summary(run), indent=2) + "\n"
+            write_atomically(outputs.stage(json_path), text.encode("utf-8"))
+    return [page, *(p for p in (csv_path, json_path) if p is not None)]
 
 
 def trajectories_csv(run: Run) -> str:
