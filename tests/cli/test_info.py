@@ -7,8 +7,10 @@ from pathlib import Path
 
 from click.testing import CliRunner
 
+import scemlmodel as scm
 from sceml import __version__
 from sceml.cli import cli
+from sceml.model.saving import save
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
@@ -60,3 +62,13 @@ def test_help_explains_every_command() -> None:
     assert result.exit_code == 0
     for command in ("info", "dev"):
         assert command in result.output
+
+
+def test_info_on_a_scenario_without_a_root_node_shows_no_level(tmp_path: Path) -> None:
+    file = tmp_path / "rootless.xmi"
+    save(scm.Scenario(), file)
+    result = CliRunner().invoke(cli, ["info", str(file)])
+    assert result.exit_code == 0, result.output
+    assert "  level: ?\n" in result.output  # as the diagrams and sample show a missing level
+    as_json = CliRunner().invoke(cli, ["info", "--json", str(file)])
+    assert json.loads(as_json.output)["level"] is None

@@ -8,6 +8,7 @@ from pathlib import Path
 
 import click
 
+from ..model.graph import NO_LEVEL_TEXT
 from ..model.info import Summary, summarize
 from ..model.loading import broken_references, load
 from .common import SceMLCommand, allow_option, exit_if_broken, input_file
@@ -40,7 +41,7 @@ def _text(summary: Summary, file: Path) -> list[str]:
         lines.append(f"  nodes: {_counts(summary.node_counts)}; flows: {summary.flows}")
         return lines
     lines = [f"{file}: scenario {summary.name!r}"]
-    lines.append(f"  level: {summary.level}")
+    lines.append(f"  level: {summary.level or NO_LEVEL_TEXT}")
     lines.append(f"  map: {summary.map or '(none)'}")
     lines.append(f"  actors ({len(summary.actors)}):")
     for actor in summary.actors:
