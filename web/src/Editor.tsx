@@ -91,10 +91,14 @@ export function Editor() {
   // The first layout of a document fits the view.
   const fittedFor = useRef<string | null>(null);
   const laidOut = diagram.laidOut;
-  // So does the layout after expanding or collapsing a module use.
+  // So does the layout after expanding or collapsing a module use, and ELK's layout after the
+  // quick one a large graph is drawn in first.
   const fitNext = useRef(false);
+  const wasQuick = useRef(false);
   useEffect(() => {
     if (!laidOut) return;
+    if (wasQuick.current && !diagram.quick) fitNext.current = true;
+    wasQuick.current = diagram.quick;
     const document = `${laidOut.document.path}#${laidOut.document.module ?? ""}`;
     if (fittedFor.current === document && !fitNext.current) return;
     // The first fit of a document is immediate (nothing to follow yet); a re-fit glides.
@@ -113,7 +117,7 @@ export function Editor() {
       if (!sized && frames++ < 60) requestAnimationFrame(fitOnceSized);
     };
     requestAnimationFrame(fitOnceSized);
-  }, [laidOut, flow, storeApi]);
+  }, [laidOut, diagram.quick, flow, storeApi]);
 
   /** Where every top-level node is drawn now. */
   const drawnPositions = useCallback((): Record<string, XY> => {
