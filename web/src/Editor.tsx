@@ -3,6 +3,7 @@
 import { useReactFlow, useStoreApi } from "@xyflow/react";
 import { useCallback, useEffect, useMemo, useRef, useState } from "react";
 import { api, ApiError } from "./api";
+import { PENDING_PREFIX, pendingNode } from "./canvas/build";
 import { Diagram } from "./canvas/Diagram";
 import { ExportDialog, ExtractDialog, OpenDialog, UseModuleDialog, type ExportResult } from "./dialogs/dialogs";
 import { RecoveryDialog } from "./dialogs/RecoveryDialog";
@@ -123,7 +124,7 @@ export function Editor() {
   const drawnPositions = useCallback((): Record<string, XY> => {
     const positions: Record<string, XY> = {};
     for (const node of diagram.nodes) {
-      if (!node.parentId) positions[node.id] = { x: Math.round(node.position.x), y: Math.round(node.position.y) };
+      if (!node.parentId && !node.id.startsWith(PENDING_PREFIX)) positions[node.id] = { x: Math.round(node.position.x), y: Math.round(node.position.y) };
     }
     return positions;
   }, [diagram.nodes]);
@@ -228,6 +229,7 @@ export function Editor() {
     return flow.screenToFlowPosition({ x: rect.left + rect.width / 2, y: rect.top + rect.height / 2 });
   }, [flow]);
 
+  const pendingCount = useRef(0);
   const addItem = useCallback(
     (item: PaletteItem, at?: XY) => {
       if (!editable) return;
@@ -241,10 +243,20 @@ export function Editor() {
           .map((node) => ({ ...node.position, width: node.measured?.width ?? 0, height: node.measured?.height ?? 0 }));
         position = freeSpot({ ...position, width: 160, height: 70 }, taken);
       }
-      if (item.module) setDialog({ type: "use", item, position });
-      else void edit([{ op: "add_node", kind: item.kind, position }], `Add ${item.label}`);
+      if (item.module) {
+        setDialog({ type: "use", item, position });
+        return;
+      }
+      // The box shows at once; the server's answer (a round trip and a validation of the
+      // whole model, most of a drop's time at 500 nodes) replaces it with the node.
+      const look = view?.palette.find((group) => group.items.includes(item))?.look ?? "longitudinal";
+      const pending = `${PENDING_PREFIX}${++pendingCount.current}`;
+      diagram.showPending(pendingNode(pending, item.kind, item.label, look, position));
+      // Refused (or failed), the box goes; added, the next drawing has the node instead.
+      const refused = () => diagram.dropPending(pending);
+      void edit([{ op: "add_node", kind: item.kind, position }], `Add ${item.label}`).then((next) => next ?? refused(), refused);
     },
-    [editable, centre, edit, flow],
+    [editable, centre, edit, flow, view, diagram],
   );
 
   const addFromPalette = useStable((item: PaletteItem) => addItem(item));

@@ -26,6 +26,10 @@ export interface DiagramState {
   selectNext: (ids: string[]) => void;
   /** Whether what is drawn is the quick first layout, ELK's still to come. */
   quick: boolean;
+  /** Draw a box for a node the server is adding (canvas/build.ts `pendingNode`) at once. */
+  showPending: (node: DiagramNode) => void;
+  /** Take that box away (the server refused; an answer that adds the node replaces it). */
+  dropPending: (id: string) => void;
 }
 
 /** From how many top-level nodes without a place the quick layout is drawn before ELK's:
@@ -195,5 +199,11 @@ export function useDiagramState(
     [view, expanded],
   );
 
-  return { nodes, edges, setNodes, setEdges, onNodesChange, onEdgesChange, laidOut, arrange, selectNext, quick };
+  const showPending = useCallback((node: DiagramNode) => setNodes((current) => [...current, node]), []);
+  const dropPending = useCallback(
+    (id: string) => setNodes((current) => (current.some((node) => node.id === id) ? current.filter((node) => node.id !== id) : current)),
+    [],
+  );
+
+  return { nodes, edges, setNodes, setEdges, onNodesChange, onEdgesChange, laidOut, arrange, selectNext, quick, showPending, dropPending };
 }
