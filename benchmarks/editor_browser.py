@@ -232,15 +232,19 @@ def main(argv: list[str] | None = None) -> None:
 
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--runs", type=int, default=10)
+    parser.add_argument(
+        "--models", nargs="+", choices=["UIS2", "500"], default=["UIS2", "500"], help="what to open"
+    )
     arguments = parser.parse_args(argv)
     with tempfile.TemporaryDirectory() as temporary, sync_playwright() as playwright:
         folder = Path(temporary)
         shutil.copytree(HERE.parent / "examples", folder / "examples")
         shutil.copytree(HERE.parent / "maps", folder / "maps")
-        cases = {
-            "UIS2": folder / "examples" / "uis2-concrete.xmi",
-            "500 nodes": write(500, folder / "scale"),
-        }
+        cases = {}
+        if "UIS2" in arguments.models:
+            cases["UIS2"] = folder / "examples" / "uis2-concrete.xmi"
+        if "500" in arguments.models:
+            cases["500 nodes"] = write(500, folder / "scale")
         browser = playwright.chromium.launch(executable_path=str(CHROMIUM), args=CHROMIUM_ARGS)
         print(f"median ms in Chromium, {arguments.runs} runs; anchor: GET /api/view + JSON parse")
         print(
