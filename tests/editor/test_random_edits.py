@@ -103,7 +103,7 @@ def test_undo_all_and_redo_all_give_the_same_bytes(data: st.DataObject, requests
 
 
 def fresh_view(session: EditorSession) -> dict[str, Any]:
-    """The view listed from scratch, every node anew (what the node cache must equal)."""
+    """The view listed from scratch, every node and actor anew (what the cache must equal)."""
     kept = session._cache
     session._cache = NodeCache()
     try:
@@ -136,4 +136,6 @@ def test_the_view_after_any_edit_equals_one_listed_from_scratch(
                     view = session.apply([draw_op(data, view)])
             except OperationError:
                 view = session.view()
-            assert view["nodes"] == fresh_view(session)["nodes"]
+            fresh = fresh_view(session)
+            assert view["nodes"] == fresh["nodes"]
+            assert view["actors"] == fresh["actors"]

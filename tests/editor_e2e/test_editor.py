@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 from browser import CHROMIUM
-from playwright.sync_api import Locator, Page, Response, expect
+from playwright.sync_api import Locator, Page, Response, Route, expect
 
 from sceml.diagnostics import Severity
 from sceml.model.loading import load
@@ -376,3 +376,43 @@ def test_unsaved_work_is_never_lost_silently(
     save(page)
     assert page.evaluate(LEAVING_IS_HELD) is False
     assert b'name="Stop_1"' in target.read_bytes()
+
+
+def test_a_dropped_node_shows_at_once_and_a_refused_one_goes(
+    page: Page, editor: object, examples_copy: Path
+) -> None:
+    diagram = open_editor(page, editor(examples_copy / "uis2-concrete.xmi"))
+    boxes = diagram.locator(".react-flow__node")
+    before = boxes.count()
+    pending = diagram.locator(".react-flow__node.pending")
+    # The server's answer is held back: the box is drawn before it, greyed, named by its kind.
+    held: list[Route] = []
+
+    def hold(route: Route) -> None:
+        held.append(route)
+
+    page.route("**/api/ops", hold)
+    item = page.get_by_role("region", name="Palette").get_by_role("button", name="Stop", exact=True)
+    item.drag_to(diagram, target_position={"x": 300, "y": 120})
+    expect(pending).to_have_count(1)
+    expect(pending).to_have_attribute("aria-label", "Stop (adding)")
+    expect(boxes).to_have_count(before + 1)
+    with ops_answer(page):
+        held[0].continue_()
+    page.unroute("**/api/ops")
+    # The answer brings the node itself in the box's place.
+    expect(pending).to_have_count(0)
+    expect(node(page, "Stop_1")).to_be_visible()
+    expect(boxes).to_have_count(before + 1)
+
+    # Refused: the box goes, and nothing else was added.
+    page.route(
+        "**/api/ops",
+        lambda route: route.fulfill(
+            status=400, content_type="application/json", body='{"error": "refused for the test"}'
+        ),
+    )
+    item.drag_to(diagram, target_position={"x": 420, "y": 120})
+    expect(page.get_by_role("alert")).to_contain_text("refused for the test")
+    expect(pending).to_have_count(0)
+    expect(boxes).to_have_count(before + 1)

@@ -3,6 +3,7 @@
 import { useReactFlow, useStoreApi } from "@xyflow/react";
 import { useCallback, useEffect, useMemo, useRef, useState } from "react";
 import { api, ApiError } from "./api";
+import { PENDING_PREFIX, pendingNode } from "./canvas/build";
 import { Diagram } from "./canvas/Diagram";
 import { ExportDialog, ExtractDialog, OpenDialog, UseModuleDialog, type ExportResult } from "./dialogs/dialogs";
 import { RecoveryDialog } from "./dialogs/RecoveryDialog";
@@ -91,10 +92,14 @@ export function Editor() {
   // The first layout of a document fits the view.
   const fittedFor = useRef<string | null>(null);
   const laidOut = diagram.laidOut;
-  // So does the layout after expanding or collapsing a module use.
+  // So does the layout after expanding or collapsing a module use, and ELK's layout after the
+  // quick one a large graph is drawn in first.
   const fitNext = useRef(false);
+  const wasQuick = useRef(false);
   useEffect(() => {
     if (!laidOut) return;
+    if (wasQuick.current && !diagram.quick) fitNext.current = true;
+    wasQuick.current = diagram.quick;
     const document = `${laidOut.document.path}#${laidOut.document.module ?? ""}`;
     if (fittedFor.current === document && !fitNext.current) return;
     // The first fit of a document is immediate (nothing to follow yet); a re-fit glides.
@@ -113,13 +118,13 @@ export function Editor() {
       if (!sized && frames++ < 60) requestAnimationFrame(fitOnceSized);
     };
     requestAnimationFrame(fitOnceSized);
-  }, [laidOut, flow, storeApi]);
+  }, [laidOut, diagram.quick, flow, storeApi]);
 
   /** Where every top-level node is drawn now. */
   const drawnPositions = useCallback((): Record<string, XY> => {
     const positions: Record<string, XY> = {};
     for (const node of diagram.nodes) {
-      if (!node.parentId) positions[node.id] = { x: Math.round(node.position.x), y: Math.round(node.position.y) };
+      if (!node.parentId && !node.id.startsWith(PENDING_PREFIX)) positions[node.id] = { x: Math.round(node.position.x), y: Math.round(node.position.y) };
     }
     return positions;
   }, [diagram.nodes]);
@@ -224,6 +229,7 @@ export function Editor() {
     return flow.screenToFlowPosition({ x: rect.left + rect.width / 2, y: rect.top + rect.height / 2 });
   }, [flow]);
 
+  const pendingCount = useRef(0);
   const addItem = useCallback(
     (item: PaletteItem, at?: XY) => {
       if (!editable) return;
@@ -237,10 +243,20 @@ export function Editor() {
           .map((node) => ({ ...node.position, width: node.measured?.width ?? 0, height: node.measured?.height ?? 0 }));
         position = freeSpot({ ...position, width: 160, height: 70 }, taken);
       }
-      if (item.module) setDialog({ type: "use", item, position });
-      else void edit([{ op: "add_node", kind: item.kind, position }], `Add ${item.label}`);
+      if (item.module) {
+        setDialog({ type: "use", item, position });
+        return;
+      }
+      // The box shows at once; the server's answer (a round trip and a validation of the
+      // whole model, most of a drop's time at 500 nodes) replaces it with the node.
+      const look = view?.palette.find((group) => group.items.includes(item))?.look ?? "longitudinal";
+      const pending = `${PENDING_PREFIX}${++pendingCount.current}`;
+      diagram.showPending(pendingNode(pending, item.kind, item.label, look, position));
+      // Refused (or failed), the box goes; added, the next drawing has the node instead.
+      const refused = () => diagram.dropPending(pending);
+      void edit([{ op: "add_node", kind: item.kind, position }], `Add ${item.label}`).then((next) => next ?? refused(), refused);
     },
-    [editable, centre, edit, flow],
+    [editable, centre, edit, flow, view, diagram],
   );
 
   const addFromPalette = useStable((item: PaletteItem) => addItem(item));

@@ -261,7 +261,7 @@ class EditorSession:
             "valueTypes": palette.value_types(self.level, self.module is not None),
             "nodes": listing.nodes,
             "edges": listing.edges,
-            "actors": view.actors(self.graph, self.ids),
+            "actors": self._cache.actors(self.graph, self.ids),
             "diagnostics": found,
             "summary": view.summary(found),
             "palette": self._palette(),

@@ -139,10 +139,21 @@ class NodeCache:
     names and kinds, held by the root) and on module definitions (other files). A change inside
     a node forgets that node; a change to the graph's lists forgets the nodes added or removed;
     a change anywhere else (the root and its actors, another file) forgets everything.
+
+    It also keeps the actors' (or roles') listing, the other part of a view every edit would
+    build again: it depends only on the root's actors or the module's roles, so it is kept
+    while every change lies inside another node or in the graph's lists of nodes and flows.
     """
 
     def __init__(self) -> None:
         self._fragments: dict[EObject, Listing] = {}
+        self._actors: list[dict[str, Any]] | None = None
+
+    def actors(self, graph: scm.Graph, ids: Ids) -> list[dict[str, Any]]:
+        """`actors(graph, ids)`, listed anew only after a change that can alter it."""
+        if self._actors is None:
+            self._actors = actors(graph, ids)
+        return self._actors
 
     def get(self, node: EObject) -> Listing | None:
         """What `node` listed last, if nothing touched it since."""
@@ -155,6 +166,7 @@ class NodeCache:
     def forget_all(self) -> None:
         """Forget every node (opened, saved, or changed outside what the changes show)."""
         self._fragments.clear()
+        self._actors = None
 
     def forget(self, changes: Iterable[Change], graph: EObject) -> None:
         """Forget the nodes `changes` touched (or all, for a change outside any one node)."""
@@ -162,11 +174,18 @@ class NodeCache:
             if change.owner is graph:
                 for item in (change.old, change.new):
                     self._fragments.pop(item, None)
+                # A module's roles are its own list; the root holds a scenario's actors.
+                if change.feature not in ("nodes", "flows") or any(
+                    isinstance(item, scm.RootNode) for item in (change.old, change.new)
+                ):
+                    self._actors = None
                 continue
             top = _top_level(change.owner, graph)
             if top is None or isinstance(top, scm.RootNode):
-                self._fragments.clear()
+                self.forget_all()
                 return
+            if not isinstance(top, scm.GraphElement | scm.Flow):
+                self._actors = None  # a role of a module, or another object of the graph's
             self._fragments.pop(top, None)
 
 

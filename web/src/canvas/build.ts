@@ -84,3 +84,28 @@ export function flowEdges(shown: Shown, selected: Set<string>, readOnly: boolean
     };
   });
 }
+
+/** Ids of the boxes drawn for a node the server has yet to add (see `pendingNode`). */
+export const PENDING_PREFIX = "pending:";
+
+/** A box for a node being added, drawn at once where it was dropped while the server adds it
+ * and validates the model: its answer replaces the box with the real node (or, refused, takes
+ * it away). Greyed, and nothing can be done with it. */
+export function pendingNode(id: string, kind: string, title: string, look: string, position: { x: number; y: number }): DiagramNode {
+  const node: ViewNode = { id, kind, look, name: "", title, lines: [], position, parent: null, readOnly: true, severity: null, problems: 0, fields: [] };
+  const size = measures.size(node);
+  return {
+    id,
+    type: nodeType(look, false),
+    position,
+    data: { node, width: size.width, height: size.height, expanded: false, canExpand: false },
+    width: size.width,
+    height: size.height,
+    draggable: false,
+    connectable: false,
+    deletable: false,
+    selectable: false,
+    ariaLabel: `${title} (adding)`,
+    className: "pending",
+  };
+}

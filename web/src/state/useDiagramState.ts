@@ -8,6 +8,7 @@ import type { DiagramEdge, DiagramNode } from "../canvas/types";
 import { shownGraph } from "../lib/graph";
 import { layoutGraph, remeasured, structureKey, type Direction, type Layout } from "../lib/layout";
 import { storedLayout, storeLayout } from "../lib/layoutCache";
+import { quickLayout } from "../lib/quickLayout";
 import type { View, XY } from "../types";
 
 export interface DiagramState {
@@ -23,6 +24,24 @@ export interface DiagramState {
   arrange: (direction: Direction) => Promise<Record<string, XY>>;
   /** Select these nodes once the next view is laid out (what an op created). */
   selectNext: (ids: string[]) => void;
+  /** Whether what is drawn is the quick first layout, ELK's still to come. */
+  quick: boolean;
+  /** Draw a box for a node the server is adding (canvas/build.ts `pendingNode`) at once. */
+  showPending: (node: DiagramNode) => void;
+  /** Take that box away (the server refused; an answer that adds the node replaces it). */
+  dropPending: (id: string) => void;
+}
+
+/** From how many top-level nodes without a place the quick layout is drawn before ELK's:
+ * below it ELK takes a fraction of a second, and a picture that rearranges itself is worse. */
+const QUICK_FROM = 100;
+
+/** Resolves when the page has nothing else to do (drawn, measured, fitted), at most 1 s on. */
+function idle(): Promise<void> {
+  return new Promise((resolve) => {
+    if (typeof requestIdleCallback === "function") requestIdleCallback(() => resolve(), { timeout: 1000 });
+    else setTimeout(resolve, 0);
+  });
 }
 
 /** `next`, with each item that equals the one drawn before replaced by that very object. */
@@ -73,6 +92,7 @@ export function useDiagramState(
   const [nodes, setNodes] = useState<DiagramNode[]>([]);
   const [edges, setEdges] = useState<DiagramEdge[]>([]);
   const [laidOut, setLaidOut] = useState<View | null>(null);
+  const [quick, setQuick] = useState(false);
   const selection = useRef<{ nodes: Set<string>; edges: Set<string> }>({ nodes: new Set(), edges: new Set() });
   const pending = useRef<Set<string> | null>(null);
   // The last layout and what it was made from: an edit that changes no structure (a parameter,
@@ -105,18 +125,7 @@ export function useDiagramState(
     // Read-only, an expanded use cannot make room by an Arrange step: lay it all out anew.
     const fresh = view.readOnly && shown.frames.size > 0;
     const started = performance.now();
-    const laying = known ? Promise.resolve(known) : layoutGraph(shown, direction, measures, fresh);
-    void laying.then((layout) => {
-      // benchmarks/editor_browser.py reads these: how long each layout took, ELK or not.
-      performance.measure(known ? "sceml-layout-reused" : "sceml-layout", { start: started });
-      if (cancelled) return;
-      // Kept with the sizes ELK saw, so that growth is measured from them, not step by step.
-      if (!known) {
-        lastLayout.current = { key, layout };
-        // Kept for a reload only when ELK placed something (a top-level node without a saved
-        // place, or the inside of a frame): saved places need no keeping.
-        if (shown.nodes.some((node) => (node.parent === null ? node.position === null : shown.frames.has(node.parent)))) storeLayout(file, key, layout);
-      }
+    const draw = (layout: Layout, quick: boolean) => {
       const chosen = pending.current;
       pending.current = null;
       const selectedNodes = chosen ?? selection.current.nodes;
@@ -131,6 +140,33 @@ export function useDiagramState(
       // A new object for every layout: expanding a use lays out the same view again, and the
       // page fits the view after that layout (a same-object update would not be seen).
       setLaidOut({ ...view });
+      setQuick(quick);
+    };
+    // A large graph ELK must place is drawn at once in a quick layered layout, then again
+    // where ELK puts it (it runs in a worker meanwhile): a picture in milliseconds, not seconds.
+    const unplaced = known ? 0 : shown.nodes.filter((node) => node.parent === null && node.position === null).length;
+    const drawnQuick = unplaced >= QUICK_FROM && shown.frames.size === 0;
+    if (drawnQuick) {
+      draw(quickLayout(shown, direction, measures), true);
+      performance.measure("sceml-layout-quick", { start: started });
+    }
+    // ELK starts once that picture is drawn: on two busy cores its worker would slow it down.
+    const laying = known
+      ? Promise.resolve(known)
+      : (drawnQuick ? idle() : Promise.resolve()).then(() => (cancelled ? null : layoutGraph(shown, direction, measures, fresh)));
+    void laying.then((layout) => {
+      if (layout === null) return;
+      // benchmarks/editor_browser.py reads these: how long each layout took, ELK or not.
+      performance.measure(known ? "sceml-layout-reused" : "sceml-layout", { start: started });
+      if (cancelled) return;
+      // Kept with the sizes ELK saw, so that growth is measured from them, not step by step.
+      if (!known) {
+        lastLayout.current = { key, layout };
+        // Kept for a reload only when ELK placed something (a top-level node without a saved
+        // place, or the inside of a frame): saved places need no keeping.
+        if (shown.nodes.some((node) => (node.parent === null ? node.position === null : shown.frames.has(node.parent)))) storeLayout(file, key, layout);
+      }
+      draw(layout, false);
     });
     return () => {
       cancelled = true;
@@ -163,5 +199,11 @@ export function useDiagramState(
     [view, expanded],
   );
 
-  return { nodes, edges, setNodes, setEdges, onNodesChange, onEdgesChange, laidOut, arrange, selectNext };
+  const showPending = useCallback((node: DiagramNode) => setNodes((current) => [...current, node]), []);
+  const dropPending = useCallback(
+    (id: string) => setNodes((current) => (current.some((node) => node.id === id) ? current.filter((node) => node.id !== id) : current)),
+    [],
+  );
+
+  return { nodes, edges, setNodes, setEdges, onNodesChange, onEdgesChange, laidOut, arrange, selectNext, quick, showPending, dropPending };
 }
