@@ -14,7 +14,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from lxml import etree
 from strategies import scenarios
-from trigger_waits import ROOT, Structure, expected_groups
+from trigger_waits import ROOT, Structure, expected_groups, waited
 
 import scemlmodel as scm
 from sceml.export import build_xosc
@@ -37,22 +37,27 @@ def finish_events(root: etree._Element) -> dict[str, str]:
 
 def read_groups(trigger: etree._Element, finishes: dict[str, str], owns: set[str]) -> Structure:
     """The nodes each ConditionGroup of a trigger waits for (their finish events, the start, an
-    inlined node's own condition named in `owns`), and LIMIT for the maximum duration."""
-    groups = []
+    inlined node's own condition named in `owns`), each with its condition's delay, and LIMIT
+    for the maximum duration; equal groups counted once."""
+    groups = set()
     for group in trigger.iter("ConditionGroup"):
-        waited: set[str] = set()
+        members: set[str] = set()
         for condition in group.iter("Condition"):
+            delay = float(condition.get("delay"))
+            state = condition.find(".//StoryboardElementStateCondition")
+            clock = condition.find(".//SimulationTimeCondition")
             if condition.get("name") in owns:
-                waited.add(str(condition.get("name")))
-        for state in group.iter("StoryboardElementStateCondition"):
-            assert state.get("state") == "completeState"
-            ref = state.get("storyboardElementRef")
-            node = ref.split(SEPARATOR)[0]
-            assert finishes[node] == ref, f"{ref} is not the finish event of {node}"
-            waited.add(node)
-        for clock in group.iter("SimulationTimeCondition"):
-            waited.add(ROOT if clock.get("value") == "0.0" else "LIMIT")
-        groups.append(frozenset(waited))
+                members.add(waited(str(condition.get("name")), delay))
+            elif state is not None:
+                assert state.get("state") == "completeState"
+                ref = state.get("storyboardElementRef")
+                node = ref.split(SEPARATOR)[0]
+                assert finishes[node] == ref, f"{ref} is not the finish event of {node}"
+                members.add(waited(node, delay))
+            elif clock is not None:
+                limit = clock.get("value") != "0.0"
+                members.add("LIMIT" if limit else waited(ROOT, delay))
+        groups.add(frozenset(members))
     return sorted(groups, key=sorted)
 
 
@@ -73,14 +78,14 @@ def check_round_trip(scenario: scm.Scenario, version: str) -> None:
             continue
         event = events[sanitize(node.name)]
         assert read_groups(event.find("StartTrigger"), finishes, owns) == expected_groups(
-            node, inline
+            node, inline, delays=True
         ), node.name
     stop = tree.find("Storyboard/StopTrigger")
     groups = read_groups(stop, finishes, owns)
     # The extra group is the maximum duration (SimulationTimeCondition only).
     assert frozenset(["LIMIT"]) in groups
     groups.remove(frozenset(["LIMIT"]))
-    assert groups == expected_groups(end, inline)
+    assert groups == expected_groups(end, inline, delays=True)
 
 
 @settings(
