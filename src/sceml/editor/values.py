@@ -66,8 +66,9 @@ def default_text(default: scm.ParameterValue | float | None, unit: str = "") -> 
     """A default as the panel names it beside an unset value (`8 m/s`, `N(8, 1) m/s`)."""
     if default is None:
         return None
-    held = params.value(default) if isinstance(default, int | float) else default
-    return params.describe(held, unit_text(unit))
+    if isinstance(default, int | float):
+        return params.describe_number(default, unit_text(unit))
+    return params.describe(default, unit_text(unit))
 
 
 def position_text(position: scm.Position | None) -> str | None:

@@ -75,6 +75,11 @@ def _number(number: float | None) -> str:
     return f"{number:g}"
 
 
+def describe_number(number: float | None, unit: str = "") -> str:
+    """One number as `describe` writes a single value: `8 m/s`."""
+    return _number(number) + (f" {unit}" if unit else "")
+
+
 def describe(parameter: scm.ParameterValue | None, unit: str = "") -> str:
     """A short human reading: `8 m/s`, `[5, 10] step 1 m/s`, `N(8, 1) in [6, 10] m/s`, `{1, 2}`,
     `{1, 2} weights {3, 1}`, `$speed`.
@@ -89,7 +94,7 @@ def describe(parameter: scm.ParameterValue | None, unit: str = "") -> str:
     if parameter is None:
         return "default"
     if isinstance(parameter, scm.Value):
-        return _number(parameter.value) + suffix
+        return describe_number(parameter.value, unit)
     if isinstance(parameter, scm.Range):
         step = f" step {_number(parameter.step)}" if parameter.step is not None else ""
         return f"[{_number(parameter.min)}, {_number(parameter.max)}]{step}{suffix}"

@@ -44,9 +44,9 @@ export function ParamEditor({ label, value, valueTypes, unit, text, defaultText,
   const shownType = draft.type === "unset" ? (kinds[0] ?? "value") : draft.type;
   const inputs = PARAM_INPUTS[shownType];
   const problemOf = (name: string): string | null => {
-    const text = draft.inputs[name];
+    const typed = draft.inputs[name];
     if (name === "parameter") return null;
-    return name === "values" || name === "weights" ? numberListProblem(text) : numberProblem(text);
+    return name === "values" || name === "weights" ? numberListProblem(typed) : numberProblem(typed);
   };
   const anyProblem = inputs.some((input) => problemOf(input.name) !== null);
   return (
