@@ -163,6 +163,8 @@ export interface Style {
   looks: Record<string, LookStyle>;
   symbols?: Record<string, string>;
   font?: string;
+  /** How flows are drawn (`color`), as `sceml render` draws them. */
+  edge?: { color?: string };
 }
 
 export interface DocumentInfo {
