@@ -416,3 +416,17 @@ def test_a_dropped_node_shows_at_once_and_a_refused_one_goes(
     expect(page.get_by_role("alert")).to_contain_text("refused for the test")
     expect(pending).to_have_count(0)
     expect(boxes).to_have_count(before + 1)
+
+
+def test_a_value_reads_as_the_server_writes_it(
+    page: Page, editor: object, examples_copy: Path
+) -> None:
+    open_editor(page, editor(examples_copy / "uis1-logical.xmi"))
+    node(page, "Accelerate_1").click()
+    props = page.get_by_role("region", name="Properties")
+    speed = props.get_by_role("group", name="Target speed")
+    expect(speed).to_contain_text("N(8, 1) in [6, 10] m/s = mean 28.8 km/h")
+    commit(page, speed.get_by_label("Target speed mean", exact=True), "9")
+    # The text is the server's answer to the edit, km/h and all.
+    expect(speed).to_contain_text("N(9, 1) in [6, 10] m/s = mean 32.4 km/h")
+    expect(speed).not_to_contain_text("28.8 km/h")

@@ -44,9 +44,13 @@ export type Field =
       default?: number | null;
       kmh?: boolean;
       value: ParamValue | null;
+      /** The server's display text of the value (units, km/h), null when unset. */
+      text: string | null;
+      /** The server's display text of the language default, null when there is none. */
+      defaultText: string | null;
     })
-  | (FieldBase & { type: "position"; value: Position | null })
-  | (FieldBase & { type: "positions"; value: Position[] | null });
+  | (FieldBase & { type: "position"; value: Position | null; text: string | null })
+  | (FieldBase & { type: "positions"; value: Position[] | null; texts: (string | null)[] });
 
 export type Look =
   | "longitudinal"
@@ -75,6 +79,9 @@ export interface ModuleParameter {
   unit?: string | null;
   default: ParamValue | null;
   override: ParamValue | null;
+  /** The server's display texts of the default and the override (null when unset). */
+  defaultText: string | null;
+  text: string | null;
 }
 
 export interface ModuleInfo {
@@ -156,6 +163,8 @@ export interface Style {
   looks: Record<string, LookStyle>;
   symbols?: Record<string, string>;
   font?: string;
+  /** How flows are drawn (`color`), as `sceml render` draws them. */
+  edge?: { color?: string };
 }
 
 export interface DocumentInfo {

@@ -13,7 +13,7 @@ import scemlmodel as scm
 from ..model import catalog
 from ..model.traversal import features
 from .nested import attributes_of, is_nested, shown
-from .values import position_to_json, value_to_json
+from .values import default_text, position_text, position_to_json, value_text, value_to_json
 
 #: Features no panel edits: graph structure, notation, and what other fields already show.
 _HIDDEN = {"incoming", "outgoing", "actors", "environment", "bindings", *catalog.NOTATION_FEATURES}
@@ -83,11 +83,22 @@ def feature_field(
     if kind == "ParameterValue":
         return {**base, **parameter_field(owner, name, held)}
     if kind == "Position" and feature.many:
-        return {**base, "type": "positions", "value": [position_to_json(p) for p in held]}
+        return {
+            **base,
+            "type": "positions",
+            "value": [position_to_json(p) for p in held],
+            "texts": [position_text(p) for p in held],
+        }
     if kind == "Position":
         # Every single position of a node (destination, position) is needed to run it.
         required = isinstance(owner, scm.ActionNode)
-        return {**base, "type": "position", "required": required, "value": position_to_json(held)}
+        return {
+            **base,
+            "type": "position",
+            "required": required,
+            "value": position_to_json(held),
+            "text": position_text(held),
+        }
     return None
 
 
@@ -115,6 +126,8 @@ def parameter_field(owner: EObject, name: str, held: object) -> dict[str, Any]:
         "required": spec.required,
         "kmh": spec.unit == _SPEED_UNIT,
         "value": value_to_json(held),
+        "text": value_text(held if isinstance(held, scm.ParameterValue) else None, spec.unit),
+        "defaultText": default_text(default, spec.unit),
     }
 
 

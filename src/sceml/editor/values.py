@@ -1,4 +1,10 @@
-"""ParamValue and Position as the protocol's JSON, to and from pyecore objects."""
+"""ParamValue and Position as the protocol's JSON, to and from pyecore objects, and the text the
+page shows for them.
+
+The display text is the server's, in SceML's one value notation (`params.describe`, with units
+and km/h as the canvas's boxes write them, render/labels.py): the page shows it as it comes and
+keeps only what editing needs (web/src/lib/values.ts).
+"""
 
 from __future__ import annotations
 
@@ -9,6 +15,7 @@ from typing import Any
 import scemlmodel as scm
 
 from ..model import params
+from ..render.labels import Scope, describe_position, describe_value, unit_text
 from .errors import OperationError
 
 #: Every ParamValue type of the protocol, in the order the panels offer them.
@@ -47,6 +54,26 @@ def value_to_json(value: scm.ParameterValue | None) -> dict[str, Any] | None:
         name = value.parameter.name if value.parameter is not None else None
         return {"type": "ref", "parameter": name}
     return {"type": value.eClass.name}
+
+
+def value_text(value: scm.ParameterValue | None, unit: str = "") -> str | None:
+    """What the panel shows for a value, as a box on the canvas writes it (`[6, 10] step 1 m/s`,
+    `8 m/s = 28.8 km/h`, `$speed, default 8 m/s`); None when unset."""
+    return None if value is None else describe_value(value, unit, Scope())
+
+
+def default_text(default: scm.ParameterValue | float | None, unit: str = "") -> str | None:
+    """A default as the panel names it beside an unset value (`8 m/s`, `N(8, 1) m/s`)."""
+    if default is None:
+        return None
+    if isinstance(default, int | float):
+        return params.describe_number(default, unit_text(unit))
+    return params.describe(default, unit_text(unit))
+
+
+def position_text(position: scm.Position | None) -> str | None:
+    """What the panel shows for a position (`road 3 lane 1 s 30 m`); None when unset."""
+    return None if position is None else describe_position(position, Scope())
 
 
 def _number(data: Mapping[str, Any], key: str, *, optional: bool = False) -> float | None:

@@ -28,7 +28,7 @@ from ..render.labels import (
 from ..validation.edits import Change
 from .fields import actor_fields, node_fields, root_fields
 from .ids import Ids
-from .values import value_to_json
+from .values import default_text, value_text, value_to_json
 
 _LOOKS = {
     "RootNode": "root",
@@ -121,6 +121,8 @@ def module_info(use: scm.ModuleUse, folder: Path) -> dict[str, Any]:
                 "unit": str(p.unit or ""),
                 "default": value_to_json(p.default),
                 "override": value_to_json(given.get(p.name)),
+                "defaultText": default_text(p.default, str(p.unit or "")),
+                "text": value_text(given.get(p.name), str(p.unit or "")),
             }
             for p in parameters
         ],

@@ -1,7 +1,7 @@
 """Refusals before mapping: wrong level, invalid model, or something a version cannot express.
 
-The model checks are the validation registry's rules (a subset, run on the flattened scenario);
-only the level and the profile request are the export's own.
+The model checks are the validation registry's rules (those registered with `export=True`, run on
+the flattened scenario); only the level and the profile request are the export's own.
 """
 
 from __future__ import annotations
@@ -22,18 +22,6 @@ from ..validation import REGISTRY, Registry, iter_diagnostics, validate
 
 LEVEL = "SCEML-X001"
 PROFILE = "SCEML-X005"
-
-#: The registry's rules for what a mapping needs beyond a valid graph: a map, start positions,
-#: actors, destinations and positions, and node kinds the version and profile can express.
-EXPORT_RULE_CODES = (
-    "SCEML-A001",
-    "SCEML-A003",
-    "SCEML-E001",
-    "SCEML-E002",
-    "SCEML-E003",
-    "SCEML-E008",
-    "SCEML-P002",
-)
 
 
 def error(code: str, message: str, element: EObject | None = None) -> Diagnostic:
@@ -59,8 +47,10 @@ def _fragment(element: EObject) -> str | None:
 
 @cache
 def export_rules() -> Registry:
-    """The subset of the validation registry an export checks on the flattened scenario."""
-    return REGISTRY.subset(codes=EXPORT_RULE_CODES, severity=Severity.ERROR)
+    """The validation rules an export checks on the flattened scenario: what a mapping needs
+    beyond a valid graph (a map, start positions, actors, destinations and positions, and node
+    kinds the version and profile can express), as each rule declares (`export=True`)."""
+    return REGISTRY.subset(export=True, severity=Severity.ERROR)
 
 
 def level_problems(scenario: scm.Scenario) -> list[Diagnostic]:
@@ -88,7 +78,7 @@ def model_problems(scenario: scm.Scenario) -> list[Diagnostic]:
 
 def expressibility_problems(flat: scm.Scenario, version: str, profile: str) -> list[Diagnostic]:
     """What the mapping needs of a (flattened) scenario: the registry's export rules, run with the
-    chosen version and profile (see `EXPORT_RULES`)."""
+    chosen version and profile (see `export_rules`)."""
     found = iter_diagnostics(
         flat, registry=export_rules(), osc_version=version, osc_profile=profile
     )

@@ -75,13 +75,26 @@ def _number(number: float | None) -> str:
     return f"{number:g}"
 
 
+def describe_number(number: float | None, unit: str = "") -> str:
+    """One number as `describe` writes a single value: `8 m/s`."""
+    return _number(number) + (f" {unit}" if unit else "")
+
+
 def describe(parameter: scm.ParameterValue | None, unit: str = "") -> str:
-    """A short human reading: `8 m/s`, `[5, 10] step 1 m/s`, `N(8, 1) m/s`, `{1, 2}`."""
+    """A short human reading: `8 m/s`, `[5, 10] step 1 m/s`, `N(8, 1) in [6, 10] m/s`, `{1, 2}`,
+    `{1, 2} weights {3, 1}`, `$speed`.
+
+    This is SceML's one compact value notation: the CLI, the review page, the canvas's boxes and
+    the editor's panel (sent as display text with the view, sceml.editor.values) all read it. The
+    page's coordinate inputs read and write the same notation with every digit kept
+    (web/src/lib/values.ts); web/src/lib/__tests__/value-notation.json holds the cases both sides
+    are tested against.
+    """
     suffix = f" {unit}" if unit else ""
     if parameter is None:
         return "default"
     if isinstance(parameter, scm.Value):
-        return _number(parameter.value) + suffix
+        return describe_number(parameter.value, unit)
     if isinstance(parameter, scm.Range):
         step = f" step {_number(parameter.step)}" if parameter.step is not None else ""
         return f"[{_number(parameter.min)}, {_number(parameter.max)}]{step}{suffix}"
@@ -95,7 +108,11 @@ def describe(parameter: scm.ParameterValue | None, unit: str = "") -> str:
         return f"N({mean}, {sd}){bounds}{suffix}"
     if isinstance(parameter, scm.DiscreteDistribution):
         items = ", ".join(_number(option.value) for option in parameter.options)
-        return "{" + items + "}" + suffix
+        weights = [option.weight for option in parameter.options]
+        weighted = ""
+        if any(weight is not None for weight in weights):
+            weighted = " weights {" + ", ".join(_number(weight) for weight in weights) + "}"
+        return "{" + items + "}" + weighted + suffix
     if isinstance(parameter, scm.ParameterRef):
         name = parameter.parameter.name if parameter.parameter is not None else "?"
         return f"${name}"

@@ -14,6 +14,7 @@ from ..maps.resolve import RELATIVE_KINDS, is_relative
 from ..model import catalog
 from ..model.graph import nodes_of
 from .context import Context
+from .reads import ACTORS, SELF, VALUE, Aspect, Reads
 from .registry import Finding, constraint
 
 ERROR, WARNING = Severity.ERROR, Severity.WARNING
@@ -47,6 +48,8 @@ def label(participant: EObject) -> str:
     "ActionNode",
     "every maneuver and condition has a reference actor; a global kind (the parameter, variable "
     "and traffic signal nodes) has none",
+    reads=Reads(SELF),
+    export=True,
 )
 def has_reference_actor(node: scm.ActionNode, context: Context) -> Iterator[Finding]:
     global_kind = not catalog.performed_by_actor(node.eClass.name)
@@ -65,6 +68,8 @@ def has_reference_actor(node: scm.ActionNode, context: Context) -> Iterator[Find
     ERROR,
     "ActionNode",
     "reference and target actors are declared in the scenario (in a module: roles of that module)",
+    # and the graph's declared participants
+    reads=Reads(SELF | ACTORS, Aspect.CAST),
 )
 def actors_declared_here(node: scm.ActionNode, context: Context) -> Iterator[Finding]:
     graph = node.eContainer()
@@ -82,6 +87,8 @@ def actors_declared_here(node: scm.ActionNode, context: Context) -> Iterator[Fin
     "ActionNode",
     "kinds that act relative to another actor (Follow, Approach, Overtake, InVehicleRadius, "
     "TimeToCollision, TimeHeadway) have a target actor",
+    reads=Reads(SELF),
+    export=True,
 )
 def target_actor_where_needed(node: scm.ActionNode, context: Context) -> Iterator[Finding]:
     if catalog.needs_target(node.eClass.name) and node.targetActor is None:
@@ -94,6 +101,8 @@ def target_actor_where_needed(node: scm.ActionNode, context: Context) -> Iterato
     "ActionNode",
     "kinds that do not use a target actor have none (it would be ignored)",
     source="engineer",
+    # the target's name
+    reads=Reads(SELF | ACTORS),
 )
 def target_actor_only_where_used(node: scm.ActionNode, context: Context) -> Iterator[Finding]:
     if not catalog.allows_target(node.eClass.name) and node.targetActor is not None:
@@ -104,13 +113,26 @@ def target_actor_only_where_used(node: scm.ActionNode, context: Context) -> Iter
         )
 
 
-@constraint("SCEML-A005", ERROR, "ActionNode", "the target actor differs from the reference actor")
+@constraint(
+    "SCEML-A005",
+    ERROR,
+    "ActionNode",
+    "the target actor differs from the reference actor",
+    reads=Reads(SELF | ACTORS),
+)
 def target_differs_from_reference(node: scm.ActionNode, context: Context) -> Iterator[Finding]:
     if node.targetActor is not None and node.targetActor is node.referenceActor:
         yield node, f"{node.name!r} targets its own reference actor {label(node.targetActor)}"
 
 
-@constraint("SCEML-A006", ERROR, "RootNode", "every actor has a name, and actor names are unique")
+@constraint(
+    "SCEML-A006",
+    ERROR,
+    "RootNode",
+    "every actor has a name, and actor names are unique",
+    # the root's actors are its contents
+    reads=Reads(SELF),
+)
 def actor_names_unique(root: scm.RootNode, context: Context) -> Iterator[Finding]:
     if not isinstance(root.eContainer(), scm.Scenario):
         return  # SCEML-M010: a root node inside a module is wrong as a whole
@@ -124,7 +146,13 @@ def actor_names_unique(root: scm.RootNode, context: Context) -> Iterator[Finding
             yield actor, f"{counts[actor.name]} actors are named {actor.name!r}"
 
 
-@constraint("SCEML-A007", ERROR, "RootNode", "exactly one actor is the ego")
+@constraint(
+    "SCEML-A007",
+    ERROR,
+    "RootNode",
+    "exactly one actor is the ego",
+    reads=Reads(SELF),
+)
 def exactly_one_ego(root: scm.RootNode, context: Context) -> Iterator[Finding]:
     if not isinstance(root.eContainer(), scm.Scenario):
         return
@@ -142,6 +170,8 @@ def exactly_one_ego(root: scm.RootNode, context: Context) -> Iterator[Finding]:
     RELATIVE_KINDS,
     "a relative position names its entity, an actor of the scenario (in a module: a role); a "
     "relative start names another actor, and relative starts do not name each other in a cycle",
+    # A relative start follows the chain of the other actors' starts.
+    reads=Reads(VALUE, Aspect.CAST | Aspect.POSITIONS | Aspect.ROLES),
 )
 def relative_position_has_an_anchor(position: EObject, context: Context) -> Iterator[Finding]:
     holder = position.eContainer()

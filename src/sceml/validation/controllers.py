@@ -9,6 +9,7 @@ import scemlmodel as scm
 
 from ..diagnostics import Severity
 from .context import Context
+from .reads import SELF, Reads
 from .registry import Finding, constraint
 
 #: Inputs OpenSCENARIO gives as a fraction of their travel (0: released pedal, 1: pressed fully).
@@ -22,6 +23,8 @@ PEDALS = ("throttle", "brake", "clutch", "parkingBrake")
     "a controller (an actor's or an assignment's) has a name, by which players pick it, and "
     "each of its properties a name",
     source="SPEC §2",
+    # the node's or actor's own controller, activation and overrides (contents)
+    reads=Reads(SELF),
 )
 def controller_is_named(
     owner: scm.Actor | scm.AssignController, context: Context
@@ -47,6 +50,8 @@ def controller_is_named(
     "an OverrideController overrides at least one input, each at most once (OpenSCENARIO has one "
     "element per input)",
     source="SPEC §2",
+    # the node's or actor's own controller, activation and overrides (contents)
+    reads=Reads(SELF),
 )
 def override_inputs_once(node: scm.OverrideController, context: Context) -> Iterator[Finding]:
     kinds = Counter(str(o.kind.name) for o in node.overrides)
@@ -63,6 +68,8 @@ def override_inputs_once(node: scm.OverrideController, context: Context) -> Iter
     "OverrideController",
     "an active pedal override (throttle, brake, clutch, parking brake) is between 0 and 1",
     source="SPEC §2",
+    # the node's or actor's own controller, activation and overrides (contents)
+    reads=Reads(SELF),
 )
 def pedal_within_travel(node: scm.OverrideController, context: Context) -> Iterator[Finding]:
     for held in node.overrides:
@@ -77,6 +84,8 @@ def pedal_within_travel(node: scm.OverrideController, context: Context) -> Itera
     "ActivateController",
     "an ActivateController switches at least one domain on or off",
     source="SPEC §2",
+    # the node's or actor's own controller, activation and overrides (contents)
+    reads=Reads(SELF),
 )
 def activation_switches_something(
     node: scm.ActivateController, context: Context

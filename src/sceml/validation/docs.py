@@ -55,6 +55,9 @@ docs/validation-rules.md`. A test fails when it is stale.
   destination of its latest earlier routed maneuver; after a lane change or overtake, any lane of
   the road in the same direction. Turns: more than 30 degrees of heading change through the
   junction's connecting road is a left or right turn, more than 150 degrees a U-turn.
+- **Export.** `sceml export` refuses a model with any error, then runs the rules marked
+  *checked* in the Export column again on the scenario with its module uses expanded, with the
+  chosen OpenSCENARIO version and profile: what the mapping needs beyond a valid graph.
 - **Internal errors.** A rule that fails unexpectedly on a malformed model does not stop the run:
   it becomes a diagnostic with code `{internal}` naming the rule, and all other rules still run.
 - **Older metamodel releases.** A file saved with an earlier release of the metamodel (its nsURI
@@ -65,18 +68,21 @@ docs/validation-rules.md`. A test fails when it is stale.
 
 
 def rules_table(registry: Registry = REGISTRY) -> str:
-    """The Markdown table of every rule: code, severity, applies to, what it checks, source."""
+    """The Markdown table of every rule: code, severity, applies to, what it checks, whether an
+    export checks it on the flattened scenario, source."""
     lines = [
-        "| Code | Severity | Applies to | What it checks | Source |",
-        "| --- | --- | --- | --- | --- |",
+        "| Code | Severity | Applies to | What it checks | Export | Source |",
+        "| --- | --- | --- | --- | --- | --- |",
     ]
     for rule in registry.rules():
         applies = ", ".join(rule.metaclasses)
         if rule.through_modules:
             applies += " (through modules)"
         description = rule.description[0].upper() + rule.description[1:]
+        export = "checked" if rule.export else ""
         lines.append(
-            f"| `{rule.code}` | {rule.severity} | {applies} | {description}. | {rule.source} |"
+            f"| `{rule.code}` | {rule.severity} | {applies} | {description}. | {export} "
+            f"| {rule.source} |"
         )
     return "\n".join(lines) + "\n"
 

@@ -11,13 +11,14 @@ changed (a list of `Change`, as the editor's undo records them), it works out
   the cast, module uses, the scenario's level and map, positions, other parameter values, plain
   attributes (`aspects_of`).
 
-It then re-runs a rule on an object only when `READS` says the rule reads something that changed:
-the object itself and what it contains (SELF), the objects above it (ABOVE), the actors it or its
-node refers to (ACTORS), or one of the aspects (then on every object it applies to). Every other
+It then re-runs a rule on an object only when the rule reads something that changed, as the rule
+declares where it is registered (`constraint(reads=...)`, sceml.validation.reads): the object
+itself and what it contains (SELF), the objects above it (ABOVE), the actors it or its node
+refers to (ACTORS), or one of the aspects (then on every object it applies to). Every other
 finding is taken from the last run, re-located when an index or a name on its way up from the
 model's root changed (fragments, paths and lines depend on them). The findings are put together
 in the full run's order and passed through `unique`, so the result is the same list, in the same
-order, that `validate` gives. A rule missing from `READS` re-runs everywhere, every time.
+order, that `validate` gives. A rule that declares no reads re-runs everywhere, every time.
 
 What the validator cannot see makes the next run a full one: the first run, `forget()` (a file
 was opened or saved, or an edit changed something the change list does not show), a map file
@@ -28,7 +29,6 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass
-from enum import Flag, auto
 
 from pyecore.ecore import EObject
 
@@ -43,162 +43,29 @@ from .context import Context
 from .edits import EVERYTHING, Aspect, Change, Impact, refers_to
 from .engine import Key, locate, objects, run_rule, through_modules, unique
 from .limits import Limits
+from .reads import EXPANSION, Scope
 from .registry import REGISTRY, Registry, Rule
 
 __all__ = [
-    "READS",
     "Aspect",
     "Change",
     "IncrementalValidator",
-    "Reads",
     "RunStats",
-    "Scope",
     "through_modules_reads",
 ]
 
 
-class Scope(Flag):
-    """What a rule reads around the object it runs on."""
-
-    NONE = 0
-    #: The object, everything it contains, its container, and for a node the flows at it, for a
-    #: flow the nodes at its ends (their names and graphs).
-    SELF = auto()
-    #: The objects it lies in, up to its node, actor, use or module parameter: parameter paths
-    #: (`ego.Accelerate_1.targetSpeed`) and "start of actor 'ego'" name them.
-    ABOVE = auto()
-    #: The actors or roles it, its node or its use refers to: their names, kinds, whether declared.
-    ACTORS = auto()
-
-
-@dataclass(frozen=True)
-class Reads:
-    """What one rule reads: around its object (`scope`) and across the model (`aspects`)."""
-
-    scope: Scope = Scope.NONE
-    aspects: Aspect = Aspect.NONE
-
-
-_SELF, _ABOVE, _ACTORS = Scope.SELF, Scope.ABOVE, Scope.ACTORS
-#: A rule on a value or a position: its parameter path names its containers, node and actor.
-_VALUE = _SELF | _ABOVE | _ACTORS
-_SHAPE = Aspect.STRUCTURE | Aspect.NAMES
-#: What expanding a scenario's module uses reads (C001, E003 and M017 look at the expansion).
-_EXPANSION = _SHAPE | Aspect.ROLES | Aspect.CAST | Aspect.MODULES
-#: Where an actor is when a turn or crossing starts: the earlier maneuvers of the same actor
-#: along the flows, their destinations, its start position; and the map.
-_ROUTE = Aspect.STRUCTURE | Aspect.ROLES | Aspect.CAST | Aspect.POSITIONS | Aspect.SETTINGS
-_LEVEL, _MODULES = Aspect.SETTINGS, Aspect.MODULES
-
-#: Every registered rule by what it reads. A test fails when a registered rule is missing here.
-READS: dict[str, Reads] = {
-    # actors.py
-    "SCEML-A001": Reads(_SELF),
-    "SCEML-A002": Reads(_SELF | _ACTORS, Aspect.CAST),  # and the graph's declared participants
-    "SCEML-A003": Reads(_SELF),
-    "SCEML-A004": Reads(_SELF | _ACTORS),  # the target's name
-    "SCEML-A005": Reads(_SELF | _ACTORS),
-    # A relative start follows the chain of the other actors' starts.
-    "SCEML-A008": Reads(_VALUE, Aspect.CAST | Aspect.POSITIONS | Aspect.ROLES),
-    "SCEML-A006": Reads(_SELF),  # the root's actors are its contents
-    "SCEML-A007": Reads(_SELF),
-    # structure.py
-    "SCEML-S001": Reads(aspects=_SHAPE),
-    "SCEML-S002": Reads(aspects=_SHAPE),
-    "SCEML-S003": Reads(_SELF),  # its incoming flows
-    "SCEML-S004": Reads(_SELF),
-    "SCEML-S005": Reads(_SELF),
-    "SCEML-S006": Reads(aspects=_SHAPE),
-    "SCEML-S007": Reads(aspects=_SHAPE),
-    "SCEML-S008": Reads(aspects=_SHAPE),
-    "SCEML-S009": Reads(_SELF),  # its incoming flows, and whether each has a source
-    "SCEML-S010": Reads(_SELF),  # the name of the end it has
-    "SCEML-S011": Reads(_SELF),  # the graphs of its ends
-    "SCEML-S012": Reads(aspects=_SHAPE),
-    "SCEML-S013": Reads(aspects=_SHAPE),
-    "SCEML-S014": Reads(_SELF),
-    # simultaneity.py
-    "SCEML-C001": Reads(aspects=_EXPANSION),
-    # modules.py
-    "SCEML-M001": Reads(_SELF, _MODULES),  # and its definition's roles
-    "SCEML-M002": Reads(_SELF),
-    "SCEML-M003": Reads(_SELF, _MODULES),
-    "SCEML-M004": Reads(_SELF | _ACTORS, _MODULES | Aspect.CAST),
-    "SCEML-M005": Reads(_SELF, _MODULES),
-    "SCEML-M006": Reads(_SELF, _MODULES | _LEVEL),
-    "SCEML-M007": Reads(aspects=_SHAPE | _MODULES),
-    "SCEML-M008": Reads(_SELF),
-    "SCEML-M009": Reads(_SELF),
-    "SCEML-M010": Reads(_SELF),
-    "SCEML-M011": Reads(_SELF),
-    "SCEML-M012": Reads(aspects=_SHAPE | _MODULES),
-    "SCEML-M013": Reads(aspects=_SHAPE | _MODULES),
-    "SCEML-M014": Reads(_SELF),  # a library's modules are its contents
-    "SCEML-M015": Reads(_SELF | _ABOVE | _ACTORS, Aspect.CAST),
-    "SCEML-M016": Reads(aspects=_SHAPE | _MODULES),
-    "SCEML-M017": Reads(aspects=_EXPANSION),
-    # parameters.py
-    "SCEML-P001": Reads(_VALUE, _LEVEL),
-    "SCEML-P002": Reads(_VALUE, _LEVEL),
-    "SCEML-P003": Reads(_VALUE),
-    "SCEML-P004": Reads(_VALUE),
-    "SCEML-P005": Reads(_VALUE),
-    "SCEML-P006": Reads(_VALUE),
-    "SCEML-P007": Reads(_VALUE),
-    "SCEML-P008": Reads(_VALUE, _MODULES),  # its module's parameters
-    # the root's declarations: their names and whether each is a variable
-    "SCEML-P009": Reads(_SELF, Aspect.STRUCTURE | Aspect.ATTRIBUTES),
-    # plausibility.py: the performer's kind
-    "SCEML-L001": Reads(_VALUE),
-    "SCEML-L002": Reads(_VALUE),
-    "SCEML-L003": Reads(_VALUE),
-    # map_rules.py
-    "SCEML-R001": Reads(_SELF, _LEVEL),
-    "SCEML-R002": Reads(_SELF, _LEVEL),
-    "SCEML-R003": Reads(_VALUE, _LEVEL),
-    # A relative start reads the starts of the actors it is placed after.
-    "SCEML-R004": Reads(_VALUE, _LEVEL | Aspect.CAST | Aspect.POSITIONS),
-    "SCEML-R009": Reads(_VALUE, _LEVEL | Aspect.CAST | Aspect.POSITIONS),
-    "SCEML-R005": Reads(_VALUE, _LEVEL | Aspect.CAST),
-    "SCEML-R006": Reads(_VALUE, _ROUTE),
-    "SCEML-R007": Reads(_VALUE, _ROUTE),
-    "SCEML-R008": Reads(_VALUE, _LEVEL),
-    # players.py: the node's speed; the earlier nodes of its actor along the flows (their names
-    # in the message), and for Y003 the actor's initial speed
-    "SCEML-Y001": Reads(_VALUE),
-    "SCEML-Y002": Reads(_SELF | _ACTORS, _SHAPE | Aspect.ROLES),
-    "SCEML-Y003": Reads(_SELF | _ACTORS, _SHAPE | Aspect.ROLES | Aspect.PARAMETERS),
-    # readiness.py
-    "SCEML-E001": Reads(_SELF, _LEVEL),
-    "SCEML-E002": Reads(_SELF, _LEVEL),
-    "SCEML-E003": Reads(aspects=_EXPANSION | _LEVEL),
-    "SCEML-E004": Reads(_SELF),
-    "SCEML-E005": Reads(_SELF),
-    # The node's own measure or controller settings, or the actor's controller, against the
-    # target version.
-    "SCEML-E008": Reads(_SELF),
-    # opaque.py
-    "SCEML-E006": Reads(_SELF),
-    # controllers.py: the node's or actor's own controller, activation and overrides (contents)
-    "SCEML-K001": Reads(_SELF),
-    "SCEML-K002": Reads(_SELF),
-    "SCEML-K003": Reads(_SELF),
-    "SCEML-K004": Reads(_SELF),
-    "SCEML-E007": Reads(_SELF),
-}
-
-
-def through_modules_reads(registry: Registry = REGISTRY, reads: dict[str, Reads] = READS) -> Aspect:
+def through_modules_reads(registry: Registry = REGISTRY) -> Aspect:
     """What the through-modules pass reads: the expansion, and what its rules read there.
 
     Around an expanded copy there is only what the expansion made: copies of module internals
-    (MODULES), bound to the scenario's actors (ROLES, CAST, NAMES). An unclassified rule among
-    them makes the pass read everything.
+    (MODULES), bound to the scenario's actors (ROLES, CAST, NAMES). A rule among them that
+    declares no reads makes the pass read everything.
     """
-    found = _EXPANSION
+    found = EXPANSION
     for rule in registry.rules():
         if rule.through_modules:
-            found |= reads[rule.code].aspects if rule.code in reads else EVERYTHING
+            found |= rule.reads.aspects if rule.reads is not None else EVERYTHING
     return found
 
 
@@ -234,7 +101,6 @@ class IncrementalValidator:
         osc_version: str | None = None,
         osc_profile: str | None = None,
         registry: Registry = REGISTRY,
-        reads: dict[str, Reads] = READS,
     ) -> None:
         self.model = model
         self.document = document
@@ -242,13 +108,12 @@ class IncrementalValidator:
         self.osc_version = osc_version
         self.osc_profile = osc_profile
         self.registry = registry
-        self.reads = reads
         self.stats = RunStats()
-        self._through_reads = through_modules_reads(registry, reads)
+        self._through_reads = through_modules_reads(registry)
         self._through_always = any(
-            rule.through_modules and rule.code not in reads for rule in registry.rules()
+            rule.through_modules and rule.reads is None for rule in registry.rules()
         )
-        self._all_classified = all(rule.code in reads for rule in registry.rules())
+        self._all_classified = all(rule.reads is not None for rule in registry.rules())
         self._results: dict[EObject, _Entry] = {}
         self._through: Findings = ()
         self._pending: list[Change] = []
@@ -336,7 +201,7 @@ class _Pass:
         # Per rule code: (re-run everywhere, on SELF hits, on ABOVE hits, on ACTORS hits).
         self.plan: dict[str, tuple[bool, bool, bool, bool]] = {}
         for rule in validator.registry.rules():
-            reads = validator.reads.get(rule.code)
+            reads = rule.reads
             if reads is None:
                 self.plan[rule.code] = (True, False, False, False)
                 continue

@@ -35,6 +35,7 @@ from ..maps.resolve import RELATIVE_KINDS, is_relative, road_to_lane, start_pose
 from ..maps.routes import routes_from
 from ..model.graph import Flows, OwnFlows, reachable, root_node
 from .context import Context, is_kind, performer
+from .reads import LEVEL, ROUTE, SELF, VALUE, Aspect, Reads
 from .registry import Finding, constraint
 
 if TYPE_CHECKING:
@@ -142,6 +143,7 @@ def _lane_words(lane: LaneCoordinate) -> str:
     "RootNode",
     "a map given as an OpenDRIVE path names a readable OpenDRIVE file",
     source=_SOURCE,
+    reads=Reads(SELF, LEVEL),
 )
 def map_file_is_opendrive(root: scm.RootNode, context: Context) -> Iterator[Finding]:
     reference = _reference(root, context)
@@ -160,6 +162,7 @@ def map_file_is_opendrive(root: scm.RootNode, context: Context) -> Iterator[Find
     "a map given as a simulator town name or a scene graph (3D scenery with no roads) is not "
     "read: positions are not checked against it",
     source=_SOURCE,
+    reads=Reads(SELF, LEVEL),
 )
 def town_is_not_checked(root: scm.RootNode, context: Context) -> Iterator[Finding]:
     reference = _reference(root, context)
@@ -184,6 +187,7 @@ def town_is_not_checked(root: scm.RootNode, context: Context) -> Iterator[Findin
     "within the lane",
     source=_SOURCE,
     through_modules=True,
+    reads=Reads(VALUE, LEVEL),
 )
 def lane_position_exists(position: scm.LanePosition, context: Context) -> Iterator[Finding]:
     road_map = _map_of(position, context)
@@ -205,6 +209,7 @@ def lane_position_exists(position: scm.LanePosition, context: Context) -> Iterat
     "a road position names a road of the map, with s within the road and t on one of its lanes",
     source=_SOURCE,
     through_modules=True,
+    reads=Reads(VALUE, LEVEL),
 )
 def road_position_exists(position: scm.RoadPosition, context: Context) -> Iterator[Finding]:
     road_map = _map_of(position, context)
@@ -266,6 +271,8 @@ def _grounds(position: EObject, road_map: RoadMap, context: Context) -> Iterator
     "pedestrians",
     source=_SOURCE,
     through_modules=True,
+    # A relative start reads the starts of the actors it is placed after.
+    reads=Reads(VALUE, LEVEL | Aspect.CAST | Aspect.POSITIONS),
 )
 def position_fits_actor(position: EObject, context: Context) -> Iterator[Finding]:
     road_map = _map_of(position, context)
@@ -296,6 +303,7 @@ def position_fits_actor(position: EObject, context: Context) -> Iterator[Finding
     "or pull over there but do not normally drive there",
     source=_SOURCE,
     through_modules=True,
+    reads=Reads(VALUE, LEVEL | Aspect.CAST | Aspect.POSITIONS),
 )
 def vehicle_on_the_edge(position: EObject, context: Context) -> Iterator[Finding]:
     road_map = _map_of(position, context)
@@ -341,6 +349,7 @@ def _nearest(road_map: RoadMap, point: Located) -> str:
     "a vehicle's heading roughly follows its lane's direction of traffic (within 45 degrees)",
     source=_SOURCE,
     through_modules=True,
+    reads=Reads(VALUE, LEVEL | Aspect.CAST),
 )
 def heading_follows_lane(position: scm.WorldPosition, context: Context) -> Iterator[Finding]:
     road_map = _map_of(position, context)
@@ -454,6 +463,7 @@ def _lanes_at(road_map: RoadMap, point: Located, usable: frozenset[str]) -> list
     "connections, turning the named way",
     source=_SOURCE,
     through_modules=True,
+    reads=Reads(VALUE, ROUTE),
 )
 def turn_follows_junction(node: scm.RoutedManeuver, context: Context) -> Iterator[Finding]:
     road_map = _map_of(node, context)
@@ -560,6 +570,7 @@ _CROSSING_SAMPLES = 40
     "a Cross destination lies across the road: the way there crosses a driving lane",
     source=_SOURCE,
     through_modules=True,
+    reads=Reads(VALUE, ROUTE),
 )
 def cross_crosses_the_road(node: scm.Cross, context: Context) -> Iterator[Finding]:
     road_map = _map_of(node, context)

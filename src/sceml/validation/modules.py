@@ -14,6 +14,7 @@ from ..model.graph import nodes_of
 from ..model.loading import unresolved_references
 from .actors import declared_participants, label
 from .context import Context, is_kind
+from .reads import ABOVE, ACTORS, EXPANSION, LEVEL, MODULES, SELF, SHAPE, Aspect, Reads
 from .registry import Finding, constraint
 
 ERROR, WARNING, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
@@ -23,7 +24,14 @@ def _bindings_by_role(use: scm.ModuleUse) -> Counter[str]:
     return Counter(str(binding.role) for binding in use.bindings)
 
 
-@constraint("SCEML-M001", ERROR, "ModuleUse", "a use binds every role of its module")
+@constraint(
+    "SCEML-M001",
+    ERROR,
+    "ModuleUse",
+    "a use binds every role of its module",
+    # and its definition's roles
+    reads=Reads(SELF, MODULES),
+)
 def roles_bound(use: scm.ModuleUse, context: Context) -> Iterator[Finding]:
     definition = context.definition_of(use)
     if definition is None:
@@ -34,14 +42,26 @@ def roles_bound(use: scm.ModuleUse, context: Context) -> Iterator[Finding]:
             yield use, f"use {use.name!r} does not bind role {role.name!r} of {definition.name!r}"
 
 
-@constraint("SCEML-M002", ERROR, "ModuleUse", "a use binds each role only once")
+@constraint(
+    "SCEML-M002",
+    ERROR,
+    "ModuleUse",
+    "a use binds each role only once",
+    reads=Reads(SELF),
+)
 def roles_bound_once(use: scm.ModuleUse, context: Context) -> Iterator[Finding]:
     for role, count in _bindings_by_role(use).items():
         if count > 1:
             yield use, f"use {use.name!r} binds role {role!r} {count} times"
 
 
-@constraint("SCEML-M003", ERROR, "ModuleUse", "a use binds only roles its module declares")
+@constraint(
+    "SCEML-M003",
+    ERROR,
+    "ModuleUse",
+    "a use binds only roles its module declares",
+    reads=Reads(SELF, MODULES),
+)
 def bindings_name_roles(use: scm.ModuleUse, context: Context) -> Iterator[Finding]:
     definition = context.definition_of(use)
     if definition is None:
@@ -71,6 +91,7 @@ def _kind_fits(kinds: list[str], allowed: list[str]) -> bool:
     "ModuleUse",
     "the actor bound to a role is of a kind the role allows (TwoWheeler accepts Bicycle and "
     "Motorcycle); an outer role bound to an inner one allows no more than it",
+    reads=Reads(SELF | ACTORS, MODULES | Aspect.CAST),
 )
 def bound_kind_allowed(use: scm.ModuleUse, context: Context) -> Iterator[Finding]:
     definition = context.definition_of(use)
@@ -95,7 +116,13 @@ def bound_kind_allowed(use: scm.ModuleUse, context: Context) -> Iterator[Finding
             )
 
 
-@constraint("SCEML-M005", ERROR, "ModuleUse", "a use overrides only parameters its module declares")
+@constraint(
+    "SCEML-M005",
+    ERROR,
+    "ModuleUse",
+    "a use overrides only parameters its module declares",
+    reads=Reads(SELF, MODULES),
+)
 def overrides_name_parameters(use: scm.ModuleUse, context: Context) -> Iterator[Finding]:
     definition = context.definition_of(use)
     if definition is None:
@@ -116,6 +143,7 @@ def overrides_name_parameters(use: scm.ModuleUse, context: Context) -> Iterator[
     "ModuleUse",
     "in a logical or concrete scenario, a use overrides every module parameter without a default",
     paper_rule="2",
+    reads=Reads(SELF, MODULES | LEVEL),
 )
 def required_parameters_given(use: scm.ModuleUse, context: Context) -> Iterator[Finding]:
     level = context.level_of(use)
@@ -137,6 +165,7 @@ def required_parameters_given(use: scm.ModuleUse, context: Context) -> Iterator[
     ERROR,
     "ModuleDefinition",
     "a module definition has exactly one InPort and one OutPort",
+    reads=Reads(aspects=SHAPE | MODULES),
 )
 def one_port_each(definition: scm.ModuleDefinition, context: Context) -> Iterator[Finding]:
     for kind in (scm.InPort, scm.OutPort):
@@ -149,7 +178,11 @@ def one_port_each(definition: scm.ModuleDefinition, context: Context) -> Iterato
 
 
 @constraint(
-    "SCEML-M008", ERROR, "InPort", "an InPort has no incoming flow and at least one outgoing flow"
+    "SCEML-M008",
+    ERROR,
+    "InPort",
+    "an InPort has no incoming flow and at least one outgoing flow",
+    reads=Reads(SELF),
 )
 def in_port_wired(port: scm.InPort, context: Context) -> Iterator[Finding]:
     if not isinstance(port.eContainer(), scm.ModuleDefinition):
@@ -161,7 +194,11 @@ def in_port_wired(port: scm.InPort, context: Context) -> Iterator[Finding]:
 
 
 @constraint(
-    "SCEML-M009", ERROR, "OutPort", "an OutPort has exactly one incoming flow and no outgoing flow"
+    "SCEML-M009",
+    ERROR,
+    "OutPort",
+    "an OutPort has exactly one incoming flow and no outgoing flow",
+    reads=Reads(SELF),
 )
 def out_port_wired(port: scm.OutPort, context: Context) -> Iterator[Finding]:
     if not isinstance(port.eContainer(), scm.ModuleDefinition):
@@ -175,14 +212,24 @@ def out_port_wired(port: scm.OutPort, context: Context) -> Iterator[Finding]:
 
 
 @constraint(
-    "SCEML-M010", ERROR, ("RootNode", "EndNode"), "a module definition holds no RootNode or EndNode"
+    "SCEML-M010",
+    ERROR,
+    ("RootNode", "EndNode"),
+    "a module definition holds no RootNode or EndNode",
+    reads=Reads(SELF),
 )
 def no_root_or_end_in_module(node: scm.GraphElement, context: Context) -> Iterator[Finding]:
     if isinstance(node.eContainer(), scm.ModuleDefinition):
         yield node, f"{node.eClass.name} {node.name!r} inside a module; use its ports instead"
 
 
-@constraint("SCEML-M011", ERROR, ("InPort", "OutPort"), "a scenario holds no module ports")
+@constraint(
+    "SCEML-M011",
+    ERROR,
+    ("InPort", "OutPort"),
+    "a scenario holds no module ports",
+    reads=Reads(SELF),
+)
 def no_ports_in_scenario(node: scm.GraphElement, context: Context) -> Iterator[Finding]:
     if isinstance(node.eContainer(), scm.Scenario):
         yield node, f"{node.eClass.name} {node.name!r} in a scenario; ports belong to modules"
@@ -194,6 +241,7 @@ def no_ports_in_scenario(node: scm.GraphElement, context: Context) -> Iterator[F
     "ModuleDefinition",
     "a module does not use itself, directly or through other modules",
     source="SPEC §4",
+    reads=Reads(aspects=SHAPE | MODULES),
 )
 def no_recursion(definition: scm.ModuleDefinition, context: Context) -> Iterator[Finding]:
     chain = _path_back_to(definition, context)
@@ -227,6 +275,7 @@ def _path_back_to(
     ERROR,
     ("Scenario", "ModuleDefinition"),
     "every module use refers to a definition, and cross-file references resolve",
+    reads=Reads(aspects=SHAPE | MODULES),
 )
 def references_resolve(graph: scm.Graph, context: Context) -> Iterator[Finding]:
     for use in nodes_of(graph, scm.ModuleUse):
@@ -244,6 +293,8 @@ def references_resolve(graph: scm.Graph, context: Context) -> Iterator[Finding]:
     "Library",
     "module names are unique within a library built in memory (the builder API, the editor); "
     "a library file with two modules of one name is refused when it is read",
+    # a library's modules are its contents
+    reads=Reads(SELF),
 )
 def module_names_unique(library: scm.Library, context: Context) -> Iterator[Finding]:
     counts = Counter(str(module.name) for module in library.modules)
@@ -258,6 +309,7 @@ def module_names_unique(library: scm.Library, context: Context) -> Iterator[Find
     ERROR,
     "RoleBinding",
     "a role is bound to an actor of the scenario (inside a module: to one of its roles)",
+    reads=Reads(SELF | ABOVE | ACTORS, Aspect.CAST),
 )
 def binding_actor_declared(binding: scm.RoleBinding, context: Context) -> Iterator[Finding]:
     use = binding.eContainer()
@@ -279,6 +331,7 @@ def binding_actor_declared(binding: scm.RoleBinding, context: Context) -> Iterat
     ERROR,
     "ModuleDefinition",
     "roles and parameters of a module definition have names, each unique within it",
+    reads=Reads(aspects=SHAPE | MODULES),
 )
 def module_member_names_unique(
     definition: scm.ModuleDefinition, context: Context
@@ -299,6 +352,7 @@ def module_member_names_unique(
     "Scenario",
     "module uses can be expanded; otherwise the checks that look inside them are skipped",
     source="engineer",
+    reads=Reads(aspects=EXPANSION),
 )
 def uses_can_be_expanded(scenario: scm.Scenario, context: Context) -> Iterator[Finding]:
     context.flat()

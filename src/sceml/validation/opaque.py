@@ -11,6 +11,7 @@ import scemlmodel as scm
 from ..diagnostics import Severity
 from ..files.safexml import hardened_parser
 from .context import Context
+from .reads import SELF, Reads
 from .registry import Finding, constraint
 
 #: What an OpaqueAction may hold: one element, the node performs it or waits for it.
@@ -33,6 +34,7 @@ def kept_element(text: str) -> etree._Element | None:
     "OpaqueAction",
     "an opaque node holds one well-formed OpenSCENARIO Action or Condition element",
     source="SPEC §13",
+    reads=Reads(SELF),
 )
 def opaque_holds_one_element(node: scm.OpaqueAction, context: Context) -> Iterator[Finding]:
     if kept_element(str(node.xml or "")) is None:
@@ -51,6 +53,8 @@ def opaque_holds_one_element(node: scm.OpaqueAction, context: Context) -> Iterat
     "OpaqueAction",
     "an opaque node is exported to the OpenSCENARIO version it was read from",
     source="SPEC §13",
+    # the node's or actor's own controller, activation and overrides (contents)
+    reads=Reads(SELF),
 )
 def opaque_keeps_its_version(node: scm.OpaqueAction, context: Context) -> Iterator[Finding]:
     wanted, read = context.osc_version, node.sourceVersion

@@ -14,6 +14,7 @@ from ..model import catalog
 from ..model.graph import root_node
 from ..model.params import describe
 from .context import Context, is_kind
+from .reads import LEVEL, MODULES, SELF, VALUE, Aspect, Reads
 from .registry import Finding, constraint
 
 ERROR = Severity.ERROR
@@ -88,6 +89,7 @@ MODULE_ONLY_KINDS = ("ParameterRef",)
     "a concrete scenario holds single values: no range or distribution",
     paper_rule="2",
     through_modules=True,
+    reads=Reads(VALUE, LEVEL),
 )
 def no_spread_when_concrete(value: EObject, context: Context) -> Iterator[Finding]:
     if context.level_of(value) == "concrete":
@@ -121,6 +123,8 @@ def _missing_parameters(owner: EObject) -> Iterator[str]:
     "(parameters without a language default, destinations, positions, waypoints)",
     paper_rule="2",
     through_modules=True,
+    reads=Reads(VALUE, LEVEL),
+    export=True,
 )
 def required_values_present(owner: EObject, context: Context) -> Iterator[Finding]:
     level = context.level_of(owner)
@@ -130,13 +134,27 @@ def required_values_present(owner: EObject, context: Context) -> Iterator[Findin
         yield owner, f"{parameter_path(owner, name)} is missing; a {level} scenario needs it"
 
 
-@constraint("SCEML-P003", ERROR, "Range", "a range has min <= max", paper_rule="2")
+@constraint(
+    "SCEML-P003",
+    ERROR,
+    "Range",
+    "a range has min <= max",
+    paper_rule="2",
+    reads=Reads(VALUE),
+)
 def range_bounds_ordered(value: scm.Range, context: Context) -> Iterator[Finding]:
     if value.min is not None and value.max is not None and value.min > value.max:
         yield value, f"{parameter_path(value)}: range min {value.min:g} is above max {value.max:g}"
 
 
-@constraint("SCEML-P004", ERROR, "Range", "a range's step, if given, is above zero", paper_rule="2")
+@constraint(
+    "SCEML-P004",
+    ERROR,
+    "Range",
+    "a range's step, if given, is above zero",
+    paper_rule="2",
+    reads=Reads(VALUE),
+)
 def range_step_positive(value: scm.Range, context: Context) -> Iterator[Finding]:
     if value.step is not None and not value.step > 0:
         yield value, f"{parameter_path(value)}: range step {value.step:g} must be above zero"
@@ -149,6 +167,7 @@ def range_step_positive(value: scm.Range, context: Context) -> Iterator[Finding]
     "a uniform distribution has min <= max; a normal one has standard deviation >= 0 and "
     "lower bound <= upper bound",
     paper_rule="2",
+    reads=Reads(VALUE),
 )
 def continuous_distribution_well_formed(value: EObject, context: Context) -> Iterator[Finding]:
     where = parameter_path(value)
@@ -170,6 +189,7 @@ def continuous_distribution_well_formed(value: EObject, context: Context) -> Ite
     "DiscreteDistribution",
     "a discrete distribution has at least one option, no negative weight, and not all weights zero",
     paper_rule="2",
+    reads=Reads(VALUE),
 )
 def discrete_distribution_well_formed(
     value: scm.DiscreteDistribution, context: Context
@@ -194,6 +214,7 @@ def discrete_distribution_well_formed(
     "time, gap and dimensions above zero; speeds and lane s at least zero",
     paper_rule="2",
     through_modules=True,
+    reads=Reads(VALUE),
 )
 def values_physically_meaningful(value: EObject, context: Context) -> Iterator[Finding]:
     feature, owner = value.eContainmentFeature(), value.eContainer()
@@ -216,6 +237,8 @@ def values_physically_meaningful(value: EObject, context: Context) -> Iterator[F
     ERROR,
     MODULE_ONLY_KINDS,
     "a parameter reference sits inside a module definition and names one of its parameters",
+    # its module's parameters
+    reads=Reads(VALUE, MODULES),
 )
 def parameter_ref_in_its_module(ref: scm.ParameterRef, context: Context) -> Iterator[Finding]:
     module = ref.eContainer()
@@ -242,6 +265,8 @@ _NAMING = {
     tuple(_NAMING),
     "a parameter or variable node names one the root declares (RootNode.declarations); an "
     "empty name, as CARLA's criteria write, is left alone",
+    # the root's declarations: their names and whether each is a variable
+    reads=Reads(SELF, Aspect.STRUCTURE | Aspect.ATTRIBUTES),
 )
 def global_value_declared(node: scm.ActionNode, context: Context) -> Iterator[Finding]:
     feature, variable = _NAMING[node.eClass.name]

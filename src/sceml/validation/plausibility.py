@@ -19,6 +19,7 @@ from ..model import catalog
 from ..model.params import describe
 from .context import Context, performer
 from .parameters import parameter_path
+from .reads import VALUE, Reads
 from .registry import Finding, constraint
 
 ERROR = Severity.ERROR
@@ -70,6 +71,8 @@ def _over_limit(owner: EObject, context: Context, key: str, unit: str) -> Iterat
     "max_speed",
     paper_rule="5",
     through_modules=True,
+    # the performer's kind
+    reads=Reads(VALUE),
 )
 def speed_fits_actor(owner: EObject, context: Context) -> Iterator[Finding]:
     yield from _over_limit(owner, context, "max_speed", "m/s")
@@ -82,6 +85,8 @@ def speed_fits_actor(owner: EObject, context: Context) -> Iterator[Finding]:
     "acceleration rates do not exceed the actor kind's max_acceleration",
     paper_rule="5",
     through_modules=True,
+    # the performer's kind
+    reads=Reads(VALUE),
 )
 def acceleration_fits_actor(owner: EObject, context: Context) -> Iterator[Finding]:
     yield from _over_limit(owner, context, "max_acceleration", "m/s2")
@@ -94,6 +99,8 @@ def acceleration_fits_actor(owner: EObject, context: Context) -> Iterator[Findin
     "deceleration rates (Decelerate, Stop) do not exceed the actor kind's max_deceleration",
     paper_rule="5",
     through_modules=True,
+    # the performer's kind
+    reads=Reads(VALUE),
 )
 def deceleration_fits_actor(owner: EObject, context: Context) -> Iterator[Finding]:
     yield from _over_limit(owner, context, "max_deceleration", "m/s2")

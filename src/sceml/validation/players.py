@@ -17,6 +17,7 @@ from ..diagnostics import Severity
 from ..model.graph import reachable
 from ..model.params import is_single_value
 from .context import Context
+from .reads import ACTORS, SELF, SHAPE, VALUE, Aspect, Reads
 from .registry import Finding, constraint
 
 _ROUTED = ("TurnLeft", "TurnRight", "Cross", "FollowTrajectory")
@@ -46,6 +47,8 @@ def _earlier_of_same_actor(node: scm.ActionNode) -> Iterator[scm.ActionNode]:
     "it starts, which never comes at 0 m/s (use Stop, or a condition, to wait)",
     source=_SOURCE,
     through_modules=True,
+    # the node's speed
+    reads=Reads(VALUE),
 )
 def drive_distance_moves(node: scm.DriveDistance, context: Context) -> Iterator[Finding]:
     if _single(node.speed) == 0.0:
@@ -62,6 +65,8 @@ def drive_distance_moves(node: scm.DriveDistance, context: Context) -> Iterator[
     "longer be on it; use FollowTrajectory through the junction instead",
     source=_SOURCE,
     through_modules=True,
+    # the earlier nodes of its actor along the flows (their names in the message)
+    reads=Reads(SELF | ACTORS, SHAPE | Aspect.ROLES),
 )
 def turn_starts_from_the_start(node: scm.RoutedManeuver, context: Context) -> Iterator[Finding]:
     earlier = sorted(
@@ -82,6 +87,8 @@ def turn_starts_from_the_start(node: scm.RoutedManeuver, context: Context) -> It
     "for the carla profile, a DriveDistance's actor has not moved before it: scenario_runner "
     "counts the distance from the act's start, so what was driven before counts too",
     source=_SOURCE,
+    # the earlier nodes of its actor along the flows, and the actor's initial speed
+    reads=Reads(SELF | ACTORS, SHAPE | Aspect.ROLES | Aspect.PARAMETERS),
 )
 def carla_drive_distance_from_rest(node: scm.DriveDistance, context: Context) -> Iterator[Finding]:
     if context.osc_profile != "carla":

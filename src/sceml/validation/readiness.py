@@ -20,6 +20,7 @@ import scemlmodel as scm
 from ..diagnostics import Severity
 from ..xosc.support import default_version, unsupported_reason, unsupported_setting
 from .context import Context
+from .reads import EXPANSION, LEVEL, SELF, Reads
 from .registry import Finding, constraint
 
 ERROR = Severity.ERROR
@@ -34,7 +35,14 @@ def is_time_of_day(text: str) -> bool:
     return TIME_OF_DAY.fullmatch(text) is not None
 
 
-@constraint("SCEML-E001", ERROR, "RootNode", "a logical or concrete scenario names its map")
+@constraint(
+    "SCEML-E001",
+    ERROR,
+    "RootNode",
+    "a logical or concrete scenario names its map",
+    reads=Reads(SELF, LEVEL),
+    export=True,
+)
 def map_is_set(root: scm.RootNode, context: Context) -> Iterator[Finding]:
     level = context.level_of(root)
     if level in _EXECUTABLE and not (root.map or "").strip():
@@ -46,6 +54,8 @@ def map_is_set(root: scm.RootNode, context: Context) -> Iterator[Finding]:
     ERROR,
     "Actor",
     "in a logical or concrete scenario every actor has a start position",
+    reads=Reads(SELF, LEVEL),
+    export=True,
 )
 def actor_has_start(actor: scm.Actor, context: Context) -> Iterator[Finding]:
     level = context.level_of(actor)
@@ -58,6 +68,7 @@ def actor_has_start(actor: scm.Actor, context: Context) -> Iterator[Finding]:
     ERROR,
     "Environment",
     "the time of day is HH:MM:SS, from 00:00:00 to 23:59:59",
+    reads=Reads(SELF),
 )
 def time_of_day_is_valid(environment: scm.Environment, context: Context) -> Iterator[Finding]:
     text = environment.timeOfDay
@@ -79,6 +90,7 @@ def is_iso_date(text: str) -> bool:
     ERROR,
     "RootNode",
     "the root node's date, when given, is an ISO 8601 date and time (e.g. 2026-01-01T12:00:00)",
+    reads=Reads(SELF),
 )
 def date_is_iso(root: scm.RootNode, context: Context) -> Iterator[Finding]:
     text = root.date
@@ -103,6 +115,8 @@ def _used_kinds(scenario: scm.Scenario, context: Context) -> dict[str, EObject]:
     "Scenario",
     "with a target OpenSCENARIO version or export profile given, every node kind used can be "
     "exported to it",
+    reads=Reads(aspects=EXPANSION | LEVEL),
+    export=True,
 )
 def kinds_exportable(scenario: scm.Scenario, context: Context) -> Iterator[Finding]:
     if context.osc_version is None and context.osc_profile is None:
@@ -125,6 +139,10 @@ def kinds_exportable(scenario: scm.Scenario, context: Context) -> Iterator[Findi
     "with a target OpenSCENARIO version or export profile given, every node's and actor's "
     "settings can be said in it (1.0 has no relativeDistanceType or coordinateSystem, no "
     "assignment that activates; before 1.2 no lighting or animation domain, no controllerType)",
+    # The node's own measure or controller settings, or the actor's controller, against the
+    # target version.
+    reads=Reads(SELF),
+    export=True,
 )
 def settings_exportable(node: EObject, context: Context) -> Iterator[Finding]:
     if context.osc_version is None and context.osc_profile is None:

@@ -2,7 +2,8 @@
 
 A rule is a plain function `check(obj, context)` that yields `(element, message)` pairs, one per
 violation. The decorator gives it a stable code, a severity, the metaclass it applies to (and so to
-every subclass) and a one-line description for docs/validation-rules.md.
+every subclass) and a one-line description for docs/validation-rules.md; and, stated once here
+beside the rule, what it reads (for incremental validation) and whether an export checks it.
 """
 
 from __future__ import annotations
@@ -14,6 +15,7 @@ from typing import TYPE_CHECKING, Any, TypeAlias
 from pyecore.ecore import EClass, EObject
 
 from ..diagnostics import Severity
+from .reads import Reads
 
 if TYPE_CHECKING:
     from .context import Context
@@ -28,6 +30,9 @@ class Rule:
 
     `through_modules` rules also run on the nodes a module use expands to (on the flattened
     scenario), because only there do module parameters have the values a use gives them.
+    `reads` says what the rule reads (sceml.validation.reads); None makes incremental validation
+    re-run it everywhere, every time. `export` rules are what an export checks on the flattened
+    scenario beyond a valid graph (sceml.export.checks).
     """
 
     code: str
@@ -37,6 +42,8 @@ class Rule:
     source: str
     check: Check = field(compare=False, repr=False)
     through_modules: bool = False
+    reads: Reads | None = None
+    export: bool = False
 
     @property
     def name(self) -> str:
@@ -71,16 +78,19 @@ class Registry:
         *,
         codes: Iterable[str] = (),
         families: Iterable[str] = (),
+        export: bool = False,
         severity: Severity = Severity.INFO,
     ) -> Registry:
-        """A registry of some of these rules: those named in `codes` or whose code starts with one
-        of `families` (e.g. `SCEML-P`), at `severity` or above; the rules are the same objects."""
+        """A registry of some of these rules: those named in `codes`, whose code starts with one
+        of `families` (e.g. `SCEML-P`), or (with `export`) that an export checks; at `severity`
+        or above. The rules are the same objects."""
         wanted, prefixes = set(codes), tuple(families)
         chosen = Registry()
         for rule in self.rules():
-            if (
-                rule.code in wanted or rule.code.startswith(prefixes)
-            ) and rule.severity >= severity:
+            picked = (
+                rule.code in wanted or rule.code.startswith(prefixes) or (export and rule.export)
+            )
+            if picked and rule.severity >= severity:
                 chosen.register(rule)
         return chosen
 
@@ -103,6 +113,8 @@ class Registry:
         paper_rule: str | None = None,
         source: str | None = None,
         through_modules: bool = False,
+        reads: Reads | None = None,
+        export: bool = False,
     ) -> Callable[[Check], Check]:
         """Register the decorated function as a constraint; see `Rule`."""
         metaclasses = (metaclass,) if isinstance(metaclass, str) else metaclass
@@ -110,7 +122,17 @@ class Registry:
 
         def decorate(check: Check) -> Check:
             self.register(
-                Rule(code, severity, metaclasses, description, origin, check, through_modules)
+                Rule(
+                    code,
+                    severity,
+                    metaclasses,
+                    description,
+                    origin,
+                    check,
+                    through_modules=through_modules,
+                    reads=reads,
+                    export=export,
+                )
             )
             return check
 
@@ -130,6 +152,8 @@ def constraint(
     paper_rule: str | None = None,
     source: str | None = None,
     through_modules: bool = False,
+    reads: Reads | None = None,
+    export: bool = False,
 ) -> Callable[[Check], Check]:
     """Register a constraint in the package registry (see `Registry.constraint`)."""
     return REGISTRY.constraint(
@@ -140,6 +164,8 @@ def constraint(
         paper_rule=paper_rule,
         source=source,
         through_modules=through_modules,
+        reads=reads,
+        export=export,
     )
 
 

@@ -27,6 +27,7 @@ import scemlmodel as scm
 from ..diagnostics import Severity
 from ..model import catalog
 from .context import Context
+from .reads import EXPANSION, Reads
 from .registry import Finding, constraint
 
 _CATEGORIES = {
@@ -138,6 +139,7 @@ def _combine(node: EObject, inputs: list[int]) -> int:
     "JoinOneFinished orders only if all of the join's branches are ordered. Module uses are "
     "checked expanded",
     paper_rule="4",
+    reads=Reads(aspects=EXPANSION),
 )
 def no_simultaneous_maneuvers(graph: scm.Graph, context: Context) -> Iterator[Finding]:
     if isinstance(graph, scm.ModuleDefinition) and not isinstance(context.root, scm.Library):

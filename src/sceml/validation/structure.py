@@ -10,6 +10,7 @@ import scemlmodel as scm
 from ..diagnostics import Severity
 from ..model.graph import nodes_of, topological_order
 from .context import Context
+from .reads import SELF, SHAPE, Reads
 from .registry import Finding, constraint
 
 ERROR, WARNING = Severity.ERROR, Severity.WARNING
@@ -21,7 +22,14 @@ def _names(nodes: list[scm.GraphElement]) -> str:
     return shown + (f" and {len(nodes) - 5} more" if len(nodes) > 5 else "")
 
 
-@constraint("SCEML-S001", ERROR, "Scenario", "a scenario has exactly one RootNode", source=PAPER)
+@constraint(
+    "SCEML-S001",
+    ERROR,
+    "Scenario",
+    "a scenario has exactly one RootNode",
+    source=PAPER,
+    reads=Reads(aspects=SHAPE),
+)
 def one_root_node(scenario: scm.Scenario, context: Context) -> Iterator[Finding]:
     roots = nodes_of(scenario, scm.RootNode)
     if not roots:
@@ -30,7 +38,14 @@ def one_root_node(scenario: scm.Scenario, context: Context) -> Iterator[Finding]
         yield extra, f"second RootNode {extra.name!r}: a scenario has exactly one"
 
 
-@constraint("SCEML-S002", ERROR, "Scenario", "a scenario has exactly one EndNode", source=PAPER)
+@constraint(
+    "SCEML-S002",
+    ERROR,
+    "Scenario",
+    "a scenario has exactly one EndNode",
+    source=PAPER,
+    reads=Reads(aspects=SHAPE),
+)
 def one_end_node(scenario: scm.Scenario, context: Context) -> Iterator[Finding]:
     ends = nodes_of(scenario, scm.EndNode)
     if not ends:
@@ -39,7 +54,15 @@ def one_end_node(scenario: scm.Scenario, context: Context) -> Iterator[Finding]:
         yield extra, f"second EndNode {extra.name!r}: a scenario has exactly one"
 
 
-@constraint("SCEML-S003", ERROR, "RootNode", "the root node has no incoming flow", paper_rule="1")
+@constraint(
+    "SCEML-S003",
+    ERROR,
+    "RootNode",
+    "the root node has no incoming flow",
+    paper_rule="1",
+    # its incoming flows
+    reads=Reads(SELF),
+)
 def root_has_no_input(root: scm.RootNode, context: Context) -> Iterator[Finding]:
     if len(root.incoming):
         yield root, f"root node {root.name!r} has {len(root.incoming)} incoming flow(s)"
@@ -51,6 +74,7 @@ def root_has_no_input(root: scm.RootNode, context: Context) -> Iterator[Finding]
     "JoiningPolicy",
     "a join has at least two incoming flows",
     paper_rule="3",
+    reads=Reads(SELF),
 )
 def join_has_two_inputs(join: scm.JoiningPolicy, context: Context) -> Iterator[Finding]:
     count = len(join.incoming)
@@ -58,7 +82,14 @@ def join_has_two_inputs(join: scm.JoiningPolicy, context: Context) -> Iterator[F
         yield join, f"join {join.name!r} has {count} incoming flow(s); a join needs at least two"
 
 
-@constraint("SCEML-S005", ERROR, "EndNode", "the end node has no outgoing flow", paper_rule="1")
+@constraint(
+    "SCEML-S005",
+    ERROR,
+    "EndNode",
+    "the end node has no outgoing flow",
+    paper_rule="1",
+    reads=Reads(SELF),
+)
 def end_has_no_output(end: scm.EndNode, context: Context) -> Iterator[Finding]:
     if len(end.outgoing):
         yield end, f"end node {end.name!r} has {len(end.outgoing)} outgoing flow(s)"
@@ -96,6 +127,7 @@ def _reached(
     "Graph",
     "every node is reachable from the root node (in a module: the InPort)",
     source=PAPER,
+    reads=Reads(aspects=SHAPE),
 )
 def nodes_reachable_from_start(graph: scm.Graph, context: Context) -> Iterator[Finding]:
     starts, _ = _starts_and_ends(graph)
@@ -114,6 +146,7 @@ def nodes_reachable_from_start(graph: scm.Graph, context: Context) -> Iterator[F
     "Graph",
     "every node reaches the end node (in a module: the OutPort)",
     source=PAPER,
+    reads=Reads(aspects=SHAPE),
 )
 def nodes_reach_the_end(graph: scm.Graph, context: Context) -> Iterator[Finding]:
     _, ends = _starts_and_ends(graph)
@@ -126,7 +159,13 @@ def nodes_reach_the_end(graph: scm.Graph, context: Context) -> Iterator[Finding]
             yield node, f"node {node.name!r} has no path to {end}"
 
 
-@constraint("SCEML-S008", ERROR, "Graph", "the flows form no cycle")
+@constraint(
+    "SCEML-S008",
+    ERROR,
+    "Graph",
+    "the flows form no cycle",
+    reads=Reads(aspects=SHAPE),
+)
 def no_cycles(graph: scm.Graph, context: Context) -> Iterator[Finding]:
     _, left = topological_order(graph)
     if not left:
@@ -151,6 +190,8 @@ def no_cycles(graph: scm.Graph, context: Context) -> Iterator[Finding]:
     ERROR,
     ("ActionNode", "ModuleUse"),
     "only joins and the end node merge flows: other nodes have at most one incoming flow",
+    # its incoming flows, and whether each has a source
+    reads=Reads(SELF),
 )
 def merges_only_at_joins(node: scm.GraphElement, context: Context) -> Iterator[Finding]:
     count = sum(1 for flow in node.incoming if flow.source is not None)
@@ -162,7 +203,14 @@ def merges_only_at_joins(node: scm.GraphElement, context: Context) -> Iterator[F
         )
 
 
-@constraint("SCEML-S010", ERROR, "Flow", "a flow has both a source and a target")
+@constraint(
+    "SCEML-S010",
+    ERROR,
+    "Flow",
+    "a flow has both a source and a target",
+    # the name of the end it has
+    reads=Reads(SELF),
+)
 def flow_has_both_ends(flow: scm.Flow, context: Context) -> Iterator[Finding]:
     missing = [end for end in ("source", "target") if flow.eGet(end) is None]
     if missing:
@@ -171,7 +219,14 @@ def flow_has_both_ends(flow: scm.Flow, context: Context) -> Iterator[Finding]:
         yield flow, f"dangling flow: it has no {' and no '.join(missing)}{near}"
 
 
-@constraint("SCEML-S011", ERROR, "Flow", "a flow joins two nodes of its own graph")
+@constraint(
+    "SCEML-S011",
+    ERROR,
+    "Flow",
+    "a flow joins two nodes of its own graph",
+    # the graphs of its ends
+    reads=Reads(SELF),
+)
 def flow_stays_in_its_graph(flow: scm.Flow, context: Context) -> Iterator[Finding]:
     graph = flow.eContainer()
     for end in ("source", "target"):
@@ -181,7 +236,12 @@ def flow_stays_in_its_graph(flow: scm.Flow, context: Context) -> Iterator[Findin
 
 
 @constraint(
-    "SCEML-S012", WARNING, "Graph", "no two flows join the same pair of nodes", source="engineer"
+    "SCEML-S012",
+    WARNING,
+    "Graph",
+    "no two flows join the same pair of nodes",
+    source="engineer",
+    reads=Reads(aspects=SHAPE),
 )
 def no_duplicate_flows(graph: scm.Graph, context: Context) -> Iterator[Finding]:
     seen: set[tuple[object, object]] = set()
@@ -203,6 +263,7 @@ def no_duplicate_flows(graph: scm.Graph, context: Context) -> Iterator[Finding]:
     "Graph",
     "node names are present and unique within a graph",
     source="engineer",
+    reads=Reads(aspects=SHAPE),
 )
 def node_names_unique(graph: scm.Graph, context: Context) -> Iterator[Finding]:
     counts = Counter(node.name for node in graph.nodes)
@@ -221,6 +282,7 @@ def node_names_unique(graph: scm.Graph, context: Context) -> Iterator[Finding]:
     "ActionNode",
     "a node runs at least once, and more than once only if it is a maneuver players repeat",
     source="engineer",
+    reads=Reads(SELF),
 )
 def runs_are_possible(node: scm.ActionNode, context: Context) -> Iterator[Finding]:
     from ..xosc.support import repeatable  # the export's planners agree on which kinds can

@@ -2,7 +2,7 @@
 // they stand for; the protocol's types are those of docs/editor-protocol.md.
 
 import type { Position } from "../types";
-import { formatParam, parseParam } from "./values";
+import { editText, parseParam } from "./values";
 
 export type PositionType = "none" | Position["type"];
 
@@ -55,7 +55,7 @@ export function positionDraft(value: Position | null): PositionDraft {
   const inputs: Record<string, string> = {};
   for (const input of POSITION_INPUTS[value.type]) {
     const held = fields[input.key];
-    if (input.kind === "parameter") inputs[input.key] = formatParam((held ?? null) as Parameters<typeof formatParam>[0]);
+    if (input.kind === "parameter") inputs[input.key] = editText((held ?? null) as Parameters<typeof editText>[0]);
     else inputs[input.key] = held === null || held === undefined ? "" : String(held);
   }
   return { type: value.type, inputs };

@@ -1,5 +1,7 @@
 // Turning what the user types into the protocol's ParamValue, and back. Only syntax: whether a
-// value is allowed (units, ranges, the level) is the server's call.
+// value is allowed (units, ranges, the level) is the server's call, and so is the text a value
+// is shown as (the view's `text` fields). The one text written here is an input's: a coordinate
+// in SceML's value notation with every digit kept, so that editing it loses nothing.
 
 import type { ParamType, ParamValue } from "../types";
 
@@ -86,7 +88,7 @@ export function numberProblem(text: string | undefined): string | null {
   return null;
 }
 
-/** Why a coordinate's text (a number or a compact distribution, see formatParam) cannot be
+/** Why a coordinate's text (a number or a compact distribution, see editText) cannot be
  * used, or null. */
 export function paramTextProblem(text: string | undefined): string | null {
   const trimmed = (text ?? "").trim();
@@ -180,9 +182,14 @@ export function switchKind(draft: Draft, type: ParamType | "unset"): Draft {
 }
 
 const list = (values: number[]) => values.join(", ");
+/** A bound of a normal distribution: `?` where it is open, as the server writes it. */
+const bound = (value: number | null): string => (value === null ? "?" : String(value));
 
-/** A compact one-line text for a value, as used by position coordinates: 8, [5, 10] step 1, U(5, 10), N(8, 1), {5, 8}, $speed. */
-export function formatParam(value: ParamValue | null): string {
+/** A coordinate input's text: SceML's value notation (the server's `params.describe`, e.g. 8,
+ * [5, 10] step 1, U(5, 10), N(8, 1) in [6, 10], {5, 8} weights {1, 2}, $speed), with every digit
+ * of each number where the server's display text rounds to six. The cases both sides are tested
+ * against: __tests__/value-notation.json. */
+export function editText(value: ParamValue | null): string {
   if (value === null) return "";
   switch (value.type) {
     case "value":
@@ -194,7 +201,7 @@ export function formatParam(value: ParamValue | null): string {
     case "normal":
       return (
         `N(${value.mean}, ${value.sd})` +
-        (value.min === null && value.max === null ? "" : ` in [${num(value.min)}, ${num(value.max)}]`)
+        (value.min === null && value.max === null ? "" : ` in [${bound(value.min)}, ${bound(value.max)}]`)
       );
     case "discrete":
       return `{${list(value.values)}}` + (value.weights ? ` weights {${list(value.weights)}}` : "");
@@ -204,9 +211,10 @@ export function formatParam(value: ParamValue | null): string {
 }
 
 const NUMBER = String.raw`\s*(-?[\d.eE+-]+)\s*`;
-const OPTIONAL = String.raw`\s*(-?[\d.eE+-]*)\s*`;
+// A bound may be left open: empty, or `?` as the notation writes it.
+const OPTIONAL = String.raw`\s*(\?|-?[\d.eE+-]*)\s*`;
 
-/** Parse formatParam's text: null when empty, undefined when it cannot be read. */
+/** Parse editText's text: null when empty, undefined when it cannot be read. */
 export function parseParam(text: string): ParamValue | null | undefined {
   const t = text.trim();
   if (t === "") return null;
@@ -218,8 +226,8 @@ export function parseParam(text: string): ParamValue | null | undefined {
   if (m) return checked({ type: "uniform", min: Number(m[1]), max: Number(m[2]) });
   m = new RegExp(String.raw`^N\(${NUMBER},${NUMBER}\)(?:\s*in\s*\[${OPTIONAL},${OPTIONAL}\])?$`, "i").exec(t);
   if (m) {
-    const bound = (s: string | undefined) => (s ? Number(s) : null);
-    return checked({ type: "normal", mean: Number(m[1]), sd: Number(m[2]), min: bound(m[3]), max: bound(m[4]) });
+    const given = (s: string | undefined) => (s && s !== "?" ? Number(s) : null);
+    return checked({ type: "normal", mean: Number(m[1]), sd: Number(m[2]), min: given(m[3]), max: given(m[4]) });
   }
   m = /^\{([^}]*)\}(?:\s*weights\s*\{([^}]*)\})?$/i.exec(t);
   if (m) {
@@ -236,23 +244,4 @@ export function parseParam(text: string): ParamValue | null | undefined {
 function checked(value: ParamValue): ParamValue | undefined {
   const numbers = Object.values(value).filter((item): item is number => typeof item === "number");
   return numbers.every(Number.isFinite) ? value : undefined;
-}
-
-/** km/h text for a speed in m/s, as a hint beside the input. */
-export function kmhText(value: ParamValue | null): string {
-  const k = (mps: number) => `${Math.round(mps * 36) / 10}`;
-  if (value === null) return "";
-  switch (value.type) {
-    case "value":
-      return `${k(value.value)} km/h`;
-    case "range":
-    case "uniform":
-      return `${k(value.min)}–${k(value.max)} km/h`;
-    case "normal":
-      return `mean ${k(value.mean)} km/h`;
-    case "discrete":
-      return `{${value.values.map(k).join(", ")}} km/h`;
-    case "ref":
-      return "";
-  }
 }

@@ -68,16 +68,16 @@ export function FieldControl({ field, context, onSend }: Props) {
           value={field.value}
           valueTypes={context.valueTypes}
           unit={field.unit}
-          defaultValue={field.default}
-          kmh={field.kmh}
+          text={field.text}
+          defaultText={field.defaultText}
           disabled={disabled}
           onCommit={(value) => onSend(field, value)}
         />
       );
     case "position":
-      return <PositionEditor label={label} value={field.value} disabled={disabled} onCommit={(value) => onSend(field, value)} />;
+      return <PositionEditor label={label} value={field.value} text={field.text} disabled={disabled} onCommit={(value) => onSend(field, value)} />;
     case "positions":
-      return <WaypointsEditor label={label} value={field.value ?? []} disabled={disabled} onCommit={(value) => onSend(field, value)} />;
+      return <WaypointsEditor label={label} value={field.value ?? []} texts={field.texts} disabled={disabled} onCommit={(value) => onSend(field, value)} />;
   }
 }
 

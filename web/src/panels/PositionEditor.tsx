@@ -20,6 +20,8 @@ import { CommitInput, LabelledSelect } from "./inputs";
 interface Props {
   label: string;
   value: Position | null;
+  /** The server's display text of `value` (`road 3 lane 1 s 30 m`). */
+  text?: string | null;
   disabled: boolean;
   onCommit: (value: Position | null) => void;
   /** Offer "none" (a required position still may be unset while editing). */
@@ -39,7 +41,7 @@ function coordinateProblem(input: PositionInput, text: string | undefined): stri
 
 const TYPES = Object.keys(POSITION_LABELS).filter((type) => type !== "none") as Exclude<PositionType, "none">[];
 
-export function PositionEditor({ label, value, disabled, onCommit, allowNone = true }: Props) {
+export function PositionEditor({ label, value, text, disabled, onCommit, allowNone = true }: Props) {
   const [draft, setDraft] = useState<PositionDraft>(() => positionDraft(value));
   const [seen, setSeen] = useState(value);
   if (!sameJson(value, seen)) {
@@ -77,11 +79,12 @@ export function PositionEditor({ label, value, disabled, onCommit, allowNone = t
               placeholder={input.required ? undefined : "optional"}
               invalid={result === undefined && input.required && !(draft.inputs[input.key] ?? "").trim()}
               problem={coordinateProblem(input, draft.inputs[input.key])}
-              onCommit={(text) => update({ ...draft, inputs: { ...draft.inputs, [input.key]: text } })}
+              onCommit={(typed) => update({ ...draft, inputs: { ...draft.inputs, [input.key]: typed } })}
             />
           ))}
         </div>
       )}
+      {text && sameJson(result, value) ? <div className="hint value-text">{text}</div> : null}
       {result === undefined && <div className="hint incomplete">Fill in the required coordinates to send it.</div>}
     </fieldset>
   );
@@ -90,12 +93,14 @@ export function PositionEditor({ label, value, disabled, onCommit, allowNone = t
 interface WaypointsProps {
   label: string;
   value: Position[];
+  /** The server's display text of each position. */
+  texts?: (string | null)[];
   disabled: boolean;
   onCommit: (value: Position[]) => void;
 }
 
 /** A list of positions with add and remove; every change sends the whole list. */
-export function WaypointsEditor({ label, value, disabled, onCommit }: WaypointsProps) {
+export function WaypointsEditor({ label, value, texts, disabled, onCommit }: WaypointsProps) {
   const [adding, setAdding] = useState(false);
   return (
     <fieldset className="waypoints">
@@ -107,6 +112,7 @@ export function WaypointsEditor({ label, value, disabled, onCommit }: WaypointsP
             <PositionEditor
               label={`${label} ${index + 1}`}
               value={position}
+              text={texts?.[index]}
               disabled={disabled}
               allowNone={false}
               onCommit={(next) => next && onCommit(value.map((old, i) => (i === index ? next : old)))}

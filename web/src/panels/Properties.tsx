@@ -99,7 +99,8 @@ function ModuleUse({ view, node, context, send, openDefinition }: { view: View; 
           value={parameter.override}
           valueTypes={view.valueTypes}
           unit={parameter.unit}
-          defaultValue={parameter.default}
+          text={parameter.text}
+          defaultText={parameter.defaultText}
           disabled={context.disabled}
           onCommit={(value) => send({ op: "set_override", node: node.id, parameter: parameter.name, value })}
         />

@@ -1,6 +1,11 @@
 import { describe, expect, it } from "vitest";
-import { draftOf, formatParam, numberListProblem, numberProblem, paramTextProblem, parseParam, switchKind, valueOfDraft } from "../values";
+import { draftOf, editText, numberListProblem, numberProblem, paramTextProblem, parseParam, switchKind, valueOfDraft } from "../values";
 import type { ParamValue } from "../../types";
+import notation from "./value-notation.json";
+
+// The case table tests/editor/test_value_notation.py reads too: the server's notation, as the
+// coordinate inputs write and read it.
+const notationCases = notation.cases.map((item) => ({ value: item.value as ParamValue, edit: item.edit }));
 
 const samples: ParamValue[] = [
   { type: "value", value: 8 },
@@ -61,7 +66,16 @@ describe("parameter drafts", () => {
 
 describe("compact parameter text", () => {
   it.each(samples)("round-trips %j", (value) => {
-    expect(parseParam(formatParam(value))).toEqual(value);
+    expect(parseParam(editText(value))).toEqual(value);
+  });
+
+  it.each(notationCases)("writes $edit as the case table says, and reads it back", ({ value, edit }) => {
+    expect(editText(value)).toBe(edit);
+    expect(parseParam(edit)).toEqual(value);
+  });
+
+  it("reads an open bound left empty as well as written ?", () => {
+    expect(parseParam("N(8, 1) in [6, ]")).toEqual({ type: "normal", mean: 8, sd: 1, min: 6, max: null });
   });
 
   it("reads empty as null and nonsense as undefined", () => {

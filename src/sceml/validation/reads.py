@@ -1,0 +1,68 @@
+"""What a rule reads, as each rule declares it where it is registered (`constraint(reads=...)`).
+
+Incremental validation (sceml.validation.incremental) re-runs a rule on an object only when
+something the rule reads changed: the object itself and what it contains (SELF), the objects
+above it (ABOVE), the actors it or its node refers to (ACTORS), or one of the model-wide
+`Aspect`s (then on every object it applies to). A rule that declares nothing re-runs everywhere,
+every time: slow, never wrong.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import Flag, auto
+
+from .edits import Aspect
+
+__all__ = [
+    "ABOVE",
+    "ACTORS",
+    "EXPANSION",
+    "LEVEL",
+    "MODULES",
+    "ROUTE",
+    "SELF",
+    "SHAPE",
+    "VALUE",
+    "Aspect",
+    "Reads",
+    "Scope",
+]
+
+
+class Scope(Flag):
+    """What a rule reads around the object it runs on."""
+
+    NONE = 0
+    #: The object, everything it contains, its container, and for a node the flows at it, for a
+    #: flow the nodes at its ends (their names and graphs).
+    SELF = auto()
+    #: The objects it lies in, up to its node, actor, use or module parameter: parameter paths
+    #: (`ego.Accelerate_1.targetSpeed`) and "start of actor 'ego'" name them.
+    ABOVE = auto()
+    #: The actors or roles it, its node or its use refers to: their names, kinds, whether declared.
+    ACTORS = auto()
+
+
+@dataclass(frozen=True)
+class Reads:
+    """What one rule reads: around its object (`scope`) and across the model (`aspects`)."""
+
+    scope: Scope = Scope.NONE
+    aspects: Aspect = Aspect.NONE
+
+
+# Shorthands the rule modules use in their declarations.
+SELF, ABOVE, ACTORS = Scope.SELF, Scope.ABOVE, Scope.ACTORS
+#: A rule on a value or a position: its parameter path names its containers, node and actor.
+VALUE = SELF | ABOVE | ACTORS
+#: The graph's shape: its nodes and flows, and their names.
+SHAPE = Aspect.STRUCTURE | Aspect.NAMES
+#: What expanding a scenario's module uses reads (C001, E003 and M017 look at the expansion).
+EXPANSION = SHAPE | Aspect.ROLES | Aspect.CAST | Aspect.MODULES
+#: Where an actor is when a turn or crossing starts: the earlier maneuvers of the same actor
+#: along the flows, their destinations, its start position; and the map.
+ROUTE = Aspect.STRUCTURE | Aspect.ROLES | Aspect.CAST | Aspect.POSITIONS | Aspect.SETTINGS
+#: The scenario's level and map (held by the root node).
+LEVEL = Aspect.SETTINGS
+MODULES = Aspect.MODULES
