@@ -37,15 +37,43 @@ def speed_events(
     drive (a constrained least-squares fit); one from standing may still fit as a jump, which
     `within_limits` makes a step.
     """
-    step = motion.step
-    window = max(5, int(round(thresholds.smoothing_window / step)) | 1)
+    window = max(5, int(round(thresholds.smoothing_window / motion.step)) | 1)
     acceleration = savgol_filter(
-        motion.speed, min(window, len(motion.speed) // 2 * 2 - 1), 2, deriv=1, delta=step
+        motion.speed, min(window, len(motion.speed) // 2 * 2 - 1), 2, deriv=1, delta=motion.step
     )
     changing = np.abs(acceleration) > thresholds.accel_threshold
-    spans = _runs(changing, gap=max(1, int(0.5 / step)))
-    events = []
-    bounds = [0, *[k for span in spans for k in span], len(motion.times) - 1]
+    spans = _runs(changing, gap=max(1, int(0.5 / motion.step)))
+    # On a noisy recording the smoothed speed crosses the threshold here and there by chance,
+    # and each such run cut the plateaus of its neighbours short: a real change near the start
+    # was fitted over a second or two and missed. So the runs are fitted again, bounded only
+    # by those that came out as changes, until that set no longer changes (a clean recording
+    # has no such runs and is fitted once).
+    kept = list(range(len(spans)))
+    for _ in range(_REFITS):
+        found = _fit_spans(motion, thresholds, limits, spans, kept)
+        now = sorted(found)
+        if now == kept:
+            break
+        kept = now
+    return [found[i] for i in sorted(found)]
+
+
+#: How many times at most the runs are fitted again with the bounds of those that held.
+_REFITS = 4
+
+
+def _fit_spans(
+    motion: Motion,
+    thresholds: Thresholds,
+    limits: RateLimits | None,
+    spans: list[tuple[int, int]],
+    bounding: list[int],
+) -> dict[int, Event]:
+    """Each run of `spans` fitted as a speed change, between its neighbours among `bounding`
+    (indices into spans); the runs that are changes, by index."""
+    step = motion.step
+    last = len(motion.times) - 1
+    events: dict[int, Event] = {}
     # The plateaus either side weigh in up to this many samples: enough to pin v0 and v1.
     margin = int(6.0 / step)
     edge = len(motion.times) - max(1, int(thresholds.smoothing_window / step))
@@ -53,7 +81,9 @@ def speed_events(
         if a >= edge:
             continue  # a change that shows only in the smoothing's last window: its edge
         b = min(b, edge)
-        before, after = max(bounds[2 * i], a - margin), min(bounds[2 * i + 3], b + margin)
+        previous = max((spans[j][1] for j in bounding if j < i), default=0)
+        following = min((spans[j][0] for j in bounding if j > i), default=last)
+        before, after = max(previous, a - margin), min(following, b + margin)
         fitted = _fit_ramp(
             motion.times,
             motion.along,
@@ -79,7 +109,7 @@ def speed_events(
             continue  # slowing down from the start of an actor that stands: the filter's edge
         event = _event(motion.name, t1, t2, v0, v1, thresholds)
         event.start_range = starts
-        events.append(event)
+        events[i] = event
     return events
 
 
