@@ -390,3 +390,31 @@ def _fit_step(event: Event, motion: Motion, until: float) -> None:
 
 def _target(event: Event) -> float:
     return float(str(event.parameters.get("targetSpeed", 0.0)))
+
+
+def end_by_crossings(events: list[Event]) -> None:
+    """On a noisy recording, let a speed change that a crossing follows end by its bend.
+
+    A short change of a slow actor (a pedestrian setting off: 1.5 m/s in under a second)
+    pins its midpoint, but the noise leaves its length open (`Event.start_range`), and the
+    fit leans to a longer, gentler ramp than was driven (the smoothed path rounds the bend
+    of the crossing that follows, which shortens the distance driven just after the ramp).
+    The replay starts the crossing only once the change has finished, so the walker turned
+    late, a metre off. The walker did turn where the bend was seen, so the change had
+    finished by then: only starts whose ramp (same midpoint and target) ends by the bend
+    are kept, and a fitted start before them is moved to the first.
+    """
+    ordered = sorted(events, key=lambda e: e.start)
+    for event, following in zip(ordered, ordered[1:], strict=False):
+        if following.kind != "Cross" or event.start_range is None:
+            continue
+        if not event.longitudinal or event.kind == "DriveDistance":
+            continue
+        middle = (event.start + event.end) / 2
+        earliest = 2 * middle - following.start
+        low, high = event.start_range
+        if following.start <= middle or earliest > high or earliest <= low:
+            continue
+        event.start_range = (earliest, high)
+        if event.start < earliest:
+            event.retime(earliest)
