@@ -96,6 +96,10 @@ def _fit_spans(
             # actor's start is an event of its own, whose time a condition may explain.
             thresholds.smoothing_window if motion.moving[0] else 0.0,
             limits,
+            # An actor that stands at the start stands until its first change: its speed
+            # before it is 0, not a parameter (noise made a slow creep of it, and the start
+            # of the ramp late).
+            standing=not motion.moving[0] and not any(j < i for j in bounding),
         )
         if fitted is None:
             continue
@@ -155,6 +159,8 @@ def _fit_ramp(
     step: float,
     anchor: float,
     limits: RateLimits | None = None,
+    *,
+    standing: bool = False,
 ) -> tuple[float, float, float, float, tuple[float, float] | None] | None:
     """Least-squares fit of the distance driven over [before, after]: speed v0 until t1, a
     linear change to v1 at t2, then v1; and on a noisy recording the range of starts that
@@ -173,11 +179,13 @@ def _fit_ramp(
     reach = (max(b - a, 4) + 6) * step
     starts = np.arange(max(times[before], times[a] - reach), min(times[a] + reach, times[b]), step)
     ends = np.arange(max(times[a], times[b] - reach), min(times[b] + reach, times[after]), step)
-    coarse = _best_ramp(window, values, starts, ends, limits)
+    coarse = _best_ramp(window, values, starts, ends, limits, standing=standing)
     if coarse is None:
         return None
     fine = np.arange(-step, step + 1e-9, step / 4)
-    refined = _best_ramp(window, values, coarse[0] + fine, coarse[1] + fine, limits)
+    refined = _best_ramp(
+        window, values, coarse[0] + fine, coarse[1] + fine, limits, standing=standing
+    )
     t1, t2, v0, v1, error = refined or coarse
     variance = error / max(len(window) - 5, 1)
     if _steady_error(window, values) - error <= _SIGNIFICANT * variance:
@@ -191,7 +199,7 @@ def _fit_ramp(
         if anchored is not None and anchored[4] - error <= 6 * variance:
             t1, t2, v0, v1, error = anchored
             return t1, t2, max(v0, 0.0), max(v1, 0.0), None
-    starts_range = _start_range(window, values, t1, t2, step, error, variance)
+    starts_range = _start_range(window, values, t1, t2, step, error, variance, standing)
     return t1, t2, max(v0, 0.0), max(v1, 0.0), starts_range
 
 
@@ -204,7 +212,14 @@ _CLEAN_VARIANCE = 1e-4
 
 
 def _start_range(
-    window: Array, values: Array, t1: float, t2: float, step: float, error: float, variance: float
+    window: Array,
+    values: Array,
+    t1: float,
+    t2: float,
+    step: float,
+    error: float,
+    variance: float,
+    standing: bool = False,
 ) -> tuple[float, float] | None:
     """The earliest and latest start of ramps with the midpoint of (t1, t2) that fit as well
     as the best (squared `error`) within the noise's `variance`: how well the noise lets the
@@ -216,7 +231,13 @@ def _start_range(
     starts = np.arange(max(window[0], middle - 4.0), middle - step / 4, step / 4)
     kept = []
     for start in starts:
-        fitted = _best_ramp(window, values, np.array([start]), np.array([2 * middle - start]))
+        fitted = _best_ramp(
+            window,
+            values,
+            np.array([start]),
+            np.array([2 * middle - start]),
+            standing=standing,
+        )
         if fitted is not None and fitted[4] <= bound:
             kept.append(float(start))
     if not kept:
@@ -237,10 +258,17 @@ def _steady_error(window: Array, values: Array) -> float:
 
 
 def _best_ramp(
-    window: Array, values: Array, starts: Array, ends: Array, limits: RateLimits | None = None
+    window: Array,
+    values: Array,
+    starts: Array,
+    ends: Array,
+    limits: RateLimits | None = None,
+    *,
+    standing: bool = False,
 ) -> tuple[float, float, float, float, float] | None:
     """The (t1, t2, v0, v1, squared error) of the candidate pairs that fits `values` best;
-    with `limits`, of those a moving actor can drive (when there are any)."""
+    with `limits`, of those a moving actor can drive (when there are any); `standing`: with
+    v0 = 0 (its column is zero, so the regularised solution gives it 0)."""
     t1, t2 = (grid.ravel() for grid in np.meshgrid(starts, ends, indexing="ij"))
     keep = (t2 > t1 + 1e-9) & (t1 >= window[0]) & (t2 <= window[-1])
     t1, t2 = t1[keep], t2[keep]
@@ -248,7 +276,8 @@ def _best_ramp(
         return None
     ramp = _ramp_integral(window[None, :], t1[:, None], t2[:, None])
     base = np.broadcast_to(window - window[0], ramp.shape)
-    design = np.stack([np.ones_like(ramp), base - ramp, ramp], axis=2)
+    before = np.zeros_like(ramp) if standing else base - ramp
+    design = np.stack([np.ones_like(ramp), before, ramp], axis=2)
     normal = np.einsum("pni,pnj->pij", design, design)
     right = np.einsum("pni,n->pi", design, values)
     solution = np.linalg.solve(normal + 1e-9 * np.eye(3), right[..., None])[..., 0]
