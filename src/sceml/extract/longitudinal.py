@@ -77,6 +77,7 @@ def _fit_spans(
     # The plateaus either side weigh in up to this many samples: enough to pin v0 and v1.
     margin = int(6.0 / step)
     edge = len(motion.times) - max(1, int(thresholds.smoothing_window / step))
+    half = max(5, int(round(thresholds.smoothing_window / step)) | 1) // 2
     for i, (a, b) in enumerate(spans):
         if a >= edge:
             continue  # a change that shows only in the smoothing's last window: its edge
@@ -96,10 +97,10 @@ def _fit_spans(
             # actor's start is an event of its own, whose time a condition may explain.
             thresholds.smoothing_window if motion.moving[0] else 0.0,
             limits,
-            # An actor that stands at the start stands until its first change: its speed
-            # before it is 0, not a parameter (noise made a slow creep of it, and the start
-            # of the ramp late).
-            standing=not motion.moving[0] and not any(j < i for j in bounding),
+            # An actor that stood before the change (no motion shows in the plateau before
+            # it, short of the half window by which the chord shows a start early) starts
+            # from 0: not a parameter (noise made a slow creep of it, and the ramp late).
+            standing=not motion.moving[before : max(before + 1, a - half)].any(),
         )
         if fitted is None:
             continue
