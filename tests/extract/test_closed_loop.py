@@ -120,33 +120,53 @@ def noisy_runs(run: Run, seeds: int) -> Iterator[Extraction]:
         yield extracted(run, noise=0.1, every=2, seed=seed)
 
 
-def test_noisy_recordings_of_uis1_mostly_come_back_whole() -> None:
-    # Under noise a speed change below 1 m/s may be seen or missed by chance: not compared.
-    # The figures over 100 samples are in docs/extract.md; this guards them on 8 fixed seeds.
-    scenario, run = original(EXAMPLES / "uis1-concrete.xmi")
+def noisy_outcome(scenario: scm.Scenario, found: Extraction, run: Run) -> str:
+    """What a noisy extraction came back as: "whole" (the same maneuvers and waits, and a
+    replay within 1 m), else what went wrong first ("maneuvers", "waits", "replay").
+    Speed changes below 1 m/s may be seen or missed by chance under noise: not compared."""
     expected = signature(scenario, run, min_change=1.0)
-    whole = [
-        signature(found.scenario, found.replay.run, min_change=1.0) == expected  # type: ignore[union-attr]
-        and replays_closely(found)
-        for found in noisy_runs(run, 8)
-    ]
-    assert sum(whole) >= 7, whole
+    shown = signature(found.scenario, found.replay.run, min_change=1.0)  # type: ignore[union-attr]
+    if shown.maneuvers != expected.maneuvers:
+        return "maneuvers"
+    if shown != expected:
+        return "waits"
+    return "whole" if replays_closely(found) else "replay"
 
 
-def test_noisy_recordings_of_uis2_come_back_with_their_maneuvers_and_waits() -> None:
-    # 7 of 8 (the code before this guard: 6, one of them 86 m off, its car waiting for a
-    # speed the ego never reached in the scenario); the car's jump now replays as a step, so
-    # most stay within 1 m without the bound of a ramp at the limit.
-    scenario, run = original(EXAMPLES / "uis2-concrete.xmi")
-    expected = signature(scenario, run, min_change=1.0)
-    found = list(noisy_runs(run, 8))
-    same = [
-        signature(f.scenario, f.replay.run, min_change=1.0) == expected  # type: ignore[union-attr]
-        for f in found
+@pytest.mark.parametrize("name", ["uis1-concrete.xmi", "uis2-concrete.xmi"])
+def test_noisy_recordings_of_the_intersection_examples_come_back_whole(name: str) -> None:
+    # 8 fixed seeds, each asserted. The code before issue 30's noise round: UIS1 8 of 8,
+    # UIS2 5 of 8 (seeds 3, 4 and 7 replayed 1.10, 1.05 and 1.57 m off).
+    scenario, run = original(EXAMPLES / name)
+    outcomes = [noisy_outcome(scenario, found, run) for found in noisy_runs(run, 8)]
+    assert outcomes == ["whole"] * 8
+
+
+#: The outcome of each of the first 12 samples of the logical scenarios (seed 7, as the
+#: benchmark), each recorded at 10 Hz with 0.1 m of noise (seed: the sample's index).
+#: Looked into by hand: UIS1's sample 9 is a bike that sets off at 0.05 s, whose ramp is
+#: fitted from 0.0 s at 1.32 m/s² rather than 1.5 (1.04 m off at its end); UIS2's 5 and 10
+#: are pedestrians whose short ramp (0 to 1.9 m/s in 1 s) the noise lets fit gentler, so
+#: their crossing starts a few tenths late (1.04 m); UIS2's 7 is the car, whose step follows
+#: the ego reaching a place, a step late at 10 m/s (1.22 m).
+NOISY_SAMPLES = {
+    "uis1-logical.xmi": ["whole"] * 9 + ["replay"] + ["whole"] * 2,
+    "uis2-logical.xmi": ["whole"] * 5
+    + ["replay", "whole", "replay", "whole", "whole"]
+    + ["replay", "whole"],
+}
+
+
+@pytest.mark.parametrize("name", sorted(NOISY_SAMPLES))
+def test_noisy_recordings_of_sampled_scenarios_come_back_as_each_did(name: str) -> None:
+    # Before this round (the same samples and seeds): UIS1 whole in 7 of 12 (samples 5 and
+    # 11 with a wait the scenario did not have, 0, 2 and 9 replayed 1.01-1.06 m off), UIS2
+    # in 9 of 12 (samples 6, 7 and 10 replayed 1.10-1.31 m off).
+    outcomes = [
+        noisy_outcome(scenario, extracted(run, noise=0.1, every=2, seed=index), run)
+        for index, scenario, run in samples(name, 12, seed=7)
     ]
-    assert sum(same) >= 7, same
-    close = [f.replay is not None and f.replay.largest < 1.0 for f in found]
-    assert sum(close) >= 5, [f.replay.largest for f in found if f.replay is not None]
+    assert outcomes == NOISY_SAMPLES[name]
 
 
 def test_noisy_recordings_keep_the_maneuvers_of_overtaking() -> None:

@@ -13,6 +13,8 @@ from conftest import REPO
 import scemlmodel as scm
 from sceml.diagnostics import Severity
 from sceml.extract import Recording, Track, extract
+from sceml.extract.events import Event
+from sceml.extract.longitudinal import end_by_crossings
 from sceml.maps import load_map
 from sceml.simulate import DEFAULT_STEP
 from sceml.validation import validate
@@ -200,3 +202,40 @@ def test_a_noisy_bike_that_sets_off_straight_does_not_cross() -> None:
     for seed in range(8):
         (actor,) = extract(Recording((noisy(bike, seed),), "by hand"), check_replay=False).actors
         assert [e.kind for e in actor.maneuvers] == ["Accelerate"], seed
+
+
+def test_a_noisy_bike_that_sets_off_at_once_ramps_from_standing() -> None:
+    # A bike stands for 0.1 s, then +1.5 m/s² to 4.5 m/s (until 3.1 s), 10 Hz, 0.1 m of noise.
+    # Fitted with a free starting speed, the noise made a slow creep of the first moments
+    # and the ramp started up to half a second late; it stood, so it ramps from 0.
+    t = times(8.0)
+    bike = straight("bike", t, 0.0, 0.0, math.pi / 2, ramp_distance(t, 0.0, 0.1, 3.1, 4.5))
+    bike = Track(bike.name, bike.times, bike.x, bike.y, bike.heading, kind="Bicycle")
+    for seed in range(8):
+        (actor,) = extract(Recording((noisy(bike, seed),), "by hand"), check_replay=False).actors
+        (event,) = actor.maneuvers
+        assert (event.kind, event.from_speed) == ("Accelerate", 0.0), seed
+        assert event.start == pytest.approx(0.1, abs=0.3), seed
+        assert event.parameters["rate"] == pytest.approx(1.5, abs=0.2), seed
+
+
+def test_a_walker_s_ramp_that_a_crossing_follows_ends_by_its_bend() -> None:
+    # A noisy fit: 0 to 1.5 m/s from 7.0 to 9.0 s (midpoint 8.0), its start anywhere in
+    # 6.8-7.8 s as far as the noise tells. The crossing bent at 8.6 s, so the ramp ended by
+    # then: it starts at 2 x 8.0 - 8.6 = 7.4 s at the earliest, at 1.5 / 1.2 = 1.25 m/s².
+    def walk() -> list[Event]:
+        ramp = Event("Accelerate", "walker", 7.0, 9.0, {"targetSpeed": 1.5, "rate": 0.75})
+        ramp.from_speed, ramp.start_range = 0.0, (6.8, 7.8)
+        return [ramp, Event("Cross", "walker", 8.6, 8.6)]
+
+    events = walk()
+    end_by_crossings(events)
+    ramp = events[0]
+    assert (ramp.start, ramp.end) == pytest.approx((7.4, 8.6))
+    assert ramp.parameters["rate"] == pytest.approx(1.25)
+    assert ramp.start_range == pytest.approx((7.4, 7.8))
+    # A bend after the ramp's fitted end says nothing new: it stays as fitted.
+    events = walk()
+    events[1].start = events[1].end = 9.5
+    end_by_crossings(events)
+    assert (events[0].start, events[0].end, events[0].start_range) == (7.0, 9.0, (6.8, 7.8))

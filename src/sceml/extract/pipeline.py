@@ -19,7 +19,13 @@ from .actors import ActorSpec, actor_kind, start_position
 from .assemble import Inferred, add_actor_graph
 from .events import Event
 from .lateral import path_events
-from .longitudinal import RateLimits, drive_distances, speed_events, within_limits
+from .longitudinal import (
+    RateLimits,
+    drive_distances,
+    end_by_crossings,
+    speed_events,
+    within_limits,
+)
 from .motion import Motion, sample_step, smooth
 from .recording import Recording, Track
 from .replay import ReplayFit, replay
@@ -159,6 +165,7 @@ def _actor(
     )
     events = sorted(speeds + path_events(motion, kind, thresholds, road_map), key=lambda e: e.start)
     drive_distances(events, motion)
+    end_by_crossings(events)
     speed = _initial_speed(motion, events, thresholds.standing_speed)
     length = spec.length if spec and spec.length else track.length
     width = spec.width if spec and spec.width else track.width
