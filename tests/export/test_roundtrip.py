@@ -51,7 +51,7 @@ def read_groups(trigger: etree._Element, finishes: dict[str, str], owns: set[str
             assert finishes[node] == ref, f"{ref} is not the finish event of {node}"
             waited.add(node)
         for clock in group.iter("SimulationTimeCondition"):
-            waited.add(ROOT if clock.get("value") == "0.0" else "LIMIT")
+            waited.add(ROOT if float(clock.get("value", "0")) <= 0 else "LIMIT")
         groups.append(frozenset(waited))
     return sorted(groups, key=sorted)
 

@@ -5,8 +5,10 @@ A player sees an event's completion in the step after it completes, so a node th
 some nodes without an event of their own: their condition goes into the StartTrigger (or the
 StopTrigger) of their only successor, ANDed with what activates them, so that the successor
 starts in the step the condition holds. A flow *out of* such an *inlined* node costs no step.
-The export, the preview, the run checker and the comparison all ask this module which nodes
-are inlined, so that they keep step with each other.
+The root's finish is written the same way (`SimulationTime >= 0`, true at t = 0), so a flow
+out of the root costs no step either. The export, the preview, the run checker and the
+comparison all ask this module which nodes are inlined, so that they keep step with each
+other.
 
 Inlining must not change what the graph means (SPEC §3): a condition finishes at the first
 instant after its activation at which it holds, and stays finished. Written into a trigger it
@@ -85,6 +87,11 @@ def is_passing(node: scm.GraphElement) -> bool:
 
 
 def flow_steps(source: scm.GraphElement, inline: set[scm.GraphElement]) -> int:
-    """How many time steps a flow out of `source` costs: none out of an inlined node (its
-    successor's trigger holds its condition), else `meaning.FLOW_DELAY_STEPS`."""
-    return 0 if source in inline else FLOW_DELAY_STEPS
+    """How many time steps a flow out of `source` costs: none out of the root (its finish is
+    written as `SimulationTime >= 0`, which holds at t = 0, so what follows it starts at
+    t = 0 as SPEC §3 has it and as an original's `>= 0` trigger or Init action does) and none
+    out of an inlined node (its successor's trigger holds its condition), else
+    `meaning.FLOW_DELAY_STEPS`."""
+    if source in inline or isinstance(source, scm.RootNode):
+        return 0
+    return FLOW_DELAY_STEPS
