@@ -18,10 +18,10 @@ from lxml import etree
 
 import scemlmodel as scm
 
+from ..xosc.meaning import PLAYER_STEP
 from . import traced
 from .conditions import condition_after
 from .context import Build
-from ..xosc.meaning import PLAYER_STEP
 from .positions import number
 
 #: Finds the node of a StoryboardElementStateCondition (it may import the element first).
