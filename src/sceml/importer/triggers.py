@@ -79,7 +79,7 @@ class Trigger:
                 # The clock counts from the run's start, but it is evaluated only once the
                 # act runs, and its delay counts from when it is first seen to hold: it waits
                 # for whichever of the two is later (both when the act's start is not known).
-                seconds = _first_holds(clock)
+                seconds = first_holds(clock)
                 if self._started_by(seconds):
                     group.after.append((self._clock(seconds), delay))
                 elif self.started_at is not None:
@@ -235,7 +235,7 @@ class Trigger:
         return self.timed(node, delay, f"{wanted}_delay", "TimeElapsed", self.actor, share=True)
 
 
-def _first_holds(clock: etree._Element) -> float:
+def first_holds(clock: etree._Element) -> float:
     """When a SimulationTimeCondition (`>` or `>=`) first holds: `>= v` at v, `> v` a step
     after v (`xosc.meaning.PLAYER_STEP`)."""
     seconds = number(clock, "value")
@@ -257,7 +257,7 @@ def clock_start(trigger: etree._Element | None) -> float | None:
     if clock.get("rule") not in ("greaterThan", "greaterOrEqual"):
         return None
     delay = number(conditions[0], "delay", 0.0) if conditions[0].get("delay") else 0.0
-    return max(_first_holds(clock), 0.0) + delay
+    return max(first_holds(clock), 0.0) + delay
 
 
 def _distinct(nodes: list[scm.GraphElement]) -> list[scm.GraphElement]:
