@@ -652,3 +652,49 @@ def test_a_story_relative_target_speed_gives_the_speed_of_a_later_lane_change(
     # step after it starts as a change over a distance is, are 2.95 * 30 = 88.5 m.
     assert lane_change.distance.value == pytest.approx(88.5)
     assert guessed(imported, "relative target speed taken as 30 m/s")
+
+
+def test_a_continuous_init_relative_speed_gives_the_speed_of_a_later_lane_change(
+    tmp_path: Path,
+) -> None:
+    # As `lane_change_crest`: the Ego's Init speed is 1.3 times the Lead's, continuously (kept
+    # as an Init action: SceML has no field for it), and its 2 s lane change is measured at
+    # that speed, not left at LaneChange's default 30 m.
+    lead = (
+        '<Private entityRef="Lead"><PrivateAction><TeleportAction><Position>'
+        '<LanePosition roadId="1" laneId="-1" s="80" offset="0"/></Position></TeleportAction>'
+        "</PrivateAction><PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics "
+        'dynamicsShape="step" value="0" dynamicsDimension="time"/><SpeedActionTarget>'
+        '<AbsoluteTargetSpeed value="15"/></SpeedActionTarget></SpeedAction>'
+        "</LongitudinalAction></PrivateAction></Private>"
+    )
+    ego = (
+        '<Private entityRef="Ego"><PrivateAction><TeleportAction><Position>'
+        f"{EGO_START}</Position></TeleportAction></PrivateAction><PrivateAction>"
+        '<LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="step" value="0" '
+        'dynamicsDimension="time"/><SpeedActionTarget><RelativeTargetSpeed entityRef="Lead" '
+        'value="1.3" speedTargetValueType="factor" continuous="true"/></SpeedActionTarget>'
+        "</SpeedAction></LongitudinalAction></PrivateAction></Private>"
+    )
+    change = (
+        '<Event name="Change" priority="overwrite"><Action name="ChangeAction"><PrivateAction>'
+        '<LateralAction><LaneChangeAction><LaneChangeActionDynamics dynamicsShape="cubic" '
+        'value="2" dynamicsDimension="time"/><LaneChangeTarget><RelativeTargetLane '
+        'entityRef="Lead" value="0"/></LaneChangeTarget></LaneChangeAction></LateralAction>'
+        '</PrivateAction></Action><StartTrigger><ConditionGroup><Condition name="ChangeWhen" '
+        f'delay="0" conditionEdge="none"><ByValueCondition>{AT_START}</ByValueCondition>'
+        "</Condition></ConditionGroup></StartTrigger></Event>"
+    )
+    path = scenario(
+        tmp_path,
+        entities=f'<ScenarioObject name="Lead">{CAR}</ScenarioObject>'
+        f'<ScenarioObject name="Ego">{CAR}</ScenarioObject>',
+        init=lead + ego,
+        maneuvers=f'<Maneuver name="M">{change}</Maneuver>',
+    )
+    imported = import_file(path)
+    lane_change = next(n for n in imported.scenario.nodes if isinstance(n, scm.LaneChange))
+    # 1.3 * 15 = 19.5 m/s over 2 s less the step a change over a distance starts later:
+    # 19.5 * 1.95 = 38.025 m.
+    assert lane_change.distance.value == pytest.approx(38.025)
+    assert guessed(imported, "the lane change's time taken at 19.5 m/s")
