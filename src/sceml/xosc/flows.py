@@ -20,7 +20,9 @@ is evaluated again at every step, so it may only stand where "holds now" and "ha
 - any other condition (SpeedCondition, InLocationRadius, an opaque Condition, ...): only into
   successors that have no other predecessor and use their activation once, as the StartTrigger
   of one event (`_USES_ACTIVATION_ONCE`); into each of them when there are several (an
-  imported event with several actions): each starts at the first instant it holds. A maneuver with a finish marker (`__arrived`,
+  imported event with several actions): each starts at the first instant it holds; likewise
+  through a TimeElapsed whose successors are such events (an original's condition with a
+  delay: the wait is the condition's delay in their triggers). A maneuver with a finish marker (`__arrived`,
   `__gap_reached`, ...) ANDs its activation with its goal, another condition ANDs it with its
   own test, a join combines it with other branches: there "held once" and "holds now" differ,
   so the condition keeps its marker event.
@@ -34,9 +36,14 @@ import scemlmodel as scm
 
 from ..model import graph
 from .meaning import FLOW_DELAY_STEPS
+from .support import REPEATABLE_KINDS
 
-#: Kinds whose export uses the activation exactly once, unchanged, as one event's StartTrigger.
-_USES_ACTIVATION_ONCE = ("Accelerate", "Decelerate", "Stop", "LaneChange", "Overtake")
+#: Kinds whose export uses the activation exactly once, unchanged, as one event's StartTrigger:
+#: those written as one event (`support.REPEATABLE_KINDS`: speed changes, lane changes and
+#: offsets, controller changes, parameter, variable and traffic signal actions) and Overtake,
+#: whose first event starts on it. (Before, a traffic signal state after a condition kept the
+#: condition's marker event: `traffic_lights`' signals changed a step late, every one.)
+_USES_ACTIVATION_ONCE = REPEATABLE_KINDS | {"Overtake"}
 #: Kinds that only pass activation on (a marker with the activation as its trigger).
 _PASSING = (scm.JoinAllFinished, scm.JoinOneFinished, scm.InPort, scm.OutPort)
 
@@ -73,12 +80,20 @@ def _passes_latched(node: scm.GraphElement) -> bool:
 
 
 def _holds_now_for(node: scm.GraphElement, successor: scm.GraphElement) -> bool:
-    """A condition whose successor waits for it alone and starts one event on it."""
-    return (
-        (isinstance(node, scm.Condition) or is_condition_element(node))
-        and len(graph.predecessors(successor)) == 1
-        and _uses_activation_once(successor)
-    )
+    """A condition whose successor waits for it alone and starts one event on it; or waits
+    for it alone through a TimeElapsed that does the same (the wait is the condition's
+    `delay` in the successor's trigger, which players count from each instant it held, as
+    SceML counts from its finish: an original's condition with a delay keeps its step)."""
+    if not (isinstance(node, scm.Condition) or is_condition_element(node)):
+        return False
+    if len(graph.predecessors(successor)) != 1:
+        return False
+    if isinstance(successor, scm.TimeElapsed) and int(getattr(successor, "maxRuns", 1)) == 1:
+        after = graph.successors(successor)
+        return bool(after) and all(
+            len(graph.predecessors(s)) == 1 and _uses_activation_once(s) for s in after
+        )
+    return _uses_activation_once(successor)
 
 
 def is_passing(node: scm.GraphElement) -> bool:
