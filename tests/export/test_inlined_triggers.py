@@ -116,3 +116,49 @@ def test_parameterised_waits_in_a_row_add_up_as_an_expression() -> None:
     assert condition.get("delay") == "${$First + $Second}"
     with pytest.raises(ExportError, match="1.0 has no expressions"):
         build_xosc(b.scenario, version="1.0", parameters=hook)
+
+
+def test_a_condition_and_the_wait_after_it_go_into_the_trigger_as_its_delay() -> None:
+    # root -> Slow (speed below 12) -> Pause (2 s) -> Brake: an original's condition with a
+    # delay. A player counts the delay from each instant the condition held, as SceML counts
+    # the wait from the condition's finish, so both go into Brake's trigger: no marker event,
+    # and Brake starts 2 s after the speed first held, not a step later.
+    b = ScenarioBuilder("delayed", map="map.xodr", level="concrete", max_duration=30.0)
+    ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0, h=0.0), speed=10.0, **SIZE)
+    slow = b.add("SpeedCondition", ego, speed=12.0, rule="lessThan")
+    pause = b.add("TimeElapsed", ego, duration=2.0)
+    brake = b.add("Decelerate", ego, targetSpeed=6.0, rate=3.0)
+    slow.name, pause.name, brake.name = "Slow", "Pause", "Brake"
+    b.chain(b.root, slow, pause, brake, b.end)
+    assert {str(node.name) for node in inlined(b.scenario.nodes)} == {"Slow", "Pause"}
+    document = build_xosc(b.scenario, version="1.3").tree.getroot()
+    assert trigger(document, ".//Event[@name='Brake']/StartTrigger") == [
+        [("SimulationTimeCondition", "0.0", "2.0"), ("SpeedCondition", "12.0", "2.0")]
+    ]
+    # A wait with two successors, one of them waiting for something else too: the condition
+    # keeps its marker (a delayed condition ANDed with another would be "held 2 s ago").
+    other = b.add("KeepVelocity", ego, duration=1.0)
+    both = b.join_all(pause, other)
+    b.chain(b.root, other)
+    b.chain(both, b.end)
+    assert "Slow" not in {str(node.name) for node in inlined(b.scenario.nodes)}
+
+
+def test_a_traffic_signal_condition_goes_into_the_trigger_of_the_state_it_starts() -> None:
+    # root -> Yellow (signal 1 is yellow) -> Red (set signal 2 red): the global condition is
+    # written into the global action's trigger, as any condition is (it had a marker event of
+    # its own, a step before the action: `traffic_lights`).
+    b = ScenarioBuilder("signals", map="map.xodr", level="concrete", max_duration=30.0)
+    b.actor("Car", "ego", ego=True, start=world(0.0, 0.0, h=0.0), speed=10.0, **SIZE)
+    yellow = b.add("TrafficSignalCondition", None, signalId="1", state="yellow")
+    red = b.add("TrafficSignalState", None, signalId="2", state="red")
+    yellow.name, red.name = "Yellow", "Red"
+    b.chain(b.root, yellow, red, b.end)
+    document = build_xosc(b.scenario, version="1.3").tree.getroot()
+    assert document.find(".//Event[@name='Yellow']") is None
+    start = document.find(".//Event[@name='Red']/StartTrigger/ConditionGroup")
+    assert start is not None
+    signal = start.find("Condition/ByValueCondition/TrafficSignalCondition")
+    assert signal is not None and (signal.get("name"), signal.get("state")) == ("1", "yellow")
+    # Named after the condition node, so that an import gives the node its name back.
+    assert signal.getparent().getparent().get("name") == "Yellow"

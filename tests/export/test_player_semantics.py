@@ -104,7 +104,7 @@ def state_refs(group: etree._Element) -> set[str]:
 
 
 def waits_for_start(group: etree._Element) -> bool:
-    return any(c.get("value") == "0.0" for c in group.iter("SimulationTimeCondition"))
+    return any(float(c.get("value", "1")) <= 0 for c in group.iter("SimulationTimeCondition"))
 
 
 def node_events(document: etree._Element, first: str) -> Iterator[etree._Element]:
@@ -134,7 +134,7 @@ def waits(group: etree._Element, node_of: dict[str, str], owns: set[str]) -> fro
     found = {node_of[ref] for ref in state_refs(group)}
     found |= {str(c.get("name")) for c in group.iter("Condition") if c.get("name") in owns}
     for clock in group.iter("SimulationTimeCondition"):
-        found.add(ROOT if clock.get("value") == "0.0" else "LIMIT")
+        found.add(ROOT if float(clock.get("value", "0")) <= 0 else "LIMIT")
     return frozenset(found)
 
 

@@ -55,7 +55,7 @@ def read_groups(trigger: etree._Element, finishes: dict[str, str], owns: set[str
                 assert finishes[node] == ref, f"{ref} is not the finish event of {node}"
                 members.add(waited(node, delay))
             elif clock is not None:
-                limit = clock.get("value") != "0.0"
+                limit = float(clock.get("value", "0")) > 0
                 members.add("LIMIT" if limit else waited(ROOT, delay))
         groups.add(frozenset(members))
     return sorted(groups, key=sorted)

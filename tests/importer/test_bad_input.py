@@ -149,7 +149,8 @@ def test_the_good_file_imports(tmp_path: Path) -> None:
     path.write_text(GOOD)
     imported = import_file(path)
     kinds = sorted(n.eClass.name for n in imported.scenario.nodes)
-    assert kinds == ["Accelerate", "EndNode", "RootNode", "Stop"]
+    # `SimulationTime > 0`: the TimeElapsed of the step after the start it first holds at.
+    assert kinds == ["Accelerate", "EndNode", "RootNode", "Stop", "TimeElapsed"]
 
 
 @pytest.mark.parametrize("what", sorted(BROKEN))

@@ -71,6 +71,8 @@ HAND_WRITTEN = {
             "RootNode",
             "TimeElapsed",
             "TimeElapsed",
+            # `SimulationTime > 0`: it first holds a step after the start (0.05 s).
+            "TimeElapsed",
         ],
         {"Condition TimeHeadwayCondition"},
     ),
@@ -90,6 +92,8 @@ HAND_WRITTEN = {
             "OpaqueAction",
             "RootNode",
             "Stop",
+            "TimeElapsed",
+            # `SimulationTime > 0`: it first holds a step after the start (0.05 s).
             "TimeElapsed",
             # Between reference points (freespace="false"), kept as the node's freespace.
             "TimeToCollision",
@@ -128,6 +132,8 @@ HAND_WRITTEN = {
             "LaneOffset",
             "RootNode",
             "SpeedCondition",
+            "TimeElapsed",
+            # `SimulationTime > 0`: it first holds a step after the start (0.05 s).
             "TimeElapsed",
             # The odometer since the start, as SceML's TraveledDistance counts.
             "TraveledDistance",
@@ -182,7 +188,8 @@ def test_follow_and_brake_reads_a_maneuver_from_its_catalog() -> None:
     )
     assert lead_stop.rate.value == 7.0  # the reference's ParameterAssignment
     wait = lead_stop.incoming[0].source
-    assert isinstance(wait, scm.TimeElapsed) and wait.duration.value == 5.0
+    # `SimulationTime > 5`: first holds a step after 5 s, as esmini starts it.
+    assert isinstance(wait, scm.TimeElapsed) and wait.duration.value == 5.05
     # The ego's controller, from the controller catalog, is the actor's.
     ego = next(a for a in imported.scenario.nodes[0].actors if a.name == "Ego")
     assert ego.controller.name == "ACCController"
@@ -423,6 +430,8 @@ def test_scenariogeneration_cut_in(version: int, tmp_path: Path) -> None:
         "LaneChange",
         "RootNode",
         "TimeElapsed",
+        # scenariogeneration's `SimulationTime > 0`: a step after the start (0.05 s).
+        "TimeElapsed",
     ]
     # An absolute target lane is the LaneChange's targetLane.
     assert opaque_tags(imported.scenario) == set()
@@ -446,6 +455,8 @@ def test_scenariogeneration_pedestrian_crossing(version: int, tmp_path: Path) ->
         "InVehicleRadius",
         "RootNode",
         "Stop",
+        "TimeElapsed",
+        # scenariogeneration's `SimulationTime > 0`: a step after the start (0.05 s).
         "TimeElapsed",
     ]
     cross = next(n for n in imported.scenario.nodes if isinstance(n, scm.Cross))

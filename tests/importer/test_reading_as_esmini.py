@@ -374,9 +374,10 @@ def test_an_event_waiting_for_its_own_act_to_start_is_no_circular_trigger(tmp_pa
     )
     imported = import_file(path)
     go = next(n for n in imported.scenario.nodes if isinstance(n, scm.Accelerate))
-    # The act starts after 2 s: the event follows that wait, not itself.
+    # The act starts once more than 2 s have passed (2.05 s, as esmini starts it): the event
+    # follows that wait, not itself.
     before = go.incoming[0].source
-    assert isinstance(before, scm.TimeElapsed) and before.duration.value == 2.0
+    assert isinstance(before, scm.TimeElapsed) and before.duration.value == 2.05
 
 
 def test_one_event_name_in_two_maneuvers(tmp_path: Path) -> None:
@@ -446,8 +447,9 @@ def test_a_time_only_stop_trigger_makes_the_run_last_that_long(tmp_path: Path) -
     root = next(n for n in imported.scenario.nodes if isinstance(n, scm.RootNode))
     end = next(n for n in imported.scenario.nodes if isinstance(n, scm.EndNode))
     assert root.maxDuration.value == 120.0
+    # The end waits until the limit holds: `> 120` a step after 120 s, as esmini stops.
     waits = [f.source for f in end.incoming if isinstance(f.source, scm.TimeElapsed)]
-    assert [w.duration.value for w in waits] == [120.0]
+    assert [w.duration.value for w in waits] == [pytest.approx(120.05)]
     assert end.policy is scm.JoinPolicy.joinAll
 
 
@@ -646,6 +648,53 @@ def test_a_story_relative_target_speed_gives_the_speed_of_a_later_lane_change(
     )
     imported = import_file(path)
     lane_change = next(n for n in imported.scenario.nodes if isinstance(n, scm.LaneChange))
-    # Lead drives 20 m/s, Ego 1.5 times that: 3 s of lane change at 30 m/s are 90 m.
-    assert lane_change.distance.value == 90.0
+    # Lead drives 20 m/s, Ego 1.5 times that: 3 s of lane change at 30 m/s, counted from the
+    # step after it starts as a change over a distance is, are 2.95 * 30 = 88.5 m.
+    assert lane_change.distance.value == pytest.approx(88.5)
     assert guessed(imported, "relative target speed taken as 30 m/s")
+
+
+def test_a_continuous_init_relative_speed_gives_the_speed_of_a_later_lane_change(
+    tmp_path: Path,
+) -> None:
+    # As `lane_change_crest`: the Ego's Init speed is 1.3 times the Lead's, continuously (kept
+    # as an Init action: SceML has no field for it), and its 2 s lane change is measured at
+    # that speed, not left at LaneChange's default 30 m.
+    lead = (
+        '<Private entityRef="Lead"><PrivateAction><TeleportAction><Position>'
+        '<LanePosition roadId="1" laneId="-1" s="80" offset="0"/></Position></TeleportAction>'
+        "</PrivateAction><PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics "
+        'dynamicsShape="step" value="0" dynamicsDimension="time"/><SpeedActionTarget>'
+        '<AbsoluteTargetSpeed value="15"/></SpeedActionTarget></SpeedAction>'
+        "</LongitudinalAction></PrivateAction></Private>"
+    )
+    ego = (
+        '<Private entityRef="Ego"><PrivateAction><TeleportAction><Position>'
+        f"{EGO_START}</Position></TeleportAction></PrivateAction><PrivateAction>"
+        '<LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="step" value="0" '
+        'dynamicsDimension="time"/><SpeedActionTarget><RelativeTargetSpeed entityRef="Lead" '
+        'value="1.3" speedTargetValueType="factor" continuous="true"/></SpeedActionTarget>'
+        "</SpeedAction></LongitudinalAction></PrivateAction></Private>"
+    )
+    change = (
+        '<Event name="Change" priority="overwrite"><Action name="ChangeAction"><PrivateAction>'
+        '<LateralAction><LaneChangeAction><LaneChangeActionDynamics dynamicsShape="cubic" '
+        'value="2" dynamicsDimension="time"/><LaneChangeTarget><RelativeTargetLane '
+        'entityRef="Lead" value="0"/></LaneChangeTarget></LaneChangeAction></LateralAction>'
+        '</PrivateAction></Action><StartTrigger><ConditionGroup><Condition name="ChangeWhen" '
+        f'delay="0" conditionEdge="none"><ByValueCondition>{AT_START}</ByValueCondition>'
+        "</Condition></ConditionGroup></StartTrigger></Event>"
+    )
+    path = scenario(
+        tmp_path,
+        entities=f'<ScenarioObject name="Lead">{CAR}</ScenarioObject>'
+        f'<ScenarioObject name="Ego">{CAR}</ScenarioObject>',
+        init=lead + ego,
+        maneuvers=f'<Maneuver name="M">{change}</Maneuver>',
+    )
+    imported = import_file(path)
+    lane_change = next(n for n in imported.scenario.nodes if isinstance(n, scm.LaneChange))
+    # 1.3 * 15 = 19.5 m/s over 2 s less the step a change over a distance starts later:
+    # 19.5 * 1.95 = 38.025 m.
+    assert lane_change.distance.value == pytest.approx(38.025)
+    assert guessed(imported, "the lane change's time taken at 19.5 m/s")

@@ -38,8 +38,8 @@ def event(document: etree._Element, name: str) -> etree._Element:
 
 
 def groups(element: etree._Element, trigger: str = "StartTrigger") -> list[list[str]]:
-    """Each ConditionGroup as what its conditions test: `state:<event>`, `time>v+delay`, the tag
-    of an entity condition."""
+    """Each ConditionGroup as what its conditions test: `state:<event>`, `time>v+delay` (or
+    `time>=v+delay`), the tag of an entity condition."""
     read = []
     for group in element.iterfind(f"{trigger}/ConditionGroup"):
         tests = []
@@ -50,7 +50,8 @@ def groups(element: etree._Element, trigger: str = "StartTrigger") -> list[list[
                 tests.append(f"state:{state.get('storyboardElementRef')}")
             elif clock is not None:
                 delay = float(condition.get("delay"))
-                tests.append(f"time>{float(clock.get('value')):g}+{delay:g}")
+                rule = ">=" if clock.get("rule") == "greaterOrEqual" else ">"
+                tests.append(f"time{rule}{float(clock.get('value')):g}+{delay:g}")
             else:
                 tests.append(condition.find(".//EntityCondition/*").tag)
         read.append(sorted(tests))
@@ -64,9 +65,10 @@ def test_a_condition_with_a_state_is_in_the_events_own_trigger(exported: etree._
 
 
 def test_a_condition_alone_is_in_the_events_own_trigger(exported: etree._Element) -> None:
-    # Cut: the lead within 30 m of the ego, from the act's start (a 1 s wait, written into
-    # the trigger of each event of the act as a delay).
-    assert groups(event(exported, "Cut")) == [["RelativeDistanceCondition", "time>0+1"]]
+    # Cut: the lead within 30 m of the ego, from the act's start (`SimulationTime > 0`, which
+    # first holds at 0.05 s, then a 1 s delay: written into the trigger of each event of the
+    # act as a delay of 1.05 s from t = 0).
+    assert groups(event(exported, "Cut")) == [["RelativeDistanceCondition", "time>=0+1.05"]]
     assert exported.find(".//Event[@name='Near']") is None
 
 
@@ -85,13 +87,14 @@ def test_a_second_lane_change_waits_for_the_first_and_keeps_its_condition(
         "InStepAct_start_delay",
     ]
     assert groups(event(exported, "Back")) == [
-        ["RelativeDistanceCondition", "state:Cut", "time>0+1"]
+        ["RelativeDistanceCondition", "state:Cut", "time>=0+1.05"]
     ]
 
 
 def test_waits_in_a_row_add_up_in_one_trigger(exported: etree._Element) -> None:
-    # The act waits 1 s, SpeedUp 2 s after the act: 3 s after the start, no event between.
-    assert groups(event(exported, "SpeedUp")) == [["time>0+3"]]
+    # The act waits a step and 1 s, SpeedUp 2 s after the act: 3.05 s after the start (as
+    # esmini starts it), no event between.
+    assert groups(event(exported, "SpeedUp")) == [["time>=0+3.05"]]
     assert exported.find(".//Event[@name='InStepAct_start_delay']") is None
 
 

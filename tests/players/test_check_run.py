@@ -1,7 +1,10 @@
 """`sceml check-run` on esmini runs recorded with esmini 3.6.0 (tests/players/data/README.md).
 
 Expected times are worked out from the scenarios by hand: each flow costs esmini one step of
-0.05 s (the root's successors start at 0.05 s), a maneuver's own time follows from its numbers.
+0.05 s, except a flow out of the root (the root's successors start at t = 0), a maneuver's own
+time follows from its numbers. esmini stamps an action's completion with the start of the step
+in which it completes: an action that acts from its first step and lasts T s ends at T - 0.05 s
+after its start in the log (the trace reaches the goal at T).
 """
 
 from __future__ import annotations
@@ -55,13 +58,13 @@ def test_drive_distance_after_moving_is_driven_from_the_nodes_start(recording) -
     log, trace = recording("drive-after-moving-1.3")
     report = check_player_run(model("drive-after-moving-1.3"), log, trace)
     nodes = {node.name: node for node in report.nodes}
-    # KeepVelocity 3 s from 0.05 s; DriveDistance a step later, 20 m at 8 m/s: 2.5 s.
-    assert nodes["KeepVelocity_1"].finish == pytest.approx(3.05)
+    # KeepVelocity 3 s from 0 s; DriveDistance a step later, 20 m at 8 m/s: 2.5 s.
+    assert nodes["KeepVelocity_1"].finish == pytest.approx(3.0)
     drive = nodes["DriveDistance_1"]
-    assert (drive.start, drive.finish) == pytest.approx((3.1, 5.6))
+    assert (drive.start, drive.finish) == pytest.approx((3.05, 5.55))
     run = esmini.read(log, trace)
     ego = run.traces["ego"]
-    i, j = ego.at(3.1), ego.at(5.6)
+    i, j = ego.at(3.05), ego.at(5.55)
     assert ego.x[j] - ego.x[i] == pytest.approx(20.0, abs=0.5)  # a straight arm, along x
 
 
@@ -69,8 +72,9 @@ def test_a_turn_no_longer_stops_the_speed_change_it_runs_beside(recording) -> No
     log, trace = recording("turn-while-speeding-1.0")
     report = check_player_run(model("turn-while-speeding-1.0"), log, trace)
     accelerate = next(node for node in report.nodes if node.name == "Accelerate_1")
-    # 3 -> 9 m/s at 1 m/s2: 6 s, acting from the first step.
-    assert accelerate.finish == pytest.approx(6.0)
+    # 3 -> 9 m/s at 1 m/s2: 6 s from t = 0, acting from the first step; stamped a step early.
+    assert accelerate.start == pytest.approx(0.0)
+    assert accelerate.finish == pytest.approx(5.95)
     assert not esmini.read(log, trace).cut_short
 
 

@@ -41,16 +41,16 @@ def test_constant_speeds_on_a_straight_road_give_the_analytic_ttc_and_distance()
     car(b, "lead", 30.0, 0.0, 0.0, 10.0)
     b.chain(b.root, wait(b, ego, 2.0), b.end)
     run = simulate(b.scenario)
-    # The wait runs from 0.05 to 2.05 s and is the StopTrigger's delay: the end node finishes
-    # at 2.05 s. Gap between the boxes: 30 - 4/2 - 4/2 = 26 m at t = 0, closing at
-    # 15 - 10 = 5 m/s. At the end it is 26 - 2.05 * 5 = 15.75 m, and the TTC
-    # 15.75 / 5 = 3.15 s: both least then.
-    assert run.end_reason == END_NODE and run.end_time == pytest.approx(2.05)
+    # The wait runs from 0 to 2 s (a flow out of the root costs no step) and is the
+    # StopTrigger's delay: the end node finishes at 2 s. Gap between the boxes:
+    # 30 - 4/2 - 4/2 = 26 m at t = 0, closing at 15 - 10 = 5 m/s. At the end it is
+    # 26 - 2 * 5 = 16 m, and the TTC 16 / 5 = 3.2 s: both least then.
+    assert run.end_reason == END_NODE and run.end_time == pytest.approx(2.0)
     pair = run.pair("ego", "lead")
-    assert pair.min_distance == pytest.approx(15.75)
-    assert pair.min_distance_time == pytest.approx(2.05)
-    assert pair.min_ttc == pytest.approx(3.15)
-    assert pair.min_ttc_time == pytest.approx(2.05)
+    assert pair.min_distance == pytest.approx(16.0)
+    assert pair.min_distance_time == pytest.approx(2.0)
+    assert pair.min_ttc == pytest.approx(3.2)
+    assert pair.min_ttc_time == pytest.approx(2.0)
     assert not pair.collision and pair.pet is None  # one path: nothing crosses
 
 
@@ -119,13 +119,13 @@ def test_a_condition_true_before_its_activation_does_not_fire_early() -> None:
     b.chain(b.root, delay, inside, b.end)
     b.chain(b.root, at_once, b.end)
     run = simulate(b.scenario)
-    # The ego stands inside the radius from t = 0; the wait runs from 0.05 to 2.05 s and is
+    # The ego stands inside the radius from t = 0; the wait runs from 0 to 2 s and is
     # written into the first condition's trigger as its delay, so that condition is activated
-    # (and holds) at 2.05 s, the other at 0.05 s; both are markers the end waits for, a step.
-    assert run.node(inside.name).started == pytest.approx(2.05)
-    assert run.node(inside.name).finished == pytest.approx(2.05)
-    assert run.node(at_once.name).finished == pytest.approx(0.05)
-    assert run.end_time == pytest.approx(2.1)
+    # (and holds) at 2 s, the other at 0 s; both are markers the end waits for, a step.
+    assert run.node(inside.name).started == pytest.approx(2.0)
+    assert run.node(inside.name).finished == pytest.approx(2.0)
+    assert run.node(at_once.name).finished == pytest.approx(0.0)
+    assert run.end_time == pytest.approx(2.05)
 
 
 def test_a_location_condition_holds_when_the_actor_reaches_the_radius() -> None:
@@ -135,7 +135,7 @@ def test_a_location_condition_holds_when_the_actor_reaches_the_radius() -> None:
     b.chain(b.root, there, b.end)
     run = simulate(b.scenario)
     # Within 5 m of x = 50 from x = 45: at 10 m/s, t = 4.5 s (checked at every step from
-    # its activation at 0.05 s).
+    # its activation at 0 s).
     assert run.node(there.name).finished == pytest.approx(4.5)
 
 
@@ -145,10 +145,11 @@ def test_speed_changes_at_the_rate_and_finishes_at_the_target() -> None:
     speed_up = b.add("Accelerate", ego, targetSpeed=15.0, rate=2.0)
     b.chain(b.root, speed_up, b.end)
     run = simulate(b.scenario)
-    # Started at 0.05 s, it acts in the step ending then (as a player's action does), so the
-    # speed changes from t = 0: (15 - 5) / 2 = 5 s, 5 * 5 + 2 * 5^2 / 2 = 50 m by t = 5 s;
-    # the end node finishes a step later, 15 * 0.05 = 0.75 m further.
-    assert run.node(speed_up.name).started == pytest.approx(0.05)
+    # Started at 0 s by a trigger that holds then, it acts from the next step (as a player's
+    # action does), so the speed changes from t = 0: (15 - 5) / 2 = 5 s,
+    # 5 * 5 + 2 * 5^2 / 2 = 50 m by t = 5 s; the end node finishes a step later,
+    # 15 * 0.05 = 0.75 m further.
+    assert run.node(speed_up.name).started == pytest.approx(0.0)
     assert run.node(speed_up.name).finished == pytest.approx(5.0)
     k = int(round(5.0 / run.step))
     assert run.states[0, k, 0] == pytest.approx(50.0)
@@ -168,14 +169,14 @@ def test_join_one_finishes_with_the_first_branch_and_does_not_cancel_the_other()
     both = b.join_all(after, long)
     b.chain(both, b.end)
     run = simulate(b.scenario)
-    # short 0.05-1.05 s, long 0.05-3.05 s. Waits and joins are written into their
-    # successors' triggers, so no flow here costs a step after the root's: the join-one at
-    # 1.05 s, after 1.05-1.55 s, the join-all with long at 3.05 s, the end node then too.
-    assert run.node(first.name).finished == pytest.approx(1.05)
-    assert run.node(after.name).finished == pytest.approx(1.55)
-    assert run.node(long.name).finished == pytest.approx(3.05)  # not cancelled
-    assert run.node(both.name).finished == pytest.approx(3.05)
-    assert run.end_time == pytest.approx(3.05)
+    # short 0-1 s, long 0-3 s. The root, waits and joins are written into their successors'
+    # triggers, so no flow here costs a step: the join-one at 1 s, after 1-1.5 s, the
+    # join-all with long at 3 s, the end node then too.
+    assert run.node(first.name).finished == pytest.approx(1.0)
+    assert run.node(after.name).finished == pytest.approx(1.5)
+    assert run.node(long.name).finished == pytest.approx(3.0)  # not cancelled
+    assert run.node(both.name).finished == pytest.approx(3.0)
+    assert run.end_time == pytest.approx(3.0)
 
 
 def test_a_join_one_end_stops_at_the_first_branch() -> None:
@@ -185,8 +186,8 @@ def test_a_join_one_end_stops_at_the_first_branch() -> None:
     b.chain(b.root, short, b.end)
     b.chain(b.root, long, b.end)
     run = simulate(b.scenario)
-    # short finishes at 1.05 s; it is a delay in the StopTrigger, so the end node then too.
-    assert run.end_reason == END_NODE and run.end_time == pytest.approx(1.05)
+    # short finishes at 1 s; it is a delay in the StopTrigger, so the end node then too.
+    assert run.end_reason == END_NODE and run.end_time == pytest.approx(1.0)
     assert run.node(long.name).finished is None  # still running when the scenario stopped
 
 

@@ -35,9 +35,9 @@ def test_between_the_reference_points_without_freespace() -> None:
 
 
 def test_a_lateral_distance_is_the_gap_across() -> None:
-    # 3.5 m to the side: 1.5 m between the boxes' sides over 10 m/s is 0.15 s at once,
-    # where the straight-line gap takes until its 30 m as before.
-    assert ttc_run(3.5, relativeDistanceType="lateral")[0] == pytest.approx(0.05)
+    # 3.5 m to the side: 1.5 m between the boxes' sides over 10 m/s is 0.15 s at once (at
+    # its activation at 0 s), where the straight-line gap takes until its 30 m as before.
+    assert ttc_run(3.5, relativeDistanceType="lateral")[0] == pytest.approx(0.0)
     straight = ttc_run(3.5)[0]
     assert straight is not None and straight > 1.5
 
@@ -58,15 +58,16 @@ def test_road_coordinates_are_measured_in_the_actor_frame_and_said() -> None:
 
 def test_traveled_distance_counts_from_the_start_not_from_the_activation() -> None:
     # The ego drives 10 m/s from t = 0; the condition is activated after a 2 s wait (at
-    # 2.05 s, when 20.5 m are driven: the wait is its trigger's delay, no step of its own) and
-    # holds once 30 m are: at 3.0 s. From its activation it would be 5.05 s.
+    # 2 s, when 20 m are driven: the wait is its trigger's delay, no step of its own, and the
+    # root's flow costs none) and holds once 30 m are: at 3.0 s. From its activation it would
+    # be 5 s.
     b = ScenarioBuilder("traveled", level="concrete", max_duration=8.0)
     ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0, h=0.0), speed=10.0, **SIZE)
     wait = b.add("TimeElapsed", ego, duration=2.0)
     traveled = b.add("TraveledDistance", ego, distance=30.0)
     b.chain(b.root, wait, traveled, b.end)
     run = simulate(b.scenario)
-    assert run.node(str(traveled.name)).started == pytest.approx(2.05)
+    assert run.node(str(traveled.name)).started == pytest.approx(2.0)
     assert run.node(str(traveled.name)).finished == pytest.approx(3.0)
 
 

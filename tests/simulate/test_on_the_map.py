@@ -27,11 +27,11 @@ def test_an_actor_follows_its_lane_centre_line() -> None:
     ego = b.actor("Car", "ego", ego=True, start=lane(2, -1, 10.0), speed=10.0)
     b.chain(b.root, b.add("TimeElapsed", ego, duration=3.0), b.end)
     run = simulate(b.scenario, Path(MAP))
-    # s = 10 is x = 19; the wait runs 0.05-3.05 s and is the StopTrigger's delay, so the end
-    # node finishes at 3.05 s: at 10 m/s, x = 49.5, still on the centre line y = -1.75.
-    assert run.end_time == pytest.approx(3.05)
+    # s = 10 is x = 19; the wait runs 0-3 s and is the StopTrigger's delay, so the end node
+    # finishes at 3 s: at 10 m/s, x = 49, still on the centre line y = -1.75.
+    assert run.end_time == pytest.approx(3.0)
     x, y, heading, _ = run.states[0, -1]
-    assert (x, y, heading) == pytest.approx((49.5, -1.75, 0.0), abs=1e-6)
+    assert (x, y, heading) == pytest.approx((49.0, -1.75, 0.0), abs=1e-6)
 
 
 def test_a_lane_change_ends_on_the_lane_beside_after_its_distance() -> None:

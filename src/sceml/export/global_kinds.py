@@ -3,7 +3,8 @@ the declarations they read and change, and traffic signal states and conditions.
 
 A global action is an event in the ego's maneuver group (OpenSCENARIO wants every event in one;
 the action itself names no entity); a global condition is a marker event there that fires once
-the node is activated and the condition holds, as every condition node does.
+the node is activated and the condition holds, as every condition node does, or, where
+`xosc.flows.inlined` says so, no event: its test goes into its successor's trigger.
 """
 
 from __future__ import annotations
@@ -12,9 +13,9 @@ from typing import Any
 
 import scemlmodel as scm
 
-from .actions import Plan, planner
+from .actions import Plan, marker_plan, planner
 from .context import Action, Context, Event
-from .triggers import Condition, Group, with_extra
+from .triggers import Condition, Group
 
 #: The OpenSCENARIO element and reference attribute of each kind, and the feature naming it.
 _TARGETS = {
@@ -37,8 +38,7 @@ def plan_value_condition(ctx: Context, node: scm.ActionNode, groups: list[Group]
         "rule": node.rule.name,
     }
     check = Condition(f"{name}_{feature}", "value_condition", data)
-    marker = ctx.marker_action(name, name)
-    return [Event(name, ctx.ego, [marker], with_extra(groups, check))], name
+    return marker_plan(ctx, node, groups, ctx.ego, check)
 
 
 @planner("SetParameter", "SetVariable", one_event=True)
@@ -74,8 +74,7 @@ def plan_signal_condition(
     name = ctx.event_names[node]
     data = {"signal": str(node.signalId or ""), "state": str(node.state or "")}
     check = Condition(f"{name}_signal", "signal_condition", data)
-    marker = ctx.marker_action(name, name)
-    return [Event(name, ctx.ego, [marker], with_extra(groups, check))], name
+    return marker_plan(ctx, node, groups, ctx.ego, check)
 
 
 def declarations(root: scm.RootNode, variables_allowed: bool) -> dict[str, list[dict[str, Any]]]:

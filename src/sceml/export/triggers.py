@@ -48,10 +48,12 @@ def finished(event: str, by: str) -> Condition:
 
 
 def simulation_started(by: str) -> Condition:
-    """The simulation has begun: what "the root node has finished" means."""
-    return Condition(
-        name=f"{by}_at_start", kind="simulation_time", data={"value": "0.0", "rule": "greaterThan"}
-    )
+    """The simulation has begun: what "the root node has finished" means. It holds at t = 0
+    itself (`SimulationTime >= 0`; 1.0, which has no `greaterOrEqual`, `> -1`: the
+    version's `Traits.started`), so the root's successors start at t = 0 (SPEC §3), in the
+    instant an original's Init actions and `>= 0` triggers act, not a step later
+    (`xosc.flows.flow_steps`)."""
+    return Condition(name=f"{by}_at_start", kind="simulation_started")
 
 
 def simulation_time_over(value: str, by: str) -> Condition:
@@ -107,7 +109,7 @@ def _named_by(condition: Condition, by: str) -> Condition:
     """An inlined node's condition as `by` waits for it."""
     if condition.ref is not None:
         return replace(condition, name=f"{by}_after_{condition.ref}")
-    if condition.kind == "simulation_time" and condition.name.endswith("_at_start"):
+    if condition.kind == "simulation_started":
         return replace(condition, name=f"{by}_at_start")
     return condition
 

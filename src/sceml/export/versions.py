@@ -41,6 +41,9 @@ class Traits:
     controller_action: bool = False
     #: 1.2 added Controller's controllerType.
     controller_type: bool = False
+    #: The SimulationTimeCondition (value, rule) that holds from t = 0 on: "the simulation
+    #: has begun". `greaterOrEqual` came with 1.1; in 1.0 a time above -1 says the same.
+    started: tuple[str, str] = ("0.0", "greaterOrEqual")
 
 
 def traits(version: str) -> Traits:
@@ -65,4 +68,5 @@ def traits(version: str) -> Traits:
         expressions=minor >= 1,
         controller_action=minor >= 1,
         controller_type=minor >= 2,
+        started=("0.0", "greaterOrEqual") if minor >= 1 else ("-1.0", "greaterThan"),
     )

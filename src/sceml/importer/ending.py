@@ -16,7 +16,7 @@ from . import traced
 from .context import Build
 from .positions import number
 from .storyboard import Storyboard
-from .triggers import Group, Trigger
+from .triggers import Group, Trigger, first_holds
 
 
 def read_stop(build: Build, storyboard: Storyboard) -> None:
@@ -24,10 +24,13 @@ def read_stop(build: Build, storyboard: Storyboard) -> None:
     stop = build.source.root.find("Storyboard/StopTrigger")
     trigger = Trigger(build, storyboard.resolve, build.root, build.default_actor())
     limits, groups = [], []
+    #: When each limit first holds (`> T` a step after T: `triggers.first_holds`).
+    holds: list[float] = []
     for element in [] if stop is None else stop.iterchildren("ConditionGroup"):
         limit = _time_limit(element)
         if limit is not None:
             limits.append(limit)
+            holds.append(first_holds(element.find("Condition/ByValueCondition/*")))
         else:
             groups.append(trigger.read(element))
     if limits:
@@ -45,7 +48,7 @@ def read_stop(build: Build, storyboard: Storyboard) -> None:
         if limits:
             # Only a time limit: the run lasts that long even when every branch is done early.
             ends = [
-                trigger.timed(build.root, min(limits), "stop_time", "TimeElapsed", trigger.actor)
+                trigger.timed(build.root, min(holds), "stop_time", "TimeElapsed", trigger.actor)
             ]
         build.report.add(
             "guessed",

@@ -132,15 +132,17 @@ def _relative_speed(build: Build, actor: scm.Actor, speed: etree._Element) -> bo
     step = dynamics is None or (
         dynamics.get("dynamicsShape") == "step" or number(dynamics, "value", 0.0) == 0
     )
-    if (
-        other is None
-        or target.get("continuous") == "true"
-        or not step
-        or not isinstance(other.initialSpeed, scm.Value)
-    ):
-        return False
-    base, value = _speed_of(other), number(target, "value")
+    known = other is not None and isinstance(other.initialSpeed, scm.Value)
+    base = _speed_of(other) if known and other is not None else 0.0
+    value = number(target, "value")
     factor = target.get("speedTargetValueType") == "factor"
+    if known and step:
+        # The speed it comes to, also when the action stays opaque (continuous): later
+        # actions given in time (a lane change's duration) get their length from it
+        # (`lane_change_crest`: 2 s at 19.5 m/s, not the default 30 m).
+        build.init_speeds[str(actor.name)] = base * value if factor else base + value
+    if other is None or target.get("continuous") == "true" or not step or not known:
+        return False
     actor.initialSpeed = traced.value(base * value if factor else base + value)
     build.report.add(
         "mapped",

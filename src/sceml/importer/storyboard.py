@@ -19,7 +19,7 @@ from . import markers, traced
 from .actions import Motion, Request, map_action
 from .context import Build, last_name
 from .opaque import opaque_node
-from .triggers import Trigger
+from .triggers import Trigger, clock_start
 
 #: States that mean "has finished" and "has started" (the others are read as started).
 FINISHED = ("completeState", "endTransition", "stopTransition", "skipTransition")
@@ -164,9 +164,10 @@ class Storyboard:
         trigger = Trigger(
             self.build,
             self.resolve,
-            self._act_start(info.act),
+            lambda: self._act_start(info.act),
             actor,
             "KeepVelocity" if kind == "KeepVelocity" and marker else "TimeElapsed",
+            clock_start(self.acts[info.act].find("StartTrigger")),
         )
         start = info.element.find("StartTrigger")
         if marker:

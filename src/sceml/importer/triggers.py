@@ -1,8 +1,9 @@
 """Triggers to graph structure (SPEC §3 in reverse): what a StartTrigger or StopTrigger waits for.
 
 A trigger is ConditionGroups (OR) of Conditions (AND). In each group a StoryboardElementState
-condition is a flow from that element's node, a SimulationTime condition at 0 a flow from the
-start, a later SimulationTime a TimeElapsed after the root; several of these meet in a
+condition is a flow from that element's node, a SimulationTime condition that holds at 0
+(`>= 0`) a flow from the start, a later one (`> 0` a step later, `> v` a step after v:
+`xosc.meaning.PLAYER_STEP`) a TimeElapsed after the root; several of these meet in a
 JoinAllFinished. Every other condition is a condition node after them (or an opaque one); two or
 more are evaluated side by side and meet in a JoinAllFinished (a group, never a chain), and a
 delay is a TimeElapsed. Several groups meet in a JoinOneFinished.
@@ -17,6 +18,7 @@ from lxml import etree
 
 import scemlmodel as scm
 
+from ..xosc.meaning import PLAYER_STEP
 from . import traced
 from .conditions import condition_after
 from .context import Build
@@ -46,11 +48,23 @@ class Trigger:
 
     build: Build
     resolve: Resolver
-    start: scm.GraphElement
+    #: What the trigger's element waits for before its trigger is evaluated (its act's start):
+    #: the node, or what makes it, called only when a group needs it (a clock that holds
+    #: after it does not, so an act start nothing uses is not made).
+    waits_for: scm.GraphElement | Callable[[], scm.GraphElement]
     #: The actor of TimeElapsed nodes made for delays (the event's actor).
     actor: scm.Actor
     #: What a marker's delay stands for: TimeElapsed, or KeepVelocity in a SceML export.
     delay_kind: str = "TimeElapsed"
+    #: When what it waits for has surely finished, from the run's start, if a clock alone
+    #: says so (`clock_start`); None when that depends on the run.
+    started_at: float | None = None
+
+    @property
+    def start(self) -> scm.GraphElement:
+        if callable(self.waits_for):
+            self.waits_for = self.waits_for()
+        return self.waits_for
 
     def read(self, element: etree._Element) -> Group:
         """One ConditionGroup: waits and conditions."""
@@ -62,18 +76,37 @@ class Trigger:
             if state is not None:
                 group.after.append((self.resolve(state), delay))
             elif clock is not None and clock.get("rule") in ("greaterThan", "greaterOrEqual"):
-                group.after.append((self._clock(number(clock, "value")), delay))
+                # The clock counts from the run's start, but it is evaluated only once the
+                # act runs, and its delay counts from when it is first seen to hold: it waits
+                # for whichever of the two is later (both when the act's start is not known).
+                seconds = first_holds(clock)
+                if self._started_by(seconds):
+                    group.after.append((self._clock(seconds), delay))
+                elif self.started_at is not None:
+                    group.after.append((self.start, delay))
+                else:
+                    group.after += [(self._clock(seconds), delay), (self.start, delay)]
             else:
                 group.conditions.append((condition, delay))
         return group
 
+    def _started_by(self, seconds: float) -> bool:
+        """Whether what the trigger's element waits for (its act's start) has surely
+        finished by `seconds` from the run's start: it is the root, or a clock alone that
+        holds by then (`started_at`)."""
+        if self.waits_for is self.build.root:
+            return True
+        return self.started_at is not None and self.started_at <= seconds
+
     def _clock(self, seconds: float) -> scm.GraphElement:
+        """What a SimulationTime condition that first holds at `seconds` waits for: the
+        start (the root's successors start at t = 0), or a TimeElapsed after the root."""
         if seconds <= 0:
             return self.start
         return self.timed(
             self.build.root,
             seconds,
-            f"after_{seconds:g}s",
+            f"after_{round(seconds, 6):g}s",
             "TimeElapsed",
             self.build.default_actor(),
             share=True,
@@ -184,6 +217,11 @@ class Trigger:
         after the same node in another trigger (an event with several actions, or a SceML
         export that wrote one condition node into each of its successors' triggers): each
         waiting event starts at the first instant it holds, so one node means the same."""
+        if before is self.build.root and condition.get("conditionEdge", "none") != "none":
+            # An edge is a change between two evaluations: it cannot hold at the first, at
+            # t = 0, so the condition is evaluated from the step after (`alks_cut-in`: its
+            # rising time to collision would otherwise hold at once).
+            before = self._clock(PLAYER_STEP)
         key = (id(before), _content(condition))
         found = self.build.conditions.get(key)
         if found is None:
@@ -195,6 +233,31 @@ class Trigger:
         if delay <= 0:
             return node
         return self.timed(node, delay, f"{wanted}_delay", "TimeElapsed", self.actor, share=True)
+
+
+def first_holds(clock: etree._Element) -> float:
+    """When a SimulationTimeCondition (`>` or `>=`) first holds: `>= v` at v, `> v` a step
+    after v (`xosc.meaning.PLAYER_STEP`)."""
+    seconds = number(clock, "value")
+    if clock.get("rule") == "greaterThan" and seconds >= 0:
+        seconds += PLAYER_STEP
+    return seconds
+
+
+def clock_start(trigger: etree._Element | None) -> float | None:
+    """When a StartTrigger holds, from the run's start, if it is one SimulationTime condition
+    (`>` or `>=`, with its delay) alone: the start of an act it starts, known without
+    reading its nodes. No trigger: 0. None when it depends on the run."""
+    if trigger is None:
+        return 0.0
+    conditions = trigger.findall("ConditionGroup/Condition")
+    clock = trigger.find("ConditionGroup/Condition/ByValueCondition/SimulationTimeCondition")
+    if len(conditions) != 1 or clock is None:
+        return None
+    if clock.get("rule") not in ("greaterThan", "greaterOrEqual"):
+        return None
+    delay = number(conditions[0], "delay", 0.0) if conditions[0].get("delay") else 0.0
+    return max(first_holds(clock), 0.0) + delay
 
 
 def _distinct(nodes: list[scm.GraphElement]) -> list[scm.GraphElement]:

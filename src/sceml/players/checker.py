@@ -170,10 +170,26 @@ def _inlined_times(
     if isinstance(node, scm.TimeElapsed):
         return activated, round(activated + float(params.concrete(node, "duration")), 9)
     starts = [
-        run.events.get(events_of[str(successor.name)][0], EventRun()).start
+        start
         for successor in graph.successors(node)
+        for start in _started_after(successor, events_of, run)
     ]
     return activated, min((s for s in starts if s is not None), default=None)
+
+
+def _started_after(
+    successor: scm.GraphElement, events_of: dict[str, tuple[str, str]], run: PlayerRun
+) -> list[float | None]:
+    """When the successor of an inlined condition started, which is when the condition held;
+    through an inlined wait (the condition's delay): its successors' starts less the wait."""
+    if isinstance(successor, scm.TimeElapsed) and str(successor.name) not in events_of:
+        wait = float(params.concrete(successor, "duration"))
+        return [
+            None if start is None else round(start - wait, 9)
+            for after in graph.successors(successor)
+            for start in _started_after(after, events_of, run)
+        ]
+    return [run.events.get(events_of[str(successor.name)][0], EventRun()).start]
 
 
 def _events_by_node(tree: etree._ElementTree, first_events: Iterable[str]) -> dict[str, list[str]]:

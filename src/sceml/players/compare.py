@@ -58,16 +58,19 @@ class Comparison:
 def player_starts(report: RunReport, step: float) -> dict[str, float]:
     """Each node's activation in the player's run, by node name: a condition's is the step
     after its predecessors finished (`xosc.meaning.FLOW_DELAY_STEPS`), or the instant,
-    after a node written into the trigger (`xosc.flows`); an inlined node's is derived by
-    the checker."""
+    after the root or a node written into the trigger (`xosc.flows`); an inlined node's is
+    derived by the checker."""
     finishes = {node.name: node.finish for node in report.nodes}
     inline = {node.name for node in report.nodes if node.inlined}
     starts: dict[str, float] = {}
     for node in report.nodes:
         reached = []
         for name in node.after:
-            done = finishes.get(name, 0.0)  # the root is no node of the report: 0
-            steps = 0 if name in inline else FLOW_DELAY_STEPS
+            # The root is no node of the report: it finished at 0, and a flow out of it
+            # costs no step (`xosc.flows.flow_steps`), as none out of an inlined node does.
+            root = name not in finishes
+            done = 0.0 if root else finishes[name]
+            steps = 0 if root or name in inline else FLOW_DELAY_STEPS
             reached.append(None if done is None else done + steps * step)
         ready = required(reached, node.one)
         if node.inlined and node.start is not None:

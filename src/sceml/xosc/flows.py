@@ -5,8 +5,10 @@ A player sees an event's completion in the step after it completes, so a node th
 some nodes without an event of their own: their condition goes into the StartTrigger (or the
 StopTrigger) of their only successor, ANDed with what activates them, so that the successor
 starts in the step the condition holds. A flow *out of* such an *inlined* node costs no step.
-The export, the preview, the run checker and the comparison all ask this module which nodes
-are inlined, so that they keep step with each other.
+The root's finish is written the same way (`SimulationTime >= 0`, true at t = 0), so a flow
+out of the root costs no step either. The export, the preview, the run checker and the
+comparison all ask this module which nodes are inlined, so that they keep step with each
+other.
 
 Inlining must not change what the graph means (SPEC §3): a condition finishes at the first
 instant after its activation at which it holds, and stays finished. Written into a trigger it
@@ -18,7 +20,9 @@ is evaluated again at every step, so it may only stand where "holds now" and "ha
 - any other condition (SpeedCondition, InLocationRadius, an opaque Condition, ...): only into
   successors that have no other predecessor and use their activation once, as the StartTrigger
   of one event (`_USES_ACTIVATION_ONCE`); into each of them when there are several (an
-  imported event with several actions): each starts at the first instant it holds. A maneuver with a finish marker (`__arrived`,
+  imported event with several actions): each starts at the first instant it holds; likewise
+  through a TimeElapsed whose successors are such events (an original's condition with a
+  delay: the wait is the condition's delay in their triggers). A maneuver with a finish marker (`__arrived`,
   `__gap_reached`, ...) ANDs its activation with its goal, another condition ANDs it with its
   own test, a join combines it with other branches: there "held once" and "holds now" differ,
   so the condition keeps its marker event.
@@ -32,9 +36,14 @@ import scemlmodel as scm
 
 from ..model import graph
 from .meaning import FLOW_DELAY_STEPS
+from .support import REPEATABLE_KINDS
 
-#: Kinds whose export uses the activation exactly once, unchanged, as one event's StartTrigger.
-_USES_ACTIVATION_ONCE = ("Accelerate", "Decelerate", "Stop", "LaneChange", "Overtake")
+#: Kinds whose export uses the activation exactly once, unchanged, as one event's StartTrigger:
+#: those written as one event (`support.REPEATABLE_KINDS`: speed changes, lane changes and
+#: offsets, controller changes, parameter, variable and traffic signal actions) and Overtake,
+#: whose first event starts on it. (Before, a traffic signal state after a condition kept the
+#: condition's marker event: `traffic_lights`' signals changed a step late, every one.)
+_USES_ACTIVATION_ONCE = REPEATABLE_KINDS | {"Overtake"}
 #: Kinds that only pass activation on (a marker with the activation as its trigger).
 _PASSING = (scm.JoinAllFinished, scm.JoinOneFinished, scm.InPort, scm.OutPort)
 
@@ -71,12 +80,20 @@ def _passes_latched(node: scm.GraphElement) -> bool:
 
 
 def _holds_now_for(node: scm.GraphElement, successor: scm.GraphElement) -> bool:
-    """A condition whose successor waits for it alone and starts one event on it."""
-    return (
-        (isinstance(node, scm.Condition) or is_condition_element(node))
-        and len(graph.predecessors(successor)) == 1
-        and _uses_activation_once(successor)
-    )
+    """A condition whose successor waits for it alone and starts one event on it; or waits
+    for it alone through a TimeElapsed that does the same (the wait is the condition's
+    `delay` in the successor's trigger, which players count from each instant it held, as
+    SceML counts from its finish: an original's condition with a delay keeps its step)."""
+    if not (isinstance(node, scm.Condition) or is_condition_element(node)):
+        return False
+    if len(graph.predecessors(successor)) != 1:
+        return False
+    if isinstance(successor, scm.TimeElapsed) and int(getattr(successor, "maxRuns", 1)) == 1:
+        after = graph.successors(successor)
+        return bool(after) and all(
+            len(graph.predecessors(s)) == 1 and _uses_activation_once(s) for s in after
+        )
+    return _uses_activation_once(successor)
 
 
 def is_passing(node: scm.GraphElement) -> bool:
@@ -85,6 +102,11 @@ def is_passing(node: scm.GraphElement) -> bool:
 
 
 def flow_steps(source: scm.GraphElement, inline: set[scm.GraphElement]) -> int:
-    """How many time steps a flow out of `source` costs: none out of an inlined node (its
-    successor's trigger holds its condition), else `meaning.FLOW_DELAY_STEPS`."""
-    return 0 if source in inline else FLOW_DELAY_STEPS
+    """How many time steps a flow out of `source` costs: none out of the root (its finish is
+    written as `SimulationTime >= 0`, which holds at t = 0, so what follows it starts at
+    t = 0 as SPEC §3 has it and as an original's `>= 0` trigger or Init action does) and none
+    out of an inlined node (its successor's trigger holds its condition), else
+    `meaning.FLOW_DELAY_STEPS`."""
+    if source in inline or isinstance(source, scm.RootNode):
+        return 0
+    return FLOW_DELAY_STEPS
