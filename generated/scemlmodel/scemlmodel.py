@@ -5,7 +5,7 @@ from pyecore.ecore import *
 
 
 name = 'scemlmodel'
-nsURI = 'https://sceml.org/metamodel/1.2'
+nsURI = 'https://sceml.org/metamodel/1.3'
 nsPrefix = 'scemlmodel'
 
 eClass = EPackage(name=name, nsURI=nsURI, nsPrefix=nsPrefix)
@@ -1095,11 +1095,31 @@ class InLocationRadius(Condition):
 
 class InVehicleRadius(Condition):
 
+    freespace = EAttribute(eType=EBoolean, unique=True, derived=False,
+                           changeable=True, default_value=False)
+    relativeDistanceType = EAttribute(eType=RelativeDistanceType, unique=True,
+                                      derived=False, changeable=True, default_value=RelativeDistanceType.euclidean)
+    coordinateSystem = EAttribute(eType=CoordinateSystem, unique=True,
+                                  derived=False, changeable=True, default_value=CoordinateSystem.entity)
+    rule = EAttribute(eType=ComparisonRule, unique=True, derived=False,
+                      changeable=True, default_value=ComparisonRule.lessThan)
     radius = EReference(ordered=True, unique=True, containment=True, derived=False)
 
-    def __init__(self, *, radius=None, **kwargs):
+    def __init__(self, *, radius=None, freespace=None, relativeDistanceType=None, coordinateSystem=None, rule=None, **kwargs):
 
         super().__init__(**kwargs)
+
+        if freespace is not None:
+            self.freespace = freespace
+
+        if relativeDistanceType is not None:
+            self.relativeDistanceType = relativeDistanceType
+
+        if coordinateSystem is not None:
+            self.coordinateSystem = coordinateSystem
+
+        if rule is not None:
+            self.rule = rule
 
         if radius is not None:
             self.radius = radius

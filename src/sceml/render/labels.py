@@ -194,15 +194,21 @@ def _quiet(node: EObject, name: str, held: object) -> bool:
     if name == "direction" and getattr(node, "targetLane", None) is not None:
         return True
     value = getattr(held, "name", held)
+    if name == "rule" and node.eClass.name == "InVehicleRadius":
+        return value == "lessThan"  # within the radius: what the kind's name says
     return name in _QUIET_DEFAULTS and value == _QUIET_DEFAULTS[name]
 
 
 def measure_text(node: EObject) -> str | None:
     """`reference points, longitudinal, lane` for what a measuring condition sets apart from
-    the defaults (between the boxes, straight line, the actor's frame); None when all are."""
+    its kind's defaults (between the boxes for the time conditions, between reference points
+    for InVehicleRadius; straight line; the actor's frame); None when all are."""
     parts = []
-    if node.eClass.findEStructuralFeature("freespace") is not None and not node.freespace:
-        parts.append("reference points")
+    freespace = node.eClass.findEStructuralFeature("freespace")
+    # Each kind's own default is quiet: InVehicleRadius measures between reference points
+    # unless it says otherwise, the time conditions between the boxes.
+    if freespace is not None and bool(node.freespace) != bool(freespace.get_default_value()):
+        parts.append("bounding boxes" if node.freespace else "reference points")
     for name in ("relativeDistanceType", "coordinateSystem"):
         if node.eClass.findEStructuralFeature(name) is None:
             continue

@@ -67,7 +67,22 @@ def in_vehicle_radius(node: EObject, world: World) -> Test:
     actor = world.actor(node.referenceActor, str(node.name))
     other = world.actor(node.targetActor, str(node.name))
     radius = concrete(node, "radius")
-    return lambda w: actor.distance_to(other.x, other.y) <= radius + 1e-9
+    freespace, measure = bool(node.freespace), node.relativeDistanceType.name
+    rule = node.rule.name
+    _frame_note(node, world)
+    previous: list[float | None] = [None]
+
+    def holds(w: World) -> bool:
+        distance = meaning.measured_distance(separation(actor, other), freespace, measure)
+        if rule == "lessThan":
+            # Within the radius counts its edge, as InVehicleRadius always has.
+            result = distance <= radius + 1e-9
+        else:
+            result = _compare(node.rule, distance, radius, previous[0])
+        previous[0] = distance
+        return result
+
+    return holds
 
 
 @kind("TimeElapsed")
