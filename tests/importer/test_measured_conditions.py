@@ -216,7 +216,9 @@ def test_openscenario_1_0_cannot_say_a_distance_in_lane_coordinates(tmp_path: Pa
 
 
 def test_a_distance_beyond_the_radius_keeps_its_rule(tmp_path: Path) -> None:
-    variant = _variant(tmp_path, 'rule="lessThan" coordinateSystem', 'rule="greaterThan" coordinateSystem')
+    variant = _variant(
+        tmp_path, 'rule="lessThan" coordinateSystem', 'rule="greaterThan" coordinateSystem'
+    )
     scenario = import_file(variant).scenario
     assert _distance_node(scenario).rule.name == "greaterThan"
     exported = tmp_path / "out.xosc"
