@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import shutil
 from pathlib import Path
+from typing import Any
 
 import pytest
 from lxml import etree
@@ -159,8 +160,9 @@ def test_a_traveled_distance_is_mapped_and_exported_as_it_was_read(
     same(first.scenario, again)
 
 
-def _distance_node(scenario: object) -> object:
-    (node,) = [n for n in scenario.nodes if n.eClass.name == "InVehicleRadius"]  # type: ignore[attr-defined]
+def _distance_node(scenario: Any) -> Any:
+    """The scenario's one InVehicleRadius."""
+    (node,) = [n for n in scenario.nodes if n.eClass.name == "InVehicleRadius"]
     return node
 
 

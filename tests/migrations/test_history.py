@@ -146,7 +146,9 @@ def test_a_newer_release_than_this_sceml_is_refused(tmp_path: Path) -> None:
         .read_text()
         .replace(scm.nsURI, "https://sceml.org/metamodel/7.0")
     )
-    with pytest.raises(LoadError, match=f"release 7.0, newer than this SceML's {CURRENT}") as caught:
+    with pytest.raises(
+        LoadError, match=f"release 7.0, newer than this SceML's {CURRENT}"
+    ) as caught:
         load(newer)
     assert caught.value.line == 2
 

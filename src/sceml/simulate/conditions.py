@@ -1,9 +1,10 @@
 """When each condition kind holds (SPEC §3): a test of the actors' state, registered by name.
 
 A condition is evaluated only after its activation, at the activation instant and after every
-step, until it first holds. Distances are between actor reference points (centres), like the
-export's `freespace="false"`; the time to collision is the players' (`xosc.meaning`), over
-the distance its node measures (between the boxes by default).
+step, until it first holds. A position's radius is between reference points (centres); an
+InVehicleRadius, a time headway and a time to collision measure the distance their node names
+(`xosc.meaning.measured_distance`: by default between the centres for InVehicleRadius, as the
+export's `freespace="false"`, and between the boxes for the time conditions).
 """
 
 from __future__ import annotations
