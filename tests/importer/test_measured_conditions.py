@@ -221,9 +221,24 @@ def test_a_distance_beyond_the_radius_keeps_its_rule(tmp_path: Path) -> None:
     variant = _variant(
         tmp_path, 'rule="lessThan" coordinateSystem', 'rule="greaterThan" coordinateSystem'
     )
+    variant.write_text(
+        variant.read_text().replace('conditionEdge="rising"', 'conditionEdge="none"')
+    )
     scenario = import_file(variant).scenario
     assert _distance_node(scenario).rule.name == "greaterThan"
     exported = tmp_path / "out.xosc"
     export_to_file(scenario, exported, version="1.3", source_path=variant)
     (written,) = etree.parse(str(exported)).iter("RelativeDistanceCondition")
     assert written.get("rule") == "greaterThan"
+
+
+def test_a_distance_growing_past_its_value_on_a_rising_edge_stays_opaque(tmp_path: Path) -> None:
+    # greaterThan on a rising edge waits for the gap to grow past the value; "holds" would fire
+    # at once where the gap starts beyond it.
+    variant = _variant(
+        tmp_path, 'rule="lessThan" coordinateSystem', 'rule="greaterThan" coordinateSystem'
+    )
+    assert 'name="CutInStartCondition" delay="0" conditionEdge="rising"' in variant.read_text()
+    imported = import_file(variant)
+    assert imported.report.counts()["opaque"] == 1
+    assert any("rising edge" in entry.message for entry in imported.report.section("opaque"))

@@ -202,6 +202,12 @@ def _relative(
     rule = RULES.get(str(test.get("rule")))
     if rule is None:
         return f"the rule {test.get('rule')} has no SceML form"
+    condition = next(test.iterancestors("Condition"), None)
+    edge = "none" if condition is None else condition.get("conditionEdge", "none")
+    if rule[0] == "greaterThan" and edge in ("rising", "risingOrFalling"):
+        # It waits for the gap to grow past the value (left-hand-traffic: the overtaker passing);
+        # read as "holds" it would fire at once where the gap starts beyond it.
+        return "a relative distance growing past its value (a rising edge) has no SceML form"
     if rule[1]:
         build.report.add(
             "guessed", f"{wanted}: {test.get('rule')} read as {rule[0]}", build.where(test)
