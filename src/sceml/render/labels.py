@@ -147,6 +147,12 @@ def describe_position(position: EObject | None, scope: Scope) -> str:
         return text
     if position is not None and position.eClass.name in _RELATIVE_WORDS:
         return _describe_relative(position, scope)
+    if isinstance(position, scm.RoutePosition):
+        where = f"route {position.routeName or '?'} ({len(position.waypoints)} waypoints)"
+        where += f" pathS {describe_value(position.pathS, 'm', scope)}"
+        if position.laneId is not None:
+            return f"{where} lane {position.laneId}"
+        return f"{where} t {describe_value(position.t, 'm', scope)}"
     return "(none)" if position is None else position.eClass.name
 
 

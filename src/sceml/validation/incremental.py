@@ -163,6 +163,7 @@ READS: dict[str, Reads] = {
     "SCEML-R006": Reads(_VALUE, _ROUTE),
     "SCEML-R007": Reads(_VALUE, _ROUTE),
     "SCEML-R008": Reads(_VALUE, _LEVEL),
+    "SCEML-R010": Reads(_VALUE, _LEVEL),
     # players.py: the node's speed; the earlier nodes of its actor along the flows (their names
     # in the message), and for Y003 the actor's initial speed
     "SCEML-Y001": Reads(_VALUE),
