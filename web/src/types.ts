@@ -25,7 +25,17 @@ export type Position =
   | { type: "relativeLane"; entity: string; dLane: number; ds: ParamValue | null; offset: ParamValue | null }
   | { type: "relativeRoad"; entity: string; ds: ParamValue | null; dt: ParamValue | null }
   | { type: "relativeObject"; entity: string; dx: ParamValue | null; dy: ParamValue | null; dz: ParamValue | null; h: ParamValue | null }
-  | { type: "relativeWorld"; entity: string; dx: ParamValue | null; dy: ParamValue | null; dz: ParamValue | null };
+  | { type: "relativeWorld"; entity: string; dx: ParamValue | null; dy: ParamValue | null; dz: ParamValue | null }
+  | {
+      type: "route";
+      routeName: string | null;
+      closed: boolean;
+      waypoints: { routeStrategy: string; position: Position }[];
+      laneId: number | null;
+      pathS: ParamValue | null;
+      laneOffset: ParamValue | null;
+      t: ParamValue | null;
+    };
 
 interface FieldBase {
   name: string;
