@@ -5,7 +5,7 @@ from pyecore.ecore import *
 
 
 name = 'scemlmodel'
-nsURI = 'https://sceml.org/metamodel/1.2'
+nsURI = 'https://sceml.org/metamodel/1.3'
 nsPrefix = 'scemlmodel'
 
 eClass = EPackage(name=name, nsURI=nsURI, nsPrefix=nsPrefix)
@@ -34,6 +34,9 @@ DeclarationType = EEnum('DeclarationType', literals=[
                         'double', 'integer', 'string', 'boolean', 'unsignedInt', 'unsignedShort', 'dateTime'])
 
 ModifyRule = EEnum('ModifyRule', literals=['set', 'add', 'multiply'])
+
+RouteStrategy = EEnum('RouteStrategy', literals=[
+                      'shortest', 'fastest', 'leastIntersections', 'random'])
 
 RelativeDistanceType = EEnum('RelativeDistanceType', literals=[
                              'euclidean', 'longitudinal', 'lateral'])
@@ -294,6 +297,25 @@ class Position(EObject, metaclass=MetaEClass):
         #    raise AttributeError('unexpected arguments: {}'.format(kwargs))
 
         super().__init__()
+
+
+class RouteWaypoint(EObject, metaclass=MetaEClass):
+    """One waypoint of a RoutePosition's route: a position (not relative, not itself on a route) and how the route reaches it from the one before (OpenSCENARIO's Waypoint)."""
+    routeStrategy = EAttribute(eType=RouteStrategy, unique=True, derived=False,
+                               changeable=True, default_value=RouteStrategy.shortest)
+    position = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, position=None, routeStrategy=None):
+        # if kwargs:
+        #    raise AttributeError('unexpected arguments: {}'.format(kwargs))
+
+        super().__init__()
+
+        if routeStrategy is not None:
+            self.routeStrategy = routeStrategy
+
+        if position is not None:
+            self.position = position
 
 
 class Environment(EObject, metaclass=MetaEClass):
@@ -628,6 +650,43 @@ class RelativeWorldPosition(Position):
 
         if dz is not None:
             self.dz = dz
+
+
+class RoutePosition(Position):
+    """A place on a route, as OpenSCENARIO's RoutePosition: the route through its waypoints (two or more, each a position and the strategy that reaches it), then pathS along the route from its first waypoint, in the direction of traffic of that waypoint's lane; with laneId set, laneOffset from the centre of that lane (FromLaneCoordinates), else t from the road's reference line (FromRoadCoordinates)."""
+    routeName = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    closed = EAttribute(eType=EBoolean, unique=True, derived=False,
+                        changeable=True, default_value=False)
+    laneId = EAttribute(eType=EIntegerObject, unique=True, derived=False, changeable=True)
+    waypoints = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+    pathS = EReference(ordered=True, unique=True, containment=True, derived=False)
+    laneOffset = EReference(ordered=True, unique=True, containment=True, derived=False)
+    t = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, routeName=None, closed=None, waypoints=None, pathS=None, laneId=None, laneOffset=None, t=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if routeName is not None:
+            self.routeName = routeName
+
+        if closed is not None:
+            self.closed = closed
+
+        if laneId is not None:
+            self.laneId = laneId
+
+        if waypoints:
+            self.waypoints.extend(waypoints)
+
+        if pathS is not None:
+            self.pathS = pathS
+
+        if laneOffset is not None:
+            self.laneOffset = laneOffset
+
+        if t is not None:
+            self.t = t
 
 
 class Value(ParameterValue):
@@ -1095,11 +1154,31 @@ class InLocationRadius(Condition):
 
 class InVehicleRadius(Condition):
 
+    freespace = EAttribute(eType=EBoolean, unique=True, derived=False,
+                           changeable=True, default_value=False)
+    relativeDistanceType = EAttribute(eType=RelativeDistanceType, unique=True,
+                                      derived=False, changeable=True, default_value=RelativeDistanceType.euclidean)
+    coordinateSystem = EAttribute(eType=CoordinateSystem, unique=True,
+                                  derived=False, changeable=True, default_value=CoordinateSystem.entity)
+    rule = EAttribute(eType=ComparisonRule, unique=True, derived=False,
+                      changeable=True, default_value=ComparisonRule.lessThan)
     radius = EReference(ordered=True, unique=True, containment=True, derived=False)
 
-    def __init__(self, *, radius=None, **kwargs):
+    def __init__(self, *, radius=None, freespace=None, relativeDistanceType=None, coordinateSystem=None, rule=None, **kwargs):
 
         super().__init__(**kwargs)
+
+        if freespace is not None:
+            self.freespace = freespace
+
+        if relativeDistanceType is not None:
+            self.relativeDistanceType = relativeDistanceType
+
+        if coordinateSystem is not None:
+            self.coordinateSystem = coordinateSystem
+
+        if rule is not None:
+            self.rule = rule
 
         if radius is not None:
             self.radius = radius

@@ -11,7 +11,8 @@ from sceml.model.compare import differences
 from sceml.model.loading import load
 from sceml.model.traversal import features
 
-#: Not set by parameter or position ops (maxRuns: every node of UIS1 runs once, the default).
+#: Not set by parameter or position ops (maxRuns: every node of UIS1 runs once, the default;
+#: its InVehicleRadius measures as the defaults say: within, straight line, reference points).
 _SKIPPED = {
     "name",
     "referenceActor",
@@ -20,6 +21,10 @@ _SKIPPED = {
     "outgoing",
     "diagramPosition",
     "maxRuns",
+    "rule",
+    "freespace",
+    "relativeDistanceType",
+    "coordinateSystem",
 }
 
 

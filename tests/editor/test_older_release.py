@@ -6,6 +6,8 @@ from __future__ import annotations
 import shutil
 from pathlib import Path
 
+from metamodel_releases import CURRENT
+
 from sceml.editor import EditorSession, SessionOptions
 
 HISTORY_10 = Path(__file__).resolve().parents[2] / "metamodel" / "history" / "1.0"
@@ -18,12 +20,15 @@ def test_an_older_file_is_offered_for_saving_in_the_current_release(tmp_path: Pa
     scenario = tmp_path / "examples" / "uis2-concrete.xmi"
     session = EditorSession(SessionOptions())
     view = session.open(scenario)
-    assert view["document"]["olderRelease"] == {"saved": "1.0", "current": "1.2"}
+    assert view["document"]["olderRelease"] == {"saved": "1.0", "current": CURRENT}
     assert not view["dirty"]  # the model is as the file says; only its release is older
     assert [n["name"] for n in view["nodes"] if n["name"] == "TurnLeft_1"] == ["TurnLeft_1"]
     view = session.save()
     assert "olderRelease" not in view["document"]
-    assert b'xmlns:scemlmodel="https://sceml.org/metamodel/1.2"' in scenario.read_bytes()
+    assert (
+        f'xmlns:scemlmodel="https://sceml.org/metamodel/{CURRENT}"'.encode()
+        in scenario.read_bytes()
+    )
     # Its library stays as it is until it is saved itself: the editor saved only the scenario.
     library = tmp_path / "examples" / "library" / "sceml-library.xmi"
     assert b"metamodel/1.0" in library.read_bytes()

@@ -119,7 +119,9 @@ def test_each_value_kind_has_the_fields_the_server_sends(value: scm.ParameterVal
     assert union("ParamValue")[kind] == sent
 
 
-@pytest.mark.parametrize("name", ["WorldPosition", "LanePosition", "RoadPosition", *RELATIVE_TYPES])
+@pytest.mark.parametrize(
+    "name", ["WorldPosition", "LanePosition", "RoadPosition", "RoutePosition", *RELATIVE_TYPES]
+)
 def test_each_position_kind_has_the_fields_the_server_sends(name: str) -> None:
     kind, sent = keys(position_to_json(getattr(scm, name)()))
     assert union("Position")[kind] == sent

@@ -170,3 +170,34 @@ def test_emf_keeps_how_many_times_an_imported_node_runs(emf: Harness, tmp_path: 
     assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
     assert 'maxRuns="3"' in (out / "repeats.xmi").read_text()
     assert differences(load(source / "repeats.xmi").root, load(out / "repeats.xmi").root) == []
+
+
+def test_emf_keeps_how_an_imported_relative_distance_measures(emf: Harness, tmp_path: Path) -> None:
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    import_to_file(FILES / "relative-distance-measured.xosc", source / "distance.xmi")
+    written = (source / "distance.xmi").read_text()
+    assert 'freespace="true"' in written and 'relativeDistanceType="longitudinal"' in written
+    result = emf.run("roundtrip", ECORE, source, out, Path("distance.xmi"))
+    assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+    from_emf = load(out / "distance.xmi").root
+    assert differences(load(source / "distance.xmi").root, from_emf) == []
+    (close,) = [n for n in from_emf.nodes if n.eClass.name == "InVehicleRadius"]
+    assert (close.freespace, close.relativeDistanceType.name) == (True, "longitudinal")
+    assert close.rule.name == "lessThan"
+
+
+def test_emf_reads_and_writes_imported_route_positions(emf: Harness, tmp_path: Path) -> None:
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    import_to_file(FILES / "route-positions.xosc", source / "routes.xmi")
+    assert (source / "routes.xmi").read_text().count('xsi:type="scemlmodel:RoutePosition"') == 3
+    result = emf.run("roundtrip", ECORE, source, out, Path("routes.xmi"))
+    assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+    from_emf = load(out / "routes.xmi").root
+    assert differences(load(source / "routes.xmi").root, from_emf) == []
+    ego = next(a for a in from_emf.nodes[0].actors if a.name == "Ego").startPosition
+    assert [w.routeStrategy.name for w in ego.waypoints] == ["shortest", "fastest"]
+    assert (ego.laneId, ego.pathS.value) == (-2, 30.0)

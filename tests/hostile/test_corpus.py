@@ -15,6 +15,7 @@ from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
+from metamodel_releases import CURRENT
 
 from sceml.cli import cli
 from sceml.cli import commands as cli_commands
@@ -228,7 +229,8 @@ def test_100k_nested_elements_are_a_clean_error(tmp_path: Path) -> None:
     deep = tmp_path / "deep.xmi"
     body = "<nodes>" * 100_000 + "</nodes>" * 100_000
     deep.write_text(
-        f'<?xml version="1.0"?>\n<s:Scenario xmlns:s="https://sceml.org/metamodel/1.2">{body}</s:Scenario>'
+        f'<?xml version="1.0"?>\n<s:Scenario xmlns:s="https://sceml.org/metamodel/{CURRENT}">'
+        f"{body}</s:Scenario>"
     )
     exit_code, output = run(["info", str(deep)])
     assert exit_code == 2 and "Excessive depth" in output

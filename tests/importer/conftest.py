@@ -69,6 +69,9 @@ def feature_path(held: EObject) -> str:
 def _position(position: EObject | None, heading: bool = True) -> str:
     if position is None:
         return "-"
+    if isinstance(position, scm.RoutePosition):
+        # Its route and place on it, every feature compared (the waypoints' positions included).
+        return f"route({_content(position)})"
     if isinstance(position, scm.LanePosition):
         turned = "" if position.h is None else f",h={_number(position, 'h')}"
         return f"lane({position.roadId},{position.laneId},{_number(position, 's')},{_number(position, 'offset')}{turned})"

@@ -102,3 +102,41 @@ def test_the_editor_sets_a_lane_change_target_lane_from_its_text_field() -> None
     for wrong in ("two", True, 1.5):
         with pytest.raises(OperationError, match="whole number"):
             attribute_value(feature("lanes"), wrong)
+
+
+def radius_lines(**measure: object) -> list[str]:
+    b = ScenarioBuilder("labels", level="concrete")
+    ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0), speed=10.0)
+    lead = b.actor("Car", "lead", start=world(30.0, 0.0), speed=5.0)
+    return action_lines(b.add("InVehicleRadius", ego, target=lead, radius=12.0, **measure), Scope())
+
+
+def test_an_in_vehicle_radius_box_stays_as_it_was_with_its_defaults() -> None:
+    # Between the reference points and "within" are what InVehicleRadius always meant.
+    assert radius_lines() == ["ego, target lead", "radius: 12 m"]
+
+
+def test_an_in_vehicle_radius_box_shows_a_measure_and_rule_apart_from_its_defaults() -> None:
+    lines = radius_lines(freespace=True, relativeDistanceType="longitudinal", rule="greaterThan")
+    assert lines == [
+        "ego, target lead",
+        "measured: bounding boxes, longitudinal",
+        "rule: greaterThan",
+        "radius: 12 m",
+    ]
+
+
+def test_the_editor_offers_an_in_vehicle_radius_its_measure_and_rule() -> None:
+    from sceml.editor.fields import node_fields
+    from sceml.model.build import node_named
+
+    b = ScenarioBuilder("fields", level="concrete")
+    ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0), speed=10.0)
+    lead = b.actor("Car", "lead", start=world(30.0, 0.0), speed=5.0)
+    b.add("InVehicleRadius", ego, target=lead, name="close")
+    fields = {f["name"]: f for f in node_fields(node_named(b.scenario, "close"))}
+    assert fields["freespace"]["value"] is False
+    assert fields["relativeDistanceType"]["value"] == "euclidean"
+    assert fields["coordinateSystem"]["options"] == ["entity", "lane", "road", "trajectory"]
+    assert fields["rule"]["options"] == ["greaterThan", "lessThan", "equalTo"]
+    assert fields["rule"]["value"] == "lessThan"

@@ -100,3 +100,51 @@ def test_time_headway_is_the_distance_over_the_actor_speed() -> None:
 def test_time_headway_to_a_target_behind_never_holds() -> None:
     # The lead is 30 m behind: undefined, though 26 m at 20 m/s would be 1.3 s.
     assert headway_run(-30.0, 20.0) is None
+
+
+def distance_run(lead_y: float, radius: float, **measure: object) -> float | None:
+    """Ego at 20 m/s from x = 0, the lead at 10 m/s from x = 50.25 (y = lead_y), both heading
+    east: when the ego's InVehicleRadius to the lead finishes."""
+    b = ScenarioBuilder("distance", level="concrete", max_duration=6.0)
+    ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0, h=0.0), speed=20.0, **SIZE)
+    lead = b.actor("Car", "lead", start=world(50.25, lead_y, h=0.0), speed=10.0, **SIZE)
+    close = b.add("InVehicleRadius", ego, target=lead, radius=radius, **measure)
+    b.chain(b.root, close, b.end)
+    return simulate(b.scenario).node(str(close.name)).finished
+
+
+def test_in_vehicle_radius_is_between_the_reference_points_by_default() -> None:
+    # 50.25 m closing at 10 m/s: within 30 m after 2.025 s.
+    assert distance_run(0.0, 30.0) == pytest.approx(2.05)
+    # 10 m aside: the straight line is within 30 m once 50.25 - 10 t = sqrt(30^2 - 10^2) =
+    # 28.28 m, after 2.197 s.
+    assert distance_run(10.0, 30.0) == pytest.approx(2.2)
+
+
+def test_in_vehicle_radius_longitudinal_between_the_boxes() -> None:
+    # 50.25 m ahead less the half lengths, 46.25 m, whatever the 10 m aside: within 30 m
+    # after 1.625 s.
+    measure = {"freespace": True, "relativeDistanceType": "longitudinal"}
+    assert distance_run(10.0, 30.0, **measure) == pytest.approx(1.65)
+
+
+def test_in_vehicle_radius_lateral_is_the_gap_across() -> None:
+    # 3.5 m aside, 1.5 m between the boxes' sides: within 2 m at once (the activation step).
+    measure = {"freespace": True, "relativeDistanceType": "lateral"}
+    assert distance_run(3.5, 2.0, **measure) == pytest.approx(0.05)
+    # Between the reference points 3.5 m is not within 2 m, and never gets so.
+    assert distance_run(3.5, 2.0, relativeDistanceType="lateral") is None
+
+
+def test_in_vehicle_radius_beyond_the_radius_with_greater_than() -> None:
+    # The lead 10 m behind at 10 m/s, the ego pulling away at 20 m/s: 10 + 10 t > 25 after
+    # 1.5 s (not before: the first step past it is 1.55 s).
+    # The lead 50.25 m ahead is beyond 25 m at once; "within" would wait until 2.55 s.
+    assert distance_run(0.0, 25.0, rule="greaterThan") == pytest.approx(0.05)
+    assert distance_run(0.0, 25.0) == pytest.approx(2.55)
+    b = ScenarioBuilder("beyond", level="concrete", max_duration=6.0)
+    ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0, h=0.0), speed=20.0, **SIZE)
+    lead = b.actor("Car", "lead", start=world(-10.0, 0.0, h=0.0), speed=10.0, **SIZE)
+    far = b.add("InVehicleRadius", ego, target=lead, radius=25.0, rule="greaterThan")
+    b.chain(b.root, far, b.end)
+    assert simulate(b.scenario).node(str(far.name)).finished == pytest.approx(1.55)

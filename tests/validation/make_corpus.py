@@ -840,6 +840,26 @@ on_map("r008-s-beyond-road", "SCEML-R008")(_start(road(1, 150.0, -1.75)))
 on_map("r008-t-off-road", "SCEML-R008")(_start(road(1, 20.0, -30.0)))
 # A road position in a driving lane, with a heading relative to the road: clean.
 on_map("r008-road-position-on-lane", "")(_start(road(1, 20.0, -1.75, h=0.1)))
+
+
+def _route(path_s: float) -> scm.RoutePosition:
+    """A route from road 1, lane -1 at s=10 to s=90 (lane -1 drives along s), the actor
+    `path_s` along it in lane -1."""
+    return scm.RoutePosition(
+        routeName="along_road_1",
+        waypoints=[
+            scm.RouteWaypoint(position=lane(1, -1, 10.0)),
+            scm.RouteWaypoint(position=lane(1, -1, 90.0)),
+        ],
+        pathS=scm.Value(value=path_s),
+        laneId=-1,
+    )
+
+
+# 140 m from s=10 leaves road 1 (100 m): SceML places a route position on its first road only.
+on_map("r010-route-beyond-its-first-road", "SCEML-R010")(_start(_route(140.0)))
+# 30 m along the route, still on road 1: clean.
+on_map("r010-route-on-its-first-road", "")(_start(_route(30.0)))
 on_map("r004-car-on-sidewalk", "SCEML-R004")(_start(lane(1, -2, 10.0)))
 
 

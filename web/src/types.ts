@@ -25,7 +25,14 @@ export type Position =
   | { type: "relativeLane"; entity: string; dLane: number; ds: ParamValue | null; offset: ParamValue | null }
   | { type: "relativeRoad"; entity: string; ds: ParamValue | null; dt: ParamValue | null }
   | { type: "relativeObject"; entity: string; dx: ParamValue | null; dy: ParamValue | null; dz: ParamValue | null; h: ParamValue | null }
-  | { type: "relativeWorld"; entity: string; dx: ParamValue | null; dy: ParamValue | null; dz: ParamValue | null };
+  | { type: "relativeWorld"; entity: string; dx: ParamValue | null; dy: ParamValue | null; dz: ParamValue | null }
+  | { type: "route"; routeName: string | null; closed: boolean; waypoints: RouteWaypoint[]; laneId: number | null; pathS: ParamValue | null; laneOffset: ParamValue | null; t: ParamValue | null };
+
+/** One waypoint of a route position: a world, lane or road position and how the route reaches it. */
+export interface RouteWaypoint {
+  routeStrategy: string;
+  position: Position;
+}
 
 interface FieldBase {
   name: string;

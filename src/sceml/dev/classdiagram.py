@@ -103,6 +103,8 @@ VIEWS: dict[str, tuple[str, ...]] = {
         "RelativeRoadPosition",
         "RelativeObjectPosition",
         "RelativeWorldPosition",
+        "RoutePosition",
+        "RouteWaypoint",
         "Controller",
         "Property",
         "ControllerActivation",

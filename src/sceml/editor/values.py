@@ -181,6 +181,18 @@ def position_to_json(position: scm.Position | None) -> dict[str, Any] | None:
             "roadId": position.roadId,
             **{key: value_to_json(position.eGet(key)) for key in ("s", "t", "h")},
         }
+    if isinstance(position, scm.RoutePosition):
+        return {
+            "type": "route",
+            "routeName": position.routeName,
+            "closed": bool(position.closed),
+            "waypoints": [
+                {"routeStrategy": w.routeStrategy.name, "position": position_to_json(w.position)}
+                for w in position.waypoints
+            ],
+            "laneId": position.laneId,
+            **{key: value_to_json(position.eGet(key)) for key in ("pathS", "laneOffset", "t")},
+        }
     kind = None if position is None else RELATIVE_TYPES.get(position.eClass.name)
     if kind is not None:
         assert position is not None
@@ -258,7 +270,9 @@ def position_from_json(
         )
     if kind in _OFFSETS:
         return _relative_from_json(data, str(kind), coordinate, participants or {})
-    known = ", ".join(repr(k) for k in ("world", "lane", "road", *_OFFSETS))
+    if kind == "route":
+        return _route_from_json(data, coordinate, find_parameter)
+    known = ", ".join(repr(k) for k in ("world", "lane", "road", "route", *_OFFSETS))
     raise OperationError(f"unknown position type {kind!r}; use one of {known}")
 
 
@@ -283,4 +297,39 @@ def _relative_from_json(
         position.dLane = lanes
     for key in _OFFSETS[kind]:
         position.eSet(key, coordinate(key, required=False))
+    return position
+
+
+def _route_from_json(
+    data: Mapping[str, Any],
+    coordinate: Callable[..., scm.ParameterValue | None],
+    find_parameter: ParameterLookup | None,
+) -> scm.RoutePosition:
+    """A route position: two or more waypoints, each a world, lane or road position (a route
+    is fixed: none relative to an entity, none on another route)."""
+    waypoints = data.get("waypoints")
+    if not isinstance(waypoints, list) or len(waypoints) < 2:
+        raise OperationError("a route position needs 'waypoints': a list of two or more")
+    lane_id = data.get("laneId")
+    if lane_id is not None and (isinstance(lane_id, bool) or not isinstance(lane_id, int)):
+        raise OperationError(f"'laneId' must be a whole number or null, not {lane_id!r}")
+    position = scm.RoutePosition(
+        routeName=str(data.get("routeName") or "Route"),
+        closed=bool(data.get("closed", False)),
+        laneId=lane_id,
+        pathS=coordinate("pathS", required=False),
+        laneOffset=coordinate("laneOffset", required=False),
+        t=coordinate("t", required=False),
+    )
+    for waypoint in waypoints:
+        if not isinstance(waypoint, Mapping):
+            raise OperationError(f"a waypoint must be an object, not {waypoint!r}")
+        at = position_from_json(waypoint.get("position"), find_parameter)
+        if at is None or at.eClass.name in RELATIVE_TYPES or isinstance(at, scm.RoutePosition):
+            raise OperationError("a waypoint's position is a world, lane or road position")
+        strategy = scm.RouteStrategy.getEEnumLiteral(str(waypoint.get("routeStrategy", "shortest")))
+        if strategy is None:
+            names = ", ".join(str(e.name) for e in scm.RouteStrategy.eLiterals)
+            raise OperationError(f"'routeStrategy' is one of {names}")
+        position.waypoints.append(scm.RouteWaypoint(position=at, routeStrategy=strategy))
     return position

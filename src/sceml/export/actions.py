@@ -348,19 +348,21 @@ def plan_in_location(ctx: Context, node: scm.InLocationRadius, groups: list[Grou
 
 @planner("InVehicleRadius")
 def plan_in_vehicle(ctx: Context, node: scm.InVehicleRadius, groups: list[Group]) -> Plan:
-    """A marker on RelativeDistanceCondition (cartesian, not freespace) to the target actor."""
+    """A marker on RelativeDistanceCondition to the target actor, measured as the node says
+    (by default between the reference points, in a straight line, closer than the radius)."""
     name = ctx.event_names[node]
-    close = Condition(
-        f"{name}_close",
-        "relative_distance",
-        {
-            "entity": ctx.entity(node.referenceActor),
-            "target": ctx.entity(node.targetActor),
-            "value": ctx.values.text(node, "radius"),
-            "rule": "lessThan",
-            "type": ctx.traits.euclidian,
-        },
-    )
+    along = measured_along(node)
+    data = {
+        "entity": ctx.entity(node.referenceActor),
+        "target": ctx.entity(node.targetActor),
+        "value": ctx.values.text(node, "radius"),
+        "rule": node.rule.name,
+        # The distance type is required on a RelativeDistanceCondition, so always written.
+        "type": along.pop("relative_distance_type", ctx.traits.euclidian),
+        "freespace": "true" if node.freespace else "false",
+        **along,
+    }
+    close = Condition(f"{name}_close", "relative_distance", data)
     return marker_plan(ctx, node, groups, ctx.entity(node.referenceActor), close)
 
 

@@ -86,12 +86,33 @@ class Context:
             }
         if is_relative(position):
             return self._relative(position)
+        if isinstance(position, scm.RoutePosition):
+            return self._route(position)
         return {
             "kind": "world",
             "x": text(position, "x"),
             "y": text(position, "y"),
             "z": text(position, "z"),
             "h": text(position, "h"),
+        }
+
+    def _route(self, position: scm.RoutePosition) -> dict[str, Any]:
+        """A route position writes its route inline (a catalog's route included: the export
+        refers to no route catalog) and its place on it in lane or road coordinates."""
+        text = self.values.text
+        on_lane = position.laneId is not None
+        return {
+            "kind": "route",
+            "name": sanitize(position.routeName, fallback="Route"),
+            "closed": "true" if position.closed else "false",
+            "waypoints": [
+                {"strategy": w.routeStrategy.name, "position": self.position(w.position)}
+                for w in position.waypoints
+            ],
+            "pathS": text(position, "pathS"),
+            "laneId": str(int(position.laneId)) if on_lane else None,
+            "laneOffset": text(position, "laneOffset") if on_lane else None,
+            "t": None if on_lane else text(position, "t"),
         }
 
     def _relative(self, position: scm.Position) -> dict[str, Any]:

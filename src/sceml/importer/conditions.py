@@ -1,7 +1,7 @@
 """One entity condition to SceML condition nodes, or an opaque node keeping the Condition.
 
 ReachPosition and Distance (to a position, less than) to InLocationRadius, RelativeDistance to
-InVehicleRadius, Speed to SpeedCondition, TimeToCollision (to an entity) to TimeToCollision with
+InVehicleRadius with its measure and rule, Speed to SpeedCondition, TimeToCollision (to an entity) to TimeToCollision with
 its measure, TraveledDistance to TraveledDistance.
 With several triggering entities there is one node per entity, joined: `any` by JoinOneFinished,
 `all` by JoinAllFinished.
@@ -199,20 +199,28 @@ def _distance(
 def _relative(
     build: Build, test: etree._Element, actor: scm.Actor, wanted: str
 ) -> scm.ActionNode | str:
-    kind = test.get("relativeDistanceType")
-    if test.get("rule") not in _BELOW or kind == "lateral":
-        return "only 'closer than' in distance or along the road maps (InVehicleRadius)"
-    if kind == "longitudinal":
+    rule = RULES.get(str(test.get("rule")))
+    if rule is None:
+        return f"the rule {test.get('rule')} has no SceML form"
+    condition = next(test.iterancestors("Condition"), None)
+    edge = "none" if condition is None else condition.get("conditionEdge", "none")
+    if rule[0] == "greaterThan" and edge in ("rising", "risingOrFalling"):
+        # It waits for the gap to grow past the value (left-hand-traffic: the overtaker passing);
+        # read as "holds" it would fire at once where the gap starts beyond it.
+        return "a relative distance growing past its value (a rising edge) has no SceML form"
+    if rule[1]:
         build.report.add(
-            "guessed", f"{wanted}: a longitudinal distance read as a radius", build.where(test)
+            "guessed", f"{wanted}: {test.get('rule')} read as {rule[0]}", build.where(test)
         )
-    if test.get("freespace") == "true":
-        build.report.add(
-            "guessed",
-            f"{wanted}: a freespace distance read as between reference points",
-            build.where(test),
-        )
+    # Read as a straight line between the reference points it would fire at another time
+    # (ALKS 4.4.x: a longitudinal freespace gap, the cut-in 0.95 s late), so the measure is kept.
+    measure = measure_of(test, wanted)
+    if isinstance(measure, str):
+        return measure
     node = _node(build, "InVehicleRadius", actor, wanted, radius=number(test, "value"))
+    node.rule = scm.ComparisonRule.getEEnumLiteral(rule[0])
+    for feature, value in measure.items():
+        node.eSet(feature, value)
     node.targetActor = build.actor(test.get("entityRef"), test)
     return node
 

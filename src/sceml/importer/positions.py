@@ -1,5 +1,6 @@
-"""Position elements to SceML positions: World, Lane, Road and the four relative positions (these
-when the entity they name is an actor); None for the others."""
+"""Position elements to SceML positions: World, Lane, Road, the four relative positions (these
+when the entity they name is an actor) and Route positions (their route given or taken from a
+catalog, resolved before); None for the others."""
 
 from __future__ import annotations
 
@@ -56,6 +57,8 @@ def position(
             )
         if kind.tag in _RELATIVE and actors is not None:
             return _relative(kind, actors)
+        if kind.tag == "RoutePosition":
+            return _on_route(kind, actors)
     except ValueError:
         return None
     return None
@@ -108,6 +111,38 @@ def _relative(kind: etree._Element, actors: Mapping[str, scm.Actor]) -> scm.Posi
     return scm.RelativeWorldPosition(
         entity=entity, dx=_value(kind, "dx"), dy=_value(kind, "dy"), dz=_value(kind, "dz", 0.0)
     )
+
+
+def _on_route(kind: etree._Element, actors: Mapping[str, scm.Actor] | None) -> scm.RoutePosition:
+    """A RoutePosition whose route is in its RouteRef (a catalog entry is already copied in)
+    and whose place on it is given in road or lane coordinates; ValueError for the others
+    (FromCurrentEntity, a route of fewer than two waypoints, a waypoint SceML cannot hold)."""
+    route = kind.find("RouteRef/Route")
+    lane = kind.find("InRoutePosition/FromLaneCoordinates")
+    road = kind.find("InRoutePosition/FromRoadCoordinates")
+    if route is None or (lane is None and road is None):
+        raise ValueError("a route position from the current entity, or with no route")
+    made = scm.RoutePosition(
+        routeName=route.get("name"), closed=route.get("closed") in ("true", "1")
+    )
+    for waypoint in route.iterfind("Waypoint"):
+        at = position(waypoint, actors)
+        strategy = scm.RouteStrategy.getEEnumLiteral(waypoint.get("routeStrategy", "shortest"))
+        # A route is fixed when it is given: no waypoint moves with an entity.
+        if at is None or at.eClass.name in _RELATIVE or strategy is None:
+            raise ValueError("a waypoint SceML cannot hold")
+        made.waypoints.append(scm.RouteWaypoint(position=at, routeStrategy=strategy))
+    if len(made.waypoints) < 2:
+        raise ValueError("a route of fewer than two waypoints")
+    if lane is not None:
+        made.pathS = _value(lane, "pathS")
+        made.laneId = lane_id(lane)
+        made.laneOffset = _value(lane, "laneOffset", 0.0)
+    else:
+        assert road is not None
+        made.pathS = _value(road, "pathS")
+        made.t = _value(road, "t", 0.0)
+    return made
 
 
 _RELATIVE = frozenset(

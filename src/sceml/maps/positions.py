@@ -126,7 +126,17 @@ def locate(position: EObject | None, road_map: RoadMap | None) -> list[Located]:
         return points
     if isinstance(position, scm.RoadPosition) and road_map is not None:
         return _on_road(position, road_map, spread)
+    if isinstance(position, scm.RoutePosition) and road_map is not None:
+        return _on_route(position, road_map)
     return []
+
+
+def _on_route(position: scm.RoutePosition, road_map: RoadMap) -> list[Located]:
+    """The point of a route position (its nominal place: a route is not spread over values)."""
+    from .resolve import route_pose  # resolve reads this module's numbers
+
+    pose = route_pose(position, road_map)
+    return [] if pose is None else [Located(pose.x, pose.y, pose.heading)]
 
 
 def _on_road(position: scm.RoadPosition, road_map: RoadMap, numbers: Spread) -> list[Located]:
@@ -170,6 +180,9 @@ def centre(position: EObject | None, road_map: RoadMap | None) -> Located | None
             )
         if isinstance(position, scm.RoadPosition) and road_map is not None:
             points = _on_road(position, road_map, _nominal_only)
+            return points[0] if points else None
+        if isinstance(position, scm.RoutePosition) and road_map is not None:
+            points = _on_route(position, road_map)
             return points[0] if points else None
     except PositionError:
         return None

@@ -109,7 +109,48 @@ def resolve(
         if s is None or t is None or not position.roadId:
             return None
         return road_pose(road_map, str(position.roadId), s, t, nominal(position.h))
+    if isinstance(position, scm.RoutePosition):
+        return route_pose(position, road_map)
     return None
+
+
+def route_pose(position: scm.RoutePosition, road_map: RoadMap) -> WorldPose | None:
+    """Where a RoutePosition is, as esmini 3.6 places one: pathS from the first waypoint in the
+    direction of traffic of its lane. Only a place on the first waypoint's own road is worked
+    out (no routing through junctions): PositionError says so for one beyond it, rather than
+    guessing which road the route takes there."""
+    if len(position.waypoints) < 2:
+        raise PositionError("a route position needs a route of at least two waypoints")
+    first = position.waypoints[0].position
+    start = resolve(first, road_map)
+    if start is None:
+        return None
+    lanes = road_map.world_to_lane(start.x, start.y)
+    if not lanes:
+        raise PositionError("the route's first waypoint is on no lane")
+    lane = min(lanes, key=lambda c: abs(wrap_angle(start.heading - _traffic(road_map, c))))
+    path_s = nominal(position.pathS, 0.0)
+    if path_s is None:
+        return None
+    road = road_map.road(lane.road_id)
+    s = lane.s + path_s if road_map.drives_along_s(road, lane.lane_id) else lane.s - path_s
+    if not -1e-6 <= s <= road.length + 1e-6:
+        raise PositionError(
+            f"pathS={path_s:g} m leaves road {road.id!r} (the first waypoint's, "
+            f"{road.length:g} m long) at s={s:g}: SceML places a route position only on the "
+            "road its route starts on"
+        )
+    if position.laneId is None:
+        t = nominal(position.t, 0.0)
+        return None if t is None else road_pose(road_map, road.id, s, t)
+    offset = nominal(position.laneOffset, 0.0)
+    if offset is None:
+        return None
+    return road_map.lane_to_world(road.id, int(position.laneId), s, offset)
+
+
+def _traffic(road_map: RoadMap, lane: LaneCoordinate) -> float:
+    return road_map.traffic_heading(lane.road_id, lane.lane_id, lane.s)
 
 
 def _relative(position: EObject, anchor: WorldPose, road_map: RoadMap | None) -> WorldPose | None:

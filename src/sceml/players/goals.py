@@ -203,6 +203,14 @@ def _close(node: EObject, at: Moment) -> str | None:
     trace, other = at.trace(node.referenceActor), at.trace(node.targetActor)
     if trace is None or other is None:
         return None
+    if (node.rule.name, node.relativeDistanceType.name, node.freespace) != (
+        "lessThan",
+        "euclidean",
+        False,
+    ):
+        # The traces hold reference points only, not the boxes and headings another measure
+        # needs: that goal is not checked here.
+        return None
     k, m = trace.at(at.finish), other.at(at.finish)
     off = math.hypot(trace.x[k] - other.x[m], trace.y[k] - other.y[m])
     radius = concrete(node, "radius")

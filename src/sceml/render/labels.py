@@ -147,6 +147,12 @@ def describe_position(position: EObject | None, scope: Scope) -> str:
         return text
     if position is not None and position.eClass.name in _RELATIVE_WORDS:
         return _describe_relative(position, scope)
+    if isinstance(position, scm.RoutePosition):
+        where = f"route {position.routeName or '?'} ({len(position.waypoints)} waypoints)"
+        where += f" pathS {describe_value(position.pathS, 'm', scope)}"
+        if position.laneId is not None:
+            return f"{where} lane {position.laneId}"
+        return f"{where} t {describe_value(position.t, 'm', scope)}"
     return "(none)" if position is None else position.eClass.name
 
 
@@ -194,15 +200,21 @@ def _quiet(node: EObject, name: str, held: object) -> bool:
     if name == "direction" and getattr(node, "targetLane", None) is not None:
         return True
     value = getattr(held, "name", held)
+    if name == "rule" and node.eClass.name == "InVehicleRadius":
+        return value == "lessThan"  # within the radius: what the kind's name says
     return name in _QUIET_DEFAULTS and value == _QUIET_DEFAULTS[name]
 
 
 def measure_text(node: EObject) -> str | None:
     """`reference points, longitudinal, lane` for what a measuring condition sets apart from
-    the defaults (between the boxes, straight line, the actor's frame); None when all are."""
+    its kind's defaults (between the boxes for the time conditions, between reference points
+    for InVehicleRadius; straight line; the actor's frame); None when all are."""
     parts = []
-    if node.eClass.findEStructuralFeature("freespace") is not None and not node.freespace:
-        parts.append("reference points")
+    freespace = node.eClass.findEStructuralFeature("freespace")
+    # Each kind's own default is quiet: InVehicleRadius measures between reference points
+    # unless it says otherwise, the time conditions between the boxes.
+    if freespace is not None and bool(node.freespace) != bool(freespace.get_default_value()):
+        parts.append("bounding boxes" if node.freespace else "reference points")
     for name in ("relativeDistanceType", "coordinateSystem"):
         if node.eClass.findEStructuralFeature(name) is None:
             continue

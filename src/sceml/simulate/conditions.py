@@ -1,9 +1,10 @@
 """When each condition kind holds (SPEC §3): a test of the actors' state, registered by name.
 
 A condition is evaluated only after its activation, at the activation instant and after every
-step, until it first holds. Distances are between actor reference points (centres), like the
-export's `freespace="false"`; the time to collision is the players' (`xosc.meaning`), over
-the distance its node measures (between the boxes by default).
+step, until it first holds. A position's radius is between reference points (centres); an
+InVehicleRadius, a time headway and a time to collision measure the distance their node names
+(`xosc.meaning.measured_distance`: by default between the centres for InVehicleRadius, as the
+export's `freespace="false"`, and between the boxes for the time conditions).
 """
 
 from __future__ import annotations
@@ -67,7 +68,22 @@ def in_vehicle_radius(node: EObject, world: World) -> Test:
     actor = world.actor(node.referenceActor, str(node.name))
     other = world.actor(node.targetActor, str(node.name))
     radius = concrete(node, "radius")
-    return lambda w: actor.distance_to(other.x, other.y) <= radius + 1e-9
+    freespace, measure = bool(node.freespace), node.relativeDistanceType.name
+    rule = node.rule.name
+    _frame_note(node, world)
+    previous: list[float | None] = [None]
+
+    def holds(w: World) -> bool:
+        distance = meaning.measured_distance(separation(actor, other), freespace, measure)
+        if rule == "lessThan":
+            # Within the radius counts its edge, as InVehicleRadius always has.
+            result = distance <= radius + 1e-9
+        else:
+            result = _compare(node.rule, distance, radius, previous[0])
+        previous[0] = distance
+        return result
+
+    return holds
 
 
 @kind("TimeElapsed")

@@ -9,7 +9,7 @@ from pyecore.ecore import EObject
 import scemlmodel as scm
 
 from ..maps import PositionError, RoadMap, WorldPose
-from ..maps.resolve import is_relative, resolve, road_pose, road_to_lane
+from ..maps.resolve import is_relative, resolve, road_pose, road_to_lane, route_pose
 from ..model.params import concrete
 from . import lanes
 from .actors import Actor
@@ -35,6 +35,8 @@ def make_actor(
             return _in_world(actor, position, road_map, size, speed)
         if isinstance(position, scm.RoadPosition):
             return _on_road(actor, position, road_map, size, speed)
+        if isinstance(position, scm.RoutePosition):
+            return _on_route(actor, position, road_map, size, speed)
         if is_relative(position):
             pose = resolve(position, road_map, starts or {})
             if pose is None:
@@ -116,6 +118,29 @@ def _on_road(
         offset=scm.Value(value=lane.offset),
     )
     return _on_lane(actor, in_lane, road_map, size, speed)
+
+
+def _on_route(
+    actor: scm.Actor,
+    position: scm.RoutePosition,
+    road_map: RoadMap | None,
+    size: tuple[float, float],
+    speed: float,
+) -> Actor:
+    """A route start is placed where the route puts it on its first road (maps/resolve.py:
+    PositionError beyond it); from there the actor follows its lane, not the route's turns."""
+    if road_map is None:
+        raise SimulationError(
+            f"{actor.name} starts on a route, which needs an OpenDRIVE map",
+            element=str(actor.name),
+        )
+    pose = route_pose(position, road_map)
+    if pose is None:
+        raise SimulationError(
+            f"{actor.name}'s start on a route has no concrete pathS or waypoint",
+            element=str(actor.name),
+        )
+    return _in_world(actor, _world(pose), road_map, size, speed)
 
 
 def _world(pose: WorldPose) -> scm.WorldPosition:

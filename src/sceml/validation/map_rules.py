@@ -31,7 +31,7 @@ from ..maps import (
 )
 from ..maps.positions import Located, centre, locate, spread
 from ..maps.reference import MapReference, is_town_name, map_reference
-from ..maps.resolve import RELATIVE_KINDS, is_relative, road_to_lane, start_poses
+from ..maps.resolve import RELATIVE_KINDS, is_relative, road_to_lane, route_pose, start_poses
 from ..maps.routes import routes_from
 from ..model.graph import Flows, OwnFlows, reachable, root_node
 from .context import Context, is_kind, performer
@@ -224,6 +224,27 @@ def road_position_exists(position: scm.RoadPosition, context: Context) -> Iterat
                 return
 
 
+@constraint(
+    "SCEML-R010",
+    ERROR,
+    "RoutePosition",
+    "a route position can be placed on the map: its route has two or more waypoints, the first "
+    "on a lane, and pathS stays on the road the route starts on (SceML does not route through "
+    "junctions)",
+    source=_SOURCE,
+    through_modules=True,
+    reads=Reads(VALUE, LEVEL),
+)
+def route_position_placed(position: scm.RoutePosition, context: Context) -> Iterator[Finding]:
+    road_map = _map_of(position, context)
+    if road_map is None:
+        return
+    try:
+        route_pose(position, road_map)
+    except PositionError as error:
+        yield position, f"{_what(position)}: {error}"
+
+
 @dataclass(frozen=True)
 class _Ground:
     """What a position stands on: the lane types there (none: off the road network) and how to
@@ -247,7 +268,7 @@ def _grounds(position: EObject, road_map: RoadMap, context: Context) -> Iterator
     try:
         points = _relative_start(position, road_map, context) or locate(position, road_map)
     except PositionError:
-        return  # SCEML-R003 or R008 says what is wrong with the position
+        return  # SCEML-R003, R008 or R010 says what is wrong with the position
     for point in points:
         if point.lane is not None:
             road_id, lane_id, s, _ = point.lane
@@ -265,7 +286,7 @@ def _grounds(position: EObject, road_map: RoadMap, context: Context) -> Iterator
 @constraint(
     "SCEML-R004",
     ERROR,
-    ("WorldPosition", "LanePosition", "RoadPosition", *RELATIVE_KINDS),
+    ("WorldPosition", "LanePosition", "RoadPosition", "RoutePosition", *RELATIVE_KINDS),
     "a position lies on a lane that fits its actor: driving lanes (or a shoulder, stop or "
     "parking lane) for vehicles; the roadway, sidewalks and bike lanes for bicycles and "
     "pedestrians",
@@ -298,7 +319,7 @@ def position_fits_actor(position: EObject, context: Context) -> Iterator[Finding
 @constraint(
     "SCEML-R009",
     WARNING,
-    ("WorldPosition", "LanePosition", "RoadPosition", *RELATIVE_KINDS),
+    ("WorldPosition", "LanePosition", "RoadPosition", "RoutePosition", *RELATIVE_KINDS),
     "a vehicle's position on a shoulder, stop, parking or restricted lane is meant: vehicles stand "
     "or pull over there but do not normally drive there",
     source=_SOURCE,

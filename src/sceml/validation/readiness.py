@@ -135,9 +135,17 @@ def kinds_exportable(scenario: scm.Scenario, context: Context) -> Iterator[Findi
 @constraint(
     "SCEML-E008",
     ERROR,
-    ("TimeToCollision", "TimeHeadway", "ActivateController", "AssignController", "Actor"),
+    (
+        "TimeToCollision",
+        "TimeHeadway",
+        "InVehicleRadius",
+        "ActivateController",
+        "AssignController",
+        "Actor",
+    ),
     "with a target OpenSCENARIO version or export profile given, every node's and actor's "
-    "settings can be said in it (1.0 has no relativeDistanceType or coordinateSystem, no "
+    "settings can be said in it (1.0 has no coordinateSystem, no relativeDistanceType but "
+    "a RelativeDistanceCondition's, no "
     "assignment that activates; before 1.2 no lighting or animation domain, no controllerType)",
     # The node's own measure or controller settings, or the actor's controller, against the
     # target version.

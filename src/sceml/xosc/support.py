@@ -129,6 +129,14 @@ def unsupported_reason(kind_name: str, version: str, profile: str = "generic") -
 #: Node settings OpenSCENARIO 1.0 has no attribute for: (feature, the value 1.0 always means).
 #: 1.1 added relativeDistanceType and coordinateSystem to the measuring conditions.
 _SINCE_1_1 = (("relativeDistanceType", "euclidean"), ("coordinateSystem", "entity"))
+#: The exceptions: 1.0's RelativeDistanceCondition (InVehicleRadius) already measures
+#: longitudinal and lateral distances; only its coordinateSystem is new in 1.1.
+_IN_1_0 = (("InVehicleRadius", "relativeDistanceType"),)
+
+
+def _kind_name(node: object) -> str:
+    eclass = getattr(node, "eClass", None)
+    return str(getattr(eclass, "name", ""))
 
 
 def _minor(version: str) -> int:
@@ -142,6 +150,8 @@ def unsupported_setting(node: object, version: str) -> str | None:
     if reason is not None or version != "1.0":
         return reason
     for feature, plain in _SINCE_1_1:
+        if (_kind_name(node), feature) in _IN_1_0:
+            continue
         held = getattr(node, feature, None)
         if held is not None and held.name != plain:
             return (

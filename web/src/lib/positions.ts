@@ -1,5 +1,5 @@
-// The inputs of a position (none, world, lane, road, or relative to an actor) and the Position
-// they stand for; the protocol's types are those of docs/editor-protocol.md.
+// The inputs of a position (none, world, lane, road, relative to an actor, or on a route) and the
+// Position they stand for; the protocol's types are those of docs/editor-protocol.md.
 
 import type { Position } from "../types";
 import { editText, parseParam } from "./values";
@@ -15,10 +15,18 @@ export interface PositionInput {
   label: string;
   required: boolean;
   kind: InputKind;
+  /** What an empty optional whole number stands for (0 unless given: a route's lane is null). */
+  empty?: number | null;
 }
 
 const name = (key: string, label: string): PositionInput => ({ key, label, required: true, kind: "name" });
-const integer = (key: string, label: string, required = true): PositionInput => ({ key, label, required, kind: "integer" });
+const integer = (key: string, label: string, required = true, empty: number | null = 0): PositionInput => ({
+  key,
+  label,
+  required,
+  kind: "integer",
+  empty,
+});
 const param = (key: string, label: string, required = false): PositionInput => ({ key, label, required, kind: "parameter" });
 
 /** The inputs of each position type: protocol key and the word in the input's label. */
@@ -30,6 +38,8 @@ export const POSITION_INPUTS: Record<Exclude<PositionType, "none">, PositionInpu
   relativeRoad: [name("entity", "from"), param("ds", "ds"), param("dt", "dt")],
   relativeObject: [name("entity", "from"), param("dx", "dx"), param("dy", "dy"), param("dz", "dz"), param("h", "heading")],
   relativeWorld: [name("entity", "from"), param("dx", "dx"), param("dy", "dy"), param("dz", "dz")],
+  // The place on the route; the route itself (its waypoints) is kept as read, not edited here.
+  route: [param("pathS", "pathS"), integer("laneId", "lane", false, null), param("laneOffset", "lane offset"), param("t", "t")],
 };
 
 /** The words the type select shows. */
@@ -42,11 +52,14 @@ export const POSITION_LABELS: Record<PositionType, string> = {
   relativeRoad: "relative road",
   relativeObject: "relative to actor",
   relativeWorld: "relative world",
+  route: "on a route",
 };
 
 export interface PositionDraft {
   type: PositionType;
   inputs: Record<string, string>;
+  /** What the inputs do not edit and the Position carries on: a route's name, closed, waypoints. */
+  kept?: Record<string, unknown>;
 }
 
 export function positionDraft(value: Position | null): PositionDraft {
@@ -58,13 +71,19 @@ export function positionDraft(value: Position | null): PositionDraft {
     if (input.kind === "parameter") inputs[input.key] = editText((held ?? null) as Parameters<typeof editText>[0]);
     else inputs[input.key] = held === null || held === undefined ? "" : String(held);
   }
+  if (value.type === "route") {
+    const kept = { routeName: value.routeName, closed: value.closed, waypoints: value.waypoints };
+    return { type: value.type, inputs, kept };
+  }
   return { type: value.type, inputs };
 }
 
 /** The Position of a draft: null for none, undefined while incomplete or malformed. */
 export function positionOfDraft(draft: PositionDraft): Position | null | undefined {
   if (draft.type === "none") return null;
-  const built: Record<string, unknown> = { type: draft.type };
+  // A route needs its waypoints, which only a route read from a file has.
+  if (draft.type === "route" && !Array.isArray(draft.kept?.waypoints)) return undefined;
+  const built: Record<string, unknown> = { type: draft.type, ...(draft.type === "route" ? draft.kept : {}) };
   for (const input of POSITION_INPUTS[draft.type]) {
     const text = (draft.inputs[input.key] ?? "").trim();
     if (input.kind === "name") {
@@ -73,7 +92,7 @@ export function positionOfDraft(draft: PositionDraft): Position | null | undefin
     } else if (input.kind === "integer") {
       if (text === "") {
         if (input.required) return undefined;
-        built[input.key] = 0;
+        built[input.key] = input.empty === undefined ? 0 : input.empty;
         continue;
       }
       const whole = Number(text);

@@ -64,7 +64,7 @@ export function PositionEditor({ label, value, text, disabled, onCommit, allowNo
         value={draft.type}
         disabled={disabled}
         options={types.map((type) => ({ value: type, label: POSITION_LABELS[type] }))}
-        onChange={(type) => update({ type: type as PositionType, inputs: {} })}
+        onChange={(type) => update({ type: type as PositionType, inputs: {}, kept: draft.kept })}
       />
       {draft.type !== "none" && (
         <div className="coordinates">
@@ -85,7 +85,17 @@ export function PositionEditor({ label, value, text, disabled, onCommit, allowNo
         </div>
       )}
       {text && sameJson(result, value) ? <div className="hint value-text">{text}</div> : null}
-      {result === undefined && <div className="hint incomplete">Fill in the required coordinates to send it.</div>}
+      {draft.type === "route" && Array.isArray(draft.kept?.waypoints) && (
+        <div className="hint">
+          route {String(draft.kept?.routeName ?? "")}: {draft.kept.waypoints.length} waypoints, as read from the file
+        </div>
+      )}
+      {draft.type === "route" && !Array.isArray(draft.kept?.waypoints) && (
+        <div className="hint incomplete">A route comes from an imported file; its waypoints are not made here.</div>
+      )}
+      {result === undefined && draft.type !== "route" && (
+        <div className="hint incomplete">Fill in the required coordinates to send it.</div>
+      )}
     </fieldset>
   );
 }
