@@ -27,6 +27,7 @@ from ..model import catalog
 from ..model.documents import allowed_roots_of
 from ..model.graph import actors, root_node, topological_order
 from ..modules import flatten
+from . import style
 from .flow import RenderError
 from .labels import scenario_title
 
@@ -427,3 +428,33 @@ def _union(boxes: Sequence[Box]) -> Box:
         max(b[2] for b in boxes),
         max(b[3] for b in boxes),
     )
+
+
+def actor_colours(scene: MapScene) -> dict[str, str]:
+    """One colour per actor, the same everywhere in the picture: the ego blue, others in turn."""
+    colours, others = {}, iter(_cycle(style.MAP_ACTOR_COLOURS))
+    for actor in scene.actors:
+        colours[actor.name] = style.MAP_EGO_COLOUR if actor.ego else next(others)
+    return colours
+
+
+def _cycle(values: tuple[str, ...]) -> Iterator[str]:
+    while True:
+        yield from values
+
+
+def thin(points: np.ndarray, tolerance: float = 0.02) -> np.ndarray:
+    """The points of a line less those within `tolerance` m of the chord between their
+    neighbours: a straight arm needs its two ends, not a point every few decimetres."""
+    if len(points) < 3:
+        return points
+    kept = [points[0]]
+    for point, following in zip(points[1:-1], points[2:], strict=True):
+        chord = following - kept[-1]
+        length = float(np.hypot(*chord))
+        offset = point - kept[-1]
+        distance = abs(chord[0] * offset[1] - chord[1] * offset[0]) / length if length else 0.0
+        if distance > tolerance:
+            kept.append(point)
+    kept.append(points[-1])
+    return np.array(kept)

@@ -19,7 +19,6 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, Literal
 
 import matplotlib
-import numpy as np
 from lxml import etree
 from matplotlib.artist import Artist
 from matplotlib.axes import Axes
@@ -35,7 +34,16 @@ import scemlmodel as scm
 
 from . import style
 from .flow import RenderError
-from .mapscene import ActorMark, CircleMark, MapScene, Place, TargetMark, build_scene
+from .mapscene import (
+    ActorMark,
+    CircleMark,
+    MapScene,
+    Place,
+    TargetMark,
+    actor_colours,
+    build_scene,
+    thin,
+)
 
 if TYPE_CHECKING:
     from matplotlib.typing import RcKeyType
@@ -148,19 +156,6 @@ def draw(scene: MapScene, *, extent: Extent = "scenario") -> MapFigure:
     return drawn
 
 
-def actor_colours(scene: MapScene) -> dict[str, str]:
-    """One colour per actor, the same everywhere in the picture: the ego blue, others in turn."""
-    colours, others = {}, iter(_cycle(style.MAP_ACTOR_COLOURS))
-    for actor in scene.actors:
-        colours[actor.name] = style.MAP_EGO_COLOUR if actor.ego else next(others)
-    return colours
-
-
-def _cycle(values: tuple[str, ...]) -> Iterator[str]:
-    while True:
-        yield from values
-
-
 @contextmanager
 def _style() -> Iterator[None]:
     settings: dict[RcKeyType, Any] = {
@@ -243,23 +238,6 @@ def _lanes(drawn: MapFigure) -> None:
             zorder=3,
         )
         _keep(drawn, marking, "marking", str(index))
-
-
-def thin(points: np.ndarray, tolerance: float = 0.02) -> np.ndarray:
-    """The points of a line less those within `tolerance` m of the chord between their
-    neighbours: a straight arm needs its two ends, not a point every few decimetres."""
-    if len(points) < 3:
-        return points
-    kept = [points[0]]
-    for point, following in zip(points[1:-1], points[2:], strict=True):
-        chord = following - kept[-1]
-        length = float(np.hypot(*chord))
-        offset = point - kept[-1]
-        distance = abs(chord[0] * offset[1] - chord[1] * offset[0]) / length if length else 0.0
-        if distance > tolerance:
-            kept.append(point)
-    kept.append(points[-1])
-    return np.array(kept)
 
 
 def _lane_group(lane_type: str) -> str:

@@ -18,8 +18,7 @@ import scemlmodel as scm
 
 from ..errors import SceMLError
 from ..render import style
-from ..render.mapscene import MapScene, build_scene
-from ..render.mapview import actor_colours, thin
+from ..render.mapscene import MapScene, actor_colours, build_scene, thin
 from ..templating import template
 from .run import Run
 from .timeline import timeline_svg
