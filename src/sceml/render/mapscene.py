@@ -398,9 +398,9 @@ def junction_boxes(road_map: RoadMap) -> list[Box]:
         if road.junction in ("-1", ""):
             continue
         for section in road.sections:
+            by_lane = road_map.section_outlines(road, section)
             for lane in section.lanes():
-                outline = road_map.lane_outline(road, section, lane.id)
-                outlines.setdefault(road.junction, []).append(outline)
+                outlines.setdefault(road.junction, []).append(by_lane[lane.id])
     boxes = []
     for arrays in outlines.values():
         stacked = np.vstack(arrays)
@@ -448,13 +448,16 @@ def thin(points: np.ndarray, tolerance: float = 0.02) -> np.ndarray:
     neighbours: a straight arm needs its two ends, not a point every few decimetres."""
     if len(points) < 3:
         return points
-    kept = [points[0]]
-    for point, following in zip(points[1:-1], points[2:], strict=True):
-        chord = following - kept[-1]
+    # Python floats: the same arithmetic as on the array's rows, without a numpy scalar per step.
+    rows = points.tolist()
+    kept = [rows[0]]
+    for point, following in zip(rows[1:-1], rows[2:], strict=True):
+        last = kept[-1]
+        chord = (following[0] - last[0], following[1] - last[1])
         length = float(np.hypot(*chord))
-        offset = point - kept[-1]
+        offset = (point[0] - last[0], point[1] - last[1])
         distance = abs(chord[0] * offset[1] - chord[1] * offset[0]) / length if length else 0.0
         if distance > tolerance:
             kept.append(point)
-    kept.append(points[-1])
+    kept.append(rows[-1])
     return np.array(kept)

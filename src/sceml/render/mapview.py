@@ -209,12 +209,13 @@ def _lanes(drawn: MapFigure) -> None:
     for road in road_map.roads.values():
         in_junction = road.junction not in ("-1", "")
         for section in road.sections:
+            outlines = road_map.section_outlines(road, section)
             for lane in section.lanes():
-                outline = thin(road_map.lane_outline(road, section, lane.id))
+                outline = thin(outlines[lane.id])
                 groups.setdefault((in_junction, _lane_group(lane.type)), []).append(outline)
             types = {lane.id: lane.type for lane in section.lanes()}
             if not in_junction and types.get(1) == types.get(-1) == "driving":
-                inner = road_map.lane_outline(road, section, 1)
+                inner = outlines[1]
                 markings.append(thin(inner[: len(inner) // 2]))
     order = sorted(groups, key=lambda key: (not key[0], key[1] == "driving", key[1]))
     for in_junction, group in order:
