@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 from functools import cache
 
 import jinja2
@@ -50,7 +51,6 @@ class _Cache(jinja2.FileSystemBytecodeCache):
     """Jinja's file cache, except that a cache entry that cannot be written fails nothing."""
 
     def dump_bytecode(self, bucket: jinja2.bccache.Bucket) -> None:
-        try:
+        # A full or read-only disk: the template was compiled, only not kept.
+        with contextlib.suppress(OSError):
             super().dump_bytecode(bucket)
-        except OSError:
-            pass  # a full or read-only disk: the template was compiled, only not kept
