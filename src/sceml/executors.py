@@ -92,6 +92,9 @@ class Executor(ABC):
     #: a task may write its output files itself, in parallel, instead of returning their bytes.
     #: False in-process (the caller writes as fast) and on Dask (workers may be elsewhere).
     shares_files: bool = False
+    #: Whether workers start as copies of the caller (fork): what the caller imported and
+    #: compiled before `map_unordered` they have without paying for it again.
+    inherits_imports: bool = False
 
     @property
     @abstractmethod
@@ -213,6 +216,12 @@ class ProcessExecutor(Executor):
 
     def __init__(self, workers: int) -> None:
         self.workers = workers
+        self.inherits_imports = self._start_method() == "fork"
+
+    @staticmethod
+    def _start_method() -> str:
+        # fork shares the parent's imported modules, so a worker starts in milliseconds.
+        return "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
 
     @property
     def parallelism(self) -> int:
@@ -221,8 +230,7 @@ class ProcessExecutor(Executor):
     def map_unordered(
         self, setup: Setup[P, S], task: Task[S, T, R], payload: P, items: Sequence[T] | Deferred[T]
     ) -> Generator[Outcome[R], None, None]:
-        # fork shares the parent's imported modules, so a worker starts in milliseconds.
-        method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
+        method = self._start_method()
         processes = min(self.workers, len(items) or 1)
         pool = ProcessPoolExecutor(
             max_workers=processes,
