@@ -34,16 +34,20 @@ REPO = Path(__file__).resolve().parents[1]
 UIS2 = REPO / "examples" / "uis2-concrete.xmi"
 
 
-def speed(scenario: object, repeat: int, step: float) -> tuple[float, float]:
-    """Simulated seconds of one run, and wall seconds per run (best of three batches)."""
+def speed(scenario: object, repeat: int, step: float) -> tuple[float, float, float]:
+    """Simulated seconds of one run, and wall and CPU seconds per run (best of three batches).
+
+    On a shared machine the wall time includes waiting for a core; the CPU time of this
+    process does not, and is what a run costs where it has a core to itself."""
     run = simulate(scenario, UIS2, step=step)  # type: ignore[arg-type]
-    best = float("inf")
+    best, best_cpu = float("inf"), float("inf")
     for _ in range(3):
-        started = time.perf_counter()
+        started, cpu = time.perf_counter(), time.process_time()
         for _ in range(repeat):
             simulate(scenario, UIS2, step=step)  # type: ignore[arg-type]
         best = min(best, (time.perf_counter() - started) / repeat)
-    return run.end_time, best
+        best_cpu = min(best_cpu, (time.process_time() - cpu) / repeat)
+    return run.end_time, best, best_cpu
 
 
 def main() -> None:
@@ -58,13 +62,14 @@ def main() -> None:
         ("simulate(), module use flattened per call", scenario),
         ("player on the flattened scenario", flatten(scenario)),
     ):
-        simulated, wall = speed(subject, options.repeat, options.step)
+        simulated, wall, cpu = speed(subject, options.repeat, options.step)
         print(
             f"UIS2, step {options.step:g} s, {label}: {simulated:.2f} s simulated in "
-            f"{wall * 1000:.2f} ms: {simulated / wall:,.0f} simulated s per wall s"
+            f"{wall * 1000:.2f} ms: {simulated / wall:,.0f} simulated s per wall s; "
+            f"{cpu * 1000:.2f} ms CPU: {simulated / cpu:,.0f} per CPU s"
         )
     if options.rounds:
-        simulated, _ = speed(scenario, 1, options.step)
+        simulated = speed(scenario, 1, options.step)[0]
         whole_processes(options.rounds, options.step, simulated, options.esmini)
 
 
