@@ -6,8 +6,9 @@
 "before" runs the commands with PYTHONPATH set to the given `src` folder (it is found before the
 editable install), "after" with this checkout; both with this interpreter and environment, the
 runs interleaved (see side_by_side.py). Commands: `sceml --help`, `sceml validate` of UIS1 and
-of a generated scenario of `--scale` nodes (scale_scenarios.py, on the real map), and `sceml
-sample` of UIS2 (random, 2,000 files, 2 workers) with its time to the first file.
+of a generated scenario of `--scale` nodes (scale_scenarios.py, on the real map), `sceml
+simulate` of UIS2 (its preview page), and `sceml sample` of UIS2 (random, 2,000 files, 2
+workers) with its time to the first file.
 """
 
 from __future__ import annotations
@@ -55,6 +56,12 @@ def main() -> None:
             "sceml --help": ["--help"],
             "sceml validate UIS1": ["validate", str(REPO / "examples" / "uis1-concrete.xmi")],
             f"sceml validate {args.scale} nodes": ["validate", str(scale)],
+            "sceml simulate UIS2": [
+                "simulate",
+                str(REPO / "examples" / "uis2-concrete.xmi"),
+                "-o",
+                str(Path(temporary) / "preview.html"),
+            ],
         }
         print(f"{'command':32s} {'before s':>9s} {'after s':>8s} {'after/before':>13s}")
         for name, arguments in cases.items():

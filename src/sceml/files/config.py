@@ -6,11 +6,13 @@ import json
 import re
 import tomllib
 from pathlib import Path
-
-import yaml
+from typing import TYPE_CHECKING
 
 from ..errors import LoadError
 from .safefiles import read_input
+
+if TYPE_CHECKING:
+    import yaml
 
 #: Configuration files (limits, ranges) are small; anything bigger is a mistake or an attack.
 CONFIG_MAX_BYTES = 1024 * 1024
@@ -48,15 +50,21 @@ def load_config(path: str | Path, what: str, max_bytes: int = CONFIG_MAX_BYTES) 
     path = Path(path)
     text = read_config_text(path, what, max_bytes)
     suffix = path.suffix.lower()
+    malformed: tuple[type[Exception], ...] = (ValueError,)  # JSON's and TOML's errors
     try:
         if suffix == ".toml":
             return tomllib.loads(text)
         if suffix == ".json":
             return json.loads(text)
+        # PyYAML is imported here, not with the module: every `sceml validate` imports this
+        # module and few read a YAML file (about 10 ms).
+        import yaml
+
+        malformed = (yaml.YAMLError, ValueError)
         return _safe_yaml(text)
     except RecursionError:
         raise LoadError(f"malformed {what}: nested too deeply", file=path) from None
-    except (yaml.YAMLError, ValueError) as error:  # JSON and TOML errors are ValueErrors
+    except malformed as error:
         raise LoadError(
             f"malformed {what}: {_config_error_reason(error)}",
             file=path,
@@ -74,6 +82,8 @@ def _safe_yaml(text: str) -> object:
     PyYAML shares aliased objects instead of copying them, so loading is cheap; but whatever
     walks the result afterwards (checks, error messages that show a value) pays the expanded size.
     """
+    import yaml
+
     loader = yaml.SafeLoader(text)
     try:
         node = loader.get_single_node()
@@ -96,6 +106,8 @@ def _node_counts(root: yaml.Node) -> tuple[int, int]:
     Iterative with memoised subtree sizes, so neither depth nor expansion costs more than the
     distinct nodes do.
     """
+    import yaml
+
     sizes: dict[int, int] = {}
     entered: set[int] = set()
     stack: list[tuple[yaml.Node, bool]] = [(root, False)]

@@ -59,7 +59,7 @@ from .checks import SampleChecker
 from .manifest import SampleRecord
 from .paths import place_value, resolve, slots
 from .space import parameter_space
-from .xosc import SampleXosc, XoscWriter
+from .xosc import SampleXosc, XoscWriter, prepare_export
 
 FORMATS = ("xmi", "xosc")
 
@@ -436,6 +436,8 @@ def _collect(
     task: Callable[[WorkerState, Chunk], list[Produced] | Written] = (
         write_chunk if payload.staging is not None else produce_chunk
     )
+    if executor.inherits_imports and "xosc" in payload.config.formats:
+        prepare_export(payload.config.osc_version)  # once here instead of once per worker
     outcomes = executor.map_unordered(setup_worker, task, payload, Deferred(len(unfinished), make))
     try:
         for outcome in outcomes:

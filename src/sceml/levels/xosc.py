@@ -61,6 +61,20 @@ class XoscWriter:
         return None
 
 
+def prepare_export(version: str) -> None:
+    """Import the exporter and compile its template and the XSD of `version` in this process.
+
+    Called before worker processes are forked from it, they start with all three; each worker
+    used to import and compile them itself while setting up (50-200 ms each, two workers at
+    once on two cores), before its first file.
+    """
+    from ..export import render, writer  # noqa: F401  # what XoscWriter imports, with Jinja2
+    from ..templating import template
+
+    template(render.TEMPLATE)
+    schema.compiled_schema(version)
+
+
 _PLACEHOLDER = "SceMLsample"
 _TOKEN = re.compile(rb"\$" + _PLACEHOLDER.encode() + rb"(\d+)")
 _TEXT_TOKEN = re.compile(r"\$" + _PLACEHOLDER + r"(\d+)")

@@ -234,17 +234,33 @@ class RoadMap:
 
     def lane_outline(self, road: Road, section: LaneSection, lane_id: int) -> np.ndarray:
         """The lane's outline as a closed polygon (N x 2), inner edge out and outer edge back."""
+        return self.section_outlines(road, section, (lane_id,))[lane_id]
+
+    def section_outlines(
+        self, road: Road, section: LaneSection, lane_ids: Iterable[int] | None = None
+    ) -> dict[int, np.ndarray]:
+        """The outline of each lane of a section (`lane_outline`'s polygon), by lane id.
+
+        A whole road drawn lane by lane evaluated the reference line and every lane's width
+        once per lane at each sample; here each sample is evaluated once for all the lanes.
+        """
+        wanted = [lane.id for lane in section.lanes()] if lane_ids is None else list(lane_ids)
         end = _section_end(road, section)
         count = max(2, math.ceil((end - section.s) / SAMPLE_STEP) + 1)
         line = self.reference_line(road.id)
-        inner, outer = [], []
+        edges: dict[int, tuple[list[tuple[float, float]], list[tuple[float, float]]]] = {}
         for s in np.linspace(section.s, end, count):
             x, y, h = line.pose(float(s))
-            band = next(b for b in self.bands(road, float(s)) if b.lane.id == lane_id)
             normal = (-math.sin(h), math.cos(h))
-            inner.append((x + band.inner * normal[0], y + band.inner * normal[1]))
-            outer.append((x + band.outer * normal[0], y + band.outer * normal[1]))
-        return np.array(inner + outer[::-1])
+            found: dict[int, LaneBand] = {}
+            for b in self.bands(road, float(s)):
+                found.setdefault(b.lane.id, b)  # the first band of an id, as a search finds it
+            for lane_id in wanted:
+                band = found[lane_id]
+                inner, outer = edges.setdefault(lane_id, ([], []))
+                inner.append((x + band.inner * normal[0], y + band.inner * normal[1]))
+                outer.append((x + band.outer * normal[0], y + band.outer * normal[1]))
+        return {lane_id: np.array(inner + outer[::-1]) for lane_id, (inner, outer) in edges.items()}
 
     def lane_centre_line(self, road: Road, section: LaneSection, lane_id: int) -> np.ndarray:
         """The lane's centre line (N x 2) in the direction of increasing s."""

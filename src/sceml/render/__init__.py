@@ -6,9 +6,8 @@ data = to_bytes(graph, "svg")
 
 from __future__ import annotations
 
-from typing import Literal
+from typing import TYPE_CHECKING, Literal
 
-import graphviz
 from pyecore.ecore import EProxy
 
 import scemlmodel as scm
@@ -16,6 +15,9 @@ import scemlmodel as scm
 from .bt import bt_diagram
 from .flow import Diagram, Modules, RenderError, flow_diagram
 from .style import legend_graph
+
+if TYPE_CHECKING:
+    import graphviz  # imported where a graph is drawn: the preview page only reads styles
 
 View = Literal["flow", "bt"]
 
@@ -125,6 +127,8 @@ def to_bytes(graph: graphviz.Digraph, fmt: str) -> bytes:
     """Lay out and render with Graphviz's `dot`; RenderError if it is missing or fails."""
     if fmt not in FORMATS:
         raise RenderError(f"unknown output format {fmt!r}; use one of {', '.join(FORMATS)}")
+    import graphviz
+
     try:
         picture: bytes = graph.pipe(format=fmt)
         return picture

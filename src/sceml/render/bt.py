@@ -21,9 +21,8 @@ flagged as not series-parallel and the diagram says so.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Literal
+from typing import TYPE_CHECKING, Literal
 
-import graphviz
 from pyecore.ecore import EObject
 
 import scemlmodel as scm
@@ -38,6 +37,9 @@ from ..model.graph import (
 from . import style
 from .flow import Modules, RenderError, dom_id, inner_scope, look_of, new_digraph
 from .labels import Scope, actor_line, loaded_definition, scenario_title
+
+if TYPE_CHECKING:
+    import graphviz
 
 Policy = Literal["all", "one"]
 

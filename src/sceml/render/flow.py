@@ -10,9 +10,8 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Literal
+from typing import TYPE_CHECKING, Literal
 
-import graphviz
 from pyecore.ecore import EObject
 
 import scemlmodel as scm
@@ -32,6 +31,9 @@ from .labels import (
     scenario_title,
     use_lines,
 )
+
+if TYPE_CHECKING:
+    import graphviz
 
 Modules = Literal["collapsed", "expanded"]
 
@@ -63,6 +65,8 @@ class Diagram:
 
 def new_digraph(name: str) -> graphviz.Digraph:
     """An empty top-to-bottom digraph with the notation's fonts and spacing."""
+    import graphviz  # here, not above: importing the render package must not cost a diagram
+
     graph = graphviz.Digraph(name, graph_attr=style.GRAPH_ATTRIBUTES)
     graph.node_attr.update(style.NODE_ATTRIBUTES)
     graph.edge_attr.update(style.EDGE_ATTRIBUTES)

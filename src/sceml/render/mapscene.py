@@ -27,6 +27,7 @@ from ..model import catalog
 from ..model.documents import allowed_roots_of
 from ..model.graph import actors, level_text, root_node, topological_order
 from ..modules import flatten
+from . import style
 from .flow import RenderError
 from .labels import scenario_title
 
@@ -397,9 +398,9 @@ def junction_boxes(road_map: RoadMap) -> list[Box]:
         if road.junction in ("-1", ""):
             continue
         for section in road.sections:
+            by_lane = road_map.section_outlines(road, section)
             for lane in section.lanes():
-                outline = road_map.lane_outline(road, section, lane.id)
-                outlines.setdefault(road.junction, []).append(outline)
+                outlines.setdefault(road.junction, []).append(by_lane[lane.id])
     boxes = []
     for arrays in outlines.values():
         stacked = np.vstack(arrays)
@@ -427,3 +428,36 @@ def _union(boxes: Sequence[Box]) -> Box:
         max(b[2] for b in boxes),
         max(b[3] for b in boxes),
     )
+
+
+def actor_colours(scene: MapScene) -> dict[str, str]:
+    """One colour per actor, the same everywhere in the picture: the ego blue, others in turn."""
+    colours, others = {}, iter(_cycle(style.MAP_ACTOR_COLOURS))
+    for actor in scene.actors:
+        colours[actor.name] = style.MAP_EGO_COLOUR if actor.ego else next(others)
+    return colours
+
+
+def _cycle(values: tuple[str, ...]) -> Iterator[str]:
+    while True:
+        yield from values
+
+
+def thin(points: np.ndarray, tolerance: float = 0.02) -> np.ndarray:
+    """The points of a line less those within `tolerance` m of the chord between their
+    neighbours: a straight arm needs its two ends, not a point every few decimetres."""
+    if len(points) < 3:
+        return points
+    # Python floats: the same arithmetic as on the array's rows, without a numpy scalar per step.
+    rows = points.tolist()
+    kept = [rows[0]]
+    for point, following in zip(rows[1:-1], rows[2:], strict=True):
+        last = kept[-1]
+        chord = (following[0] - last[0], following[1] - last[1])
+        length = float(np.hypot(*chord))
+        offset = (point[0] - last[0], point[1] - last[1])
+        distance = abs(chord[0] * offset[1] - chord[1] * offset[0]) / length if length else 0.0
+        if distance > tolerance:
+            kept.append(point)
+    kept.append(rows[-1])
+    return np.array(kept)

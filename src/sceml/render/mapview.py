@@ -19,7 +19,6 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, Literal
 
 import matplotlib
-import numpy as np
 from lxml import etree
 from matplotlib.artist import Artist
 from matplotlib.axes import Axes
@@ -35,7 +34,16 @@ import scemlmodel as scm
 
 from . import style
 from .flow import RenderError
-from .mapscene import ActorMark, CircleMark, MapScene, Place, TargetMark, build_scene
+from .mapscene import (
+    ActorMark,
+    CircleMark,
+    MapScene,
+    Place,
+    TargetMark,
+    actor_colours,
+    build_scene,
+    thin,
+)
 
 if TYPE_CHECKING:
     from matplotlib.typing import RcKeyType
@@ -148,19 +156,6 @@ def draw(scene: MapScene, *, extent: Extent = "scenario") -> MapFigure:
     return drawn
 
 
-def actor_colours(scene: MapScene) -> dict[str, str]:
-    """One colour per actor, the same everywhere in the picture: the ego blue, others in turn."""
-    colours, others = {}, iter(_cycle(style.MAP_ACTOR_COLOURS))
-    for actor in scene.actors:
-        colours[actor.name] = style.MAP_EGO_COLOUR if actor.ego else next(others)
-    return colours
-
-
-def _cycle(values: tuple[str, ...]) -> Iterator[str]:
-    while True:
-        yield from values
-
-
 @contextmanager
 def _style() -> Iterator[None]:
     settings: dict[RcKeyType, Any] = {
@@ -214,12 +209,13 @@ def _lanes(drawn: MapFigure) -> None:
     for road in road_map.roads.values():
         in_junction = road.junction not in ("-1", "")
         for section in road.sections:
+            outlines = road_map.section_outlines(road, section)
             for lane in section.lanes():
-                outline = thin(road_map.lane_outline(road, section, lane.id))
+                outline = thin(outlines[lane.id])
                 groups.setdefault((in_junction, _lane_group(lane.type)), []).append(outline)
             types = {lane.id: lane.type for lane in section.lanes()}
             if not in_junction and types.get(1) == types.get(-1) == "driving":
-                inner = road_map.lane_outline(road, section, 1)
+                inner = outlines[1]
                 markings.append(thin(inner[: len(inner) // 2]))
     order = sorted(groups, key=lambda key: (not key[0], key[1] == "driving", key[1]))
     for in_junction, group in order:
@@ -243,23 +239,6 @@ def _lanes(drawn: MapFigure) -> None:
             zorder=3,
         )
         _keep(drawn, marking, "marking", str(index))
-
-
-def thin(points: np.ndarray, tolerance: float = 0.02) -> np.ndarray:
-    """The points of a line less those within `tolerance` m of the chord between their
-    neighbours: a straight arm needs its two ends, not a point every few decimetres."""
-    if len(points) < 3:
-        return points
-    kept = [points[0]]
-    for point, following in zip(points[1:-1], points[2:], strict=True):
-        chord = following - kept[-1]
-        length = float(np.hypot(*chord))
-        offset = point - kept[-1]
-        distance = abs(chord[0] * offset[1] - chord[1] * offset[0]) / length if length else 0.0
-        if distance > tolerance:
-            kept.append(point)
-    kept.append(points[-1])
-    return np.array(kept)
 
 
 def _lane_group(lane_type: str) -> str:

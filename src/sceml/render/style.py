@@ -16,8 +16,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from html import escape
+from typing import TYPE_CHECKING
 
-import graphviz
+if TYPE_CHECKING:
+    import graphviz
 
 FONT = "DejaVu Sans"
 
@@ -279,6 +281,8 @@ def add_legend(
 
 def legend_graph() -> graphviz.Digraph:
     """A diagram that holds only the legend (docs/diagrams/legend.png)."""
+    import graphviz  # only where a legend is drawn: the preview page reads the colours alone
+
     graph = graphviz.Digraph("legend", graph_attr={**GRAPH_ATTRIBUTES, "ranksep": "0.15"})
     graph.node_attr.update(NODE_ATTRIBUTES)
     add_legend(graph)

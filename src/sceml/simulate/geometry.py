@@ -106,23 +106,30 @@ def overlapping(a: Boxes, b: Boxes) -> NDArray[np.bool_]:
     return inside
 
 
-def time_to_collision(a: Boxes, b: Boxes) -> Array:
-    """Seconds until the boxes touch at constant velocity; 0 while they overlap; inf if never."""
+def time_to_collision(a: Boxes, b: Boxes, overlap: NDArray[np.bool_] | None = None) -> Array:
+    """Seconds until the boxes touch at constant velocity; 0 while they overlap; inf if never.
+
+    `overlap`: `overlapping(a, b)`, when the caller has it already."""
     first, last = collision_interval(a, b)
     ttc = np.where((first < last) & (last > 0), np.maximum(first, 0.0), np.inf)
-    return np.where(overlapping(a, b), 0.0, ttc)
+    return np.where(overlapping(a, b) if overlap is None else overlap, 0.0, ttc)
 
 
-def gap(a: Boxes, b: Boxes, where: NDArray[np.bool_] | None = None) -> Array:
+def gap(
+    a: Boxes,
+    b: Boxes,
+    where: NDArray[np.bool_] | None = None,
+    overlap: NDArray[np.bool_] | None = None,
+) -> Array:
     """The distance between the boxes' outlines at each sample (0 while they overlap); inf
-    at samples `where` leaves out."""
+    at samples `where` leaves out. `overlap`: `overlapping(a, b)`, if the caller has it."""
     result = np.full(a.x.shape, np.inf)
     chosen = np.arange(a.x.size) if where is None else np.nonzero(where)[0]
     if chosen.size:
         pa, pb = a.corners()[chosen], b.corners()[chosen]
         best = np.minimum(_corner_to_edges(pa, pb), _corner_to_edges(pb, pa))
         result[chosen] = best
-    return np.where(overlapping(a, b), 0.0, result)
+    return np.where(overlapping(a, b) if overlap is None else overlap, 0.0, result)
 
 
 def least_gap_candidates(a: Boxes, b: Boxes) -> NDArray[np.bool_]:

@@ -40,15 +40,17 @@ def pair_metrics(
 def _pair(
     times: Array, a: ActorInfo, b: ActorInfo, box_a: Boxes, box_b: Boxes, sa: Array, sb: Array
 ) -> PairMetrics:
-    distances = gap(box_a, box_b, least_gap_candidates(box_a, box_b))
+    # One overlap test for the gap, the time to collision and the collision (each took its own).
+    overlap = overlapping(box_a, box_b)
+    distances = gap(box_a, box_b, least_gap_candidates(box_a, box_b), overlap)
     nearest = int(np.argmin(distances))
-    ttc = time_to_collision(box_a, box_b)
+    ttc = time_to_collision(box_a, box_b, overlap)
     finite = np.isfinite(ttc)
     min_ttc = min_ttc_time = None
     if finite.any():
         k = int(np.argmin(np.where(finite, ttc, np.inf)))
         min_ttc, min_ttc_time = float(ttc[k]), float(times[k])
-    hits = np.nonzero(overlapping(box_a, box_b))[0]
+    hits = np.nonzero(overlap)[0]
     pet, point = post_encroachment(
         times, sa[:, :2], sb[:, :2], (a.length, a.width), (b.length, b.width)
     )

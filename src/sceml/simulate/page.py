@@ -18,8 +18,7 @@ import scemlmodel as scm
 
 from ..errors import SceMLError
 from ..render import style
-from ..render.mapscene import MapScene, build_scene
-from ..render.mapview import actor_colours, thin
+from ..render.mapscene import MapScene, actor_colours, build_scene, thin
 from ..templating import template
 from .run import Run
 from .timeline import timeline_svg
@@ -141,10 +140,11 @@ def _lanes(scene: MapScene) -> list[str]:
             if (road.junction not in ("-1", "")) != in_junction:
                 continue
             for section in road.sections:
+                outlines = road_map.section_outlines(road, section)
                 for lane in section.lanes():
                     fill = style.MAP_LANE_FILLS.get(lane.type, style.MAP_OTHER_LANE_FILL)
                     edge = fill if in_junction else style.MAP_LANE_EDGE
-                    outline = thin(road_map.lane_outline(road, section, lane.id))
+                    outline = thin(outlines[lane.id])
                     parts.append(
                         f'<polygon points="{_points(outline)}" fill="{fill}" stroke="{edge}" '
                         f'stroke-width="{0.05 if in_junction else 0.1}"/>'

@@ -156,6 +156,11 @@ def _xsd_bytes(version: str) -> bytes:
     return resource.read_bytes()
 
 
+def compiled_schema(version: str) -> etree.XMLSchema:
+    """The XSD of an OpenSCENARIO version, compiled once per process (lxml)."""
+    return _lxml_schema(version)
+
+
 @functools.cache
 def _lxml_schema(version: str) -> etree.XMLSchema:
     return etree.XMLSchema(etree.fromstring(_xsd_bytes(version), hardened_parser()))
