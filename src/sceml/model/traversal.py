@@ -90,19 +90,19 @@ def single_references(obj: EObject) -> Iterator[tuple[EReference, EObject]]:
 
 def all_contents(obj: EObject) -> Iterator[EObject]:
     """Everything below `obj` in containment order (depth first), `obj` itself excluded."""
-    pending = _children(obj)
+    pending = children(obj)
     pending.reverse()
     while pending:
         current = pending.pop()
         yield current
-        children = _children(current)
-        if children:
-            children.reverse()
-            pending.extend(children)
+        below = children(current)
+        if below:
+            below.reverse()
+            pending.extend(below)
 
 
-def _children(obj: EObject) -> list[EObject]:
-    """`list(contents(obj))`, reading the usual holders directly: a walk of a large model calls
+def children(obj: EObject) -> list[EObject]:
+    """The objects `obj` directly contains, as `list(contents(obj))`, reading the usual holders directly: a walk of a large model calls
     this for every object, most of which (values, positions) contain nothing or one thing."""
     found: list[EObject] = []
     state = obj.__dict__

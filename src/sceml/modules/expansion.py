@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 from functools import cache
 from typing import Any
 
-from pyecore.ecore import EClass, EObject, EReference
+from pyecore.ecore import EClass, EObject, EProxy
 from pyecore.valuecontainer import EValue
 
 import scemlmodel as scm
@@ -25,6 +25,7 @@ from ..model.copying import Copier
 from ..model.locating import model_path
 from ..model.traversal import (
     all_contents,
+    children,
     containments,
     cross_references,
     single_references,
@@ -481,49 +482,48 @@ def _check_self_contained(result: Expansion) -> None:
     # flattened scenario depend on the library it is meant to replace. Checked in the order of
     # the flattened scenario's contents: its nodes, then the rest (its flows).
     scenario = result.scenario
-    inside: set[EObject] = set()  # targets found inside: thousands of nodes name a few actors
-    for node in result.nodes:
-        _check_tree(node, result, inside)
+    tops: list[EObject] = list(result.nodes)
     for feature in containments(scenario.eClass):
         if feature.name == "nodes":
             continue
         held = scenario.eGet(feature)
-        for top in held if feature.many else [held] if held is not None else []:
-            _check_tree(top, result, inside)
+        tops.extend(held if feature.many else [held] if held is not None else [])
+    _check_trees(tops, result)
 
 
 @cache
-def _walk_plan(eclass: EClass) -> tuple[tuple[tuple[EReference, str], ...], tuple[str, ...]]:
-    """The single-valued cross references and the containments of a metaclass, by name."""
-    references = tuple((f, f.name) for f in cross_references(eclass) if not f.many)
-    return references, tuple(f.name for f in containments(eclass))
+def _walk_plan(eclass: EClass) -> tuple[tuple[str, ...], bool]:
+    """The names of a metaclass's single-valued cross references, and whether it has
+    containments."""
+    references = tuple(f.name for f in cross_references(eclass) if not f.many)
+    return references, bool(containments(eclass))
 
 
-def _check_tree(top: EObject, result: Expansion, inside: set[EObject]) -> None:
-    """`_check_references` on `top` and everything it contains, depth first in containment
-    order; written out because it visits every object of the scenario (about five per node)."""
-    pending = [top]
+def _check_trees(tops: list[EObject], result: Expansion) -> None:
+    """`_check_references` on each of `tops` and everything it contains, depth first in
+    containment order; written out because it visits every object of the scenario (about five
+    per node), and most of what they refer to was seen before."""
+    scenario = result.scenario
+    inside: set[EObject] = set()  # targets found inside: thousands of nodes name a few actors
+    pending = tops[::-1]
     while pending:
         obj = pending.pop()
-        references, children = _walk_plan(obj.eClass)
+        references, contains = _walk_plan(obj.eClass)
         state = obj.__dict__
-        for _, name in references:
+        for name in references:
             holder = state.get(name)
             target = holder._value if type(holder) is EValue else stored(obj, name)
-            if target is not None and target not in inside:
-                _check_references(obj, result, inside)
-                break
-        found: list[EObject] = []
-        for name in children:
-            held = stored(obj, name)
-            if held is None:
+            if target is None or target in inside:
                 continue
-            if isinstance(held, EObject):
-                found.append(held)
-            else:
-                found.extend(held)
-        found.reverse()
-        pending.extend(found)
+            if type(target) is not EProxy and target.eContainer() is scenario:
+                inside.add(target)  # a node or an actor of the scenario, named by a flow or node
+                continue
+            _check_references(obj, result, inside)
+            break
+        if contains:
+            found = children(obj)
+            found.reverse()
+            pending.extend(found)
 
 
 def _check_references(obj: EObject, result: Expansion, inside: set[EObject]) -> None:
