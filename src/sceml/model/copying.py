@@ -152,9 +152,12 @@ class Copier:
                 if target is held and held in self.stand_ins:
                     target = self.stand_ins[held]
                 # Through pyecore when the reference was set before (its setter also undoes
-                # what was there), or when the opposite end would change an original, which
-                # may be watched or be a proxy; a copy made here has no listeners yet.
-                if feature.name in set_before or (feature.opposite is not None and target is held):
+                # what was there), or when the opposite end would change an original (the
+                # target or its stand-in), which may be watched or be a proxy; a copy made here
+                # has no listeners yet.
+                if feature.name in set_before or (
+                    feature.opposite is not None and held not in copies
+                ):
                     duplicate.eSet(feature.feature, target)
                 else:
                     set_reference(duplicate, feature, target)
