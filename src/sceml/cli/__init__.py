@@ -60,6 +60,9 @@ def cli() -> None:
 
 def main() -> None:
     """Console-script entry point: run the command, then end the process without teardown."""
+    from ..model.collector import ending_with_command
+
+    ending_with_command()
     try:
         cli()
     except SystemExit as done:

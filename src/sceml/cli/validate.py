@@ -7,6 +7,7 @@ from pathlib import Path
 
 import click
 
+from ..model.collector import collector_off_for_command
 from ..report import exit_code, render
 from ..validation import Limits, load_limits
 from ..validation.files import validate_file
@@ -58,7 +59,7 @@ def validate(
     a file has errors (with --strict: or warnings), 2 for usage errors or unreadable files.
     """
     limits = load_limits(limits_file) if limits_file is not None else Limits()
-    with file_progress(files, "validating") as todo:
+    with file_progress(files, "validating") as todo, collector_off_for_command():
         reports = [validate_file(path, limits, osc_version, allow, osc_profile) for path in todo]
     emit_report(render(reports, output_format, strict), output)
     sys.exit(exit_code(reports, strict))

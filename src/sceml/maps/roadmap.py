@@ -39,7 +39,7 @@ from .reader import MapError, parse_opendrive
 _INDEX_MARGIN = 1.0
 #: How many points a map is asked about before the index is built.
 _UNINDEXED = 64
-#: How many answers of `world_to_lane` a map keeps (the oldest goes first).
+#: How many answers of `world_to_lane` (and of `lane_to_world`) a map keeps (the oldest goes first).
 _ANSWERS_KEPT = 65536
 
 
@@ -58,6 +58,7 @@ class RoadMap:
         self.junctions = {junction.id: junction for junction in junctions}
         self._lines: dict[str, ReferenceLine] = {}
         self._answers: dict[tuple[float, float, float], tuple[LaneCoordinate, ...]] = {}
+        self._poses: dict[tuple[str, int, float, float], WorldPose] = {}
 
     # --- lanes -------------------------------------------------------------------------------
 
@@ -128,6 +129,17 @@ class RoadMap:
 
     def lane_to_world(self, road_id: str, lane_id: int, s: float, offset: float = 0.0) -> WorldPose:
         """World point of a lane position, heading in the lane's direction of traffic."""
+        # Kept like `world_to_lane`'s answers: the map rules ask where the same few lane
+        # positions lie (start positions, a Cross's destination) once per node naming them.
+        key = (str(road_id), lane_id, s, offset)
+        known = self._poses.get(key)
+        if known is None:
+            known = self._poses[key] = self._lane_to_world(road_id, lane_id, s, offset)
+            if len(self._poses) > _ANSWERS_KEPT:
+                self._poses.pop(next(iter(self._poses)), None)
+        return known
+
+    def _lane_to_world(self, road_id: str, lane_id: int, s: float, offset: float) -> WorldPose:
         road = self.road(road_id)
         band = self.band(road.id, lane_id, s)
         x, y, h = self.reference_line(road.id).pose(s)

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
 from typing import Any, TypeVar
 
 from pyecore.ecore import EObject, EProxy
@@ -69,8 +69,11 @@ class Copier:
 
     direct = True
 
-    def __init__(self) -> None:
+    def __init__(self, stand_ins: Mapping[EObject, EObject] | None = None) -> None:
         self.copies: dict[EObject, EObject] = {}
+        # Single-valued references to these objects point at their stand-ins in the copies (a
+        # module use binds its definition's roles to actors while the definition is copied).
+        self.stand_ins: Mapping[EObject, EObject] = stand_ins or {}
 
     def copy(self, obj: T) -> T:
         """Copy `obj` and its containment tree (references are set by `copy_references`)."""
@@ -146,10 +149,15 @@ class Copier:
                 if held is None:
                     continue
                 target = copies.get(held, held)
+                if target is held and held in self.stand_ins:
+                    target = self.stand_ins[held]
                 # Through pyecore when the reference was set before (its setter also undoes
-                # what was there), or when the opposite end would change an original, which
-                # may be watched or be a proxy; a copy made here has no listeners yet.
-                if feature.name in set_before or (feature.opposite is not None and target is held):
+                # what was there), or when the opposite end would change an original (the
+                # target or its stand-in), which may be watched or be a proxy; a copy made here
+                # has no listeners yet.
+                if feature.name in set_before or (
+                    feature.opposite is not None and held not in copies
+                ):
                     duplicate.eSet(feature.feature, target)
                 else:
                     set_reference(duplicate, feature, target)
@@ -162,7 +170,8 @@ class Copier:
             if feature.many:
                 duplicate.eGet(feature).extend(self.copies.get(t, t) for t in held)
             else:
-                duplicate.eSet(feature, self.copies.get(held, held))
+                target = self.copies.get(held, held)
+                duplicate.eSet(feature, self.stand_ins.get(target, target))
 
     def _reference_with_setters(self, feature: Slot, held: Any, duplicate: EObject) -> None:
         duplicate.eGet(feature.feature).extend(self.copies.get(t, t) for t in held)

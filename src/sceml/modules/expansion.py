@@ -12,9 +12,11 @@ from __future__ import annotations
 
 from collections.abc import Callable, Collection, Iterable
 from dataclasses import dataclass, field
+from functools import cache
 from typing import Any
 
-from pyecore.ecore import EObject
+from pyecore.ecore import EClass, EObject, EProxy
+from pyecore.valuecontainer import EValue
 
 import scemlmodel as scm
 
@@ -23,6 +25,7 @@ from ..model.copying import Copier
 from ..model.locating import model_path
 from ..model.traversal import (
     all_contents,
+    children,
     containments,
     cross_references,
     single_references,
@@ -215,6 +218,8 @@ class _Builder:
         self.replacements: dict[EObject, list[scm.GraphElement]] = {}
         # A definition's file and name, worked out once: it resolves the file's path.
         self.keys: dict[EObject, tuple[str, str]] = {}
+        # What binding a use of each definition needs to know of it, worked out once.
+        self.plans: dict[EObject, _Plan] = {}
 
     def result(self) -> Expansion:
         """The expanded graph's nodes in reading order, with the wiring and provenance."""
@@ -261,7 +266,14 @@ class _Builder:
             raise FlattenError(f"module uses itself: {names}", **self.where(use))
         use_name = str(use.name) if use.name else naming.numbered(str(definition.name), self.taken)
         self.use_names[use] = use_name
-        copier = Copier()
+        plan = self.plans.get(definition)
+        if plan is None:
+            plan = self.plans[definition] = _Plan(definition)
+        # Refused in the order the steps below would meet each problem on a copy.
+        plan.check_ports()
+        actors = _bound_actors(use, definition, self.where)
+        # Roles are bound as the definition is copied: references to a role point at its actor.
+        copier = Copier(stand_ins=None if plan.roles_by_walk else actors)
         nodes = copier.copy_all(definition.nodes)
         copier.copy_references()
         for flow in definition.flows:
@@ -271,10 +283,11 @@ class _Builder:
             )
         inside = (*uses, original)
         self.copied(copier, inside)
-        in_port, out_port = _ports(definition, nodes, self.wiring)
-        _bind_roles(use, definition, nodes, self.where)
-        for value_copier in _bind_parameters(use, definition, nodes, self.where):
+        if plan.roles_by_walk:
+            _bind_roles_by_walk(nodes, actors)
+        for value_copier in _bind_parameters(use, plan, copier.copies, self.where):
             self.copied(value_copier, inside)
+        in_port, out_port = copier.copies[plan.in_port], copier.copies[plan.out_port]
         self._place(use, use_name, nodes, in_port, out_port)
         self.expanded.append(use_name)
         inner = (*chain, (key, str(definition.name)))
@@ -290,8 +303,9 @@ class _Builder:
         out_port: scm.OutPort,
     ) -> None:
         for node in nodes:
-            node.name = naming.unique(naming.scoped(use_name, str(node.name)), self.taken)
-            self.taken.add(node.name)
+            name = naming.unique(naming.scoped(use_name, str(node.name)), self.taken)
+            _rename(node, name)
+            self.taken.add(name)
         self.replacements[use] = [n for n in nodes if n is not in_port and n is not out_port]
         self._rewire(use, in_port, out_port)
 
@@ -316,32 +330,71 @@ class _Builder:
             wiring.cut(node)
 
 
-def _ports(
-    definition: scm.ModuleDefinition, nodes: list[scm.GraphElement], wiring: Wiring
-) -> tuple[scm.InPort, scm.OutPort]:
-    in_ports = [n for n in nodes if isinstance(n, scm.InPort)]
-    out_ports = [n for n in nodes if isinstance(n, scm.OutPort)]
-    if len(in_ports) != 1 or len(out_ports) != 1:
-        raise FlattenError(
-            f"module {definition.name!r} needs one in-port and one out-port, "
-            f"has {len(in_ports)} and {len(out_ports)}",
-            **location(definition),
+class _Plan:
+    """What binding a use of one definition needs to know of the definition, worked out once per
+    expansion rather than once per use: its ports, whether its roles can be bound as it is
+    copied, and its parameter references in the order they are replaced."""
+
+    def __init__(self, definition: scm.ModuleDefinition) -> None:
+        self.definition = definition
+        nodes = list(definition.nodes)
+        self.in_ports = [n for n in nodes if isinstance(n, scm.InPort)]
+        self.out_ports = [n for n in nodes if isinstance(n, scm.OutPort)]
+        self.in_port: EObject | None = self.in_ports[0] if len(self.in_ports) == 1 else None
+        self.out_port: EObject | None = self.out_ports[0] if len(self.out_ports) == 1 else None
+        flows = [(flow.source, flow.target) for flow in definition.flows]
+        # As the wiring sees a copy's ports: flows out of the in-port that lead somewhere, and
+        # into the out-port that come from somewhere.
+        self.in_port_wired = any(s is self.in_port and t is not None for s, t in flows)
+        self.out_port_wired = any(t is self.out_port and s is not None for s, t in flows)
+        contents = _with_contents(nodes)
+        roles = set(definition.roles)
+        # A reference to a role through a cross-file proxy is not the role object itself: the
+        # copier cannot map it, so such a definition's copies are bound by a walk afterwards.
+        self.roles_by_walk = any(
+            target is not unwrap(target) and unwrap(target) in roles
+            for obj in contents
+            for _, target in single_references(obj)
         )
-    in_port, out_port = in_ports[0], out_ports[0]
-    if not wiring.successors(in_port) or not wiring.predecessors(out_port):
-        unwired = in_port.name if not wiring.successors(in_port) else out_port.name
-        raise FlattenError(
-            f"module {definition.name!r}: port {unwired!r} is not wired", **location(definition)
-        )
-    return in_port, out_port
+        self.nameless = next((p for p in definition.parameters if not p.name), None)
+        self.declared = {parameter.name: parameter for parameter in definition.parameters}
+        #: The parameter references in containment order, with the parameter each one names
+        #: (None from the first one that names no parameter of the definition on).
+        self.references: list[tuple[EObject, EObject | None]] = []
+        broken = False
+        for ref in contents:
+            if not isinstance(ref, scm.ParameterRef):
+                continue
+            parameter = ref.parameter
+            broken = broken or (
+                parameter is None or self.declared.get(parameter.name) is not unwrap(parameter)
+            )
+            self.references.append((ref, None if broken else parameter))
+
+    def check_ports(self) -> None:
+        """Refuse a definition without exactly one in-port and one out-port, both wired."""
+        definition = self.definition
+        if self.in_port is None or self.out_port is None:
+            raise FlattenError(
+                f"module {definition.name!r} needs one in-port and one out-port, "
+                f"has {len(self.in_ports)} and {len(self.out_ports)}",
+                **location(definition),
+            )
+        if not self.in_port_wired or not self.out_port_wired:
+            unwired = self.in_port.name if not self.in_port_wired else self.out_port.name
+            raise FlattenError(
+                f"module {definition.name!r}: port {unwired!r} is not wired",
+                **location(definition),
+            )
 
 
-def _bind_roles(
+def _bound_actors(
     use: scm.ModuleUse,
     definition: scm.ModuleDefinition,
-    nodes: list[EObject],
     where: Callable[[EObject], dict[str, Any]],
-) -> None:
+) -> dict[EObject, EObject]:
+    """The actor each role of the definition is bound to by the use; FlattenError for a role
+    left unbound."""
     bound = {binding.role: binding.actor for binding in use.bindings}
     actors: dict[EObject, EObject] = {}
     for role in definition.roles:
@@ -351,6 +404,10 @@ def _bind_roles(
                 **where(use),
             )
         actors[role] = bound[role.name]
+    return actors
+
+
+def _bind_roles_by_walk(nodes: list[EObject], actors: dict[EObject, EObject]) -> None:
     for obj in _with_contents(nodes):
         for feature, target in list(single_references(obj)):
             if unwrap(target) in actors:
@@ -359,19 +416,21 @@ def _bind_roles(
 
 def _bind_parameters(
     use: scm.ModuleUse,
-    definition: scm.ModuleDefinition,
-    nodes: list[EObject],
+    plan: _Plan,
+    copies: dict[EObject, EObject],
     where: Callable[[EObject], dict[str, Any]],
 ) -> list[Copier]:
-    """Replace each parameter reference by a copy of the value chosen for it; returns the copiers
-    that made those copies, so that each copy can be traced to the value it was made from."""
-    nameless = next((p for p in definition.parameters if not p.name), None)
-    if nameless is not None:  # overrides and references find parameters by name
+    """Replace each parameter reference of the copies by a copy of the value chosen for it;
+    returns the copiers that made those copies, so that each copy can be traced to the value it
+    was made from."""
+    definition = plan.definition
+    if plan.nameless is not None:  # overrides and references find parameters by name
         raise FlattenError(
-            f"module {definition.name!r} has a parameter without a name", **location(nameless)
+            f"module {definition.name!r} has a parameter without a name",
+            **location(plan.nameless),
         )
     overrides = {override.parameter: override.value for override in use.overrides}
-    declared = {parameter.name: parameter for parameter in definition.parameters}
+    declared = plan.declared
     unknown = sorted(set(overrides) - set(declared))
     if unknown:
         raise FlattenError(
@@ -380,9 +439,9 @@ def _bind_parameters(
             **where(use),
         )
     copiers: list[Copier] = []
-    for ref in [o for o in _with_contents(nodes) if isinstance(o, scm.ParameterRef)]:
-        parameter = ref.parameter
-        if parameter is None or declared.get(parameter.name) is not unwrap(parameter):
+    for original, parameter in plan.references:
+        ref = copies[original]
+        if parameter is None:
             raise FlattenError(
                 f"a parameter reference in module {definition.name!r} names no parameter of it",
                 **location(ref),
@@ -395,6 +454,15 @@ def _bind_parameters(
             ref.eContainmentFeature(), _copy(chosen, copiers) if chosen is not None else None
         )
     return copiers
+
+
+def _rename(node: EObject, name: str) -> None:
+    """`node.name = name` for a copy nothing listens to: its holder's value, when it has one."""
+    holder = node.__dict__.get("name")
+    if type(holder) is EValue:
+        holder._value = name
+    else:
+        node.name = name
 
 
 def _copy(value: EObject, copiers: list[Copier]) -> EObject:
@@ -414,35 +482,68 @@ def _check_self_contained(result: Expansion) -> None:
     # flattened scenario depend on the library it is meant to replace. Checked in the order of
     # the flattened scenario's contents: its nodes, then the rest (its flows).
     scenario = result.scenario
-    inside: dict[EObject, bool] = {}  # by target: thousands of nodes name the same few actors
-    for node in result.nodes:
-        for obj in (node, *all_contents(node)):
-            _check_references(obj, result, inside)
+    tops: list[EObject] = list(result.nodes)
     for feature in containments(scenario.eClass):
         if feature.name == "nodes":
             continue
         held = scenario.eGet(feature)
-        for top in held if feature.many else [held] if held is not None else []:
-            for obj in (top, *all_contents(top)):
-                _check_references(obj, result, inside)
+        tops.extend(held if feature.many else [held] if held is not None else [])
+    _check_trees(tops, result)
 
 
-def _check_references(obj: EObject, result: Expansion, inside: dict[EObject, bool]) -> None:
+@cache
+def _walk_plan(eclass: EClass) -> tuple[tuple[str, ...], bool]:
+    """The names of a metaclass's single-valued cross references, and whether it has
+    containments."""
+    references = tuple(f.name for f in cross_references(eclass) if not f.many)
+    return references, bool(containments(eclass))
+
+
+def _check_trees(tops: list[EObject], result: Expansion) -> None:
+    """`_check_references` on each of `tops` and everything it contains, depth first in
+    containment order; written out because it visits every object of the scenario (about five
+    per node), and most of what they refer to was seen before."""
+    scenario = result.scenario
+    inside: set[EObject] = set()  # targets found inside: thousands of nodes name a few actors
+    pending = tops[::-1]
+    while pending:
+        obj = pending.pop()
+        references, contains = _walk_plan(obj.eClass)
+        state = obj.__dict__
+        for name in references:
+            holder = state.get(name)
+            target = holder._value if type(holder) is EValue else stored(obj, name)
+            if target is None or target in inside:
+                continue
+            if type(target) is not EProxy and target.eContainer() is scenario:
+                inside.add(target)  # a node or an actor of the scenario, named by a flow or node
+                continue
+            _check_references(obj, result, inside)
+            break
+        if contains:
+            found = children(obj)
+            found.reverse()
+            pending.extend(found)
+
+
+def _check_references(obj: EObject, result: Expansion, inside: set[EObject]) -> None:
     scenario = result.scenario
     for feature, held in single_references(obj):
+        if held in inside:
+            continue
         target = unwrap(held)
-        if target not in inside:
-            top = _root_of(target)
-            inside[target] = top is scenario or result.holds(top)
-        if not inside[target]:
-            where = model_path(obj)
-            if result.holds(obj):  # a copy belongs to no container: name it in the scenario
-                where = "/".join(p for p in (model_path(scenario), where) if p)
-            raise FlattenError(
-                f"{feature.name} still refers to {model_path(target)} outside the "
-                "scenario after expansion",
-                element=where,
-            )
+        top = _root_of(target)
+        if top is scenario or result.holds(top):
+            inside.add(held)
+            continue
+        where = model_path(obj)
+        if result.holds(obj):  # a copy belongs to no container: name it in the scenario
+            where = "/".join(p for p in (model_path(scenario), where) if p)
+        raise FlattenError(
+            f"{feature.name} still refers to {model_path(target)} outside the "
+            "scenario after expansion",
+            element=where,
+        )
 
 
 def _root_of(obj: EObject) -> EObject:
