@@ -129,9 +129,10 @@ def test_in_vehicle_radius_longitudinal_between_the_boxes() -> None:
 
 
 def test_in_vehicle_radius_lateral_is_the_gap_across() -> None:
-    # 3.5 m aside, 1.5 m between the boxes' sides: within 2 m at once (the activation step).
+    # 3.5 m aside, 1.5 m between the boxes' sides: within 2 m at once, at t = 0 (a flow out of
+    # the root costs no step).
     measure = {"freespace": True, "relativeDistanceType": "lateral"}
-    assert distance_run(3.5, 2.0, **measure) == pytest.approx(0.05)
+    assert distance_run(3.5, 2.0, **measure) == pytest.approx(0.0)
     # Between the reference points 3.5 m is not within 2 m, and never gets so.
     assert distance_run(3.5, 2.0, relativeDistanceType="lateral") is None
 
@@ -139,8 +140,8 @@ def test_in_vehicle_radius_lateral_is_the_gap_across() -> None:
 def test_in_vehicle_radius_beyond_the_radius_with_greater_than() -> None:
     # The lead 10 m behind at 10 m/s, the ego pulling away at 20 m/s: 10 + 10 t > 25 after
     # 1.5 s (not before: the first step past it is 1.55 s).
-    # The lead 50.25 m ahead is beyond 25 m at once; "within" would wait until 2.55 s.
-    assert distance_run(0.0, 25.0, rule="greaterThan") == pytest.approx(0.05)
+    # The lead 50.25 m ahead is beyond 25 m at once (t = 0); "within" would wait until 2.55 s.
+    assert distance_run(0.0, 25.0, rule="greaterThan") == pytest.approx(0.0)
     assert distance_run(0.0, 25.0) == pytest.approx(2.55)
     b = ScenarioBuilder("beyond", level="concrete", max_duration=6.0)
     ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0, h=0.0), speed=20.0, **SIZE)
