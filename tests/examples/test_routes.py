@@ -75,7 +75,7 @@ def _r006(scenario_text: str, tmp_path: Path, name: str) -> list[str]:
 
 
 # The check that each example's turn follows a junction connection turning its way is the map
-# rule SCEML-R006 (src/sceml/validation/map_rules.py); here: it passes on the examples and
+# rule SCEML-R006 (src/sceml/validation/map_turns.py); here: it passes on the examples and
 # objects when an example's turn is named the other way.
 @pytest.mark.parametrize("name", ["uis1-concrete.xmi", "uis2-concrete.xmi"])
 def test_every_turn_follows_a_junction_connection_that_turns_that_way(

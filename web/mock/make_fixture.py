@@ -21,6 +21,7 @@ STYLE = {
     },
     "symbols": {"joinAll": "⇉", "joinOne": "?"},
     "font": "DejaVu Sans",
+    "edge": {"color": "#37474f"},
 }
 
 

@@ -171,7 +171,7 @@ export interface Style {
   symbols?: Record<string, string>;
   font?: string;
   /** How flows are drawn (`color`), as `sceml render` draws them. */
-  edge?: { color?: string };
+  edge: { color: string };
 }
 
 export interface DocumentInfo {

@@ -182,10 +182,9 @@ def locate(
     """The diagnostic with the file and line of its element filled in where they were missing."""
     where, line = diagnostic.file, diagnostic.line
     element = diagnostic.element
-    if document is not None and element is not None and where is None:
-        origin = document.file_of(element)
-        if origin is not None:
-            where, line = str(origin), line or document.line_of(element)
+    if document is not None and element is not None and where is None and element.eResource:
+        where, found = document.where(element)
+        line = line or found
     if where is None and (file or document) is not None:
         where = str(file or document.path)  # type: ignore[union-attr]
     return replace(diagnostic, file=where, line=line)

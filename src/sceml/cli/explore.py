@@ -11,6 +11,7 @@ import click
 from ..executors import check
 from ..levels.counts import parse_count
 from ..model.loading import load_scenario
+from ..xosc import PLAYER_STEP
 from .common import (
     Parsed,
     SceMLCommand,
@@ -58,7 +59,9 @@ _METRICS = ("min-ttc", "min-distance", "collision", "pet")
     help="How many of the most critical runs to write as concrete .xmi and .xosc.",
 )
 @written_version_option("OpenSCENARIO version of the .xosc files.")
-@click.option("--step", type=click.FloatRange(min=0.001, max=1.0), default=0.05, show_default=True)
+@click.option(
+    "--step", type=click.FloatRange(min=0.001, max=1.0), default=PLAYER_STEP, show_default=True
+)
 @workers_option
 @executor_options
 @allow_option

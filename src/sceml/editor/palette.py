@@ -11,7 +11,7 @@ import scemlmodel as scm
 from ..model import catalog
 from ..render import style
 from ..validation.context import is_kind
-from ..validation.parameters import MODULE_ONLY_KINDS, SPREAD_KINDS
+from ..validation.parameters import refused_value_kinds
 from ..xosc.profiles import PROFILES
 from ..xosc.schema import SUPPORTED_VERSIONS
 from .fields import actor_kind_names, enum_options
@@ -132,9 +132,7 @@ _VALUE_CLASSES = {
 
 def value_types(level: str, in_module: bool) -> list[str]:
     """Which ParamValue types the level allows: those the parameter rules accept there."""
-    refused = (() if in_module else MODULE_ONLY_KINDS) + (
-        SPREAD_KINDS if level == "concrete" and not in_module else ()
-    )
+    refused = refused_value_kinds(level, in_module)
     return [
         name
         for name, kind in _VALUE_CLASSES.items()

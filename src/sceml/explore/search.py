@@ -33,6 +33,7 @@ from ..executors import Executor, LocalExecutor
 from ..levels.apply import FlatTemplate
 from ..levels.space import ParameterSpace, parameter_space
 from ..simulate import Run
+from ..xosc import PLAYER_STEP
 from .objective import METRICS
 from .workers import Result, make_search_payload, run_candidates
 
@@ -81,7 +82,7 @@ def explore(
     metric: str,
     budget: int,
     seed: int = 0,
-    step: float = 0.05,
+    step: float = PLAYER_STEP,
     progress: Callable[[int], None] | None = None,
     executor: Executor | None = None,
     allow: tuple[Path, ...] = (),

@@ -20,6 +20,7 @@ from ..files.writing import make_folder, remove_folders, write_atomically
 from ..levels.counts import check_count
 from ..model.documents import Document
 from ..simulate.limits import run_samples
+from ..xosc import PLAYER_STEP
 from ..xosc.profiles import DEFAULT_VERSION
 from .outputs import plot_space, runs_csv, write_critical
 from .search import Evaluation, Exploration, explore
@@ -36,7 +37,7 @@ class ExploreRequest:
     metric: str = "collision"
     budget: int = 200
     seed: int = 0
-    step: float = 0.05
+    step: float = PLAYER_STEP
     #: How many of the most critical runs to write as concrete scenarios.
     top: int = 10
     osc_version: str = DEFAULT_VERSION

@@ -17,7 +17,7 @@ import scemlmodel as scm
 
 from ..maps.resolve import is_relative, resolve, start_poses
 from ..model import catalog
-from ..xosc.meaning import PLAYER_STEP
+from ..xosc import PLAYER_STEP
 from . import traced
 from .context import Build, last_name
 from .geometry import classify
@@ -197,7 +197,7 @@ def _lane_change_time(seconds: float) -> float:
     """How long a lane change of `seconds` (dynamicsDimension time) is driven over, for its
     length: esmini counts a timed change from the step it starts in and a change over a
     distance from the step after, so the same change in metres is one step
-    (`xosc.meaning.PLAYER_STEP`) shorter than speed times duration (`follow_reference`: 2 s
+    (`xosc.PLAYER_STEP`) shorter than speed times duration (`follow_reference`: 2 s
     at 13.9 m/s plays the same as 27.1 m, not 27.8 m)."""
     return max(seconds - PLAYER_STEP, PLAYER_STEP) if seconds > 0 else seconds
 

@@ -3,7 +3,7 @@
 A trigger is ConditionGroups (OR) of Conditions (AND). In each group a StoryboardElementState
 condition is a flow from that element's node, a SimulationTime condition that holds at 0
 (`>= 0`) a flow from the start, a later one (`> 0` a step later, `> v` a step after v:
-`xosc.meaning.PLAYER_STEP`) a TimeElapsed after the root; several of these meet in a
+`xosc.PLAYER_STEP`) a TimeElapsed after the root; several of these meet in a
 JoinAllFinished. Every other condition is a condition node after them (or an opaque one); two or
 more are evaluated side by side and meet in a JoinAllFinished (a group, never a chain), and a
 delay is a TimeElapsed. Several groups meet in a JoinOneFinished.
@@ -18,7 +18,7 @@ from lxml import etree
 
 import scemlmodel as scm
 
-from ..xosc.meaning import PLAYER_STEP
+from ..xosc import PLAYER_STEP
 from . import traced
 from .conditions import condition_after
 from .context import Build
@@ -237,7 +237,7 @@ class Trigger:
 
 def first_holds(clock: etree._Element) -> float:
     """When a SimulationTimeCondition (`>` or `>=`) first holds: `>= v` at v, `> v` a step
-    after v (`xosc.meaning.PLAYER_STEP`)."""
+    after v (`xosc.PLAYER_STEP`)."""
     seconds = number(clock, "value")
     if clock.get("rule") == "greaterThan" and seconds >= 0:
         seconds += PLAYER_STEP

@@ -77,6 +77,14 @@ class Document:
         resource = obj.eResource
         return Path(resource.uri.normalize()) if resource is not None else None
 
+    def where(self, obj: EObject) -> tuple[str, int | None]:
+        """Where a diagnostic about `obj` points: this file as the user named it, or the library
+        a module internal was read from, and the line of its element (the one rule of locating,
+        for validation's findings and every command's diagnostics)."""
+        other = obj.eResource is not None and obj.eResource is not self.resource
+        found = self.file_of(obj) if other else None
+        return str(found or self.path), self.line_of(obj)
+
 
 def allowed_roots_of(obj: EObject) -> list[Path] | None:
     """The folders the files `obj`'s model names may be read from, as it was loaded (`load`'s

@@ -21,6 +21,7 @@ import numpy as np
 
 from ..errors import LoadError
 from ..export.names import SEPARATOR
+from ..xosc import PLAYER_STEP
 from .record import CutShort, EventRun, PlayerRun, Trace
 
 NAME = "esmini"
@@ -160,7 +161,7 @@ def find(given: str | None = None) -> str | None:
     return candidate if candidate and Path(candidate).is_file() else None
 
 
-def play(esmini: str, xosc: Path, timestep: float = 0.05) -> tuple[Path, Path]:
+def play(esmini: str, xosc: Path, timestep: float = PLAYER_STEP) -> tuple[Path, Path]:
     """Run esmini headless on `xosc` (in its folder); the log and CSV files it wrote beside it."""
     log_path = xosc.with_suffix(".log.txt")
     csv_path = xosc.with_suffix(".csv")

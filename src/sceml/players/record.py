@@ -11,6 +11,8 @@ from dataclasses import dataclass, field
 import numpy as np
 from numpy.typing import NDArray
 
+from ..xosc import PLAYER_STEP
+
 Array = NDArray[np.float64]
 
 
@@ -68,4 +70,4 @@ class PlayerRun:
     stop_groups: list[list[tuple[str, bool]]] = field(default_factory=list)
     cut_short: list[CutShort] = field(default_factory=list)
     traces: dict[str, Trace] = field(default_factory=dict)
-    step: float = 0.05
+    step: float = PLAYER_STEP

@@ -17,6 +17,7 @@ from ..model.graph import actors as scenario_actors
 from ..model.graph import root_node, scenario_level
 from ..model.params import concrete
 from ..modules.flatten import Flattened, expand
+from ..xosc import PLAYER_STEP
 from .engine import Scheduler, run_schedule
 from .global_values import initial_values
 from .limits import located_in, refuse_unresolved, refuse_unusable
@@ -26,7 +27,7 @@ from .setup import make_actor
 from .world import SimulationError, World
 
 #: The default time step (s): fine enough for walking and urban speeds.
-DEFAULT_STEP = 0.05
+DEFAULT_STEP = PLAYER_STEP
 
 
 def simulate(

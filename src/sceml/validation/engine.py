@@ -163,11 +163,7 @@ def locate(
         fragment = uri_fragment(element)
         path = model_path(element)
         if document is not None:
-            # The file as the user named it, or the library a module internal was read from.
-            other = element.eResource is not None and element.eResource is not document.resource
-            found = document.file_of(element) if other else None
-            file = str(found or document.path)
-            line = document.line_of(element)
+            file, line = document.where(element)
     except Exception:  # locating is best effort; the finding itself must get through
         pass
     return Diagnostic(severity, code, message, fragment, path or None, file, line, element)

@@ -29,13 +29,12 @@ from ..maps import (
     PositionError,
     wrap_angle,
 )
-from ..maps.positions import Located, centre, locate, spread
+from ..maps.positions import Located, locate, spread
 from ..maps.reference import MapReference, is_town_name, map_reference
 from ..maps.resolve import RELATIVE_KINDS, is_relative, road_to_lane, route_pose, start_poses
-from ..maps.routes import routes_from
-from ..model.graph import Flows, OwnFlows, reachable, root_node
+from ..model.graph import root_node
 from .context import Context, is_kind, performer
-from .reads import LEVEL, ROUTE, SELF, VALUE, Aspect, Reads
+from .reads import LEVEL, SELF, VALUE, Aspect, Reads
 from .registry import Finding, constraint
 
 if TYPE_CHECKING:
@@ -46,7 +45,7 @@ ERROR, WARNING, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
 POSITION_TOLERANCE = 0.5
 #: How far a vehicle's heading may differ from its lane's direction of traffic.
 HEADING_LIMIT = math.radians(45)
-_SOURCE = "SPEC §12"
+SOURCE = "SPEC §12"
 
 
 # --- which map, which actor -------------------------------------------------------------------
@@ -87,7 +86,7 @@ def _loaded(reference: MapReference, context: Context) -> RoadMap | MapError:
     return context.memo(("map", reference.path), read)
 
 
-def _map_of(obj: EObject, context: Context) -> RoadMap | None:
+def map_of(obj: EObject, context: Context) -> RoadMap | None:
     """The readable OpenDRIVE map `obj`'s scenario names, or None (no map, a town, unreadable)."""
     reference = _reference(obj, context)
     if reference is None or reference.path is None:
@@ -108,7 +107,7 @@ def _what(position: EObject) -> str:
     return f"{role} of {getattr(owner, 'name', None) or owner.eClass.name}"
 
 
-def _usable_lanes(actor: scm.Actor) -> tuple[frozenset[str], str]:
+def usable_lanes(actor: scm.Actor) -> tuple[frozenset[str], str]:
     """The lane types an actor may be on, and what it needs in words."""
     name = actor.eClass.name
     if is_kind(name, "Pedestrian"):
@@ -126,11 +125,11 @@ def _kind(actor: scm.Actor) -> str:
     return str(actor.eClass.name).lower()
 
 
-def _at(x: float, y: float) -> str:
+def point_text(x: float, y: float) -> str:
     return f"({x:.2f}, {y:.2f})"
 
 
-def _lane_words(lane: LaneCoordinate) -> str:
+def lane_words(lane: LaneCoordinate) -> str:
     return f"road {lane.road_id}, lane {lane.lane_id}"
 
 
@@ -142,7 +141,7 @@ def _lane_words(lane: LaneCoordinate) -> str:
     ERROR,
     "RootNode",
     "a map given as an OpenDRIVE path names a readable OpenDRIVE file",
-    source=_SOURCE,
+    source=SOURCE,
     reads=Reads(SELF, LEVEL),
 )
 def map_file_is_opendrive(root: scm.RootNode, context: Context) -> Iterator[Finding]:
@@ -161,7 +160,7 @@ def map_file_is_opendrive(root: scm.RootNode, context: Context) -> Iterator[Find
     "RootNode",
     "a map given as a simulator town name or a scene graph (3D scenery with no roads) is not "
     "read: positions are not checked against it",
-    source=_SOURCE,
+    source=SOURCE,
     reads=Reads(SELF, LEVEL),
 )
 def town_is_not_checked(root: scm.RootNode, context: Context) -> Iterator[Finding]:
@@ -185,12 +184,12 @@ def town_is_not_checked(root: scm.RootNode, context: Context) -> Iterator[Findin
     "LanePosition",
     "a lane position names a road and lane of the map, with s within the road and the offset "
     "within the lane",
-    source=_SOURCE,
+    source=SOURCE,
     through_modules=True,
     reads=Reads(VALUE, LEVEL),
 )
 def lane_position_exists(position: scm.LanePosition, context: Context) -> Iterator[Finding]:
-    road_map = _map_of(position, context)
+    road_map = map_of(position, context)
     if road_map is None or position.roadId is None or position.laneId is None:
         return
     what = _what(position)
@@ -207,12 +206,12 @@ def lane_position_exists(position: scm.LanePosition, context: Context) -> Iterat
     ERROR,
     "RoadPosition",
     "a road position names a road of the map, with s within the road and t on one of its lanes",
-    source=_SOURCE,
+    source=SOURCE,
     through_modules=True,
     reads=Reads(VALUE, LEVEL),
 )
 def road_position_exists(position: scm.RoadPosition, context: Context) -> Iterator[Finding]:
-    road_map = _map_of(position, context)
+    road_map = map_of(position, context)
     if road_map is None or not position.roadId:
         return
     for s in spread(position.s) or []:
@@ -231,12 +230,12 @@ def road_position_exists(position: scm.RoadPosition, context: Context) -> Iterat
     "a route position can be placed on the map: its route has two or more waypoints, the first "
     "on a lane, and pathS stays on the road the route starts on (SceML does not route through "
     "junctions)",
-    source=_SOURCE,
+    source=SOURCE,
     through_modules=True,
     reads=Reads(VALUE, LEVEL),
 )
 def route_position_placed(position: scm.RoutePosition, context: Context) -> Iterator[Finding]:
-    road_map = _map_of(position, context)
+    road_map = map_of(position, context)
     if road_map is None:
         return
     try:
@@ -277,10 +276,10 @@ def _grounds(position: EObject, road_map: RoadMap, context: Context) -> Iterator
             continue
         lanes = road_map.world_to_lane(point.x, point.y, POSITION_TOLERANCE)
         if not lanes:
-            yield _Ground((), _at(point.x, point.y), "", _nearest(road_map, point))
+            yield _Ground((), point_text(point.x, point.y), "", _nearest(road_map, point))
             continue
-        words = f" ({_lane_words(lanes[0])})"
-        yield _Ground(tuple(lane.lane_type for lane in lanes), _at(point.x, point.y), words)
+        words = f" ({lane_words(lanes[0])})"
+        yield _Ground(tuple(lane.lane_type for lane in lanes), point_text(point.x, point.y), words)
 
 
 @constraint(
@@ -290,17 +289,17 @@ def _grounds(position: EObject, road_map: RoadMap, context: Context) -> Iterator
     "a position lies on a lane that fits its actor: driving lanes (or a shoulder, stop or "
     "parking lane) for vehicles; the roadway, sidewalks and bike lanes for bicycles and "
     "pedestrians",
-    source=_SOURCE,
+    source=SOURCE,
     through_modules=True,
     # A relative start reads the starts of the actors it is placed after.
     reads=Reads(VALUE, LEVEL | Aspect.CAST | Aspect.POSITIONS),
 )
 def position_fits_actor(position: EObject, context: Context) -> Iterator[Finding]:
-    road_map = _map_of(position, context)
+    road_map = map_of(position, context)
     actor = performer(position.eContainer())
     if road_map is None or actor is None:
         return
-    usable, needs = _usable_lanes(actor)
+    usable, needs = usable_lanes(actor)
     if _is_vehicle(actor):
         usable = usable | VEHICLE_EDGE_LANE_TYPES  # SCEML-R009 warns there
     what = _what(position)
@@ -322,12 +321,12 @@ def position_fits_actor(position: EObject, context: Context) -> Iterator[Finding
     ("WorldPosition", "LanePosition", "RoadPosition", "RoutePosition", *RELATIVE_KINDS),
     "a vehicle's position on a shoulder, stop, parking or restricted lane is meant: vehicles stand "
     "or pull over there but do not normally drive there",
-    source=_SOURCE,
+    source=SOURCE,
     through_modules=True,
     reads=Reads(VALUE, LEVEL | Aspect.CAST | Aspect.POSITIONS),
 )
 def vehicle_on_the_edge(position: EObject, context: Context) -> Iterator[Finding]:
-    road_map = _map_of(position, context)
+    road_map = map_of(position, context)
     actor = performer(position.eContainer())
     if road_map is None or actor is None or not _is_vehicle(actor):
         return
@@ -360,7 +359,7 @@ def _nearest(road_map: RoadMap, point: Located) -> str:
     if not lanes:
         return " (no lane within 50 m)"
     lane = lanes[0]
-    return f" (the nearest lane, {_lane_words(lane)}, is {lane.outside:.1f} m away)"
+    return f" (the nearest lane, {lane_words(lane)}, is {lane.outside:.1f} m away)"
 
 
 @constraint(
@@ -368,12 +367,12 @@ def _nearest(road_map: RoadMap, point: Located) -> str:
     WARNING,
     "WorldPosition",
     "a vehicle's heading roughly follows its lane's direction of traffic (within 45 degrees)",
-    source=_SOURCE,
+    source=SOURCE,
     through_modules=True,
     reads=Reads(VALUE, LEVEL | Aspect.CAST),
 )
 def heading_follows_lane(position: scm.WorldPosition, context: Context) -> Iterator[Finding]:
-    road_map = _map_of(position, context)
+    road_map = map_of(position, context)
     actor = performer(position.eContainer())
     if road_map is None or actor is None or not _is_vehicle(actor):
         return
@@ -400,220 +399,8 @@ def heading_follows_lane(position: scm.WorldPosition, context: Context) -> Itera
                 (
                     f"{_what(position)}: heading {heading:.2f} rad differs by "
                     f"{math.degrees(min(deviations)):.0f} degrees from the traffic on "
-                    f"{_lane_words(lane)} ({traffic:.2f} rad)"
+                    f"{lane_words(lane)} ({traffic:.2f} rad)"
                     + ("; h is not set, so 0 is used" if position.h is None else "")
                 ),
             )
             return
-
-
-# --- routes -----------------------------------------------------------------------------------
-
-
-def _flows_of(node: EObject, context: Context) -> Flows:
-    """The graph `node` is read in: the expanded scenario for a module internal, else its own."""
-    graph = node.eContainer()
-    if graph is None:  # only the expansion's copies of module internals have no container
-        flat = context.flat()
-        if flat is not None and flat.holds(node):
-            return flat
-    return context.memo(("own flows", graph), lambda: OwnFlows(graph))
-
-
-def _ancestors(node: EObject, flows: Flows, context: Context) -> set[EObject]:
-    """Every node a path of flows leads from to `node`, itself excluded (once per run and graph)."""
-    return context.memo(
-        ("ancestors", id(flows), node),
-        lambda: reachable([node], backwards=True, flows=flows) - {node},
-    )
-
-
-def _actions_by_actor(flows: Flows, context: Context) -> dict[object, list[scm.ActionNode]]:
-    """Each actor's action nodes in the graph's order (once per run and graph), so that a
-    departure looks at one actor's nodes rather than at every node of the graph."""
-
-    def group() -> dict[object, list[scm.ActionNode]]:
-        by_actor: dict[object, list[scm.ActionNode]] = {}
-        for n in flows.nodes:
-            if isinstance(n, scm.ActionNode):
-                by_actor.setdefault(n.referenceActor, []).append(n)
-        return by_actor
-
-    return context.memo(("actions by actor", id(flows)), group)
-
-
-def _departure(node: scm.ActionNode, context: Context) -> tuple[EObject | None, bool]:
-    """Where the actor is when `node` starts: the destination of its latest earlier routed
-    maneuver or trajectory, else its start position; and whether a lane change or overtake of
-    the actor since then leaves its lane open."""
-    actor = node.referenceActor
-    flows = _flows_of(node, context)
-    earlier = _ancestors(node, flows, context)
-    # In the graph's own order, so that of two parallel latest maneuvers the same one counts.
-    mine = [n for n in _actions_by_actor(flows, context).get(actor, ()) if n in earlier]
-    routed = [n for n in mine if isinstance(n, scm.RoutedManeuver | scm.FollowTrajectory)]
-    before_others = set().union(*(_ancestors(o, flows, context) for o in routed))
-    latest = [n for n in routed if n not in before_others]
-    since = reachable(latest, backwards=False, flows=flows) if latest else set(earlier)
-    lane_open = any(isinstance(n, scm.LaneChange | scm.Overtake) for n in mine if n in since)
-    if latest:
-        last = latest[0]
-        if isinstance(last, scm.FollowTrajectory):
-            return (last.waypoints[-1] if last.waypoints else None), lane_open
-        return last.destination, lane_open
-    return (actor.startPosition if actor is not None else None), lane_open
-
-
-def _lanes_at(road_map: RoadMap, point: Located, usable: frozenset[str]) -> list[LaneCoordinate]:
-    if point.lane is not None:
-        road_id, lane_id, s, offset = point.lane
-        lane_type = road_map.band(road_id, lane_id, s).lane.type
-        return [LaneCoordinate(road_id, lane_id, s, offset, lane_type)]
-    return [
-        lane
-        for lane in road_map.world_to_lane(point.x, point.y, POSITION_TOLERANCE)
-        if lane.lane_type in usable
-    ]
-
-
-@constraint(
-    "SCEML-R006",
-    ERROR,
-    ("TurnLeft", "TurnRight"),
-    "a turn's destination is reachable from the actor's lane through the next junction's "
-    "connections, turning the named way",
-    source=_SOURCE,
-    through_modules=True,
-    reads=Reads(VALUE, ROUTE),
-)
-def turn_follows_junction(node: scm.RoutedManeuver, context: Context) -> Iterator[Finding]:
-    road_map = _map_of(node, context)
-    actor = node.referenceActor
-    if (
-        road_map is None
-        or not isinstance(actor, scm.Actor)
-        or is_kind(actor.eClass.name, "Pedestrian")
-    ):
-        return
-    usable, _ = _usable_lanes(actor)
-    departure, lane_open = _departure(node, context)
-    try:
-        start = centre(departure, road_map)
-        goal = centre(node.destination, road_map)
-        if start is None or goal is None:
-            return
-        starts = _lanes_at(road_map, start, usable)
-        goals = _lanes_at(road_map, goal, usable)
-    except PositionError:
-        return  # SCEML-R003
-    if not starts or not goals:
-        return  # SCEML-R004
-    if start.heading is not None:
-        facing = [
-            lane
-            for lane in starts
-            if abs(
-                wrap_angle(
-                    start.heading - road_map.traffic_heading(lane.road_id, lane.lane_id, lane.s)
-                )
-            )
-            <= HEADING_LIMIT
-        ]
-        starts = facing or starts
-    if lane_open:  # after a lane change any lane of the road in the same direction will do
-        starts = _same_direction_lanes(road_map, starts, usable)
-    wanted = "left" if isinstance(node, scm.TurnLeft) else "right"
-    routes = [
-        route for lane in starts for route in routes_from(road_map, lane.road_id, lane.lane_id)
-    ]
-    arriving = [r for r in routes if any(r.reaches(g.road_id) for g in goals)]
-    if not routes:
-        lane = starts[0]
-        yield (
-            node.destination or node,
-            (
-                f"{node.name}: from {_lane_words(lane)} no junction connection leads anywhere, "
-                f"so the {wanted} turn cannot be driven"
-            ),
-        )
-    elif not arriving:
-        goal_lane = goals[0]
-        exits = sorted({f"{r.turn} to road {r.exit_road}" for r in routes})
-        yield (
-            node.destination or node,
-            (
-                f"{node.name}: the destination on {_lane_words(goal_lane)} cannot be reached from "
-                f"{_lane_words(starts[0])} through junction {routes[0].junction} "
-                f"(its connections go {', '.join(exits)})"
-            ),
-        )
-    elif not any(r.turn == wanted for r in arriving):
-        turns = " or ".join(sorted({_TURN_WORDS[r.turn] for r in arriving}))
-        yield (
-            node.destination or node,
-            f"{node.name}: the way to the destination from {_lane_words(starts[0])} is "
-            f"{turns} at junction {arriving[0].junction}, not a {wanted} turn",
-        )
-
-
-_TURN_WORDS = {
-    "left": "a left turn",
-    "right": "a right turn",
-    "straight": "straight on",
-    "u-turn": "a U-turn",
-}
-
-
-def _same_direction_lanes(
-    road_map: RoadMap, lanes: list[LaneCoordinate], usable: frozenset[str]
-) -> list[LaneCoordinate]:
-    widened = list(lanes)
-    for lane in lanes:
-        road = road_map.road(lane.road_id)
-        along = road_map.drives_along_s(road, lane.lane_id)
-        for band in road_map.bands(road, lane.s):
-            same = road_map.drives_along_s(road, band.lane.id) == along
-            if same and band.lane.type in usable and band.lane.id != lane.lane_id:
-                widened.append(
-                    LaneCoordinate(lane.road_id, band.lane.id, lane.s, 0.0, band.lane.type)
-                )
-    return widened
-
-
-#: Points along a crossing path that are tested for lying on the roadway.
-_CROSSING_SAMPLES = 40
-
-
-@constraint(
-    "SCEML-R007",
-    ERROR,
-    "Cross",
-    "a Cross destination lies across the road: the way there crosses a driving lane",
-    source=_SOURCE,
-    through_modules=True,
-    reads=Reads(VALUE, ROUTE),
-)
-def cross_crosses_the_road(node: scm.Cross, context: Context) -> Iterator[Finding]:
-    road_map = _map_of(node, context)
-    if road_map is None or node.referenceActor is None:
-        return
-    departure, _ = _departure(node, context)
-    try:
-        start = centre(departure, road_map)
-        goal = centre(node.destination, road_map)
-    except PositionError:
-        return
-    if start is None or goal is None:
-        return
-    for i in range(1, _CROSSING_SAMPLES):
-        x = start.x + (goal.x - start.x) * i / _CROSSING_SAMPLES
-        y = start.y + (goal.y - start.y) * i / _CROSSING_SAMPLES
-        if any(lane.lane_type in VEHICLE_LANE_TYPES for lane in road_map.world_to_lane(x, y)):
-            return
-    yield (
-        node.destination or node,
-        (
-            f"{node.name}: the way from {_at(start.x, start.y)} to the destination "
-            f"{_at(goal.x, goal.y)} crosses no driving lane, so it does not cross the road"
-        ),
-    )

@@ -82,6 +82,15 @@ SPREAD_KINDS = ("Range", "Distribution")
 MODULE_ONLY_KINDS = ("ParameterRef",)
 
 
+def refused_value_kinds(level: str | None, in_module: bool) -> tuple[str, ...]:
+    """The value kinds the parameter rules refuse at `level` (SCEML-P001: no spread in a concrete
+    scenario) or outside a module definition (SCEML-P008), which has no level of its own; the
+    editor offers the others."""
+    if in_module:
+        return ()
+    return MODULE_ONLY_KINDS + (SPREAD_KINDS if level == "concrete" else ())
+
+
 @constraint(
     "SCEML-P001",
     ERROR,

@@ -32,13 +32,6 @@ from ..model import catalog
 #: that it keeps step with a player: root -> SpeedCondition -> Accelerate starts the Accelerate
 #: one step after the start, in the step the speed is reached, as the original file would.
 FLOW_DELAY_STEPS = 1
-#: The time step players run scenarios at (esmini's --fixed_timestep as the project runs it,
-#: the preview's default). A flow out of the root costs no step (`xosc.flows.flow_steps`):
-#: the export writes "the root has finished" as `SimulationTime >= 0`, which holds at t = 0.
-#: An original's `SimulationTime > v` first holds one step after v (esmini 3.6: `> 0` at
-#: 0.05 s, `> 2` at 2.05 s; `>= 2` at 2.00 s), so the import reads it as a wait of v plus
-#: this step, and `>= v` as a wait of v.
-PLAYER_STEP = 0.05
 
 # --- who controls what --------------------------------------------------------------------------
 

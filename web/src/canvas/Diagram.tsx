@@ -98,7 +98,7 @@ export function Diagram({ view, state, direction, toggleExpanded, connectFrom, k
           defaultEdgeOptions={DEFAULT_EDGE_OPTIONS}
         >
           <Background gap={20} color="#e0e4e8" />
-          <MiniMap<DiagramNode> pannable zoomable style={MINIMAP_STYLE} nodeColor={minimapColour} nodeStrokeColor="#37474f" nodeStrokeWidth={2} />
+          <MiniMap<DiagramNode> pannable zoomable style={MINIMAP_STYLE} nodeColor={minimapColour} nodeStrokeColor={style?.edge.color} nodeStrokeWidth={2} />
           <Controls showInteractive={false} showFitView={false} />
         </ReactFlow>
         <div className="connect-hint" aria-live="polite">

@@ -67,7 +67,8 @@ export function flowNodes(
   });
 }
 
-export function flowEdges(shown: Shown, selected: Set<string>, readOnly: boolean): DiagramEdge[] {
+/** The flows as React Flow edges, drawn in `colour` (the server's style, as `sceml render` draws flows). */
+export function flowEdges(shown: Shown, selected: Set<string>, readOnly: boolean, colour: string): DiagramEdge[] {
   const parentOf = new Map(shown.nodes.map((node) => [node.id, node.parent]));
   return shown.edges.map((edge) => {
     const inner = parentOf.get(edge.source) != null && parentOf.get(edge.target) != null;
@@ -75,8 +76,8 @@ export function flowEdges(shown: Shown, selected: Set<string>, readOnly: boolean
       id: edge.id,
       source: edge.source,
       target: edge.target,
-      markerEnd: { type: MarkerType.ArrowClosed, color: "#37474f", width: 18, height: 18 },
-      style: { stroke: "#37474f", strokeWidth: 1.4 },
+      markerEnd: { type: MarkerType.ArrowClosed, color: colour, width: 18, height: 18 },
+      style: { stroke: colour, strokeWidth: 1.4 },
       selectable: !inner && !readOnly,
       deletable: !inner && !readOnly,
       selected: selected.has(edge.id),

@@ -132,7 +132,7 @@ export function useDiagramState(
       const selectedEdges = chosen ? new Set<string>() : selection.current.edges;
       // Unchanged nodes and edges keep their objects, so React Flow redraws only what changed.
       const nextNodes = reuse(flowNodes(shown, layout, view.nodes, selectedNodes, view.readOnly), drawn.current.nodes, sameNode);
-      const nextEdges = reuse(flowEdges(shown, selectedEdges, view.readOnly), drawn.current.edges, sameEdge);
+      const nextEdges = reuse(flowEdges(shown, selectedEdges, view.readOnly, view.style.edge.color), drawn.current.edges, sameEdge);
       // The same list keeps its array: React Flow runs every node's and edge's selector on
       // each update of its store, so an update that changes nothing is worth skipping.
       setNodes((current) => (sameItems(current, nextNodes) ? current : nextNodes));
