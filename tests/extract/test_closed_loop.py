@@ -144,14 +144,13 @@ def test_noisy_recordings_of_the_intersection_examples_come_back_whole(name: str
 
 #: The outcome of each of the first 12 samples of the logical scenarios (seed 7, as the
 #: benchmark), each recorded at 10 Hz with 0.1 m of noise (seed: the sample's index).
-#: Looked into by hand: UIS1's sample 9 is a bike that sets off at 0.05 s, whose ramp is
-#: fitted from 0.0 s at 1.32 m/s² rather than 1.5 (1.04 m off at its end); UIS2's 5 and 10
+#: Looked into by hand: UIS1's sample 9 was a bike that set off at 0.05 s, whose ramp was
+#: fitted from 0.0 s at 1.32 m/s² rather than 1.5 (1.04 m off at its end); since a flow out of
+#: the root costs no step it sets off at 0.0 s and comes back whole. UIS2's 5 and 10
 #: are pedestrians whose short ramp (0 to 1.9 m/s in 1 s) the noise lets fit gentler, so
 #: their crossing starts a few tenths late (1.04 m); UIS2's 7 is the car, whose step follows
 #: the ego reaching a place, a step late at 10 m/s (1.22 m).
 NOISY_SAMPLES = {
-    # UIS1's sample 9 replayed over 1 m off while the preview started the first nodes one step
-    # late (0.05 s); since they start at t = 0, as esmini starts them, it comes back whole.
     "uis1-logical.xmi": ["whole"] * 12,
     "uis2-logical.xmi": ["whole"] * 5
     + ["replay", "whole", "replay", "whole", "whole"]
