@@ -27,6 +27,8 @@ PrecipitationType = EEnum('PrecipitationType', literals=['dry', 'rain', 'snow'])
 ActorKind = EEnum('ActorKind', literals=[
                   'Pedestrian', 'TwoWheeler', 'Bicycle', 'Motorcycle', 'FourWheeler', 'Car', 'Van', 'Truck', 'Bus'])
 
+ConditionEdge = EEnum('ConditionEdge', literals=['none', 'rising', 'falling', 'risingOrFalling'])
+
 ControllerOverrideKind = EEnum('ControllerOverrideKind', literals=[
                                'throttle', 'brake', 'clutch', 'parkingBrake', 'steeringWheel', 'gear'])
 
@@ -870,10 +872,11 @@ class Actor(Participant):
     length = EReference(ordered=True, unique=True, containment=True, derived=False)
     width = EReference(ordered=True, unique=True, containment=True, derived=False)
     height = EReference(ordered=True, unique=True, containment=True, derived=False)
+    boxCenterX = EReference(ordered=True, unique=True, containment=True, derived=False)
     controller = EReference(ordered=True, unique=True, containment=True, derived=False)
     controllerActivation = EReference(ordered=True, unique=True, containment=True, derived=False)
 
-    def __init__(self, *, isEgo=None, model=None, startPosition=None, initialSpeed=None, length=None, width=None, height=None, controller=None, controllerActivation=None, **kwargs):
+    def __init__(self, *, isEgo=None, model=None, startPosition=None, initialSpeed=None, length=None, width=None, height=None, boxCenterX=None, controller=None, controllerActivation=None, **kwargs):
 
         super().__init__(**kwargs)
 
@@ -897,6 +900,9 @@ class Actor(Participant):
 
         if height is not None:
             self.height = height
+
+        if boxCenterX is not None:
+            self.boxCenterX = boxCenterX
 
         if controller is not None:
             self.controller = controller
@@ -1020,9 +1026,15 @@ class Maneuver(ActionNode):
 @abstract
 class Condition(ActionNode):
 
-    def __init__(self, **kwargs):
+    edge = EAttribute(eType=ConditionEdge, unique=True, derived=False,
+                      changeable=True, default_value=ConditionEdge.none)
+
+    def __init__(self, *, edge=None, **kwargs):
 
         super().__init__(**kwargs)
+
+        if edge is not None:
+            self.edge = edge
 
 
 class OpaqueAction(ActionNode):

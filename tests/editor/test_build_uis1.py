@@ -12,7 +12,8 @@ from sceml.model.loading import load
 from sceml.model.traversal import features
 
 #: Not set by parameter or position ops (maxRuns: every node of UIS1 runs once, the default;
-#: its InVehicleRadius measures as the defaults say: within, straight line, reference points).
+#: its InVehicleRadius measures as the defaults say: within, straight line, reference points;
+#: no condition has an edge).
 _SKIPPED = {
     "name",
     "referenceActor",
@@ -25,6 +26,7 @@ _SKIPPED = {
     "freespace",
     "relativeDistanceType",
     "coordinateSystem",
+    "edge",
 }
 
 

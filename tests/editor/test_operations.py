@@ -437,3 +437,30 @@ def test_unknown_operation_and_node(uis1: EditorSession) -> None:
         uis1.apply([{"op": "explode"}])
     with pytest.raises(OperationError, match="unknown node"):
         uis1.apply([{"op": "delete", "nodes": ["n999"]}])
+
+
+def test_a_condition_edge_and_a_box_centre_are_fields(uis1: EditorSession) -> None:
+    # Release 1.3: Condition.edge (an enum, none by default) and Actor.boxCenterX (a number).
+    view = uis1.view()
+    radius = node_id(view, "InVehicleRadius_1")
+    edge = field(node(view, radius), "edge")
+    assert edge["value"] == "none"
+    assert edge["options"] == ["none", "rising", "falling", "risingOrFalling"]
+    ego = actor_id(view, "ego")
+    after = roundtrip(
+        uis1,
+        [
+            {"op": "set", "node": radius, "field": "edge", "value": "rising"},
+            {
+                "op": "set_actor_parameter",
+                "actor": ego,
+                "field": "boxCenterX",
+                "value": {"type": "value", "value": 1.25},
+            },
+        ],
+    )
+    assert field(node(after, radius), "edge")["value"] == "rising"
+    ego_view = next(a for a in after["actors"] if a["id"] == ego)
+    centre = field(ego_view, "boxCenterX")
+    assert centre["label"] == "Box centre x"
+    assert centre["value"]["value"] == 1.25

@@ -12,6 +12,7 @@ from typing import Any
 import pytest
 from lxml import etree
 
+import scemlmodel as scm
 from sceml.export import ExportError, export_to_file
 from sceml.importer import import_file
 from sceml.model import graph
@@ -232,13 +233,15 @@ def test_a_distance_beyond_the_radius_keeps_its_rule(tmp_path: Path) -> None:
     assert written.get("rule") == "greaterThan"
 
 
-def test_a_distance_growing_past_its_value_on_a_rising_edge_stays_opaque(tmp_path: Path) -> None:
+def test_a_distance_growing_past_its_value_on_a_rising_edge_keeps_its_edge(tmp_path: Path) -> None:
     # greaterThan on a rising edge waits for the gap to grow past the value; "holds" would fire
-    # at once where the gap starts beyond it.
+    # at once where the gap starts beyond it, so the node keeps the edge (release 1.3).
     variant = _variant(
         tmp_path, 'rule="lessThan" coordinateSystem', 'rule="greaterThan" coordinateSystem'
     )
     assert 'name="CutInStartCondition" delay="0" conditionEdge="rising"' in variant.read_text()
     imported = import_file(variant)
-    assert imported.report.counts()["opaque"] == 1
-    assert any("rising edge" in entry.message for entry in imported.report.section("opaque"))
+    assert imported.report.counts()["opaque"] == 0
+    (radius,) = [n for n in imported.scenario.nodes if isinstance(n, scm.InVehicleRadius)]
+    assert radius.rule == scm.ComparisonRule.greaterThan
+    assert radius.edge == scm.ConditionEdge.rising

@@ -100,9 +100,11 @@ def test_the_preview_starts_them_when_esmini_does(imported: scm.Scenario) -> Non
     assert run.node("AfterTwo").finished == pytest.approx(7.05)
 
 
-def test_an_edge_condition_at_the_start_is_evaluated_from_the_step_after(tmp_path: Path) -> None:
-    # An edge is a change between two evaluations, so it cannot hold at the first one (t = 0):
-    # Second's speed change waits for Second to be faster than 5 m/s, rising.
+def test_an_edge_condition_at_the_start_keeps_its_edge_and_follows_the_root(tmp_path: Path) -> None:
+    # An edge is a change between two evaluations, so it cannot hold at the first one (t = 0);
+    # the node keeps the edge (release 1.3), which says so to the preview and the export, so no
+    # wait of a step is put before it: Second's speed change waits for Second to become faster
+    # than 5 m/s.
     text = SOURCE.read_text()
     old = (
         '<Condition name="AfterZeroWhen" delay="0" conditionEdge="none">\n'
@@ -122,6 +124,5 @@ def test_an_edge_condition_at_the_start_is_evaluated_from_the_step_after(tmp_pat
     scenario = import_file(path).scenario
     speed = next(n for n in scenario.nodes if isinstance(n, scm.SpeedCondition))
     assert graph.successors(speed) == [node(scenario, "AfterZero")]
-    (before,) = graph.predecessors(speed)
-    assert isinstance(before, scm.TimeElapsed) and before.duration.value == pytest.approx(0.05)
-    assert graph.predecessors(before) == [graph.root_node(scenario)]
+    assert speed.edge == scm.ConditionEdge.rising
+    assert graph.predecessors(speed) == [graph.root_node(scenario)]

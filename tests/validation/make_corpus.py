@@ -945,8 +945,15 @@ def _turn_after_trajectory(b: ScenarioBuilder, ego: scm.Actor) -> None:
     )
 
 
+def _wait_on_an_edge(b: ScenarioBuilder, ego: scm.Actor) -> None:
+    wait = b.add("TimeElapsed", ego, duration=2.0)
+    wait.edge = scm.ConditionEdge.rising
+    b.chain(b.root, wait, b.end)
+
+
 on_map("y001-drive-distance-at-rest", "SCEML-Y001")(_drive_at_rest)
 on_map("y002-turn-after-a-trajectory", "SCEML-Y002")(_turn_after_trajectory)
+on_map("y004-wait-on-an-edge", "SCEML-Y004")(_wait_on_an_edge)
 
 
 # Several faults at once ----------------------------------------------------------------------

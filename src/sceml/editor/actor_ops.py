@@ -20,7 +20,7 @@ from .node_ops import adopt, attribute_value, nested_holder, place, set_attribut
 from .values import position_from_json, value_from_json
 
 _ACTOR_TEXT_FIELDS = ("name", "isEgo", "model")
-_ACTOR_PARAMETERS = ("initialSpeed", "length", "width", "height")
+_ACTOR_PARAMETERS = ("initialSpeed", "length", "width", "height", "boxCenterX")
 
 
 def _root(ctx: EditContext) -> scm.RootNode:

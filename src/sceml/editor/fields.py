@@ -27,6 +27,7 @@ _LABELS = {
     "roadId": "Road",
     "laneId": "Lane",
     "controllerType": "Type",
+    "boxCenterX": "Box centre x",
 }
 _SPEED_UNIT = "m/s"
 

@@ -68,6 +68,8 @@ def marker_plan(
     inlined node, no event: its successor's trigger holds the same groups, the check named
     after the node so that an import gives the node its name back."""
     name = ctx.event_names[node]
+    if check is not None and isinstance(node, scm.Condition):
+        check = replace(check, edge=node.edge.name)
     if node in ctx.inline:
         own = None if check is None else replace(check, name=name, own=True)
         return [], groups if own is None else with_extra(groups, own)

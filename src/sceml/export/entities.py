@@ -40,8 +40,9 @@ def entity(ctx: Context, actor: scm.Actor) -> dict[str, Any]:
     kind = actor.eClass.name
     length, width, height = (ctx.values.raw(actor, f) for f in ("length", "width", "height"))
     bbox = {
-        # The reference point is the box's centre, as SceML positions are (xosc.meaning).
-        "x": number(0.0),
+        # The reference point is where SceML positions are: the box's centre unless the actor
+        # says its centre lies ahead of it (boxCenterX, from an imported Center x).
+        "x": ctx.values.text(actor, "boxCenterX"),
         "z": number(round(height / 2, 6)),
         "length": ctx.values.text(actor, "length"),
         "width": ctx.values.text(actor, "width"),

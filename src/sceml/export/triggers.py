@@ -29,6 +29,8 @@ class Condition:
     #: Named after its (inlined) condition node, whose name is already taken: kept as it is,
     #: so that `sceml import` gives the node its name back.
     own: bool = False
+    #: OpenSCENARIO's conditionEdge: a condition node's `edge` (an opaque one keeps its own).
+    edge: str = "none"
 
 
 Group = list[Condition]

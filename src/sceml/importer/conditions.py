@@ -140,13 +140,19 @@ def _report(
 
 
 def _edge(build: Build, condition: etree._Element, node: scm.GraphElement) -> None:
-    edge = condition.get("conditionEdge", "none")
-    if edge != "none":
+    """The conditionEdge, kept on the node (release 1.3) so the preview and the export keep it."""
+    edge = str(condition.get("conditionEdge", "none"))
+    if edge == "none" or not isinstance(node, scm.Condition):
+        return
+    literal = scm.ConditionEdge.getEEnumLiteral(edge)
+    if literal is None:
         build.report.add(
             "guessed",
-            f"{node.name}: conditionEdge {edge} read as 'holds' (SceML conditions finish once they hold)",
+            f"{node.name}: conditionEdge {edge} is not an OpenSCENARIO edge, read as none",
             build.where(condition),
         )
+        return
+    node.edge = literal
 
 
 def _node(
@@ -202,12 +208,6 @@ def _relative(
     rule = RULES.get(str(test.get("rule")))
     if rule is None:
         return f"the rule {test.get('rule')} has no SceML form"
-    condition = next(test.iterancestors("Condition"), None)
-    edge = "none" if condition is None else condition.get("conditionEdge", "none")
-    if rule[0] == "greaterThan" and edge in ("rising", "risingOrFalling"):
-        # It waits for the gap to grow past the value (left-hand-traffic: the overtaker passing);
-        # read as "holds" it would fire at once where the gap starts beyond it.
-        return "a relative distance growing past its value (a rising edge) has no SceML form"
     if rule[1]:
         build.report.add(
             "guessed", f"{wanted}: {test.get('rule')} read as {rule[0]}", build.where(test)

@@ -130,6 +130,19 @@ def _dimensions(actor: scm.Actor, body: etree._Element) -> None:
         value = number(box, feature)
         if value > 0 and abs(value - defaults.get(feature, -1.0)) > 1e-9:
             actor.eSet(feature, traced.value(value))
+    _box_center(actor, body)
+
+
+def _box_center(actor: scm.Actor, body: etree._Element) -> None:
+    """Where the box's centre lies ahead of the reference point (BoundingBox/Center x), kept
+    where it is not 0: the original's positions mean that point, and a re-export that put it
+    at the centre would move every start, stop and radius by as much (ALKS: the Ego 1.25 m on)."""
+    center = body.find("BoundingBox/Center")
+    if center is None or center.get("x") is None:
+        return
+    value = number(center, "x")
+    if value != 0:
+        actor.boxCenterX = traced.value(value)
 
 
 def _is_marked_ego(body: etree._Element) -> bool:

@@ -217,11 +217,6 @@ class Trigger:
         after the same node in another trigger (an event with several actions, or a SceML
         export that wrote one condition node into each of its successors' triggers): each
         waiting event starts at the first instant it holds, so one node means the same."""
-        if before is self.build.root and condition.get("conditionEdge", "none") != "none":
-            # An edge is a change between two evaluations: it cannot hold at the first, at
-            # t = 0, so the condition is evaluated from the step after (`alks_cut-in`: its
-            # rising time to collision would otherwise hold at once).
-            before = self._clock(PLAYER_STEP)
         key = (id(before), _content(condition))
         found = self.build.conditions.get(key)
         if found is None:

@@ -191,7 +191,12 @@ _MEASURE = {"freespace": True, "relativeDistanceType": "euclidean", "coordinateS
 
 #: Attributes shown only when they differ from these defaults (a LaneChange of one lane,
 #: sinusoidal, stays the box it was before these features existed).
-_QUIET_DEFAULTS: dict[str, object] = {"lanes": 1, "shape": "sinusoidal", "maxRuns": 1}
+_QUIET_DEFAULTS: dict[str, object] = {
+    "lanes": 1,
+    "shape": "sinusoidal",
+    "maxRuns": 1,
+    "edge": "none",
+}
 
 
 def _quiet(node: EObject, name: str, held: object) -> bool:

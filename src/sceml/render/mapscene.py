@@ -66,7 +66,8 @@ class Place:
 
 @dataclass(frozen=True)
 class ActorMark:
-    """An actor at its start: kind, size (m) and place (None when it has no usable position)."""
+    """An actor at its start: kind, size (m) and place (None when it has no usable position);
+    `ahead`: how far its box's centre lies ahead of the place (Actor.boxCenterX)."""
 
     name: str
     kind: str
@@ -74,18 +75,20 @@ class ActorMark:
     length: float
     width: float
     place: Place | None
+    ahead: float = 0.0
 
     def corners(self) -> np.ndarray:
         """The bounding box's four corners (4 x 2), rotated by the heading (0 when unknown)."""
         assert self.place is not None
         point = self.place.centre
         heading = point.heading or 0.0
+        front, back = self.ahead + self.length / 2, self.ahead - self.length / 2
         half = np.array(
             [
-                (self.length / 2, self.width / 2),
-                (-self.length / 2, self.width / 2),
-                (-self.length / 2, -self.width / 2),
-                (self.length / 2, -self.width / 2),
+                (front, self.width / 2),
+                (back, self.width / 2),
+                (back, -self.width / 2),
+                (front, -self.width / 2),
             ]
         )
         cos, sin = math.cos(heading), math.sin(heading)
@@ -225,6 +228,7 @@ def _add_actors(scene: MapScene, scenario: scm.Scenario) -> None:
                 nominal(actor.length, dimensions.get("length", 1.0)) or 1.0,
                 nominal(actor.width, dimensions.get("width", 1.0)) or 1.0,
                 place,
+                nominal(actor.boxCenterX, 0.0) or 0.0,
             )
         )
 

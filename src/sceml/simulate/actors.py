@@ -102,6 +102,8 @@ class Actor:
     ) -> None:
         self.name, self.kind, self.ego = name, kind, ego
         self.length, self.width = size
+        #: How far the box's centre lies ahead of the reference point (Actor.boxCenterX).
+        self.box_ahead = 0.0
         self.path = path
         self.d = 0.0
         self.lateral = lateral

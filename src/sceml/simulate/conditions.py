@@ -1,7 +1,7 @@
 """When each condition kind holds (SPEC §3): a test of the actors' state, registered by name.
 
 A condition is evaluated only after its activation, at the activation instant and after every
-step, until it first holds. A position's radius is between reference points (centres); an
+step, until it first holds (an `edge` other than none: until its test changes so; `on_edge`). A position's radius is between reference points (centres); an
 InVehicleRadius, a time headway and a time to collision measure the distance their node names
 (`xosc.meaning.measured_distance`: by default between the centres for InVehicleRadius, as the
 export's `freespace="false"`, and between the boxes for the time conditions).
@@ -39,7 +39,28 @@ def kind(
 def condition_for(node: EObject, world: World) -> Test | None:
     """The test of a condition node, set up at its activation; None for an unknown kind."""
     make = _KINDS.get(node.eClass.name)
-    return make(node, world) if make is not None else None
+    if make is None:
+        return None
+    test = make(node, world)
+    edge = getattr(getattr(node, "edge", None), "name", "none")
+    return test if edge == "none" else on_edge(test, edge)
+
+
+def on_edge(test: Test, edge: str) -> Test:
+    """A test that holds when `test` changes as `edge` says between two evaluations: rising,
+    false at the previous and true now; falling, the reverse; risingOrFalling, either. The
+    first evaluation has no previous one and never holds, as in esmini."""
+    previous: list[bool] = []
+
+    def holds(w: World) -> bool:
+        now = test(w)
+        before = previous[-1] if previous else None
+        previous[:] = [now]
+        if before is None or before == now:
+            return False
+        return edge == "risingOrFalling" or (edge == "rising") == now
+
+    return holds
 
 
 def _compare(rule: EObject | None, value: float, threshold: float, previous: float | None) -> bool:
@@ -122,6 +143,13 @@ def separation(actor: Actor, other: Actor) -> meaning.Separation:
     """Where `other` is from `actor`, in the actor's frame."""
     dx, dy = other.x - actor.x, other.y - actor.y
     cos, sin = math.cos(actor.heading), math.sin(actor.heading)
+    centres = None
+    if actor.box_ahead or other.box_ahead:
+        # The boxes' centres lie ahead of the reference points (boxCenterX): freespace is
+        # measured between the boxes where they are.
+        cx = dx + other.box_ahead * math.cos(other.heading) - actor.box_ahead * cos
+        cy = dy + other.box_ahead * math.sin(other.heading) - actor.box_ahead * sin
+        centres = (cx * cos + cy * sin, -cx * sin + cy * cos)
     return meaning.Separation(
         ahead=dx * cos + dy * sin,
         left=-dx * sin + dy * cos,
@@ -130,6 +158,7 @@ def separation(actor: Actor, other: Actor) -> meaning.Separation:
         target_length=other.length,
         target_width=other.width,
         box_gap=free_distance_now(actor, other),
+        centres=centres,
     )
 
 

@@ -9,6 +9,7 @@ start of those four intervals, if that comes before the earliest end.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from functools import cached_property
 from typing import TYPE_CHECKING
@@ -154,10 +155,12 @@ def _corner_to_edges(points: Array, polygon: Array) -> Array:
 
 
 def _now(actor: Actor) -> Boxes:
+    """The actor's box now: centred `box_ahead` metres ahead of its reference point."""
     one = np.array
+    ahead = actor.box_ahead
     return Boxes.moving(
-        one([actor.x]),
-        one([actor.y]),
+        one([actor.x + ahead * math.cos(actor.heading)]),
+        one([actor.y + ahead * math.sin(actor.heading)]),
         one([actor.heading]),
         one([actor.speed]),
         actor.length,

@@ -23,17 +23,31 @@ Array = NDArray[np.float64]
 PET_SPACING = 1.0  # m
 
 
+def box_centres(states: Array, ahead: float) -> Array:
+    """An actor's states (x, y, heading, speed, ...) with x, y moved from its reference point
+    to its box's centre, `ahead` metres along the heading (Actor.boxCenterX)."""
+    if not ahead:
+        return states
+    moved = states.copy()
+    moved[:, 0] += ahead * np.cos(states[:, 2])
+    moved[:, 1] += ahead * np.sin(states[:, 2])
+    return moved
+
+
 def pair_metrics(
     times: Array, actors: tuple[ActorInfo, ...], states: Array
 ) -> tuple[PairMetrics, ...]:
     """The metrics of each pair of actors, in actor order."""
+    centred = [box_centres(s, a.box_ahead) for a, s in zip(actors, states, strict=True)]
     boxes = [
         Boxes.moving(s[:, 0], s[:, 1], s[:, 2], s[:, 3], a.length, a.width)
-        for a, s in zip(actors, states, strict=True)
+        for a, s in zip(actors, centred, strict=True)
     ]
     results = []
     for i, j in itertools.combinations(range(len(actors)), 2):
-        results.append(_pair(times, actors[i], actors[j], boxes[i], boxes[j], states[i], states[j]))
+        results.append(
+            _pair(times, actors[i], actors[j], boxes[i], boxes[j], centred[i], centred[j])
+        )
     return tuple(results)
 
 

@@ -112,13 +112,16 @@ def _map_svg(run: Run, scene: MapScene | None, colours: dict[str, str], box: Box
             )
     for actor in run.actors:
         colour = colours[actor.name]
+        # The states are the reference point; the box's centre lies box_ahead metres ahead.
+        front = actor.box_ahead + actor.length / 2
+        back = front - min(0.8, actor.length / 2)
         parts.append(
             f'<g class="actor" id="actor-{escape(actor.name)}" data-actor="{escape(actor.name)}">'
-            f'<rect x="{-actor.length / 2:.3f}" y="{-actor.width / 2:.3f}" '
+            f'<rect x="{front - actor.length:.3f}" y="{-actor.width / 2:.3f}" '
             f'width="{actor.length:.3f}" height="{actor.width:.3f}" fill="{colour}" '
             'fill-opacity="0.85" stroke="#202124" stroke-width="0.15"/>'
-            f'<polygon points="{actor.length / 2:.3f},0 {actor.length / 2 - min(0.8, actor.length / 2):.3f},'
-            f"{actor.width / 3:.3f} {actor.length / 2 - min(0.8, actor.length / 2):.3f},"
+            f'<polygon points="{front:.3f},0 {back:.3f},'
+            f"{actor.width / 3:.3f} {back:.3f},"
             f'{-actor.width / 3:.3f}" fill="#ffffff"/></g>'
         )
     parts.append("</g>")

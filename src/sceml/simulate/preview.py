@@ -100,7 +100,8 @@ def _simulate(
     states[:, :, 2] = np.unwrap(states[:, :, 2], axis=1)
     time_array = np.array(times)
     infos = tuple(
-        ActorInfo(a.name, a.kind, a.ego, a.length, a.width) for a in world.actors.values()
+        ActorInfo(a.name, a.kind, a.ego, a.length, a.width, a.box_ahead)
+        for a in world.actors.values()
     )
     return Run(
         str(root.scenarioName or root.name or "scenario"),

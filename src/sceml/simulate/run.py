@@ -14,13 +14,15 @@ MAX_DURATION = "maximum duration"
 
 @dataclass(frozen=True)
 class ActorInfo:
-    """An actor as the run saw it: name, kind, ego flag and box size (m)."""
+    """An actor as the run saw it: name, kind, ego flag, box size (m) and how far the box's
+    centre lies ahead of the reference point the states follow (Actor.boxCenterX, m)."""
 
     name: str
     kind: str
     ego: bool
     length: float
     width: float
+    box_ahead: float = 0.0
 
 
 @dataclass(frozen=True)

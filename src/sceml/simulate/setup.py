@@ -24,6 +24,15 @@ def make_actor(
 
     `starts`: where the actors start (maps.resolve.start_poses), for a start relative to one.
     """
+    made = _placed(actor, road_map, starts)
+    # Positions are the reference point; the box (gaps, collisions) is centred this far ahead.
+    made.box_ahead = concrete(actor, "boxCenterX")
+    return made
+
+
+def _placed(
+    actor: scm.Actor, road_map: RoadMap | None, starts: Mapping[EObject, WorldPose] | None
+) -> Actor:
     name = str(actor.name)
     size = (concrete(actor, "length"), concrete(actor, "width"))
     speed = concrete(actor, "initialSpeed")

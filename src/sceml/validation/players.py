@@ -101,3 +101,19 @@ def carla_drive_distance_from_rest(node: scm.DriveDistance, context: Context) ->
     if moving or moved_by:
         why = "starts moving" if moving else f"moves in {moved_by[0].name!r} first"
         yield node, f"{node.name!r}: its actor {why}; scenario_runner counts that distance too"
+
+
+@constraint(
+    "SCEML-Y004",
+    Severity.ERROR,
+    "TimeElapsed",
+    "a TimeElapsed has no edge: players wait for it as a delay on its successors' triggers, "
+    "which has no test for an edge to change, so the export cannot keep one",
+    source="issue 24 (Condition.edge, release 1.3)",
+    through_modules=True,
+    # the node's own edge
+    reads=Reads(SELF),
+)
+def wait_without_edge(node: scm.TimeElapsed, context: Context) -> Iterator[Finding]:
+    if node.edge.name != "none":
+        yield node, f"{node.name!r} has the edge {node.edge.name}: a wait is a delay, set none"

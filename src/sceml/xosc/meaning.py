@@ -178,6 +178,9 @@ class Separation:
     target_width: float
     #: The least distance between the two boxes' outlines (0 while they overlap).
     box_gap: float
+    #: Where the target's box centre is from the actor's (ahead, left), where a box is not
+    #: centred on its reference point (Actor.boxCenterX); None: the same as (ahead, left).
+    centres: tuple[float, float] | None = None
 
 
 def measured_distance(at: Separation, freespace: bool, kind: str) -> float:
@@ -185,12 +188,13 @@ def measured_distance(at: Separation, freespace: bool, kind: str) -> float:
     coordinate system): euclidean is the straight line, longitudinal and lateral its parts
     along and across the actor's heading; with freespace between the boxes' outlines (the
     boxes taken as aligned for the parts), else between the reference points."""
+    ahead, left = at.centres if freespace and at.centres is not None else (at.ahead, at.left)
     if kind == "longitudinal":
         reach = (at.length + at.target_length) / 2 if freespace else 0.0
-        return max(0.0, abs(at.ahead) - reach)
+        return max(0.0, abs(ahead) - reach)
     if kind == "lateral":
         reach = (at.width + at.target_width) / 2 if freespace else 0.0
-        return max(0.0, abs(at.left) - reach)
+        return max(0.0, abs(left) - reach)
     return at.box_gap if freespace else math.hypot(at.ahead, at.left)
 
 
