@@ -42,6 +42,7 @@ from ..model.graph import root_node
 from .context import Context
 from .edits import EVERYTHING, Aspect, Change, Impact, refers_to
 from .engine import Key, locate, objects, run_rule, through_modules, unique
+from .kept import Kept
 from .limits import Limits
 from .reads import EXPANSION, Scope
 from .registry import REGISTRY, Registry, Rule
@@ -121,6 +122,9 @@ class IncrementalValidator:
         self._full = True
         self._outside: tuple[object, ...] | None = None
         self._unresolved = False
+        # The last run's expansion of the module uses, while it still describes the model: a
+        # node placed alone is patched into it rather than the uses expanded again (`Kept`).
+        self._kept: Kept | None = None
 
     def note(self, changes: Iterable[Change]) -> None:
         """Remember changes made to the model since the last run (undone ones too)."""
@@ -149,11 +153,15 @@ class IncrementalValidator:
         context = Context(
             self.model, self.document, self.limits, self.osc_version, self.osc_profile
         )
+        kept, self._kept = self._kept, None
+        if kept is not None and not full and kept.still_holds(impact, self.model):
+            context.reuse_flat(kept.patched(impact))
         run = _Pass(self, context, impact)
         try:
             return self._checked(run, context, impact, full)
         finally:
             context.release()
+            self._kept = Kept.after(context, kept, impact, full)
 
     def _checked(
         self, run: _Pass, context: Context, impact: Impact, full: bool
@@ -217,7 +225,7 @@ class _Pass:
 
     def check(self, obj: EObject, rules: tuple[Rule, ...], before: _Entry | None) -> _Entry:
         """One object's findings: re-run where stale, else the last run's, re-located."""
-        if before is None or before[0] is not rules:
+        if before is None or before[0] is not rules or obj in self.impact.graphs:
             return _entry(rules, [self.run(rule, obj) for rule in rules])
         around, inside = obj in self.impact.around, obj in self.impact.inside
         if not (around or inside or self.loud(rules)):
