@@ -217,7 +217,9 @@ def _moves(owner: EObject, name: str) -> bool:
 class Impact:
     """What a list of changes touched, worked out once per run."""
 
-    def __init__(self, changes: Iterable[Change]) -> None:
+    def __init__(self, changes: Iterable[Change], *, alone: bool = True) -> None:
+        """With `alone` False, a node placed alone counts as any other insertion: the caller
+        cannot show that the expansion of module uses stays the same around it."""
         self.aspects = Aspect.NONE
         self.touched: set[EObject] = set()
         # Nodes placed alone (`placed_alone`), and the graphs whose every rule runs again.
@@ -228,7 +230,7 @@ class Impact:
         for change in changes:
             if _is_notation(change):
                 continue
-            node = placed_alone(change)
+            node = placed_alone(change) if alone else None
             if node is not None:
                 self.alone[node] = change.owner
                 self.graphs.add(change.owner)

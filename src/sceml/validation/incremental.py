@@ -143,18 +143,24 @@ class IncrementalValidator:
         outside = _outside_state(self.model, self.document)
         full = self._full or self._unresolved or outside != self._outside
         impact = Impact(() if full else self._pending)
+        kept, self._kept = self._kept, None
+        patch = bool(impact.alone) and kept is not None and kept.still_holds(impact, self.model)
+        if impact.alone and not patch:
+            # The expansion may change around the nodes placed alone (a name it chose is taken
+            # now; it was not kept): what reads it runs again.
+            impact = Impact(self._pending, alone=False)
         self._pending, self._full, self._outside = [], False, outside
         self.stats = RunStats(full=full)
         if not (full or impact.touched or impact.aspects) and self._all_classified:
             # Nothing but the layout changed, if anything: every finding stands where it was.
             self.stats.checks_reused = sum(len(rules) for rules, _ in self._results.values())
             self.stats.through_modules_run = False
+            self._kept = kept  # nothing it reads changed
             return list(self._found)
         context = Context(
             self.model, self.document, self.limits, self.osc_version, self.osc_profile
         )
-        kept, self._kept = self._kept, None
-        if kept is not None and not full and kept.still_holds(impact, self.model):
+        if patch and kept is not None:
             context.reuse_flat(kept.patched(impact))
         run = _Pass(self, context, impact)
         try:
