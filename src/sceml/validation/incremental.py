@@ -20,6 +20,11 @@ model's root changed (fragments, paths and lines depend on them). The findings a
 in the full run's order and passed through `unique`, so the result is the same list, in the same
 order, that `validate` gives. A rule that declares no reads re-runs everywhere, every time.
 
+A node dropped alone (`edits.placed_alone`: no flows, not a use) changes no aspect: its own rules
+and every rule of its scenario run (`Impact.graphs`), and the expansion of the module uses kept
+from the last run is patched rather than made again (sceml.validation.kept), unless the node's
+name is one the expansion chose; then the drop counts as any other insertion.
+
 What the validator cannot see makes the next run a full one: the first run, `forget()` (a file
 was opened or saved, or an edit changed something the change list does not show), a map file
 that changed on disk, and a module use whose definition did not resolve (its library may appear).
