@@ -2,16 +2,17 @@
 
     python benchmarks/editor_roundtrip.py [--runs 30]
 
-Measured on UIS2 (examples/uis2-concrete.xmi) and on a synthetic 500-node scenario built like
-benchmarks/validate_scale.py's, for a move and for a parameter edit. Prints the median
+Measured on UIS2 (examples/uis2-concrete.xmi) and on the valid 500-node scenario of
+benchmarks/scale_scenarios.py (the one editor_browser.py opens), for a move, a parameter edit and a drop (a node added from the palette, no flows). Prints the median
 milliseconds per round trip as the editor runs it (incremental validation) and, as the yardstick,
 with a full validation every time; the targets are under 100 ms for UIS2 and under 300 ms for
 500 nodes.
 
 Then validation alone after one edit, full (`validate`) and incremental (what the editor runs,
 sceml.validation.incremental) side by side on the same model after the same edit, in alternating
-order: a parameter of one node (the common edit), a move (layout only), and a node renamed
-(names feed the graph-wide rules and the module expansion, so those run again). Prints the
+order: a parameter of one node (the common edit), a move (layout only), a node renamed
+(names feed the graph-wide rules and the module expansion, so those run again), and a drop (the
+expansion kept and patched, the graph-wide rules run on the scenario only: sceml.validation.kept). Prints the
 medians, their ratio, and how many rule checks the incremental run ran and reused.
 """
 
@@ -26,42 +27,54 @@ import tempfile
 import time
 from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import Any, NamedTuple
 
 from sceml.editor import EditorSession
-from sceml.model.loading import load_library
-from sceml.model.saving import save
 from sceml.validation import validate
 from sceml.validation.incremental import IncrementalValidator
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
-from validate_scale import build_library, build_scenario  # noqa: E402
+from scale_scenarios import write  # noqa: E402
 
 TARGETS = {"UIS2": 100.0, "500 nodes": 300.0}
-#: An edit: the ops of run number `run` on a node (by id), alternating between two states.
-Edit = Callable[[str, int], list[dict[str, Any]]]
+
+
+class Target(NamedTuple):
+    """What an edit works on: the first Accelerate node (by id) and its actor (by name)."""
+
+    node: str
+    actor: str
+
+
+#: An edit: the ops of run number `run` on a target, alternating between two states (a drop
+#: adds one more node each run).
+Edit = Callable[[Target, int], list[dict[str, Any]]]
 EDITS: dict[str, Edit] = {
-    "parameter": lambda node, run: [
+    # As the palette drops it: a Stop of the actor in view, without flows.
+    "drop": lambda target, run: [{"op": "add_node", "kind": "Stop", "actor": target.actor}],
+    "parameter": lambda target, run: [
         {
             "op": "set_parameter",
-            "node": node,
+            "node": target.node,
             "field": "targetSpeed",
             "value": {"type": "value", "value": 10.0 + run % 2},
         }
     ],
-    "move": lambda node, run: [
-        {"op": "move", "positions": {node: {"x": float(run % 2), "y": 0.0}}}
+    "move": lambda target, run: [
+        {"op": "move", "positions": {target.node: {"x": float(run % 2), "y": 0.0}}}
     ],
-    "rename": lambda node, run: [
-        {"op": "set", "node": node, "field": "name", "value": f"Renamed_{run % 2}"}
+    "rename": lambda target, run: [
+        {"op": "set", "node": target.node, "field": "name", "value": f"Renamed_{run % 2}"}
     ],
 }
 
 
-def first_accelerate(session: EditorSession) -> str:
-    """The id of the first Accelerate node of the edited graph."""
-    return next(n["id"] for n in session.view()["nodes"] if n["kind"] == "Accelerate")
+def first_accelerate(session: EditorSession) -> Target:
+    """The first Accelerate node of the edited graph, and its actor."""
+    node = next(n for n in session.view()["nodes"] if n["kind"] == "Accelerate")
+    actor = next(f["value"] for f in node["fields"] if f["name"] == "referenceActor")
+    return Target(node["id"], str(actor))
 
 
 def round_trip_ms(session: EditorSession, edit: Edit, runs: int) -> tuple[float, float]:
@@ -118,14 +131,6 @@ def timed(run: Callable[[], object]) -> tuple[object, float]:
     return result, (time.perf_counter() - started) * 1000
 
 
-def synthetic(folder: Path, nodes: int) -> Path:
-    """A saved scenario of about `nodes` nodes using a library module (see validate_scale)."""
-    library_file = folder / "library.xmi"
-    save(build_library(), library_file)
-    pause = load_library(library_file).root.modules[0]
-    return save(build_scenario(nodes, pause), folder / f"scale-{nodes}.xmi")
-
-
 def main(argv: list[str] | None = None) -> None:
     """Command-line entry point."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -137,7 +142,7 @@ def main(argv: list[str] | None = None) -> None:
         shutil.copytree(HERE.parent / "maps", folder / "maps")
         cases = {
             "UIS2": folder / "examples" / "uis2-concrete.xmi",
-            "500 nodes": synthetic(folder, 500),
+            "500 nodes": write(500, folder / "scale"),
         }
         print("round trip (median ms): apply, validate, view, JSON")
         print(
@@ -145,7 +150,7 @@ def main(argv: list[str] | None = None) -> None:
             f" {'full val. ms':>13} {'target ms':>10}"
         )
         for label, path in cases.items():
-            for name in ("move", "parameter"):
+            for name in ("move", "parameter", "drop"):
                 session = EditorSession()
                 count = len(session.open(path, discard=True)["nodes"])
                 editor, full = round_trip_ms(session, EDITS[name], arguments.runs)

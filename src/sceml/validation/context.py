@@ -113,6 +113,15 @@ class Context:
             self.flat_failure = str(error) or type(error).__name__
         return self._flat
 
+    def flat_computed(self) -> bool:
+        """Whether `flat` was asked for (or given by `reuse_flat`) in this run."""
+        return self._flat_done
+
+    def reuse_flat(self, flat: Expansion | None) -> None:
+        """Take `flat` as the expansion of this run's model: one kept from an earlier run of
+        the same model, patched for what changed since (sceml.validation.kept)."""
+        self._flat, self._flat_done = flat, True
+
     def release(self) -> None:
         """End of the run: the expansion's copies stop being recorded in the model they name."""
         if self._flat is not None:

@@ -12,13 +12,13 @@ from collections.abc import Iterable
 from enum import Flag, auto
 from typing import NamedTuple
 
-from pyecore.ecore import EObject, EReference
+from pyecore.ecore import EObject, EProxy, EReference
 
 import scemlmodel as scm
 
 from ..model.traversal import all_contents, single_references
 
-__all__ = ["EVERYTHING", "Aspect", "Change", "Impact", "aspects_of", "refers_to"]
+__all__ = ["EVERYTHING", "Aspect", "Change", "Impact", "aspects_of", "placed_alone", "refers_to"]
 
 
 class Change(NamedTuple):
@@ -169,6 +169,42 @@ def aspects_of(change: Change) -> Aspect:
     return found
 
 
+#: Nodes that can stand alone: not a module use (expanded), root or end (the scenario's level,
+#: map and cast), nor a port (a module's).
+_ALONE_KINDS = (scm.ActionNode, scm.JoiningPolicy)
+
+
+def placed_alone(change: Change) -> scm.GraphElement | None:
+    """The node a change put into a scenario, when it stands there alone: an action node or a
+    join, in the scenario now, with no flow at it, referring only to what the scenario holds.
+
+    Such a node (a node dropped from the palette) changes no other node's findings: no path
+    leads through it, and expanding the module uses reads only its name. So the change makes
+    the rules on the node and on its scenario run again, not every rule reading the graph's
+    shape (`Impact.graphs`). The state is judged now, not from `old` and `new`: undoing the
+    insertion gives the same record, with the node gone.
+    """
+    node, scenario = change.new, change.owner
+    if change.feature != "nodes" or change.old is not None:
+        return None
+    if not isinstance(scenario, scm.Scenario) or not isinstance(node, _ALONE_KINDS):
+        return None
+    if node.eContainer() is not scenario or len(node.incoming) or len(node.outgoing):
+        return None
+    for held in (node, *all_contents(node)):
+        for _, target in single_references(held):
+            # A proxy, or an object of another file, would make the expansion fail on it.
+            if type(target) is EProxy or _top(target) is not scenario:
+                return None
+    return node
+
+
+def _top(obj: EObject) -> EObject:
+    while (container := obj.eContainer()) is not None:
+        obj = container
+    return obj
+
+
 def _moves(owner: EObject, name: str) -> bool:
     """Whether the values of this feature are themselves changed by the change: contained
     objects move, a flow's ends gain or lose it in `incoming` and `outgoing`."""
@@ -181,13 +217,26 @@ def _moves(owner: EObject, name: str) -> bool:
 class Impact:
     """What a list of changes touched, worked out once per run."""
 
-    def __init__(self, changes: Iterable[Change]) -> None:
+    def __init__(self, changes: Iterable[Change], *, alone: bool = True) -> None:
+        """With `alone` False, a node placed alone counts as any other insertion: the caller
+        cannot show that the expansion of module uses stays the same around it."""
         self.aspects = Aspect.NONE
         self.touched: set[EObject] = set()
+        # Nodes placed alone (`placed_alone`), and the graphs whose every rule runs again.
+        self.alone: dict[EObject, scm.Scenario] = {}
+        self.graphs: set[EObject] = set()
+        #: Whether every change (diagram positions aside) placed a node alone.
+        self.only_alone = True
         for change in changes:
             if _is_notation(change):
                 continue
-            self.aspects |= aspects_of(change)
+            node = placed_alone(change) if alone else None
+            if node is not None:
+                self.alone[node] = change.owner
+                self.graphs.add(change.owner)
+            else:
+                self.only_alone = False
+                self.aspects |= aspects_of(change)
             self.touched.add(change.owner)
             if _moves(change.owner, change.feature):
                 self.touched.update(v for v in (change.old, change.new) if isinstance(v, EObject))

@@ -20,6 +20,11 @@ model's root changed (fragments, paths and lines depend on them). The findings a
 in the full run's order and passed through `unique`, so the result is the same list, in the same
 order, that `validate` gives. A rule that declares no reads re-runs everywhere, every time.
 
+A node dropped alone (`edits.placed_alone`: no flows, not a use) changes no aspect: its own rules
+and every rule of its scenario run (`Impact.graphs`), and the expansion of the module uses kept
+from the last run is patched rather than made again (sceml.validation.kept), unless the node's
+name is one the expansion chose; then the drop counts as any other insertion.
+
 What the validator cannot see makes the next run a full one: the first run, `forget()` (a file
 was opened or saved, or an edit changed something the change list does not show), a map file
 that changed on disk, and a module use whose definition did not resolve (its library may appear).
@@ -42,6 +47,7 @@ from ..model.graph import root_node
 from .context import Context
 from .edits import EVERYTHING, Aspect, Change, Impact, refers_to
 from .engine import Key, locate, objects, run_rule, through_modules, unique
+from .kept import Kept
 from .limits import Limits
 from .reads import EXPANSION, Scope
 from .registry import REGISTRY, Registry, Rule
@@ -121,6 +127,9 @@ class IncrementalValidator:
         self._full = True
         self._outside: tuple[object, ...] | None = None
         self._unresolved = False
+        # The last run's expansion of the module uses, while it still describes the model: a
+        # node placed alone is patched into it rather than the uses expanded again (`Kept`).
+        self._kept: Kept | None = None
 
     def note(self, changes: Iterable[Change]) -> None:
         """Remember changes made to the model since the last run (undone ones too)."""
@@ -139,21 +148,31 @@ class IncrementalValidator:
         outside = _outside_state(self.model, self.document)
         full = self._full or self._unresolved or outside != self._outside
         impact = Impact(() if full else self._pending)
+        kept, self._kept = self._kept, None
+        patch = bool(impact.alone) and kept is not None and kept.still_holds(impact, self.model)
+        if impact.alone and not patch:
+            # The expansion may change around the nodes placed alone (a name it chose is taken
+            # now; it was not kept): what reads it runs again.
+            impact = Impact(self._pending, alone=False)
         self._pending, self._full, self._outside = [], False, outside
         self.stats = RunStats(full=full)
         if not (full or impact.touched or impact.aspects) and self._all_classified:
             # Nothing but the layout changed, if anything: every finding stands where it was.
             self.stats.checks_reused = sum(len(rules) for rules, _ in self._results.values())
             self.stats.through_modules_run = False
+            self._kept = kept  # nothing it reads changed
             return list(self._found)
         context = Context(
             self.model, self.document, self.limits, self.osc_version, self.osc_profile
         )
+        if patch and kept is not None:
+            context.reuse_flat(kept.patched(impact))
         run = _Pass(self, context, impact)
         try:
             return self._checked(run, context, impact, full)
         finally:
             context.release()
+            self._kept = Kept.after(context, kept, impact, full)
 
     def _checked(
         self, run: _Pass, context: Context, impact: Impact, full: bool
@@ -217,7 +236,7 @@ class _Pass:
 
     def check(self, obj: EObject, rules: tuple[Rule, ...], before: _Entry | None) -> _Entry:
         """One object's findings: re-run where stale, else the last run's, re-located."""
-        if before is None or before[0] is not rules:
+        if before is None or before[0] is not rules or obj in self.impact.graphs:
             return _entry(rules, [self.run(rule, obj) for rule in rules])
         around, inside = obj in self.impact.around, obj in self.impact.inside
         if not (around or inside or self.loud(rules)):
