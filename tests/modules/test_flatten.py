@@ -374,3 +374,24 @@ def test_a_relative_position_naming_a_role_names_the_bound_actor_once_flattened(
     assert destination.entity.name == "car" and isinstance(destination.entity, scm.Actor)
     assert (destination.dLane, destination.ds.value) == (0, 30.0)
     assert position.entity.name == "car" and position.h.value == 0.1
+
+
+def test_two_unnamed_uses_of_one_module_are_numbered_apart(tmp_path: Path) -> None:
+    # The editor may leave a use unnamed; each then gets its own number, and its nodes theirs.
+    library = LibraryBuilder("lib")
+    module = _module(library, "Brake")
+    stop = module.add("Stop", module.definition.roles[0])
+    module.chain(module.in_port, stop, module.out_port)
+    _save_libraries({tmp_path / "lib.xmi": library.library})
+    b = ScenarioBuilder("Uses", level="functional")
+    car = b.actor("Car", "ego", ego=True)
+    first, second = (
+        b.use(module.definition, {"driver": car}),
+        b.use(module.definition, {"driver": car}),
+    )
+    b.chain(b.root, first, second, b.end)
+    first.name = second.name = None
+    save(b.scenario, tmp_path / "scenario.xmi")
+    names = {str(n.name) for n in flatten(load(tmp_path / "scenario.xmi").root).nodes}
+    assert {"Brake_1.Stop_1", "Brake_2.Stop_1"} <= names
+    assert not any("~" in name for name in names)

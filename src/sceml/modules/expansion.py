@@ -265,6 +265,9 @@ class _Builder:
             names = " -> ".join(name for _, name in (*chain, (key, str(definition.name))))
             raise FlattenError(f"module uses itself: {names}", **self.where(use))
         use_name = str(use.name) if use.name else naming.numbered(str(definition.name), self.taken)
+        # An unnamed use's chosen name is taken from here on: a second unnamed use of the same
+        # module must not be numbered alike (its copies would come out as `X.A~2`).
+        self.taken.add(use_name)
         self.use_names[use] = use_name
         plan = self.plans.get(definition)
         if plan is None:
