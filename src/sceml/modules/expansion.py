@@ -28,6 +28,7 @@ from ..model.traversal import (
     children,
     containments,
     cross_references,
+    root_of,
     single_references,
     stored,
 )
@@ -535,7 +536,7 @@ def _check_references(obj: EObject, result: Expansion, inside: set[EObject]) -> 
         if held in inside:
             continue
         target = unwrap(held)
-        top = _root_of(target)
+        top = root_of(target)
         if top is scenario or result.holds(top):
             inside.add(held)
             continue
@@ -547,9 +548,3 @@ def _check_references(obj: EObject, result: Expansion, inside: set[EObject]) -> 
             "scenario after expansion",
             element=where,
         )
-
-
-def _root_of(obj: EObject) -> EObject:
-    while obj.eContainer() is not None:
-        obj = obj.eContainer()
-    return obj

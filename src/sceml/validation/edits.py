@@ -16,7 +16,7 @@ from pyecore.ecore import EObject, EProxy, EReference
 
 import scemlmodel as scm
 
-from ..model.traversal import all_contents, single_references
+from ..model.traversal import all_contents, root_of, single_references
 
 __all__ = ["EVERYTHING", "Aspect", "Change", "Impact", "aspects_of", "placed_alone", "refers_to"]
 
@@ -194,15 +194,9 @@ def placed_alone(change: Change) -> scm.GraphElement | None:
     for held in (node, *all_contents(node)):
         for _, target in single_references(held):
             # A proxy, or an object of another file, would make the expansion fail on it.
-            if type(target) is EProxy or _top(target) is not scenario:
+            if type(target) is EProxy or root_of(target) is not scenario:
                 return None
     return node
-
-
-def _top(obj: EObject) -> EObject:
-    while (container := obj.eContainer()) is not None:
-        obj = container
-    return obj
 
 
 def _moves(owner: EObject, name: str) -> bool:
