@@ -407,6 +407,13 @@ def main(argv: Sequence[str] | None = None) -> int:
         action="store_true",
         help="also count what the files use that metamodel 1.0 lacks",
     )
+    parser.add_argument(
+        "--only",
+        action="append",
+        default=[],
+        metavar="NAME",
+        help="measure only the files whose name (without .xosc) is NAME; repeat for more",
+    )
     options = parser.parse_args(argv)
     options.dirs = [d.resolve() for d in options.dirs]
     options.allowed = [*options.dirs, *(d.resolve() for d in options.allow)]
@@ -414,7 +421,11 @@ def main(argv: Sequence[str] | None = None) -> int:
         work = (options.work or Path(temporary)).resolve()
         for sub in ("original", "again", "models", "exports"):
             (work / sub).mkdir(parents=True, exist_ok=True)
-        files = list(scenarios(options.dirs))
+        files = [
+            path
+            for path in scenarios(options.dirs)
+            if not options.only or path.stem in options.only
+        ]
         rows = []
         for number, path in enumerate(files, 1):
             print(f"[{number}/{len(files)}] {path}", file=sys.stderr, flush=True)
