@@ -57,10 +57,7 @@ def test_each_lane_of_each_section_has_its_point_by_point_outline(
                     for lane in section.lanes()
                 }
             except PositionError:
-                # A lane the next section does not have: its last sample (the section's end)
-                # is looked up in the next section, and no outline can be drawn (known, left
-                # as it was: curvy's road 1, lane -2 of its second section).
-                continue
+                continue  # a lane the next section lacks: test_a_lane_that_ends_with_its_section
             outlines = road_map.section_outlines(road, section)
             assert sorted(outlines) == sorted(wanted)
             for lane in section.lanes():
@@ -70,6 +67,32 @@ def test_each_lane_of_each_section_has_its_point_by_point_outline(
                 )
                 checked += 1
     assert checked >= 4
+
+
+def test_a_lane_that_ends_with_its_section_is_drawn_to_the_section_end(
+    maps: dict[str, RoadMap],
+) -> None:
+    # curvy's road 1: its second section has a lane -2 the third does not. At the section's end
+    # the next section is in force, so the per-point lookup fails there; the outline keeps the
+    # section's own lane, as wide as its width polynomial says at the end.
+    road_map = maps["curvy"]
+    drawn = 0
+    for road in road_map.roads.values():
+        for index, section in enumerate(road.sections[:-1]):
+            following = {lane.id for lane in road.sections[index + 1].lanes()}
+            for lane in section.lanes():
+                if lane.id in following:
+                    continue
+                outline = road_map.lane_outline(road, section, lane.id)
+                end = road.sections[index + 1].s
+                count = len(outline) // 2
+                assert count == max(2, math.ceil((end - section.s) / SAMPLE_STEP) + 1)
+                # The last sample: inner point (count - 1) and outer point (count) face each
+                # other across the lane.
+                across = float(np.linalg.norm(outline[count - 1] - outline[count]))
+                assert across == pytest.approx(max(lane.width(end - section.s), 0.0), abs=1e-9)
+                drawn += 1
+    assert drawn >= 1
 
 
 def test_thin_keeps_the_ends_and_the_corners_only() -> None:

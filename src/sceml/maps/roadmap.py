@@ -79,9 +79,11 @@ class RoadMap:
             line = self._lines[road_id] = ReferenceLine(road.geometries, road.length)
         return line
 
-    def bands(self, road: Road, s: float) -> list[LaneBand]:
-        """Every lane of the section in force at `s`, with its edges at `s`."""
-        section = road.section_at(s)
+    def bands(self, road: Road, s: float, section: LaneSection | None = None) -> list[LaneBand]:
+        """Every lane of the section in force at `s` (or of `section`, which drawing a section
+        up to its end needs: at the end the next section is in force), with its edges at `s`."""
+        if section is None:
+            section = road.section_at(s)
         ds = s - section.s
         base = piecewise(road.lane_offset, s) if road.lane_offset else 0.0
         bands = []
@@ -265,7 +267,7 @@ class RoadMap:
             x, y, h = line.pose(float(s))
             normal = (-math.sin(h), math.cos(h))
             found: dict[int, LaneBand] = {}
-            for b in self.bands(road, float(s)):
+            for b in self.bands(road, float(s), section):
                 found.setdefault(b.lane.id, b)  # the first band of an id, as a search finds it
             for lane_id in wanted:
                 band = found[lane_id]
@@ -281,7 +283,7 @@ class RoadMap:
         points = []
         for s in np.linspace(section.s, end, count):
             x, y, h = self.reference_line(road.id).pose(float(s))
-            band = next(b for b in self.bands(road, float(s)) if b.lane.id == lane_id)
+            band = next(b for b in self.bands(road, float(s), section) if b.lane.id == lane_id)
             points.append((x - band.centre * math.sin(h), y + band.centre * math.cos(h)))
         return np.array(points)
 
