@@ -14,7 +14,7 @@ from collections import deque
 
 import scemlmodel as scm
 
-from ..model import catalog
+from ..model import catalog, graph, params
 from ..xosc.flows import is_condition_element
 from .context import Build
 
@@ -28,12 +28,15 @@ _AXES = {
 def separate(build: Build) -> None:
     """Make every pair of same-actor, same-category maneuvers run one after the other.
 
-    The maneuvers of one actor and axis are taken in the graph's topological order (document
-    order between unrelated ones). Once each waits for the one before it, it follows all of
-    them, so each needs at most one new join: the whole pass is near linear in the number of
-    events, where comparing every pair was cubic (issue 26).
+    The maneuvers of one actor and axis are taken in the order they can first start
+    (`_by_earliest_start`): an event whose condition may hold at 1 s goes before one that
+    waits for a clock of 8 s, however many nodes each waits through (`keep_lateral_distance`:
+    its first lane change, on a distance after the act's start, waited for the two timed ones
+    and started at 15 s instead of 2.75 s). Once each waits for the one before it, it follows
+    all of them, so each needs at most one new join: the whole pass is near linear in the
+    number of events, where comparing every pair was cubic (issue 26).
     """
-    order = _topological(build.scenario.nodes)
+    order = _by_earliest_start(build.scenario.nodes)
     lines: dict[tuple[int, str], list[scm.Maneuver]] = {}
     for node in sorted(
         (n for n in build.scenario.nodes if isinstance(n, scm.Maneuver)),
@@ -51,6 +54,33 @@ def separate(build: Build) -> None:
 
 def _axes(node: scm.Maneuver) -> set[str]:
     return _AXES.get(catalog.category(node) or "", set())
+
+
+def _by_earliest_start(nodes: list[scm.GraphElement]) -> dict[int, float]:
+    """Node id -> its place in a topological order that sorts by the earliest time a node can
+    start (waits add up from the root; a condition or maneuver may finish at once, so it adds
+    nothing), then by the plain topological order (document order). The earliest start never
+    decreases along a flow, so this is still a topological order (`_reaches` relies on it)."""
+    plain = _topological(nodes)
+    ranked = sorted(nodes, key=lambda n: plain[id(n)])
+    finish: dict[int, float] = {}
+    for node in ranked:
+        before = [finish.get(id(f.source), 0.0) for f in node.incoming if f.source is not None]
+        start = (min if graph.finishes_with_first(node) else max)(before, default=0.0)
+        finish[id(node)] = start + _wait_of(node)
+    earliest = {id(n): finish[id(n)] - _wait_of(n) for n in nodes}
+    ranked.sort(key=lambda n: (earliest[id(n)], plain[id(n)]))
+    return {id(n): float(place) for place, n in enumerate(ranked)}
+
+
+def _wait_of(node: scm.GraphElement) -> float:
+    """How long a wait lasts at the least (0 for anything else, or a wait not yet concrete)."""
+    if not isinstance(node, scm.TimeElapsed):
+        return 0.0
+    try:
+        return max(params.concrete(node, "duration"), 0.0)
+    except ValueError:
+        return 0.0
 
 
 def _topological(nodes: list[scm.GraphElement]) -> dict[int, float]:
