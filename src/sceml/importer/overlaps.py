@@ -9,12 +9,12 @@ says so, because the original would have cut the earlier one short.
 
 from __future__ import annotations
 
+import heapq
 import math
-from collections import deque
 
 import scemlmodel as scm
 
-from ..model import catalog, graph, params
+from ..model import catalog
 from ..xosc.flows import is_condition_element
 from .context import Build
 
@@ -28,15 +28,13 @@ _AXES = {
 def separate(build: Build) -> None:
     """Make every pair of same-actor, same-category maneuvers run one after the other.
 
-    The maneuvers of one actor and axis are taken in the order they can first start
-    (`_by_earliest_start`): an event whose condition may hold at 1 s goes before one that
-    waits for a clock of 8 s, however many nodes each waits through (`keep_lateral_distance`:
-    its first lane change, on a distance after the act's start, waited for the two timed ones
-    and started at 15 s instead of 2.75 s). Once each waits for the one before it, it follows
-    all of them, so each needs at most one new join: the whole pass is near linear in the
-    number of events, where comparing every pair was cubic (issue 26).
+    The maneuvers of one actor and axis are taken in the graph's topological order, document
+    order between unrelated ones (`_topological`): files list an actor's events in the order
+    they happen, however many nodes each waits through. Once each waits for the one before
+    it, it follows all of them, so each needs at most one new join: the whole pass is near
+    linear in the number of events, where comparing every pair was cubic (issue 26).
     """
-    order = _by_earliest_start(build.scenario.nodes)
+    order = _topological(build.scenario.nodes)
     lines: dict[tuple[int, str], list[scm.Maneuver]] = {}
     for node in sorted(
         (n for n in build.scenario.nodes if isinstance(n, scm.Maneuver)),
@@ -56,40 +54,19 @@ def _axes(node: scm.Maneuver) -> set[str]:
     return _AXES.get(catalog.category(node) or "", set())
 
 
-def _by_earliest_start(nodes: list[scm.GraphElement]) -> dict[int, float]:
-    """Node id -> its place in a topological order that sorts by the earliest time a node can
-    start (waits add up from the root; a condition or maneuver may finish at once, so it adds
-    nothing), then by the plain topological order (document order). The earliest start never
-    decreases along a flow, so this is still a topological order (`_reaches` relies on it)."""
-    plain = _topological(nodes)
-    ranked = sorted(nodes, key=lambda n: plain[id(n)])
-    finish: dict[int, float] = {}
-    for node in ranked:
-        before = [finish.get(id(f.source), 0.0) for f in node.incoming if f.source is not None]
-        start = (min if graph.finishes_with_first(node) else max)(before, default=0.0)
-        finish[id(node)] = start + _wait_of(node)
-    earliest = {id(n): finish[id(n)] - _wait_of(n) for n in nodes}
-    ranked.sort(key=lambda n: (earliest[id(n)], plain[id(n)]))
-    return {id(n): float(place) for place, n in enumerate(ranked)}
-
-
-def _wait_of(node: scm.GraphElement) -> float:
-    """How long a wait lasts at the least (0 for anything else, or a wait not yet concrete)."""
-    if not isinstance(node, scm.TimeElapsed):
-        return 0.0
-    try:
-        return max(params.concrete(node, "duration"), 0.0)
-    except ValueError:
-        return 0.0
-
-
 def _topological(nodes: list[scm.GraphElement]) -> dict[int, float]:
-    """Node id -> its place in a topological order of the flows (Kahn, first in first out)."""
+    """Node id -> its place in a topological order of the flows: of the nodes ready, always
+    the one made first (the import makes them in document order). Not breadth first: that
+    put an event behind every event that waits through fewer nodes (`keep_lateral_distance`:
+    its first lane change, on a distance and a delay, waited for the lane change at 8 s and
+    the one after it, and started at 15.05 s instead of 2.75 s)."""
+    made = {id(n): index for index, n in enumerate(nodes)}
     waiting = {id(n): sum(1 for f in n.incoming if f.source is not None) for n in nodes}
-    ready = deque(n for n in nodes if waiting[id(n)] == 0)
+    ready = [(made[id(n)], n) for n in nodes if waiting[id(n)] == 0]
+    heapq.heapify(ready)
     order: dict[int, float] = {}
     while ready:
-        node = ready.popleft()
+        _, node = heapq.heappop(ready)
         order[id(node)] = float(len(order))
         for flow in node.outgoing:
             target = flow.target
@@ -97,7 +74,7 @@ def _topological(nodes: list[scm.GraphElement]) -> dict[int, float]:
                 continue
             waiting[id(target)] -= 1
             if waiting[id(target)] == 0:
-                ready.append(target)
+                heapq.heappush(ready, (made[id(target)], target))
     for node in nodes:  # a cycle (refused earlier) would leave some: after the rest
         order.setdefault(id(node), float(len(order)))
     return order
@@ -126,19 +103,13 @@ def _reaches(start: scm.GraphElement, goal: scm.GraphElement, order: dict[int, f
 
 def _wait(build: Build, earlier: scm.Maneuver, later: scm.Maneuver) -> scm.JoinAllFinished:
     """`later` also waits for `earlier`: a join before it, or, where `later` is started by a
-    condition of its own, before that condition. The condition is then evaluated once both
-    have finished and stays the only thing `later` waits for, so the export writes it into
-    `later`'s StartTrigger (`xosc.flows.inlined`) and `later` starts in the step it holds,
-    as in the original; a join after the condition would make it a marker, a step late."""
-    target: scm.GraphElement = later
-    sources = [flow.source for flow in later.incoming]
-    if (
-        len(sources) == 1
-        and _is_condition(sources[0])
-        and len(sources[0].outgoing) == 1
-        and len(sources[0].incoming) == 1
-    ):
-        target = sources[0]
+    condition of its own (directly or through that condition's delay), before that
+    condition. The condition is then evaluated once both have finished and stays the only
+    thing `later` waits for, so the export writes it (and its delay) into `later`'s
+    StartTrigger (`xosc.flows.inlined`) and `later` starts in the step it holds, as in the
+    original; a join after the condition would make it a marker, a step late
+    (`traffic_lights`' DriveOnGreenEvent, on a green light with a delay of 0.5 s)."""
+    target = _own_condition(later) or later
     join = build.add(scm.JoinAllFinished(), f"{later.name}_after_{earlier.name}")
     for flow in list(target.incoming):
         # Moved through the opposite list: setting `flow.target` would leave the flow in
@@ -155,6 +126,25 @@ def _wait(build: Build, earlier: scm.Maneuver, later: scm.Maneuver) -> scm.JoinA
         node=str(later.name),
     )
     return join
+
+
+def _own_condition(later: scm.GraphElement) -> scm.GraphElement | None:
+    """The condition that alone starts `later`, directly or through one wait (its delay),
+    each feeding only the next; None when there is none."""
+    node = _only_source(later)
+    if isinstance(node, scm.TimeElapsed) and int(node.maxRuns) == 1:
+        node = _only_source(node)
+    if node is None or not _is_condition(node) or len(node.incoming) != 1:
+        return None
+    return node
+
+
+def _only_source(node: scm.GraphElement) -> scm.GraphElement | None:
+    """The one node `node` waits for, if it feeds nothing else."""
+    sources = [flow.source for flow in node.incoming]
+    if len(sources) != 1 or sources[0] is None or len(sources[0].outgoing) != 1:
+        return None
+    return sources[0]
 
 
 def _is_condition(node: scm.GraphElement | None) -> bool:
