@@ -35,6 +35,7 @@ GOOD = [
     "junction-1.3",
     "longitudinal-1.0",
     "stop-on-arrival-1.3",
+    "stop-on-arrival-1.0",
 ]
 
 
