@@ -9,7 +9,7 @@ from lxml import etree
 import scemlmodel as scm
 from sceml.export import ExportError, ParameterDeclarationSpec, build_xosc
 from sceml.model.build import ScenarioBuilder, world
-from sceml.xosc.flows import inlined
+from sceml.xosc.flows import flow_steps, inlined
 
 SIZE = {"length": 4.0, "width": 2.0}
 
@@ -162,3 +162,54 @@ def test_a_traffic_signal_condition_goes_into_the_trigger_of_the_state_it_starts
     assert signal is not None and (signal.get("name"), signal.get("state")) == ("1", "yellow")
     # Named after the condition node, so that an import gives the node its name back.
     assert signal.getparent().getparent().get("name") == "Yellow"
+
+
+def ending_on_a_condition(policy: str) -> tuple[ScenarioBuilder, dict[str, scm.GraphElement]]:
+    """root -> Near (the lead within 20 m of the ego) -> End; root -> Brake -> End; and Near
+    and Brake -> Both (join-all) -> End: an imported StopTrigger's condition, which the
+    import also joins with the branches it does not name (`importer.ending`)."""
+    b = ScenarioBuilder(
+        "stops", map="map.xodr", level="concrete", max_duration=30.0, end_policy=policy
+    )
+    ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0, h=0.0), speed=10.0, **SIZE)
+    lead = b.actor("Car", "lead", start=world(40.0, 0.0, h=0.0), speed=8.0, **SIZE)
+    n = {
+        "Near": b.add("InVehicleRadius", lead, target=ego, radius=20.0),
+        "Brake": b.add("Decelerate", ego, targetSpeed=6.0, rate=3.0),
+    }
+    for name, node in n.items():
+        node.name = name
+    b.chain(b.root, n["Near"], b.end)
+    b.chain(b.root, n["Brake"])
+    n["Both"] = b.join_all(n["Near"], n["Brake"], name="Both")
+    b.chain(n["Both"], b.end)
+    return b, n
+
+
+def test_a_condition_that_ends_the_run_goes_into_the_stop_trigger() -> None:
+    # The end waits for one of its predecessors: the StopTrigger stops the run in the step
+    # Near holds, as the original's did (`pedestrian_traj_synch`: a marker event for Near
+    # before it ended the run 0.1 s late). Both adds nothing: it waits for Near too, so the
+    # run has stopped by the time it could finish, and its group is left out.
+    b, n = ending_on_a_condition("joinOne")
+    assert {str(node.name) for node in inlined(b.scenario.nodes)} == {"Near", "Both"}
+    # What each flow costs in steps, worked out by hand: none out of Near (in the
+    # StopTrigger) or Both (a join), and none out of the root; one out of Brake (its event's
+    # completion is seen a step later).
+    inline = inlined(b.scenario.nodes)
+    assert [flow_steps(n[k], inline) for k in ("Near", "Both", "Brake")] == [0, 0, 1]
+    assert flow_steps(b.root, inline) == 0
+    document = build_xosc(b.scenario, version="1.3").tree.getroot()
+    assert document.find(".//Event[@name='Near']") is None
+    assert trigger(document, "Storyboard/StopTrigger") == [
+        [("RelativeDistanceCondition", "20.0", "0.0"), ("SimulationTimeCondition", "0.0", "0.0")],
+        [("SimulationTimeCondition", "30.0", "0.0")],
+    ]
+
+
+def test_a_condition_keeps_its_marker_before_an_end_that_waits_for_all() -> None:
+    # The end waits for Near and Both: Near's "has held" must stay true until Brake is done.
+    b, _ = ending_on_a_condition("joinAll")
+    assert "Near" not in {str(node.name) for node in inlined(b.scenario.nodes)}
+    document = build_xosc(b.scenario, version="1.3").tree.getroot()
+    assert document.find(".//Event[@name='Near']") is not None

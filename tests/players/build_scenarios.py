@@ -21,6 +21,7 @@ equal this script's output (tests/players/test_scenarios.py).
   follow-in-turn.xmi      a Follow of a car that turns, while the follower turns too
   join-one-race.xmi       two cars race; a JoinOneFinished of their arrivals ends it
   parallel.xmi            two actors, each with a lateral and a longitudinal maneuver at once
+  stop-on-arrival.xmi     a condition that ends the run on its own (written into the StopTrigger)
 """
 
 from __future__ import annotations
@@ -232,6 +233,20 @@ def build_parallel(map_text: str) -> scm.Scenario:
     return b.scenario
 
 
+def build_stop_on_arrival(map_text: str) -> scm.Scenario:
+    """The ego's arrival ends the scenario while a truck still keeps its speed: the condition
+    stands in the StopTrigger itself (`xosc.flows`), so the run stops in the step it holds."""
+    b = new_scenario(
+        "StopOnArrival", map_text, "The ego's arrival ends it; the truck's 40 s do not.", "joinOne"
+    )
+    ego = b.actor("Car", "ego", ego=True, start=lane(EAST, -1, 5.0), speed=10.0)
+    truck = b.actor("Truck", "truck", start=lane(WEST, -1, 5.0), speed=5.0)
+    there = b.add("InLocationRadius", ego, position=lane(EAST, -1, 60.0), radius=2.0)
+    b.chain(b.root, there, b.end)
+    b.chain(b.root, b.add("KeepVelocity", truck, duration=40.0), b.end)
+    return b.scenario
+
+
 def build_library() -> scm.Library:
     """Inner in Middle in Outer, each with a role `driver` and a parameter passed down."""
     library = LibraryBuilder("player checks", "Modules nested three deep, with joins inside.")
@@ -297,6 +312,7 @@ def build_all(out: Path) -> list[Path]:
         "follow-in-turn.xmi": build_follow_in_turn(map_text),
         "join-one-race.xmi": build_join_one_race(map_text),
         "parallel.xmi": build_parallel(map_text),
+        "stop-on-arrival.xmi": build_stop_on_arrival(map_text),
     }
     for name, scenario in scenarios.items():
         written.append(save(scenario, out / name))

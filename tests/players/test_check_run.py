@@ -34,6 +34,8 @@ GOOD = [
     "parallel-1.3",
     "junction-1.3",
     "longitudinal-1.0",
+    "stop-on-arrival-1.3",
+    "stop-on-arrival-1.0",
 ]
 
 
@@ -66,6 +68,21 @@ def test_drive_distance_after_moving_is_driven_from_the_nodes_start(recording) -
     ego = run.traces["ego"]
     i, j = ego.at(3.05), ego.at(5.55)
     assert ego.x[j] - ego.x[i] == pytest.approx(20.0, abs=0.5)  # a straight arm, along x
+
+
+def test_a_condition_in_the_stop_trigger_ends_the_run_in_its_step(recording) -> None:  # type: ignore[no-untyped-def]
+    log, trace = recording("stop-on-arrival-1.3")
+    report = check_player_run(model("stop-on-arrival-1.3"), log, trace)
+    assert report.ok, report.violations()
+    there = next(node for node in report.nodes if node.name == "InLocationRadius_1")
+    # The ego drives from s = 5 at 10 m/s; within 2 m of s = 60 (strictly) from s > 58, after
+    # 5.3 s: the first step after, 5.35 s. The condition stands in the StopTrigger (no event
+    # of its own): it held when the run stopped, and the run stopped in that step, by the
+    # end node (its group holds the root's `>= 0` too, which is no time-out).
+    assert there.inlined
+    assert (there.start, there.finish) == pytest.approx((0.0, 5.35))
+    assert report.stop_time == pytest.approx(5.35)
+    assert report.ending == "end node at 5.35 s"
 
 
 def test_a_turn_no_longer_stops_the_speed_change_it_runs_beside(recording) -> None:  # type: ignore[no-untyped-def]

@@ -39,6 +39,7 @@ def comparison(stem: str, scenario: str, recording):  # type: ignore[no-untyped-
         "turn-while-speeding-1.0",
         "longitudinal-1.0",
         "junction-1.3",
+        "stop-on-arrival-1.3",
     ],
 )
 def test_the_preview_agrees_with_esmini(stem: str, recording) -> None:  # type: ignore[no-untyped-def]

@@ -9,8 +9,8 @@ says so, because the original would have cut the earlier one short.
 
 from __future__ import annotations
 
+import heapq
 import math
-from collections import deque
 
 import scemlmodel as scm
 
@@ -28,10 +28,11 @@ _AXES = {
 def separate(build: Build) -> None:
     """Make every pair of same-actor, same-category maneuvers run one after the other.
 
-    The maneuvers of one actor and axis are taken in the graph's topological order (document
-    order between unrelated ones). Once each waits for the one before it, it follows all of
-    them, so each needs at most one new join: the whole pass is near linear in the number of
-    events, where comparing every pair was cubic (issue 26).
+    The maneuvers of one actor and axis are taken in the graph's topological order, document
+    order between unrelated ones (`_topological`): files list an actor's events in the order
+    they happen, however many nodes each waits through. Once each waits for the one before
+    it, it follows all of them, so each needs at most one new join: the whole pass is near
+    linear in the number of events, where comparing every pair was cubic (issue 26).
     """
     order = _topological(build.scenario.nodes)
     lines: dict[tuple[int, str], list[scm.Maneuver]] = {}
@@ -54,12 +55,18 @@ def _axes(node: scm.Maneuver) -> set[str]:
 
 
 def _topological(nodes: list[scm.GraphElement]) -> dict[int, float]:
-    """Node id -> its place in a topological order of the flows (Kahn, first in first out)."""
+    """Node id -> its place in a topological order of the flows: of the nodes ready, always
+    the one made first (the import makes them in document order). Not breadth first: that
+    put an event behind every event that waits through fewer nodes (`keep_lateral_distance`:
+    its first lane change, on a distance and a delay, waited for the lane change at 8 s and
+    the one after it, and started at 15.05 s instead of 2.75 s)."""
+    made = {id(n): index for index, n in enumerate(nodes)}
     waiting = {id(n): sum(1 for f in n.incoming if f.source is not None) for n in nodes}
-    ready = deque(n for n in nodes if waiting[id(n)] == 0)
+    ready = [(made[id(n)], n) for n in nodes if waiting[id(n)] == 0]
+    heapq.heapify(ready)
     order: dict[int, float] = {}
     while ready:
-        node = ready.popleft()
+        _, node = heapq.heappop(ready)
         order[id(node)] = float(len(order))
         for flow in node.outgoing:
             target = flow.target
@@ -67,7 +74,7 @@ def _topological(nodes: list[scm.GraphElement]) -> dict[int, float]:
                 continue
             waiting[id(target)] -= 1
             if waiting[id(target)] == 0:
-                ready.append(target)
+                heapq.heappush(ready, (made[id(target)], target))
     for node in nodes:  # a cycle (refused earlier) would leave some: after the rest
         order.setdefault(id(node), float(len(order)))
     return order
@@ -96,19 +103,13 @@ def _reaches(start: scm.GraphElement, goal: scm.GraphElement, order: dict[int, f
 
 def _wait(build: Build, earlier: scm.Maneuver, later: scm.Maneuver) -> scm.JoinAllFinished:
     """`later` also waits for `earlier`: a join before it, or, where `later` is started by a
-    condition of its own, before that condition. The condition is then evaluated once both
-    have finished and stays the only thing `later` waits for, so the export writes it into
-    `later`'s StartTrigger (`xosc.flows.inlined`) and `later` starts in the step it holds,
-    as in the original; a join after the condition would make it a marker, a step late."""
-    target: scm.GraphElement = later
-    sources = [flow.source for flow in later.incoming]
-    if (
-        len(sources) == 1
-        and _is_condition(sources[0])
-        and len(sources[0].outgoing) == 1
-        and len(sources[0].incoming) == 1
-    ):
-        target = sources[0]
+    condition of its own (directly or through that condition's delay), before that
+    condition. The condition is then evaluated once both have finished and stays the only
+    thing `later` waits for, so the export writes it (and its delay) into `later`'s
+    StartTrigger (`xosc.flows.inlined`) and `later` starts in the step it holds, as in the
+    original; a join after the condition would make it a marker, a step late
+    (`traffic_lights`' DriveOnGreenEvent, on a green light with a delay of 0.5 s)."""
+    target = _own_condition(later) or later
     join = build.add(scm.JoinAllFinished(), f"{later.name}_after_{earlier.name}")
     for flow in list(target.incoming):
         # Moved through the opposite list: setting `flow.target` would leave the flow in
@@ -125,6 +126,25 @@ def _wait(build: Build, earlier: scm.Maneuver, later: scm.Maneuver) -> scm.JoinA
         node=str(later.name),
     )
     return join
+
+
+def _own_condition(later: scm.GraphElement) -> scm.GraphElement | None:
+    """The condition that alone starts `later`, directly or through one wait (its delay),
+    each feeding only the next; None when there is none."""
+    node = _only_source(later)
+    if isinstance(node, scm.TimeElapsed) and int(node.maxRuns) == 1:
+        node = _only_source(node)
+    if node is None or not _is_condition(node) or len(node.incoming) != 1:
+        return None
+    return node
+
+
+def _only_source(node: scm.GraphElement) -> scm.GraphElement | None:
+    """The one node `node` waits for, if it feeds nothing else."""
+    sources = [flow.source for flow in node.incoming]
+    if len(sources) != 1 or sources[0] is None or len(sources[0].outgoing) != 1:
+        return None
+    return sources[0]
 
 
 def _is_condition(node: scm.GraphElement | None) -> bool:

@@ -180,12 +180,21 @@ def _inlined_times(
 def _started_after(
     successor: scm.GraphElement, events_of: dict[str, tuple[str, str]], run: PlayerRun
 ) -> list[float | None]:
-    """When the successor of an inlined condition started, which is when the condition held;
-    through an inlined wait (the condition's delay): its successors' starts less the wait."""
+    """When the successor of an inlined condition started, which is when the condition held
+    (the end node: when the StopTrigger stopped the run); through an inlined wait (the condition's delay): its successors' starts less the wait."""
     if isinstance(successor, scm.TimeElapsed) and str(successor.name) not in events_of:
         wait = float(params.concrete(successor, "duration"))
         return [
             None if start is None else round(start - wait, 9)
+            for after in graph.successors(successor)
+            for start in _started_after(after, events_of, run)
+        ]
+    if isinstance(successor, scm.EndNode):  # written into the StopTrigger: the run's stop
+        return [run.stop_time if run.stop_how == "stop" else None]
+    if is_passing(successor) and str(successor.name) not in events_of:
+        # A join written into the StopTrigger after the condition (`xosc.flows`).
+        return [
+            start
             for after in graph.successors(successor)
             for start in _started_after(after, events_of, run)
         ]
@@ -260,9 +269,21 @@ def _stop_trigger(tree: etree._ElementTree) -> tuple[list[list[str]], set[str]]:
         names = [str(condition.get("name")) for condition in group.iterfind("Condition")]
         groups.append(names)
         for condition in group.iterfind("Condition"):
-            if condition.find(".//SimulationTimeCondition") is not None:
+            if _is_time_out(condition.find(".//SimulationTimeCondition")):
                 timeouts.add(str(condition.get("name")))
     return groups, timeouts
+
+
+def _is_time_out(clock: etree._Element | None) -> bool:
+    """Whether a SimulationTimeCondition is the maximum duration's (`> max`), not the root's
+    finish (`>= 0`, 1.0: `> -1`), which a condition written into the StopTrigger is ANDed
+    with (`xosc.flows`)."""
+    if clock is None or clock.get("rule") != "greaterThan":
+        return False
+    try:
+        return float(str(clock.get("value"))) >= 0
+    except ValueError:  # a parameter: only the maximum duration is written so
+        return True
 
 
 def _check_end(

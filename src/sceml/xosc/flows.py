@@ -19,10 +19,11 @@ is evaluated again at every step, so it may only stand where "holds now" and "ha
 - TimeElapsed: its activation delayed, true from then on, likewise;
 - any other condition (SpeedCondition, InLocationRadius, an opaque Condition, ...): only into
   successors that have no other predecessor and use their activation once, as the StartTrigger
-  of one event (`_USES_ACTIVATION_ONCE`); into each of them when there are several (an
-  imported event with several actions): each starts at the first instant it holds; likewise
-  through a TimeElapsed whose successors are such events (an original's condition with a
-  delay: the wait is the condition's delay in their triggers). A maneuver with a finish marker (`__arrived`,
+  of one event (`_USES_ACTIVATION_ONCE`), and into the end node's StopTrigger where any one
+  predecessor ends the run (or it has only this one); into each of them when there are
+  several (an imported event with several actions): each starts at the first instant it
+  holds; likewise through a TimeElapsed whose successors are such (an original's condition
+  with a delay: the wait is the condition's delay in their triggers). A maneuver with a finish marker (`__arrived`,
   `__gap_reached`, ...) ANDs its activation with its goal, another condition ANDs it with its
   own test, a join combines it with other branches: there "held once" and "holds now" differ,
   so the condition keeps its marker event.
@@ -80,20 +81,51 @@ def _passes_latched(node: scm.GraphElement) -> bool:
 
 
 def _holds_now_for(node: scm.GraphElement, successor: scm.GraphElement) -> bool:
-    """A condition whose successor waits for it alone and starts one event on it; or waits
-    for it alone through a TimeElapsed that does the same (the wait is the condition's
-    `delay` in the successor's trigger, which players count from each instant it held, as
-    SceML counts from its finish: an original's condition with a delay keeps its step)."""
+    """A condition whose successor waits for it alone and starts one event on it, or is the
+    end node (`_starts_on`); or waits for it alone through a TimeElapsed that does the same
+    (the wait is the condition's `delay` in the successor's trigger, which players count from
+    each instant it held, as SceML counts from its finish: an original's condition with a
+    delay keeps its step)."""
     if not (isinstance(node, scm.Condition) or is_condition_element(node)):
         return False
-    if len(graph.predecessors(successor)) != 1:
-        return False
+    if _absorbed_by_end(node, successor):
+        return True
     if isinstance(successor, scm.TimeElapsed) and int(getattr(successor, "maxRuns", 1)) == 1:
         after = graph.successors(successor)
-        return bool(after) and all(
-            len(graph.predecessors(s)) == 1 and _uses_activation_once(s) for s in after
+        return (
+            len(graph.predecessors(successor)) == 1
+            and bool(after)
+            and all(_starts_on(s) for s in after)
         )
-    return _uses_activation_once(successor)
+    return _starts_on(successor)
+
+
+def _absorbed_by_end(node: scm.GraphElement, successor: scm.GraphElement) -> bool:
+    """A join-all of `node` and other branches that leads only to end nodes which `node` also
+    ends on its own (any one predecessor ends the run): whatever the join adds, the run has
+    stopped by then, so `node` may stand in the StopTrigger as it holds now (an imported
+    StopTrigger's condition, which the import also joins with the branches it does not name,
+    `importer.ending`)."""
+    if not isinstance(successor, scm.JoinAllFinished):
+        return False
+    after = graph.successors(successor)
+    return bool(after) and all(
+        isinstance(end, scm.EndNode)
+        and graph.finishes_with_first(end)
+        and node in graph.predecessors(end)
+        for end in after
+    )
+
+
+def _starts_on(successor: scm.GraphElement) -> bool:
+    """Whether `successor` acts at the first instant its activation holds, once: a node that
+    waits for one predecessor and starts one event on it, or the end node when any one
+    predecessor ends the run (or it has one): the StopTrigger stops the run in the step one
+    of its groups holds, so "holds now" and "has held" agree there too (a condition as a
+    marker event before it stopped `pedestrian_traj_synch` two steps late)."""
+    if isinstance(successor, scm.EndNode):
+        return graph.finishes_with_first(successor) or len(graph.predecessors(successor)) == 1
+    return len(graph.predecessors(successor)) == 1 and _uses_activation_once(successor)
 
 
 def is_passing(node: scm.GraphElement) -> bool:
