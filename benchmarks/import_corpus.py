@@ -15,12 +15,15 @@ re-export are played headless at 0.05 s steps and compared:
 - the run ends at the same time (within one step).
 
 It prints the stage table (play / import writes / exit 0 / validates clean / exports / plays
-the same), the opaque rate (opaque nodes over the Actions and Conditions of the originals),
+the same; exit 0 is `sceml import`'s exit code, which errors the original has too do not fail,
+docs/import.md), the opaque rate (opaque nodes over the Actions and Conditions of the originals),
+the errors the original does not deserve and those it has too,
 with `--constructs` what the files use that metamodel 1.0 has no class for, and, with `--csv`,
 one row per file with the reason a stage failed and, for a re-export that plays otherwise,
 every difference (`differences`: the end, each event off by more than a step, each entity off
 its path with the time it first is). A progress line per file goes to
-stderr. Nothing is written into the DIRs.
+stderr. Nothing is written into the DIRs. esmini plays with a fixed `--seed` (SEED), so that
+the random traffic of a swarm or a sloppy driver is the same in the original and the re-export.
 """
 
 from __future__ import annotations
