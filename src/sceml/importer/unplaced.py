@@ -61,8 +61,8 @@ def start_on_first_trajectory(build: Build) -> None:
 
 
 def _first_trajectory(build: Build, actor: scm.Actor) -> scm.FollowTrajectory | None:
-    """The actor's FollowTrajectory right after the root, if it is the only thing that moves
-    the actor from the start."""
+    """The actor's one FollowTrajectory right after the root (none when there are two: which
+    one places the actor would be a guess)."""
     at_start = [
         node
         for node in graph.successors(build.root)
