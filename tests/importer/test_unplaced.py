@@ -60,6 +60,20 @@ def test_a_sumo_template_the_storyboard_uses_stays_an_actor(tmp_path: Path) -> N
     assert imported.report.section("not represented") == []
 
 
+def test_a_controller_named_sumo_controller_without_the_property_is_sumos(
+    tmp_path: Path,
+) -> None:
+    # esmini takes the controller's name as its type when esminiController is missing.
+    text = (FILES / "sumo-template.xosc").read_text()
+    named = text.replace('<Property name="esminiController" value="SumoController"/>', "").replace(
+        '<Controller name="SumoTraffic">', '<Controller name="SumoController">'
+    )
+    assert "esminiController" not in named and 'name="SumoController"' in named
+    (tmp_path / "highway.xodr").write_bytes((FILES / "highway.xodr").read_bytes())
+    (tmp_path / "sumo-template.xosc").write_text(named)
+    assert set(_actors(import_file(tmp_path / "sumo-template.xosc").scenario)) == {"Ego"}
+
+
 def test_a_sumo_template_is_not_exported(tmp_path: Path) -> None:
     root = _export(tmp_path, "sumo-template")
     assert [o.get("name") for o in root.iter("ScenarioObject")] == ["Ego"]

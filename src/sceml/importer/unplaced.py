@@ -22,10 +22,16 @@ def is_sumo_template(item: etree._Element) -> bool:
     SUMO departs from its own configuration (ScenarioReader: "SUMO template vehicles"; built
     without SUMO, esmini adds it deactivated). Nothing places it, so it has no start.
     """
-    return any(
-        prop.get("name") == "esminiController" and prop.get("value") == SUMO
-        for prop in item.iterfind("ObjectController//Properties/Property")
-    )
+    return any(_esmini_type(controller) == SUMO for controller in item.iter("Controller"))
+
+
+def _esmini_type(controller: etree._Element) -> str | None:
+    """The controller type esmini picks: the esminiController property, else (esmini warns)
+    the controller's name."""
+    for prop in controller.iterfind("Properties/Property"):
+        if prop.get("name") == "esminiController":
+            return prop.get("value")
+    return controller.get("name")
 
 
 def is_referenced(build: Build, name: str) -> bool:
