@@ -25,13 +25,13 @@ def is_sumo_template(item: etree._Element) -> bool:
     return any(_esmini_type(controller) == SUMO for controller in item.iter("Controller"))
 
 
-def _esmini_type(controller: etree._Element) -> str | None:
+def _esmini_type(controller: etree._Element) -> str:
     """The controller type esmini picks: the esminiController property, else (esmini warns)
     the controller's name."""
     for prop in controller.iterfind("Properties/Property"):
         if prop.get("name") == "esminiController":
-            return prop.get("value")
-    return controller.get("name")
+            return str(prop.get("value"))
+    return str(controller.get("name"))
 
 
 def is_referenced(build: Build, name: str) -> bool:
