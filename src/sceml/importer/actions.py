@@ -308,6 +308,13 @@ def _trajectory(
     polyline = None if shape is None else shape.find("Polyline")
     if polyline is None:
         return "only polyline trajectories map (FollowTrajectory); clothoids and NURBS do not"
+    if follow.find("TimeReference/Timing") is not None:
+        # Players then reach each vertex at its time, whatever the actor's speed
+        # (`bicycle_fall_over`: 20 m in 2 s, then 5 m in 0.5 s, then standing still).
+        return (
+            "a trajectory followed in time (TimeReference Timing) has no SceML form: "
+            "FollowTrajectory is followed at the actor's speed"
+        )
     vertices = polyline.findall("Vertex")
     if vertices and _is_self(vertices[0], request.actor):
         vertices = vertices[1:]

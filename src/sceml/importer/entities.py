@@ -13,6 +13,7 @@ from . import traced
 from .context import Build
 from .controllers import object_controller
 from .positions import number
+from .unplaced import is_referenced, is_sumo_template
 
 #: OpenSCENARIO vehicleCategory -> SceML actor kind (and whether that is a guess).
 VEHICLE_KINDS = {
@@ -42,6 +43,9 @@ def read_entities(build: Build) -> None:
                 "not represented", f"<{item.tag} name={item.get('name')!r}>", build.where(item)
             )
             continue
+        if is_sumo_template(item) and not is_referenced(build, str(item.get("name"))):
+            _sumo_template(build, item)
+            continue
         actor = _actor(build, item)
         if actor is not None:
             build.root.actors.append(actor)
@@ -49,6 +53,18 @@ def read_entities(build: Build) -> None:
     if not build.actors:
         raise build.source.error("the file declares no vehicle or pedestrian entity", entities)
     _choose_ego(build)
+
+
+def _sumo_template(build: Build, item: etree._Element) -> None:
+    """esmini never places a SUMO controller's template entity (SUMO adds its vehicles): no
+    actor, so no actor without a start; SceML has no co-simulated traffic to keep it in."""
+    build.report.add(
+        "not represented",
+        f"entity {item.get('name')!r}: the template of the vehicles its SUMO controller adds "
+        "from the SUMO configuration; esmini never places it itself, and SceML has no "
+        "co-simulated traffic (the export runs without SUMO's vehicles)",
+        build.where(item),
+    )
 
 
 def _actor(build: Build, item: etree._Element) -> scm.Actor | None:

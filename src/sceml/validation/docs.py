@@ -58,6 +58,11 @@ docs/validation-rules.md`. A test fails when it is stale.
 - **Export.** `sceml export` refuses a model with any error, then runs the rules marked
   *checked* in the Export column again on the scenario with its module uses expanded, with the
   chosen OpenSCENARIO version and profile: what the mapping needs beyond a valid graph.
+- **Imported scenarios.** Some rules judge a value as the scenario states it against the world
+  (the actor kind's limits, the map): {stated}. A file `sceml import` reads states the same
+  value, so their findings are the original's too: the import lists them apart and does not
+  fail on them unless `--strict` (docs/import.md). Every other error of an imported scenario is
+  one the import caused.
 - **Internal errors.** A rule that fails unexpectedly on a malformed model does not stop the run:
   it becomes a diagnostic with code `{internal}` naming the rule, and all other rules still run.
 - **Older metamodel releases.** A file saved with an earlier release of the metamodel (its nsURI
@@ -87,6 +92,11 @@ def rules_table(registry: Registry = REGISTRY) -> str:
     return "\n".join(lines) + "\n"
 
 
+def _stated(registry: Registry) -> str:
+    """The codes of the rules that judge stated values, as the Decisions list them."""
+    return ", ".join(f"`{r.code}`" for r in registry.rules() if r.judges_stated_values)
+
+
 def limits_table() -> str:
     """The built-in plausibility limits as a Markdown table (SI units and km/h)."""
     keys = list(LIMIT_KEYS)
@@ -112,7 +122,7 @@ def render(registry: Registry = REGISTRY) -> str:
         "```yaml\nPedestrian:\n  max_speed: 3.0\nFourWheeler:\n  max_deceleration: 9.0\n```\n\n"
     )
     return (
-        INTRO.format(internal=INTERNAL_ERROR, older=OLDER_RELEASE)
+        INTRO.format(internal=INTERNAL_ERROR, older=OLDER_RELEASE, stated=_stated(registry))
         + "\n## Rules\n\n"
         + rules_table(registry)
         + "\n"

@@ -73,6 +73,7 @@ def _over_limit(owner: EObject, context: Context, key: str, unit: str) -> Iterat
     through_modules=True,
     # the performer's kind
     reads=Reads(VALUE),
+    judges_stated_values=True,
 )
 def speed_fits_actor(owner: EObject, context: Context) -> Iterator[Finding]:
     yield from _over_limit(owner, context, "max_speed", "m/s")
@@ -87,6 +88,7 @@ def speed_fits_actor(owner: EObject, context: Context) -> Iterator[Finding]:
     through_modules=True,
     # the performer's kind
     reads=Reads(VALUE),
+    judges_stated_values=True,
 )
 def acceleration_fits_actor(owner: EObject, context: Context) -> Iterator[Finding]:
     yield from _over_limit(owner, context, "max_acceleration", "m/s2")
@@ -101,6 +103,7 @@ def acceleration_fits_actor(owner: EObject, context: Context) -> Iterator[Findin
     through_modules=True,
     # the performer's kind
     reads=Reads(VALUE),
+    judges_stated_values=True,
 )
 def deceleration_fits_actor(owner: EObject, context: Context) -> Iterator[Finding]:
     yield from _over_limit(owner, context, "max_deceleration", "m/s2")
