@@ -108,6 +108,4 @@ def test_a_speed_to_drive_a_distance_at_stays_at_least_zero() -> None:
     drive.distance = scm.Value(value=10.0)
     drive.referenceActor = graph.root_node(scenario).actors[0]
     scenario.nodes.append(drive)
-    assert any(
-        d.code == "SCEML-P007" and "Drive.speed" in d.message for d in validate(scenario)
-    )
+    assert any(d.code == "SCEML-P007" and "Drive.speed" in d.message for d in validate(scenario))
