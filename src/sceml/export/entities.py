@@ -81,8 +81,41 @@ def entity(ctx: Context, actor: scm.Actor) -> dict[str, Any]:
         "performance": performance(actor),
         "front_axle": _axle(0.5, wheel, track, round(length * 0.6, 6)),
         "rear_axle": _axle(0.0, wheel, track, 0.0),
+        **_coupling(ctx, actor),
         "properties": properties,
     }
+
+
+def _coupling(ctx: Context, actor: scm.Actor) -> dict[str, Any]:
+    """TrailerHitch, TrailerCoupler and Trailer (1.3; SCEML-E008 refuses earlier versions).
+
+    A towed actor without a start of its own is written in place, inside its tower's Trailer,
+    as the files that have such trailers write them (players place it at the hitch and name it
+    after its tower, `Truck+`); one with a start is its own ScenarioObject, named by TrailerRef."""
+    towed = actor.trailer
+    trailer = None
+    if towed is not None:
+        inline = entity(ctx, towed) if written_in_place(towed) else None
+        trailer = {"inline": inline, "ref": ctx.entity(towed)}
+    return {
+        "hitch": _offset(ctx, actor, "hitchX"),
+        "coupler": _offset(ctx, actor, "couplerX"),
+        "trailer": trailer,
+    }
+
+
+def _offset(ctx: Context, actor: scm.Actor, feature: str) -> str | None:
+    """A hitch or coupler offset where the actor sets one (else no element at all)."""
+    return None if actor.eGet(feature) is None else ctx.values.text(actor, feature)
+
+
+def written_in_place(actor: scm.Actor) -> bool:
+    """Whether an actor is written inside its tower's Trailer, not as a ScenarioObject of its
+    own: it is towed and has no start (it starts at the hitch), so it has no Init either."""
+    if actor.startPosition is not None:
+        return False
+    others = getattr(actor.eContainer(), "actors", ())
+    return any(other.trailer is actor for other in others if other is not actor)
 
 
 def performance_of(kind: str) -> tuple[float, float, float]:

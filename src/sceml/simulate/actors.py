@@ -113,6 +113,8 @@ class Actor:
         self.x = self.y = self.heading = 0.0
         #: Metres moved since the run started, whichever way (TraveledDistance's odometer).
         self.odometer = 0.0
+        #: Dragged by another actor (`trailers.py`): it neither drives nor follows its path.
+        self.towed = False
         self.place()
 
     def place(self) -> None:

@@ -18,12 +18,13 @@ from ..model.graph import root_node, scenario_level
 from ..model.params import concrete
 from ..modules.flatten import Flattened, expand
 from ..xosc import PLAYER_STEP
+from . import trailers
 from .engine import Scheduler, run_schedule
 from .global_values import initial_values
 from .limits import located_in, refuse_unresolved, refuse_unusable
 from .metrics import pair_metrics
 from .run import ActorInfo, Run
-from .setup import make_actor
+from .setup import make_actor, trailer_at_rest
 from .world import SimulationError, World
 
 #: The default time step (s): fine enough for walking and urban speeds.
@@ -83,9 +84,16 @@ def _simulate(
     if road_map is None:
         road_map = _road_map(flat_root, scenario_file, allowed_roots_of(scenario))
     world = World(road_map, {}, step, values=initial_values(flat_root))
-    starts = start_poses(scenario_actors(flat), road_map)
-    for actor in scenario_actors(flat):
-        world.actors[str(actor.name)] = make_actor(actor, road_map, starts)
+    actors = scenario_actors(flat)
+    starts = start_poses(actors, road_map)
+    for actor in actors:
+        world.actors[str(actor.name)] = (
+            make_actor(actor, road_map, starts)
+            if actor.startPosition is not None or not trailers.is_towed(actor, actors)
+            else trailer_at_rest(actor)
+        )
+    world.couplings = trailers.couplings(actors)
+    trailers.couple(world.actors, world.couplings)
     scheduler = Scheduler(list(flat.nodes), world)
     names = list(world.actors)
     times: list[float] = []
