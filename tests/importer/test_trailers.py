@@ -172,6 +172,10 @@ def test_the_preview_drags_each_trailer_behind_its_hitch() -> None:
     assert x("Semi", 6.0) == pytest.approx(142.0, abs=1e-6)
     semi = run.states[run.actor_index("Semi")]
     assert np.allclose(semi[:, 1], -5.25) and np.allclose(semi[:, 3], 8.0)
+    # A semi-trailer's box lies under its tractor's by design: no metrics, no collision.
+    with pytest.raises(KeyError):
+        run.pair("Semi", "Tractor")
+    assert not run.collided and run.pair("Car", "Semi").min_distance > 5.0
 
 
 @pytest.mark.parametrize(

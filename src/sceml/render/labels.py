@@ -374,7 +374,8 @@ def root_lines(root: scm.RootNode | None, scenario: scm.Scenario) -> list[str]:
     for actor in actors(scenario):
         ego = ", ego" if actor.isEgo else ""
         driven = f", {describe_controller(actor.controller)}" if actor.controller else ""
-        lines.append(f"  {actor.name}: {actor.eClass.name}{ego}{driven}")
+        tows = f", tows {actor.trailer.name}" if actor.trailer is not None else ""
+        lines.append(f"  {actor.name}: {actor.eClass.name}{ego}{driven}{tows}")
     return lines
 
 
