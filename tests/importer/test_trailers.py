@@ -200,3 +200,30 @@ def test_a_towed_actor_needs_no_start_but_others_do() -> None:
     actors["Car"].trailer = None  # Car+ is towed by nobody now, and has no start
     found = [d.message for d in validate(scenario) if d.code == "SCEML-E002"]
     assert found == ["actor 'Car+' has no start position (concrete scenario)"]
+
+
+def test_a_towed_entity_is_declared_before_its_tower(tmp_path: Path) -> None:
+    """esmini reads a TrailerRef as it reads the entities: `Failed to find object Semi` (exit
+    255, esmini 3.6) when Semi comes after Tractor. The export puts it first."""
+    scenario = import_file(SOURCE).scenario
+    root = graph.root_node(scenario)
+    semi = _actors(scenario)["Semi"]
+    root.actors.remove(semi)
+    root.actors.append(semi)  # now after its tower
+    exported = tmp_path / "trailers.xosc"
+    export_to_file(scenario, exported, version="1.3", source_path=SOURCE)
+    names = [str(o.get("name")) for o in etree.parse(str(exported)).iter("ScenarioObject")]
+    assert names == ["Car", "Semi", "Tractor"]
+
+
+def test_a_trailer_is_never_guessed_to_be_the_ego(tmp_path: Path) -> None:
+    tree = etree.parse(str(SOURCE))
+    entities = tree.find("Entities")
+    semi = entities.find("ScenarioObject[@name='Semi']")
+    entities.remove(semi)
+    entities.insert(0, semi)  # the first vehicle is now a trailer
+    first = tmp_path / "trailer-first.xosc"
+    tree.write(str(first))
+    (tmp_path / "highway.xodr").write_bytes((SOURCE.parent / "highway.xodr").read_bytes())
+    egos = [a.name for a in graph.root_node(import_file(first).scenario).actors if a.isEgo]
+    assert egos == ["Car"]

@@ -109,6 +109,24 @@ def _offset(ctx: Context, actor: scm.Actor, feature: str) -> str | None:
     return None if actor.eGet(feature) is None else ctx.values.text(actor, feature)
 
 
+def towed_first(actors: list[scm.Actor]) -> list[scm.Actor]:
+    """The actors in order, but each towed one before its tower: esmini resolves a TrailerRef
+    as it reads the entities ("Failed to find object" when the trailer comes later)."""
+    ordered: list[scm.Actor] = []
+
+    def put(actor: scm.Actor, chain: tuple[scm.Actor, ...]) -> None:
+        if actor in ordered or actor in chain:
+            return  # placed already, or a towing loop (SCEML-A009 refuses the export)
+        towed = actor.trailer
+        if towed is not None and towed in actors:
+            put(towed, (*chain, actor))
+        ordered.append(actor)
+
+    for actor in actors:
+        put(actor, ())
+    return ordered
+
+
 def written_in_place(actor: scm.Actor) -> bool:
     """Whether an actor is written inside its tower's Trailer, not as a ScenarioObject of its
     own: it is towed and has no start (it starts at the hitch), so it has no Init either."""

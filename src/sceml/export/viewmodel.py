@@ -19,7 +19,7 @@ from ..xosc.flows import inlined
 from ..xosc.profiles import DEFAULT_VERSION
 from .actions import PLANNERS
 from .context import Context, Event, node_name
-from .entities import entity, init_actions, written_in_place
+from .entities import entity, init_actions, towed_first, written_in_place
 from .environment import environment
 from .global_kinds import declarations
 from .names import NameTable, sanitize
@@ -111,7 +111,7 @@ def build_view(scenario: scm.Scenario, options: Options) -> View:
     env = environment(ctx, root, options.date)
     # A towed actor without a start is written inside its tower's Trailer, with no Init.
     placed = [actor for actor in actors if not written_in_place(actor)]
-    entities = [entity(ctx, actor) for actor in placed]
+    entities = [entity(ctx, actor) for actor in towed_first(placed)]
     privates = [init_actions(ctx, actor) for actor in placed]
     # Declarations are complete only now that every value has been written.
     return View(

@@ -44,6 +44,8 @@ class Build:
     #: (tower, the entity its TrailerRef names, the Trailer element): linked once every
     #: entity is read (`entities.py`).
     trailer_refs: list[tuple[scm.Actor, str, etree._Element]] = field(default_factory=list)
+    #: Entities of vehicleCategory trailer or semitrailer: never guessed to be the ego.
+    trailer_entities: set[str] = field(default_factory=set)
     _taken: set[str] = field(default_factory=set)
 
     @property

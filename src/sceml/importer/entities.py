@@ -128,6 +128,8 @@ def _actor(build: Build, item: etree._Element, name: str) -> scm.Actor | None:
     if body is not None and body.tag == "Vehicle":
         category = str(body.get("vehicleCategory"))
         kind, guessed = VEHICLE_KINDS.get(category, ("Car", True))
+        if category in ("trailer", "semitrailer"):
+            build.trailer_entities.add(name)
         if guessed:
             build.report.add(
                 "guessed",
@@ -235,7 +237,11 @@ def _choose_ego(build: Build) -> None:
     if named:
         chosen, why = named[0], "by its name"
     else:
-        vehicles = [a for a in actors if not isinstance(a, scm.Pedestrian)]
+        vehicles = [
+            a
+            for a in actors
+            if not isinstance(a, scm.Pedestrian) and str(a.name) not in build.trailer_entities
+        ]
         chosen, why = (vehicles or actors)[0], "the first vehicle (no ego property or ego name)"
     chosen.isEgo = True
     build.ego = chosen
