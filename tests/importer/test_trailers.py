@@ -24,6 +24,7 @@ from sceml.export import export_to_file
 from sceml.importer import import_file, import_to_file
 from sceml.model import graph
 from sceml.model.loading import load
+from sceml.render.mapscene import build_scene
 from sceml.simulate import simulate
 from sceml.validation import validate
 from sceml.xosc import schema
@@ -227,3 +228,11 @@ def test_a_trailer_is_never_guessed_to_be_the_ego(tmp_path: Path) -> None:
     (tmp_path / "highway.xodr").write_bytes((SOURCE.parent / "highway.xodr").read_bytes())
     egos = [a.name for a in graph.root_node(import_file(first).scenario).actors if a.isEgo]
     assert egos == ["Car"]
+
+
+def test_the_map_view_draws_each_trailer_at_its_hitch() -> None:
+    scene = build_scene(import_file(SOURCE).scenario, SOURCE)
+    places = {mark.name: mark.place for mark in scene.actors}
+    assert all(place is not None for place in places.values()), scene.notes
+    assert (places["Car+"].centre.x, places["Car+"].centre.y) == pytest.approx((45.55, -1.75))
+    assert (places["Semi"].centre.x, places["Semi"].centre.y) == pytest.approx((94.0, -5.25))

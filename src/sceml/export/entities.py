@@ -7,6 +7,7 @@ from typing import Any
 
 import scemlmodel as scm
 
+from ..model.towing import is_towed
 from .context import Context
 from .controllers import init_activation, object_controller
 from .values import number
@@ -130,10 +131,7 @@ def towed_first(actors: list[scm.Actor]) -> list[scm.Actor]:
 def written_in_place(actor: scm.Actor) -> bool:
     """Whether an actor is written inside its tower's Trailer, not as a ScenarioObject of its
     own: it is towed and has no start (it starts at the hitch), so it has no Init either."""
-    if actor.startPosition is not None:
-        return False
-    others = getattr(actor.eContainer(), "actors", ())
-    return any(other.trailer is actor for other in others if other is not actor)
+    return actor.startPosition is None and is_towed(actor)
 
 
 def performance_of(kind: str) -> tuple[float, float, float]:

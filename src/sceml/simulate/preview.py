@@ -16,6 +16,7 @@ from ..model.documents import allowed_roots_of
 from ..model.graph import actors as scenario_actors
 from ..model.graph import root_node, scenario_level
 from ..model.params import concrete
+from ..model.towing import couplings, is_towed
 from ..modules.flatten import Flattened, expand
 from ..xosc import PLAYER_STEP
 from . import trailers
@@ -89,10 +90,10 @@ def _simulate(
     for actor in actors:
         world.actors[str(actor.name)] = (
             make_actor(actor, road_map, starts)
-            if actor.startPosition is not None or not trailers.is_towed(actor, actors)
+            if actor.startPosition is not None or not is_towed(actor)
             else trailer_at_rest(actor)
         )
-    world.couplings = trailers.couplings(actors)
+    world.couplings = couplings(actors)
     trailers.couple(world.actors, world.couplings)
     scheduler = Scheduler(list(flat.nodes), world)
     names = list(world.actors)

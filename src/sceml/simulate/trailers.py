@@ -11,52 +11,11 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass
 
-import scemlmodel as scm
-
-from ..model.params import concrete
+from ..model.towing import Coupling
 from .actors import Actor
 
-
-@dataclass(frozen=True)
-class Coupling:
-    """One tower and the actor it tows, with where its hitch and the trailer's coupler lie
-    ahead of their reference points (m)."""
-
-    tower: str
-    trailer: str
-    hitch: float
-    coupler: float
-
-
-def couplings(actors: Iterable[scm.Actor]) -> list[Coupling]:
-    """The model's couplings, each tower's before its trailer's own (a chain front to back)."""
-    actors = list(actors)
-    towed = {actor.trailer for actor in actors if actor.trailer is not None}
-    found: list[Coupling] = []
-    for first in actors:
-        if first in towed:
-            continue  # reached from its tower
-        current, seen = first, set()
-        while current.trailer is not None and current not in seen:
-            seen.add(current)
-            after = current.trailer
-            found.append(
-                Coupling(
-                    str(current.name),
-                    str(after.name),
-                    concrete(current, "hitchX"),
-                    concrete(after, "couplerX"),
-                )
-            )
-            current = after
-    return found
-
-
-def is_towed(actor: scm.Actor, actors: Iterable[scm.Actor]) -> bool:
-    """Whether another of `actors` tows this one."""
-    return any(other.trailer is actor for other in actors if other is not actor)
+__all__ = ["Coupling", "couple", "drag"]
 
 
 def couple(actors: Mapping[str, Actor], links: Iterable[Coupling]) -> None:

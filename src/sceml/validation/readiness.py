@@ -18,6 +18,7 @@ from pyecore.ecore import EObject
 import scemlmodel as scm
 
 from ..diagnostics import Severity
+from ..model.towing import is_towed
 from ..xosc.support import default_version, unsupported_reason, unsupported_setting
 from .context import Context
 from .reads import EXPANSION, LEVEL, SELF, Aspect, Reads
@@ -61,15 +62,8 @@ def map_is_set(root: scm.RootNode, context: Context) -> Iterator[Finding]:
 )
 def actor_has_start(actor: scm.Actor, context: Context) -> Iterator[Finding]:
     level = context.level_of(actor)
-    if level in _EXECUTABLE and actor.startPosition is None and not _towed(actor):
+    if level in _EXECUTABLE and actor.startPosition is None and not is_towed(actor):
         yield actor, f"actor {actor.name!r} has no start position ({level} scenario)"
-
-
-def _towed(actor: scm.Actor) -> bool:
-    """Whether another actor of the same root tows this one (release 1.4's Actor.trailer)."""
-    root = actor.eContainer()
-    others = getattr(root, "actors", ())
-    return any(other.trailer is actor for other in others if other is not actor)
 
 
 @constraint(
