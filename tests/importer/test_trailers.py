@@ -24,6 +24,7 @@ from sceml.export import export_to_file
 from sceml.importer import import_file, import_to_file
 from sceml.model import graph
 from sceml.model.loading import load
+from sceml.render.labels import root_lines
 from sceml.render.mapscene import build_scene
 from sceml.simulate import simulate
 from sceml.validation import validate
@@ -236,3 +237,10 @@ def test_the_map_view_draws_each_trailer_at_its_hitch() -> None:
     assert all(place is not None for place in places.values()), scene.notes
     assert (places["Car+"].centre.x, places["Car+"].centre.y) == pytest.approx((45.55, -1.75))
     assert (places["Semi"].centre.x, places["Semi"].centre.y) == pytest.approx((94.0, -5.25))
+
+
+def test_the_root_box_says_who_tows_whom() -> None:
+    scenario = import_file(SOURCE).scenario
+    lines = root_lines(graph.root_node(scenario), scenario)
+    assert "  Car: Car, ego, tows Car+" in lines and "  Tractor: Truck, tows Semi" in lines
+    assert "  Semi: Truck" in lines  # towed, tows nothing
