@@ -244,3 +244,20 @@ def test_the_root_box_says_who_tows_whom() -> None:
     lines = root_lines(graph.root_node(scenario), scenario)
     assert "  Car: Car, ego, tows Car+" in lines and "  Tractor: Truck, tows Semi" in lines
     assert "  Semi: Truck" in lines  # towed, tows nothing
+
+
+@pytest.mark.parametrize(("version", "hitches"), [("1.1", 0), ("1.3", 2)])
+def test_a_hitch_with_nothing_towed_is_written_only_where_the_version_has_one(
+    version: str, hitches: int, tmp_path: Path
+) -> None:
+    """esmini's catalog cars all have a TrailerHitch and an empty TrailerRef (cut-in.xosc's
+    car_white): such a 1.1 file exports back as 1.1, without the hitch it cannot say."""
+    scenario = import_file(SOURCE).scenario
+    actors = _actors(scenario)
+    graph.root_node(scenario).actors.remove(actors["Car+"])
+    actors["Car"].trailer = actors["Tractor"].trailer = None
+    assert actors["Car"].hitchX is not None
+    exported = tmp_path / "hitches.xosc"
+    export_to_file(scenario, exported, version=version, source_path=SOURCE)
+    assert schema.validate_file(exported, version) == []
+    assert sum(1 for _ in etree.parse(str(exported)).iter("TrailerHitch")) == hitches

@@ -106,8 +106,12 @@ def _coupling(ctx: Context, actor: scm.Actor) -> dict[str, Any]:
 
 
 def _offset(ctx: Context, actor: scm.Actor, feature: str) -> str | None:
-    """A hitch or coupler offset where the actor sets one (else no element at all)."""
-    return None if actor.eGet(feature) is None else ctx.values.text(actor, feature)
+    """A hitch or coupler offset where the actor sets one (else no element at all). Before 1.3
+    there is none to write: with nothing towed (SCEML-E008 refuses a trailer there) a hitch
+    means nothing, as esmini's catalog cars, which all have one, show."""
+    if actor.eGet(feature) is None or ctx.traits.rev_minor < 3:
+        return None
+    return ctx.values.text(actor, feature)
 
 
 def towed_first(actors: list[scm.Actor]) -> list[scm.Actor]:

@@ -77,15 +77,16 @@ def _coupling(build: Build, actor: scm.Actor, body: etree._Element) -> None:
     trailer = body.find("Trailer")
     if trailer is None:
         return
-    _needs_trailers(build, trailer)
     reference = trailer.find("TrailerRef")
     if reference is not None:
         named = str(reference.get("entityRef") or "")
         if named:
+            _needs_trailers(build, trailer)
             build.trailer_refs.append((actor, named, trailer))
         return
     inline = trailer.find("Trailer")
     if inline is not None:
+        _needs_trailers(build, trailer)
         towed = _add(build, inline, f"{actor.name}+")
         if towed is not None:
             actor.trailer = towed
