@@ -355,7 +355,8 @@ def measure(path: Path, work: Path, options: argparse.Namespace) -> Row:
     try:
         from sceml.export import export_to_file
 
-        export_to_file(document.root, again, version=imported.report.version, source_path=model)
+        version = imported.report.needs_version or imported.report.version
+        export_to_file(document.root, again, version=version, source_path=model)
     except SceMLError as error:
         row.why = row.why or f"export: {error}"
         return row

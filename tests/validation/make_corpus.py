@@ -893,6 +893,42 @@ on_map("r004-relative-start-on-sidewalk", "SCEML-R004")(_beside_ego)
 on_map("a008-start-relative-to-itself", "SCEML-A008")(_relative_starts("itself"))
 on_map("a008-starts-relative-in-a-cycle", "SCEML-A008 SCEML-A008")(_relative_starts("cycle"))
 on_map("a008-relative-start-names-nobody", "SCEML-A008")(_relative_starts("nobody"))
+
+
+def _towing(how: str) -> Callable[[ScenarioBuilder, scm.Actor], None]:
+    """Release 1.4: ego tows `trailer`, which has no start (it starts at the hitch: clean); or
+    ego tows itself, or ego and a truck tow each other (SCEML-A009)."""
+
+    def add(b: ScenarioBuilder, ego: scm.Actor) -> None:
+        if how == "itself":
+            ego.trailer = ego
+        elif how == "loop":
+            truck = b.actor("Truck", "truck", start=lane(1, -1, 40.0))
+            ego.trailer, truck.trailer = truck, ego
+        else:
+            ego.trailer = b.actor("Truck", "trailer")
+            ego.hitchX, ego.trailer.couplerX = scm.Value(value=-1.2), scm.Value(value=3.25)
+        b.chain(b.root, b.add("Accelerate", ego, targetSpeed=8.0), b.end)
+
+    return add
+
+
+on_map("a009-trailer-clean", "")(_towing("clean"))
+on_map("a009-tows-itself", "SCEML-A009")(_towing("itself"))
+on_map("a009-towing-loop", "SCEML-A009")(_towing("loop"))
+
+
+def _reverse(speed: float) -> Callable[[ScenarioBuilder, scm.Actor], None]:
+    """Release 1.4: ego slows to a negative target speed, reversing (clean within its limit)."""
+
+    def add(b: ScenarioBuilder, ego: scm.Actor) -> None:
+        b.chain(b.root, b.add("Decelerate", ego, targetSpeed=speed), b.end)
+
+    return add
+
+
+on_map("p007-reverse-target-speed-clean", "")(_reverse(-3.0))
+on_map("l001-reversing-too-fast", "SCEML-L001")(_reverse(-80.0))
 on_map("r004-car-off-road", "SCEML-R004")(_start(world(30.0, 30.0, h=0.0)))
 # A pedestrian may stand on the roadway (it crosses it): clean.
 on_map("r004-pedestrian-on-roadway", "")(_start(lane(1, -1, 30.0), kind="Pedestrian"))

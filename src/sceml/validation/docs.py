@@ -39,10 +39,11 @@ docs/validation-rules.md`. A test fails when it is stale.
   without listing pairs.
 - **Plausibility is an error.** A speed or rate beyond the actor kind's limit is an error (paper
   rule 5: the scenario is not valid). The limits are plausible maxima; a project that needs more
-  raises them with `--limits FILE`. A value is judged by the highest number it allows: a range or
-  uniform distribution by its max, a normal distribution by its upper bound (by its mean when
-  unbounded), a discrete one by its largest option. Unset parameters (language defaults) are not
-  judged.
+  raises them with `--limits FILE`. A value is judged by the largest size (absolute number) it
+  allows: a range or uniform distribution by its larger end, a normal distribution by its bounds
+  (and its mean where a side is unbounded), a discrete one by its largest option. A negative
+  speed is driving backwards (release 1.4), judged by its size. Unset parameters (language
+  defaults) are not judged.
 - **Levels.** A functional scenario may leave anything unset. Logical and concrete ones need every
   value without a language default (SCEML-P002, SCEML-M006); concrete ones hold single values only
   (SCEML-P001).
