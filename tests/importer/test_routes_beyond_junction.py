@@ -2,7 +2,13 @@
 junction 8). esmini 3.6 routes an AcquirePositionAction there through both junctions (checked
 by hand: the car is within 2 m of the destination at 23.6 s); SceML's TurnLeft to it validates
 (SCEML-R006 no longer wants it beyond the next junction only: `routing-test`), the preview
-drives the same way and arrives at the same step, and the export plays it back the same."""
+drives the same way and arrives at the same step, and the export plays it back the same.
+
+A turn that starts where an Init route has brought the car (route-then-turn.xosc, as
+`routing-test`) is written as a route from there, not from the car's start: `routing-test`'s
+re-export (its 15 m/s2 stop at esmini's 10) played 480 m off with the route from its start, the
+same as the original with the route from where it turns (both checked by hand with esmini 3.6;
+on this map both routes happen to lead the same way)."""
 
 from __future__ import annotations
 
@@ -10,6 +16,7 @@ import shutil
 from pathlib import Path
 
 import pytest
+from lxml import etree
 
 import scemlmodel as scm
 from sceml.diagnostics import Severity
@@ -23,6 +30,7 @@ from sceml.validation import validate
 
 FILES = Path(__file__).parent / "files"
 TWO_JUNCTIONS = FILES / "route-two-junctions.xosc"
+ROUTE_THEN_TURN = FILES / "route-then-turn.xosc"
 
 
 def _turn(scenario: scm.Scenario) -> scm.RoutedManeuver:
@@ -93,3 +101,26 @@ def test_the_export_routes_to_the_same_destination(tmp_path: Path, same) -> None
     for scenario in (first.scenario, again):
         graph.root_node(scenario).environment = None
     same(first.scenario, again)
+
+
+def test_a_turn_after_the_init_route_is_routed_from_where_the_car_is(tmp_path: Path) -> None:
+    exported = tmp_path / "then.xosc"
+    export_to_file(
+        import_file(ROUTE_THEN_TURN).scenario, exported, version="1.1", source_path=ROUTE_THEN_TURN
+    )
+    tree = etree.parse(str(exported))
+    (event,) = [e for e in tree.iter("Event") if e.get("name") == "GoNorth"]
+    places = [w.find("Position/LanePosition") for w in event.iter("Waypoint")]
+    # The reach position it waited for (road 32, past junction 7), then the destination.
+    assert [(p.get("roadId"), p.get("laneId"), p.get("s")) for p in places] == [
+        ("32", "-1", "50.0"),
+        ("34", "-1", "30.0"),
+    ]
+
+
+def test_the_preview_turns_where_the_init_route_has_brought_the_car() -> None:
+    run = simulate(import_file(ROUTE_THEN_TURN).scenario, ROUTE_THEN_TURN)
+    (turn,) = [n for n in run.timeline if n.kind == "TurnLeft"]
+    # esmini 3.6: the reach position holds at 12.85 s (the preview: 12.8 s, at exactly 2 m),
+    # the destination is reached at 23.6 s.
+    assert (turn.started, turn.finished) == pytest.approx((12.85, 23.6))

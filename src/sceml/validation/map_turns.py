@@ -22,6 +22,7 @@ from ..maps import (
 )
 from ..maps.positions import Located, centre
 from ..maps.routes import Route, routes_from, way_to
+from ..model.departure import latest_placing, place_after
 from ..model.graph import Flows, OwnFlows, reachable
 from .context import Context, is_kind
 from .map_rules import (
@@ -75,38 +76,20 @@ def _actions_by_actor(flows: Flows, context: Context) -> dict[object, list[scm.A
 
 
 def _departure(node: scm.ActionNode, context: Context) -> tuple[EObject | None, bool]:
-    """Where the actor is when `node` starts: the destination of its latest earlier routed
-    maneuver or trajectory, or the place of its latest earlier InLocationRadius (it is there
-    when that holds: `routing-test` turns where its Init route has brought it, far from its
-    start), else its start position; and whether a lane change or overtake of the actor since
-    then leaves its lane open."""
+    """Where the actor is when `node` starts (`model.departure`: the place of its latest earlier
+    routed maneuver, trajectory or InLocationRadius, else its start), and whether a lane change
+    or overtake of the actor since then leaves its lane open."""
     actor = node.referenceActor
     flows = _flows_of(node, context)
     earlier = _ancestors(node, flows, context)
     # In the graph's own order, so that of two parallel latest maneuvers the same one counts.
     mine = [n for n in _actions_by_actor(flows, context).get(actor, ()) if n in earlier]
-    placing = [n for n in mine if _places_its_actor(n)]
-    before_others = set().union(*(_ancestors(o, flows, context) for o in placing))
-    latest = [n for n in placing if n not in before_others]
+    latest = latest_placing(mine, lambda other: _ancestors(other, flows, context))
     since = reachable(latest, backwards=False, flows=flows) if latest else set(earlier)
     lane_open = any(isinstance(n, scm.LaneChange | scm.Overtake) for n in mine if n in since)
     if latest:
-        last = latest[0]
-        if isinstance(last, scm.FollowTrajectory):
-            return (last.waypoints[-1] if last.waypoints else None), lane_open
-        if isinstance(last, scm.InLocationRadius):
-            return last.position, lane_open
-        return last.destination, lane_open
+        return place_after(latest[0]), lane_open
     return (actor.startPosition if actor is not None else None), lane_open
-
-
-def _places_its_actor(node: scm.ActionNode) -> bool:
-    """Whether the actor is at a known place when `node` is done: at a routed maneuver's
-    destination, a trajectory's last point, or within an InLocationRadius (one that holds as the
-    actor leaves the place says nothing of where it goes)."""
-    if isinstance(node, scm.RoutedManeuver | scm.FollowTrajectory):
-        return True
-    return isinstance(node, scm.InLocationRadius) and node.edge.name in ("none", "rising")
 
 
 def _lanes_at(road_map: RoadMap, point: Located, usable: frozenset[str]) -> list[LaneCoordinate]:
