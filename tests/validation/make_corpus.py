@@ -945,11 +945,13 @@ def _drive_at_rest(b: ScenarioBuilder, ego: scm.Actor) -> None:
 
 
 def _turn_after_trajectory(b: ScenarioBuilder, ego: scm.Actor) -> None:
-    """The car `other` from the north follows its lane to s = 20, then turns left (east)."""
+    """The car `other` from the north follows its lane to 10 m behind the ego (a place relative
+    to it, which the exported route cannot start from), then turns left (east)."""
     other = b.actor("Car", "other", start=lane(1, 1, 30.0), speed=5.0)
+    behind = relative_object(ego, -10.0)
     b.chain(
         b.root,
-        b.add("FollowTrajectory", other, waypoints=[lane(1, 1, 25.0), lane(1, 1, 20.0)]),
+        b.add("FollowTrajectory", other, waypoints=[lane(1, 1, 25.0), behind]),
         b.add("TurnLeft", other, destination=lane(2, -1, 20.0)),
         b.end,
     )

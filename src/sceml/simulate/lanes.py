@@ -80,10 +80,10 @@ def _build_lane_path(road_map: RoadMap, spot: LaneSpot, via: tuple[Route, ...]) 
     road, lane, s_from, forward = spot.road, spot.lane, spot.s, spot.forward
     travelled = 0.0
     dead_end = False
-    # A chain of routes is followed to its end, however far (each junction adds at most a
-    # connecting road and the roads before the next one).
+    # A chain of routes is followed past its last junction, however far (with up to
+    # `_MAX_ROADS` more roads for each junction after the first).
     entries = {route.entry_road for route in via[1:]}
-    for _ in range(_MAX_ROADS * (1 + len(via))):
+    for _ in range(_MAX_ROADS * (1 + len(entries))):
         ss, xy = centre_samples(road_map, road, lane)
         s_from = min(max(s_from, float(ss[0])), float(ss[-1]))
         first = (float(np.interp(s_from, ss, xy[:, 0])), float(np.interp(s_from, ss, xy[:, 1])))
