@@ -12,6 +12,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from lxml import etree
 from numpy.polynomial import Polynomial
 
 import scemlmodel as scm
@@ -25,6 +26,7 @@ from sceml.model.build import lane, world
 from sceml.model.params import discrete, normal, span, uniform, value
 
 CM = 0.01  # m: the agreement every conversion must reach
+IMPORT_FILES = Path(__file__).resolve().parents[1] / "importer" / "files"
 
 
 @pytest.fixture(scope="module")
@@ -553,3 +555,12 @@ def test_a_way_through_several_junctions(built: dict[str, RoadMap]) -> None:
     assert len(way_to(road_map, sg.FIRST_WEST, -1, sg.BETWEEN) or []) == 1
     # No connection turns back: the west arm's own westbound lane is out of reach from it.
     assert way_to(road_map, sg.FIRST_WEST, -1, sg.FIRST_WEST, 1) is None
+
+
+def test_the_import_tests_two_tees_map_is_the_builders(tmp_path: Path) -> None:
+    """tests/importer/files/two-tees.xodr is `two_tees_network`'s output (all but its date)."""
+    built, kept = sg.two_tees_network(tmp_path), IMPORT_FILES / "two-tees.xodr"
+    roots = [etree.parse(str(path)).getroot() for path in (built, kept)]
+    for root in roots:
+        root.find("header").attrib.pop("date", None)
+    assert etree.tostring(roots[0]) == etree.tostring(roots[1])
