@@ -105,9 +105,8 @@ def test_the_export_routes_to_the_same_destination(tmp_path: Path, same) -> None
 
 def test_a_turn_after_the_init_route_is_routed_from_where_the_car_is(tmp_path: Path) -> None:
     exported = tmp_path / "then.xosc"
-    export_to_file(
-        import_file(ROUTE_THEN_TURN).scenario, exported, version="1.1", source_path=ROUTE_THEN_TURN
-    )
+    first = import_file(ROUTE_THEN_TURN).scenario
+    export_to_file(first, exported, version="1.1", source_path=ROUTE_THEN_TURN)
     tree = etree.parse(str(exported))
     (event,) = [e for e in tree.iter("Event") if e.get("name") == "GoNorth"]
     places = [w.find("Position/LanePosition") for w in event.iter("Waypoint")]
@@ -116,6 +115,22 @@ def test_a_turn_after_the_init_route_is_routed_from_where_the_car_is(tmp_path: P
         ("32", "-1", "50.0"),
         ("34", "-1", "30.0"),
     ]
+
+
+@pytest.mark.xfail(
+    strict=True,
+    reason="the Init route is kept as an opaque node and written back as a story event at "
+    "t = 0 (esmini plays it as the Init action); read again, that story AssignRouteAction "
+    "becomes a Cross to its last waypoint, a straight trajectory on export (docs/import.md)",
+)
+def test_an_init_route_survives_a_second_round_trip(tmp_path: Path, same) -> None:
+    exported = tmp_path / "then.xosc"
+    first = import_file(ROUTE_THEN_TURN).scenario
+    export_to_file(first, exported, version="1.1", source_path=ROUTE_THEN_TURN)
+    again = import_file(exported, allow=[FILES]).scenario
+    for scenario in (first, again):
+        graph.root_node(scenario).environment = None
+    same(first, again)
 
 
 def test_the_preview_turns_where_the_init_route_has_brought_the_car() -> None:
