@@ -952,6 +952,16 @@ on_map("r006-turn-left-is-a-right-turn", "SCEML-R006")(_turn("TurnLeft", lane(4,
 on_map("r006-turn-right-unreachable", "SCEML-R006")(_turn("TurnRight", lane(1, -1, 20.0)))
 
 
+@on_map("r006-turn-after-the-junction-is-passed", "SCEML-R006")
+def _turn_once_through(b: ScenarioBuilder, ego: scm.Actor) -> None:
+    """The car `other` from the north turns left only once it is within 2 m of a point on the
+    south arm, past the junction: from there no junction is ahead (from its start, the left
+    turn would be fine)."""
+    other = b.actor("Car", "other", start=lane(1, 1, 30.0), speed=5.0)
+    through = b.add("InLocationRadius", other, position=lane(3, -1, 30.0), radius=2.0)
+    b.chain(b.root, through, b.add("TurnLeft", other, destination=lane(2, -1, 20.0)), b.end)
+
+
 def _walk(destination: scm.Position) -> Callable[[ScenarioBuilder, scm.Actor], None]:
     """A pedestrian on the west arm's south sidewalk (road 4, lane 2) crosses to `destination`."""
 
@@ -971,11 +981,13 @@ def _drive_at_rest(b: ScenarioBuilder, ego: scm.Actor) -> None:
 
 
 def _turn_after_trajectory(b: ScenarioBuilder, ego: scm.Actor) -> None:
-    """The car `other` from the north follows its lane to s = 20, then turns left (east)."""
+    """The car `other` from the north follows its lane to 10 m behind the ego (a place relative
+    to it, which the exported route cannot start from), then turns left (east)."""
     other = b.actor("Car", "other", start=lane(1, 1, 30.0), speed=5.0)
+    behind = relative_object(ego, -10.0)
     b.chain(
         b.root,
-        b.add("FollowTrajectory", other, waypoints=[lane(1, 1, 25.0), lane(1, 1, 20.0)]),
+        b.add("FollowTrajectory", other, waypoints=[lane(1, 1, 25.0), behind]),
         b.add("TurnLeft", other, destination=lane(2, -1, 20.0)),
         b.end,
     )
