@@ -23,7 +23,8 @@ PEAK_FACTOR = {"linear": 1.0, "sinusoidal": math.pi / 2, "cubic": 1.5}
 
 def rate_seconds(build: Build, actor: scm.Actor, shape: str, rate: float) -> float | None:
     """The duration of a one-lane change at lateral `rate`, over the width of the lane the
-    actor starts in; None without a map, a start on it, or a rate above 0 (a step)."""
+    actor starts in; None without a map or a start on it, for a rate of 0 or less, or a step
+    (which takes no time whatever its rate)."""
     width = start_lane_width(build, actor)
     if width is None or rate <= 0 or shape not in PEAK_FACTOR:
         return None

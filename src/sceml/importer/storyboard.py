@@ -206,9 +206,10 @@ class Storyboard:
         return join
 
     def _runs(self, info: Event, nodes: list[scm.GraphElement]) -> None:
-        """The event's maximumExecutionCount as its node's maxRuns (one action, or controller
-        changes only, of kinds the export writes as one event); otherwise reported: SceML repeats nodes one by one, not a
-        group, and players cannot repeat an event together with the event of its finish."""
+        """The event's maximumExecutionCount as its nodes' maxRuns (one action, or controller
+        changes only, of kinds the export writes as one event); otherwise reported: SceML
+        repeats nodes one by one, not a group, and players cannot repeat an event together
+        with the event of its finish."""
         count = int(info.element.get("maximumExecutionCount", "1"))
         if count <= 1:
             return
