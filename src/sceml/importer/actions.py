@@ -21,6 +21,7 @@ from ..xosc import PLAYER_STEP
 from . import traced
 from .context import Build, last_name
 from .geometry import classify
+from .lane_rate import rate_seconds
 from .opaque import summary
 from .placing import place
 from .positions import lane_id, number
@@ -219,9 +220,13 @@ def _lane_change(
         distance = number(dynamics, "value")
     elif dynamics is not None:
         speed = motion.speed.get(str(request.actor.name))
+        value = number(dynamics, "value")
+        timed = dynamics.get("dynamicsDimension") == "time"
+        if dynamics.get("dynamicsDimension") == "rate":
+            # A peak lateral speed: as long as players take for it (`lane_rate`).
+            seconds = rate_seconds(build, request.actor, shape, value)
+            value, timed = (value, False) if seconds is None else (seconds, True)
         if speed:
-            value = number(dynamics, "value")
-            timed = dynamics.get("dynamicsDimension") == "time"
             distance = speed * (_lane_change_time(value) if timed else value)
             _guess(
                 build,
