@@ -17,9 +17,9 @@ import sys
 from pathlib import Path
 
 from pyecore.ecore import EObject
+from scale_scenarios import write
 
 import scemlmodel as scm
-from scale_scenarios import write
 from sceml.model.loading import load
 from sceml.model.saving import save
 from sceml.model.traversal import all_contents
