@@ -70,13 +70,20 @@ def single_value(obj: EObject, name: str) -> Any:
         return getattr(obj, name)
     holder = obj.__dict__.get(name)
     if holder is None:
-        return _default(type(obj), name)
+        key = (type(obj), name)
+        found = _DEFAULTS.get(key, _DEFAULTS)
+        if found is _DEFAULTS:
+            found = _DEFAULTS[key] = _default(*key)
+        return found
     if type(holder) is EValue:
         return holder._value
     return getattr(obj, name)
 
 
-@cache
+#: Each class's default of each feature read unset, worked out once.
+_DEFAULTS: dict[tuple[type, str], Any] = {}
+
+
 def _default(cls: type, name: str) -> Any:
     feature = getattr(cls, name)
     if not isinstance(feature, EStructuralFeature) or feature.many:
