@@ -15,8 +15,10 @@ saves it with sceml.model. Then, side by side in one run:
 
 Issue 31's goal: at most 1.5x EMF at 50k nodes, with process start.
 
-`--validate N` also builds a scenario of N nodes and runs `sceml validate` on it in a fresh
-process, reporting its wall time and peak resident memory. Needs javac, java and
+`--validate N` also builds a scenario of N nodes and runs `sceml validate` on it in fresh
+processes (`--validate-rounds`), reporting wall and CPU time, the time from the summary line to
+the process's end, and peak resident memory, beside a fresh `python -c` lxml parse of the same
+file (the anchor), the runs interleaved. Needs javac, java and
 /usr/share/java/eclipse-emf-*.jar.
 
     .venv/bin/python benchmarks/xmi_load.py [--sizes 10000,50000] [--repeat 5] [--validate 208000]
@@ -208,20 +210,59 @@ def measure(nodes: int, folder: Path, classpath: str, repeat: int) -> None:
     )
 
 
-def validate_fresh(nodes: int, folder: Path) -> None:
-    """Print the wall time and peak memory of `sceml validate` on `nodes` nodes, fresh process."""
-    path = saved_valid(nodes, folder / f"validate-{nodes}.xmi")
+#: The anchor of `--validate`: the interpreter, lxml and a parse of the same file.
+LXML_PARSE = "import sys; from lxml import etree; etree.parse(sys.argv[1])"
+
+
+def run_timed(command: list[str], folder: Path) -> tuple[float, float, float, float, int]:
+    """Wall seconds, seconds from the last line of stdout (the summary) to the exit, CPU
+    seconds (user + system), peak resident MB and exit status of one fresh process.
+
+    The peak comes from GNU time, which starts the command from its own small process: a child
+    this script started directly would report this script's own peak (Linux keeps the
+    high-water mark of the memory a vforked child starts in), and this script has just built
+    and validated the whole scenario.
+    """
+    usage_file = folder / "usage.txt"
+    timed = ["/usr/bin/time", "-o", str(usage_file), "-f", "%U %S %M", *command]
     started = time.perf_counter()
-    process = subprocess.Popen(
-        [str(SCEML), "validate", str(path)], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE
+    process = subprocess.Popen(timed, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL)
+    last_line = started
+    assert process.stdout is not None
+    for _ in process.stdout:  # the summary is the last line `sceml validate` writes
+        last_line = time.perf_counter()
+    status = process.wait()
+    ended = time.perf_counter()
+    user, system, peak_kb = usage_file.read_text().split()[-3:]
+    after = ended - last_line if last_line > started else 0.0
+    return ended - started, after, float(user) + float(system), int(peak_kb) / 1024, status
+
+
+def validate_fresh(nodes: int, folder: Path, rounds: int) -> None:
+    """Print wall time, time after the summary and peak memory of `sceml validate` on `nodes`
+    nodes in fresh processes, beside an lxml parse of the same file, the runs interleaved."""
+    path = saved_valid(nodes, folder / f"validate-{nodes}.xmi")
+    commands = {
+        "sceml validate": [str(SCEML), "validate", str(path)],
+        "lxml parse": [sys.executable, "-c", LXML_PARSE, str(path)],
+    }
+    runs: dict[str, list[tuple[float, float, float, float, int]]] = {n: [] for n in commands}
+    for number in range(rounds):
+        for name in list(commands)[number % 2 :] + list(commands)[: number % 2]:
+            runs[name].append(run_timed(commands[name], folder))
+    ours, anchor = runs["sceml validate"], runs["lxml parse"]
+    wall, after, cpu, peak = (statistics.median(run[i] for run in ours) for i in range(4))
+    anchor_wall, _, anchor_cpu, anchor_peak = (
+        statistics.median(run[i] for run in anchor) for i in range(4)
     )
-    _, status, usage = os.wait4(process.pid, 0)  # this child's own peak, not every child's
-    wall_s = time.perf_counter() - started
-    errors = process.stderr.read().decode() if process.stderr else ""
     print(
-        f"{nodes:>6} nodes, {path.stat().st_size / 1e6:.1f} MB: sceml validate in a fresh process "
-        f"{wall_s:.1f} s, peak RSS {usage.ru_maxrss / 1024:.0f} MB, "
-        f"exit {os.waitstatus_to_exitcode(status)}{' ' + errors.strip() if errors else ''}"
+        f"{nodes:>6} nodes, {path.stat().st_size / 1e6:.1f} MB, valid, fresh processes "
+        f"(medians of {rounds}, interleaved):\n"
+        f"    sceml validate {wall:.2f} s ({cpu:.2f} CPU s), of which after the summary "
+        f"{after:.2f} s; peak RSS {peak:.0f} MB; exit {sorted({run[4] for run in ours})}\n"
+        f"    lxml parse {anchor_wall:.2f} s ({anchor_cpu:.2f} CPU s), peak RSS "
+        f"{anchor_peak:.0f} MB: ours {wall / anchor_wall:.1f}x the time, "
+        f"{cpu / anchor_cpu:.1f}x the CPU, {peak / anchor_peak:.2f}x the memory"
     )
 
 
@@ -235,6 +276,9 @@ def main() -> int:
     parser.add_argument(
         "--validate", type=int, default=0, help="also validate a scenario of this many nodes"
     )
+    parser.add_argument(
+        "--validate-rounds", type=int, default=1, help="fresh processes each for --validate"
+    )
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as temporary:
         folder = Path(temporary)
@@ -243,7 +287,7 @@ def main() -> int:
             for size in (int(s) for s in args.sizes.split(",")):
                 measure(size, folder, classpath, args.repeat)
         if args.validate:
-            validate_fresh(args.validate, folder)
+            validate_fresh(args.validate, folder, args.validate_rounds)
     return 0
 
 

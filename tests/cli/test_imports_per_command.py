@@ -29,9 +29,9 @@ print(json.dumps(sorted(m for m in {heavy!r} if m in sys.modules)))
 """
 
 
-def _imported(tmp_path: Path, *arguments: str) -> list[str]:
+def _imported(tmp_path: Path, *arguments: str, watched: tuple[str, ...] = HEAVY) -> list[str]:
     ran = subprocess.run(
-        [sys.executable, "-c", SCRIPT.format(heavy=HEAVY), *arguments],
+        [sys.executable, "-c", SCRIPT.format(heavy=watched), *arguments],
         capture_output=True,
         text=True,
         cwd=tmp_path,
@@ -45,6 +45,24 @@ def test_validate_reads_the_map_with_numpy_and_nothing_else_heavy(tmp_path: Path
     # UIS1 names the intersection map, whose geometry numpy evaluates.
     uis1 = ROOT / "examples" / "uis1-concrete.xmi"
     assert _imported(tmp_path, "validate", str(uis1)) == ["numpy"]
+
+
+def test_validate_expands_module_uses_without_extracting_or_the_library_listing(
+    tmp_path: Path,
+) -> None:
+    # UIS2 uses a library module: validation expands it (sceml.modules.expansion) and needs
+    # neither extraction, the library listing with the scenario builder, nor the store.
+    watched = (
+        "sceml.modules.expansion",
+        "sceml.modules.extract",
+        "sceml.modules.library",
+        "sceml.modules.store",
+        "sceml.model.build",
+    )
+    uis2 = ROOT / "examples" / "uis2-concrete.xmi"
+    assert _imported(tmp_path, "validate", str(uis2), watched=watched) == [
+        "sceml.modules.expansion"
+    ]
 
 
 @pytest.mark.parametrize("example", ["uis1-concrete.xmi", "uis2-concrete.xmi"])

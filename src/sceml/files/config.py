@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import json
 import re
-import tomllib
+import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -53,6 +53,8 @@ def load_config(path: str | Path, what: str, max_bytes: int = CONFIG_MAX_BYTES) 
     malformed: tuple[type[Exception], ...] = (ValueError,)  # JSON's and TOML's errors
     try:
         if suffix == ".toml":
+            import tomllib  # here, not with the module: every `sceml validate` imports it
+
             return tomllib.loads(text)
         if suffix == ".json":
             return json.loads(text)
@@ -143,5 +145,7 @@ def _config_error_line(error: Exception) -> int | None:
     mark = getattr(error, "problem_mark", None) or getattr(error, "context_mark", None)
     if mark is not None:
         return int(mark.line) + 1
-    found = _TOML_LINE.search(str(error)) if isinstance(error, tomllib.TOMLDecodeError) else None
+    tomllib = sys.modules.get("tomllib")  # imported if a TOML file was read
+    from_toml = tomllib is not None and isinstance(error, tomllib.TOMLDecodeError)
+    found = _TOML_LINE.search(str(error)) if from_toml else None
     return int(found.group(1)) if found else None

@@ -13,6 +13,7 @@ from ..diagnostics import Severity
 from ..maps.resolve import RELATIVE_KINDS, is_relative
 from ..model import catalog
 from ..model.graph import nodes_of
+from ..model.traversal import single_value
 from .context import Context
 from .reads import ACTORS, SELF, VALUE, Aspect, Reads
 from .registry import Finding, constraint
@@ -76,7 +77,7 @@ def actors_declared_here(node: scm.ActionNode, context: Context) -> Iterator[Fin
     declared = declared_participants(graph, context)
     where = "module roles" if isinstance(graph, scm.ModuleDefinition) else "scenario's actors"
     for feature in ("referenceActor", "targetActor"):
-        participant = node.eGet(feature)
+        participant = single_value(node, feature)
         if participant is not None and participant not in declared:
             yield node, f"{feature} {label(participant)} of {node.name!r} is not one of the {where}"
 

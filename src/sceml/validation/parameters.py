@@ -13,6 +13,7 @@ from ..diagnostics import Severity
 from ..model import catalog
 from ..model.graph import root_node
 from ..model.params import describe
+from ..model.traversal import single_value
 from .context import Context, is_kind
 from .reads import LEVEL, MODULES, SELF, VALUE, Aspect, Reads
 from .registry import Finding, constraint
@@ -111,7 +112,7 @@ def no_spread_when_concrete(value: EObject, context: Context) -> Iterator[Findin
 
 def _missing_parameters(owner: EObject) -> Iterator[str]:
     for spec in catalog.parameters(owner.eClass.name):
-        if spec.required and owner.eGet(spec.name) is None:
+        if spec.required and single_value(owner, spec.name) is None:
             yield spec.name
     for kind, feature, minimum in REQUIRED_POSITIONS:
         if is_kind(owner.eClass.name, kind):
@@ -280,7 +281,7 @@ _NAMING = {
 )
 def global_value_declared(node: scm.ActionNode, context: Context) -> Iterator[Finding]:
     feature, variable = _NAMING[node.eClass.name]
-    name = str(node.eGet(feature) or "")
+    name = str(single_value(node, feature) or "")
     root = root_node(node.eContainer()) if isinstance(node.eContainer(), scm.Scenario) else None
     if not name or root is None:
         return

@@ -17,6 +17,7 @@ import scemlmodel as scm
 from ..diagnostics import Severity
 from ..model import catalog
 from ..model.params import describe
+from ..model.traversal import single_value
 from .context import Context, performer
 from .parameters import parameter_path
 from .reads import VALUE, Reads
@@ -58,7 +59,7 @@ def _over_limit(owner: EObject, context: Context, key: str, unit: str) -> Iterat
     if limit is None:
         return
     for name in catalog.limited(owner.eClass.name, key):
-        value = owner.eGet(name)
+        value = single_value(owner, name)
         top = highest(value)
         if top is not None and top > limit:
             in_kmh = f" ({limit * 3.6:g} km/h)" if unit == "m/s" else ""

@@ -9,6 +9,7 @@ import scemlmodel as scm
 
 from ..diagnostics import Severity
 from ..model.graph import nodes_of, topological_order
+from ..model.traversal import single_value
 from .context import Context
 from .reads import SELF, SHAPE, Reads
 from .registry import Finding, constraint
@@ -212,7 +213,7 @@ def merges_only_at_joins(node: scm.GraphElement, context: Context) -> Iterator[F
     reads=Reads(SELF),
 )
 def flow_has_both_ends(flow: scm.Flow, context: Context) -> Iterator[Finding]:
-    missing = [end for end in ("source", "target") if flow.eGet(end) is None]
+    missing = [end for end in ("source", "target") if single_value(flow, end) is None]
     if missing:
         present = flow.target if flow.source is None else flow.source
         near = f" (the other end is {present.name!r})" if present is not None else ""
@@ -230,7 +231,7 @@ def flow_has_both_ends(flow: scm.Flow, context: Context) -> Iterator[Finding]:
 def flow_stays_in_its_graph(flow: scm.Flow, context: Context) -> Iterator[Finding]:
     graph = flow.eContainer()
     for end in ("source", "target"):
-        node = flow.eGet(end)
+        node = single_value(flow, end)
         if node is not None and node.eContainer() is not graph:
             yield flow, f"the flow's {end} {node.name!r} belongs to another graph"
 
@@ -287,7 +288,7 @@ def node_names_unique(graph: scm.Graph, context: Context) -> Iterator[Finding]:
 def runs_are_possible(node: scm.ActionNode, context: Context) -> Iterator[Finding]:
     from ..xosc.support import repeatable  # the export's planners agree on which kinds can
 
-    runs = node.maxRuns
+    runs = single_value(node, "maxRuns")
     if runs < 1:
         yield node, f"{node.name!r} may run {runs} times: a node runs at least once (maxRuns 1)"
     elif runs > 1 and isinstance(node, scm.Condition):
