@@ -49,8 +49,9 @@ def speed_events(
     # by those that came out as changes, until that set no longer changes (a clean recording
     # has no such runs and is fitted once).
     kept = list(range(len(spans)))
+    fits: dict[tuple[int, ...], _Fit | None] = {}  # a run's fit depends only on its bounds
     for _ in range(_REFITS):
-        found = _fit_spans(motion, thresholds, limits, spans, kept)
+        found = _fit_spans(motion, thresholds, limits, spans, kept, fits)
         now = sorted(found)
         if now == kept:
             break
@@ -68,9 +69,12 @@ def _fit_spans(
     limits: RateLimits | None,
     spans: list[tuple[int, int]],
     bounding: list[int],
+    fits: dict[tuple[int, ...], _Fit | None],
 ) -> dict[int, Event]:
     """Each run of `spans` fitted as a speed change, between its neighbours among `bounding`
-    (indices into spans); the runs that are changes, by index."""
+    (indices into spans); the runs that are changes, by index. `fits` keeps each fit by
+    what it depends on (the run and the bounds of its plateaus), so a refit whose bounds did
+    not change costs nothing."""
     step = motion.step
     last = len(motion.times) - 1
     events: dict[int, Event] = {}
@@ -85,23 +89,28 @@ def _fit_spans(
         previous = max((spans[j][1] for j in bounding if j < i), default=0)
         following = min((spans[j][0] for j in bounding if j > i), default=last)
         before, after = max(previous, a - margin), min(following, b + margin)
-        fitted = _fit_ramp(
-            motion.times,
-            motion.along,
-            before,
-            a,
-            b,
-            after,
-            step,
-            # Only a ramp of an actor already moving is taken back to the start: a standing
-            # actor's start is an event of its own, whose time a condition may explain.
-            thresholds.smoothing_window if motion.moving[0] else 0.0,
-            limits,
-            # An actor that stood before the change (no motion shows in the plateau before
-            # it, short of the half window by which the chord shows a start early) starts
-            # from 0: not a parameter (noise made a slow creep of it, and the ramp late).
-            standing=not motion.moving[before : max(before + 1, a - half)].any(),
-        )
+        # An actor that stood before the change (no motion shows in the plateau before it,
+        # short of the half window by which the chord shows a start early) starts from 0:
+        # not a parameter (noise made a slow creep of it, and the ramp late).
+        standing = not motion.moving[before : max(before + 1, a - half)].any()
+        key = (a, b, before, after, int(standing))
+        if key not in fits:
+            fits[key] = _fit_ramp(
+                motion.times,
+                motion.along,
+                before,
+                a,
+                b,
+                after,
+                step,
+                # Only a ramp of an actor already moving is taken back to the start: a
+                # standing actor's start is an event of its own, whose time a condition may
+                # explain.
+                thresholds.smoothing_window if motion.moving[0] else 0.0,
+                limits,
+                standing=standing,
+            )
+        fitted = fits[key]
         if fitted is None:
             continue
         t1, t2, v0, v1, starts = fitted
@@ -150,6 +159,10 @@ def _runs(mask: NDArray[np.bool_], gap: int) -> list[tuple[int, int]]:
     return spans
 
 
+#: A fitted speed change: start, end, speed before and after, and the range of its start.
+_Fit = tuple[float, float, float, float, tuple[float, float] | None]
+
+
 def _fit_ramp(
     times: Array,
     along: Array,
@@ -162,7 +175,7 @@ def _fit_ramp(
     limits: RateLimits | None = None,
     *,
     standing: bool = False,
-) -> tuple[float, float, float, float, tuple[float, float] | None] | None:
+) -> _Fit | None:
     """Least-squares fit of the distance driven over [before, after]: speed v0 until t1, a
     linear change to v1 at t2, then v1; and on a noisy recording the range of starts that
     fit as well (`_start_range`), else None.
@@ -230,20 +243,16 @@ def _start_range(
     bound = error + _AS_WELL * variance
     middle = (t1 + t2) / 2
     starts = np.arange(max(window[0], middle - 4.0), middle - step / 4, step / 4)
-    kept = []
-    for start in starts:
-        fitted = _best_ramp(
-            window,
-            values,
-            np.array([start]),
-            np.array([2 * middle - start]),
-            standing=standing,
-        )
-        if fitted is not None and fitted[4] <= bound:
-            kept.append(float(start))
-    if not kept:
+    ends = 2 * middle - starts
+    inside = ends <= window[-1]
+    starts, ends = starts[inside], ends[inside]
+    if not len(starts):
         return None
-    return min(kept[0], t1), max(kept[-1], t1)
+    _, errors = _ramp_fits(window, values, starts, ends, standing=standing)
+    kept = starts[errors <= bound]
+    if not len(kept):
+        return None
+    return min(float(kept[0]), t1), max(float(kept[-1]), t1)
 
 
 #: How many times the noise's variance a ramp must explain beyond a steady speed to count
@@ -275,15 +284,7 @@ def _best_ramp(
     t1, t2 = t1[keep], t2[keep]
     if not len(t1):
         return None
-    ramp = _ramp_integral(window[None, :], t1[:, None], t2[:, None])
-    base = np.broadcast_to(window - window[0], ramp.shape)
-    before = np.zeros_like(ramp) if standing else base - ramp
-    design = np.stack([np.ones_like(ramp), before, ramp], axis=2)
-    normal = np.einsum("pni,pnj->pij", design, design)
-    right = np.einsum("pni,n->pi", design, values)
-    solution = np.linalg.solve(normal + 1e-9 * np.eye(3), right[..., None])[..., 0]
-    fitted = np.einsum("pni,pi->pn", design, solution)
-    errors = ((fitted - values) ** 2).sum(axis=1)
+    solution, errors = _ramp_fits(window, values, t1, t2, standing=standing)
     if limits is not None:
         v0, v1 = solution[:, 1], solution[:, 2]
         rate = np.abs(v1 - v0) / (t2 - t1)
@@ -299,6 +300,46 @@ def _best_ramp(
         float(solution[best, 2]),
         float(errors[best]),
     )
+
+
+def _ramp_fits(
+    window: Array, values: Array, t1: Array, t2: Array, *, standing: bool = False
+) -> tuple[Array, Array]:
+    """For each candidate pair (t1[p], t2[p]): the least-squares (s0, v0, v1) of the distance
+    driven, and its squared error.
+
+    The design has the columns 1, the time driven before the ramp (zero when `standing`) and
+    the ramp's integral r; its normal equations need only the sums of r, r², r·t and r·s per
+    pair (matrix-vector products), not the pairs' whole design matrices, which cost far more
+    to build and multiply (most of an extraction's time before).
+    """
+    ramp = _ramp_integral(window[None, :], t1[:, None], t2[:, None])
+    base = window - window[0]
+    n = float(len(window))
+    sum_r = ramp.sum(axis=1)
+    sum_rr = np.einsum("pn,pn->p", ramp, ramp)
+    sum_rb = ramp @ base
+    sum_rv = ramp @ values
+    sum_b, sum_bb = float(base.sum()), float(base @ base)
+    sum_v, sum_bv = float(values.sum()), float(base @ values)
+    normal = np.zeros((len(t1), 3, 3))
+    right = np.zeros((len(t1), 3))
+    normal[:, 0, 0] = n
+    normal[:, 0, 2] = normal[:, 2, 0] = sum_r
+    normal[:, 2, 2] = sum_rr
+    right[:, 0] = sum_v
+    right[:, 2] = sum_rv
+    if not standing:
+        # The column before the ramp is base - r.
+        normal[:, 0, 1] = normal[:, 1, 0] = sum_b - sum_r
+        normal[:, 1, 1] = sum_bb - 2 * sum_rb + sum_rr
+        normal[:, 1, 2] = normal[:, 2, 1] = sum_rb - sum_rr
+        right[:, 1] = sum_bv - sum_rv
+    solution = np.linalg.solve(normal + 1e-9 * np.eye(3), right[..., None])[..., 0]
+    s0, v0, v1 = solution[:, 0:1], solution[:, 1:2], solution[:, 2:3]
+    fitted = s0 + v1 * ramp if standing else s0 + v0 * base + (v1 - v0) * ramp
+    errors = ((fitted - values) ** 2).sum(axis=1)
+    return solution, errors
 
 
 def _ramp_integral(t: Array, t1: Array, t2: Array) -> Array:
