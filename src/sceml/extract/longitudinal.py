@@ -159,6 +159,8 @@ def _runs(mask: NDArray[np.bool_], gap: int) -> list[tuple[int, int]]:
     return spans
 
 
+#: The spacing (s) of the first, coarse search for a ramp's start and end.
+_COARSE_GRID = 0.1
 #: A fitted speed change: start, end, speed before and after, and the range of its start.
 _Fit = tuple[float, float, float, float, tuple[float, float] | None]
 
@@ -191,11 +193,20 @@ def _fit_ramp(
     if len(window) < 4:
         return None
     reach = (max(b - a, 4) + 6) * step
-    starts = np.arange(max(times[before], times[a] - reach), min(times[a] + reach, times[b]), step)
-    ends = np.arange(max(times[a], times[b] - reach), min(times[b] + reach, times[after]), step)
+    # A fast recording is searched on a grid of about a tenth of a second first, then at its
+    # own step about the best pair: the pairs, and the cost, grow with the square of the rate.
+    grid = step * max(1, round(_COARSE_GRID / step))
+    starts = np.arange(max(times[before], times[a] - reach), min(times[a] + reach, times[b]), grid)
+    ends = np.arange(max(times[a], times[b] - reach), min(times[b] + reach, times[after]), grid)
     coarse = _best_ramp(window, values, starts, ends, limits, standing=standing)
     if coarse is None:
         return None
+    if grid > step:
+        near = np.arange(-grid, grid + 1e-9, step)
+        coarse = (
+            _best_ramp(window, values, coarse[0] + near, coarse[1] + near, limits, standing=standing)
+            or coarse
+        )
     fine = np.arange(-step, step + 1e-9, step / 4)
     refined = _best_ramp(
         window, values, coarse[0] + fine, coarse[1] + fine, limits, standing=standing
