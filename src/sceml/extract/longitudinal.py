@@ -204,7 +204,9 @@ def _fit_ramp(
     if grid > step:
         near = np.arange(-grid, grid + 1e-9, step)
         coarse = (
-            _best_ramp(window, values, coarse[0] + near, coarse[1] + near, limits, standing=standing)
+            _best_ramp(
+                window, values, coarse[0] + near, coarse[1] + near, limits, standing=standing
+            )
             or coarse
         )
     fine = np.arange(-step, step + 1e-9, step / 4)
@@ -324,7 +326,7 @@ def _ramp_fits(
     pair (matrix-vector products), not the pairs' whole design matrices, which cost far more
     to build and multiply (most of an extraction's time before).
     """
-    ramp = _ramp_integral(window[None, :], t1[:, None], t2[:, None])
+    ramp = ramp_integral(window[None, :], t1[:, None], t2[:, None])
     base = window - window[0]
     n = float(len(window))
     sum_r = ramp.sum(axis=1)
@@ -346,14 +348,16 @@ def _ramp_fits(
         normal[:, 1, 1] = sum_bb - 2 * sum_rb + sum_rr
         normal[:, 1, 2] = normal[:, 2, 1] = sum_rb - sum_rr
         right[:, 1] = sum_bv - sum_rv
-    solution = np.linalg.solve(normal + 1e-9 * np.eye(3), right[..., None])[..., 0]
+    solution = np.asarray(
+        np.linalg.solve(normal + 1e-9 * np.eye(3), right[..., None])[..., 0], dtype=np.float64
+    )
     s0, v0, v1 = solution[:, 0:1], solution[:, 1:2], solution[:, 2:3]
     fitted = s0 + v1 * ramp if standing else s0 + v0 * base + (v1 - v0) * ramp
-    errors = ((fitted - values) ** 2).sum(axis=1)
+    errors: Array = ((fitted - values) ** 2).sum(axis=1)
     return solution, errors
 
 
-def _ramp_integral(t: Array, t1: Array, t2: Array) -> Array:
+def ramp_integral(t: Array, t1: Array, t2: Array) -> Array:
     """The integral from t[..., 0] to each t of w(u) = clip((u - t1) / (t2 - t1), 0, 1)."""
 
     def primitive(u: Array) -> Array:
@@ -466,8 +470,40 @@ def _fit_step(event: Event, motion: Motion, until: float) -> None:
     assert best is not None
     _, jump, speed = best
     if speed > 0:
+        if motion.noisy:
+            jump = _jump_in_plane(motion, jump)
         event.start = event.end = event.finish = jump
         event.parameters["speed"] = round(speed, 2)
+
+
+#: Over this long (s) after a step from standing its time is fitted in the plane.
+_JUMP_AFTER = 2.0
+
+
+def _jump_in_plane(motion: Motion, jump: float) -> float:
+    """The time of a step from standing, fitted to the raw positions: standing at P until tj,
+    then a steady velocity, over a few seconds either side of the first estimate `jump`.
+
+    The distance driven of a noisy recording is worked out along the smoothed path, which
+    the filter moves before a sudden start and which loses what it moved while the actor
+    counted as standing: a car's step came out 0.04 s early (0.4 m at 10 m/s), and the car,
+    replayed, a metre off once what it waits for ran a step early too. The raw positions
+    have no such bias; the speed is still the one fitted over all the driving after.
+    """
+    step = motion.step
+    keep = (motion.times >= jump - 3.0) & (motion.times <= jump + _JUMP_AFTER)
+    times, x, y = motion.times[keep], motion.raw_x[keep], motion.raw_y[keep]
+    if len(times) < 8:
+        return jump
+    jumps = jump + np.arange(-2 * step, 2 * step + 1e-9, step / 10)
+    best_error, best_jump = np.inf, jump
+    for candidate in jumps:
+        design = np.column_stack([np.ones_like(times), np.maximum(times - candidate, 0.0)])
+        _, residual, *_ = np.linalg.lstsq(design, np.column_stack([x, y]), rcond=None)
+        error = float(residual.sum()) if len(residual) else np.inf
+        if error < best_error:
+            best_error, best_jump = error, float(candidate)
+    return best_jump
 
 
 def _target(event: Event) -> float:
@@ -499,3 +535,43 @@ def end_by_crossings(events: list[Event]) -> None:
         event.start_range = (earliest, high)
         if event.start < earliest:
             event.retime(earliest)
+
+
+#: Over at most this long (s) from the recording's start the start position is fitted.
+_START_SPAN = 6.0
+
+
+def start_shift(motion: Motion, events: list[Event], initial_speed: float) -> float:
+    """How far (m) along its heading a moving actor was at the recording's start from the
+    smoothed first point, on a noisy recording (else 0).
+
+    The filter extrapolates a cubic there, off by more than the noise itself; a start 0.25 m
+    ahead put UIS2's ego as far ahead all the way, and the car that waits for it set off a
+    step early (a metre at 10 m/s). The speed profile up to the actor's next maneuver is known
+    by then (its initial speed, and a speed change that starts with the recording), so the
+    distance driven is fitted with one unknown, its offset at the start: the mean of what is
+    left, which noise moves by its own deviation over the square root of seconds of samples.
+    """
+    if not motion.noisy or not motion.moving[0]:
+        return 0.0
+    t0 = float(motion.times[0])
+    first = next(
+        (e for e in events if e.longitudinal and e.start <= t0 + 1e-9 and e.from_speed is not None),
+        None,
+    )
+    if first is not None and first.kind == "DriveDistance":
+        return 0.0
+    until = min([t0 + _START_SPAN] + [e.start for e in events if e is not first and e.start > t0])
+    keep = motion.times <= until + 1e-9
+    if keep.sum() < 5:
+        return 0.0
+    times = motion.times[keep]
+    if first is None:
+        driven = initial_speed * (times - t0)
+    else:
+        v0, v1 = float(first.from_speed or 0.0), _target(first)
+        ramp = ramp_integral(
+            times, np.array(first.start), np.array(max(first.end, first.start + 1e-3))
+        )
+        driven = v0 * (times - t0) + (v1 - v0) * ramp
+    return float(np.mean(motion.along[keep] - driven))
