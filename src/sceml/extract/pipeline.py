@@ -167,7 +167,7 @@ def _actor(
     )
     events = sorted(speeds + path_events(motion, kind, thresholds, road_map), key=lambda e: e.start)
     drive_distances(events, motion)
-    fit_set_offs(events, motion, thresholds.standing_speed, rates.acceleration)
+    fit_set_offs(events, motion, thresholds, rates.acceleration)
     end_by_crossings(events)
     speed = _initial_speed(motion, events, thresholds.standing_speed)
     length = spec.length if spec and spec.length else track.length

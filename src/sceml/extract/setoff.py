@@ -24,36 +24,38 @@ import numpy as np
 from .events import Event
 from .longitudinal import ramp_integral
 from .motion import Array, Motion
+from .thresholds import Thresholds
 
 #: How far (s) before the fitted start and after the bend the raw positions are fitted.
 _BEFORE = 2.0
 _AFTER = 2.5
 #: How far (s) about the first fit's start and end the candidates are searched.
 _REACH = 0.6
-#: Only a bend of at least this much (rad) between the set-off's line and the crossing's, as
-#: this fit finds them, is taken: the smoothing cuts such a corner by a decimetre, and the
-#: bend pins the ramp's end. A bike veering 0.24 rad across the road loses next to nothing to
-#: the smoothing, and its long ramp was fitted better along the path (UIS1's bikes replayed
-#: up to 0.5 m further off with this fit).
-_SHARP = 0.5
 #: As in `longitudinal`: a start whose squared error is within this many times the noise's
 #: variance of the best fits as well (95 % bound of a likelihood-ratio test, one parameter).
 _AS_WELL = 3.84
 
 
 def fit_set_offs(
-    events: list[Event], motion: Motion, standing: float, acceleration: float | None
+    events: list[Event], motion: Motion, thresholds: Thresholds, acceleration: float | None
 ) -> None:
     """Refit, in place, each speed change from standing that a Cross follows (on a noisy
     recording: one whose start is known only within a range), with the Cross starting at
-    its end. `acceleration` is the actor kind's limit (m/s²; None: none)."""
+    its end. `acceleration` is the actor kind's limit (m/s²; None: none).
+
+    Only a bend of at least `thresholds.sharp_bend` between the set-off's line and the
+    crossing's, as this fit finds them, is taken: the smoothing cuts such a corner by a
+    decimetre, and the bend pins the ramp's end. A bike veering 0.24 rad across the road
+    loses next to nothing to the smoothing, and its long ramp was fitted better along the path
+    (UIS1's bikes replayed up to 0.5 m further off with this fit).
+    """
     ordered = sorted(events, key=lambda e: e.start)
     for change, cross in zip(ordered, ordered[1:], strict=False):
         if cross.kind != "Cross" or change.kind != "Accelerate" or change.start_range is None:
             continue
-        if change.from_speed is None or change.from_speed > standing:
+        if change.from_speed is None or change.from_speed > thresholds.standing_speed:
             continue
-        fitted = _fit(motion, change, cross, acceleration)
+        fitted = _fit(motion, change, cross, acceleration, thresholds.sharp_bend)
         if fitted is None:
             continue
         t1, t2, speed, starts = fitted
@@ -65,7 +67,7 @@ def fit_set_offs(
 
 
 def _fit(
-    motion: Motion, change: Event, cross: Event, acceleration: float | None
+    motion: Motion, change: Event, cross: Event, acceleration: float | None, sharp: float
 ) -> tuple[float, float, float, tuple[float, float]] | None:
     """The start, end (the bend) and speed of the set-off that fits the raw positions best,
     and the range of starts that fit as well; None where too few samples show it."""
@@ -92,7 +94,7 @@ def _fit(
     if not np.isfinite(errors[best]):
         return None
     (ax, ay), (bx, by) = lines[best]
-    if abs(np.arctan2(ax * by - ay * bx, ax * bx + ay * by)) < _SHARP:
+    if abs(np.arctan2(ax * by - ay * bx, ax * bx + ay * by)) < sharp:
         return None
     variance = errors[best] / max(2 * len(window) - 8, 1)
     # The starts with the best end that fit as well: how well the noise lets the start be told.
