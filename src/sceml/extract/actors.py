@@ -78,11 +78,13 @@ def actor_kind(track: Track, motion: Motion, given: ActorSpec | None, *, ego: bo
 
 
 def start_position(
-    motion: Motion, kind: str, road_map: RoadMap | None
+    motion: Motion, kind: str, road_map: RoadMap | None, shift: float = 0.0
 ) -> scm.LanePosition | scm.WorldPosition:
     """Where the actor starts: on its lane (road, lane, s, offset) when it stands on one and
-    faces along its traffic; else the world point and heading (people facing across a kerb)."""
+    faces along its traffic; else the world point and heading (people facing across a kerb).
+    `shift` (m) moves the smoothed first point along the heading (`longitudinal.start_shift`)."""
     x, y, heading = float(motion.x[0]), float(motion.y[0]), float(motion.heading[0])
+    x, y = x + shift * math.cos(heading), y + shift * math.sin(heading)
     if road_map is not None and kind != "Pedestrian":
         for found in road_map.world_to_lane(x, y):
             along = road_map.traffic_heading(found.road_id, found.lane_id, found.s)

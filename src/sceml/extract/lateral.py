@@ -44,6 +44,12 @@ def path_events(
     for a, b in _runs(turning, gap=max(1, int(0.5 / step))):
         first, last = max(a - settle, 0), min(b + settle, len(motion.times) - 1)
         cut_off = b >= len(motion.times) - settle
+        if cut_off and abs(_turned(motion, first, b, 2 * settle)) <= _CROSS_ANGLE:
+            # The smoothing's last window extrapolates a cubic, whose heading wanders: a
+            # walker going straight on to the end "bent" there by 0.09 rad, and its crossing
+            # was ended at that bend, a metre short. A bend the recording ends in counts only
+            # once the heading has turned by a crossing's angle.
+            continue
         if (
             events
             and events[-1].kind == "Cross"

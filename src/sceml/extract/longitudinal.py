@@ -49,8 +49,9 @@ def speed_events(
     # by those that came out as changes, until that set no longer changes (a clean recording
     # has no such runs and is fitted once).
     kept = list(range(len(spans)))
+    fits: dict[tuple[int, ...], _Fit | None] = {}  # a run's fit depends only on its bounds
     for _ in range(_REFITS):
-        found = _fit_spans(motion, thresholds, limits, spans, kept)
+        found = _fit_spans(motion, thresholds, limits, spans, kept, fits)
         now = sorted(found)
         if now == kept:
             break
@@ -68,9 +69,12 @@ def _fit_spans(
     limits: RateLimits | None,
     spans: list[tuple[int, int]],
     bounding: list[int],
+    fits: dict[tuple[int, ...], _Fit | None],
 ) -> dict[int, Event]:
     """Each run of `spans` fitted as a speed change, between its neighbours among `bounding`
-    (indices into spans); the runs that are changes, by index."""
+    (indices into spans); the runs that are changes, by index. `fits` keeps each fit by
+    what it depends on (the run and the bounds of its plateaus), so a refit whose bounds did
+    not change costs nothing."""
     step = motion.step
     last = len(motion.times) - 1
     events: dict[int, Event] = {}
@@ -85,23 +89,28 @@ def _fit_spans(
         previous = max((spans[j][1] for j in bounding if j < i), default=0)
         following = min((spans[j][0] for j in bounding if j > i), default=last)
         before, after = max(previous, a - margin), min(following, b + margin)
-        fitted = _fit_ramp(
-            motion.times,
-            motion.along,
-            before,
-            a,
-            b,
-            after,
-            step,
-            # Only a ramp of an actor already moving is taken back to the start: a standing
-            # actor's start is an event of its own, whose time a condition may explain.
-            thresholds.smoothing_window if motion.moving[0] else 0.0,
-            limits,
-            # An actor that stood before the change (no motion shows in the plateau before
-            # it, short of the half window by which the chord shows a start early) starts
-            # from 0: not a parameter (noise made a slow creep of it, and the ramp late).
-            standing=not motion.moving[before : max(before + 1, a - half)].any(),
-        )
+        # An actor that stood before the change (no motion shows in the plateau before it,
+        # short of the half window by which the chord shows a start early) starts from 0:
+        # not a parameter (noise made a slow creep of it, and the ramp late).
+        standing = not motion.moving[before : max(before + 1, a - half)].any()
+        key = (a, b, before, after, int(standing))
+        if key not in fits:
+            fits[key] = _fit_ramp(
+                motion.times,
+                motion.along,
+                before,
+                a,
+                b,
+                after,
+                step,
+                # Only a ramp of an actor already moving is taken back to the start: a
+                # standing actor's start is an event of its own, whose time a condition may
+                # explain.
+                thresholds.smoothing_window if motion.moving[0] else 0.0,
+                limits,
+                standing=standing,
+            )
+        fitted = fits[key]
         if fitted is None:
             continue
         t1, t2, v0, v1, starts = fitted
@@ -150,6 +159,12 @@ def _runs(mask: NDArray[np.bool_], gap: int) -> list[tuple[int, int]]:
     return spans
 
 
+#: The spacing (s) of the first, coarse search for a ramp's start and end.
+_COARSE_GRID = 0.1
+#: A fitted speed change: start, end, speed before and after, and the range of its start.
+_Fit = tuple[float, float, float, float, tuple[float, float] | None]
+
+
 def _fit_ramp(
     times: Array,
     along: Array,
@@ -162,7 +177,7 @@ def _fit_ramp(
     limits: RateLimits | None = None,
     *,
     standing: bool = False,
-) -> tuple[float, float, float, float, tuple[float, float] | None] | None:
+) -> _Fit | None:
     """Least-squares fit of the distance driven over [before, after]: speed v0 until t1, a
     linear change to v1 at t2, then v1; and on a noisy recording the range of starts that
     fit as well (`_start_range`), else None.
@@ -178,11 +193,22 @@ def _fit_ramp(
     if len(window) < 4:
         return None
     reach = (max(b - a, 4) + 6) * step
-    starts = np.arange(max(times[before], times[a] - reach), min(times[a] + reach, times[b]), step)
-    ends = np.arange(max(times[a], times[b] - reach), min(times[b] + reach, times[after]), step)
+    # A fast recording is searched on a grid of about a tenth of a second first, then at its
+    # own step about the best pair: the pairs, and the cost, grow with the square of the rate.
+    grid = step * max(1, round(_COARSE_GRID / step))
+    starts = np.arange(max(times[before], times[a] - reach), min(times[a] + reach, times[b]), grid)
+    ends = np.arange(max(times[a], times[b] - reach), min(times[b] + reach, times[after]), grid)
     coarse = _best_ramp(window, values, starts, ends, limits, standing=standing)
     if coarse is None:
         return None
+    if grid > step:
+        near = np.arange(-grid, grid + 1e-9, step)
+        coarse = (
+            _best_ramp(
+                window, values, coarse[0] + near, coarse[1] + near, limits, standing=standing
+            )
+            or coarse
+        )
     fine = np.arange(-step, step + 1e-9, step / 4)
     refined = _best_ramp(
         window, values, coarse[0] + fine, coarse[1] + fine, limits, standing=standing
@@ -230,20 +256,16 @@ def _start_range(
     bound = error + _AS_WELL * variance
     middle = (t1 + t2) / 2
     starts = np.arange(max(window[0], middle - 4.0), middle - step / 4, step / 4)
-    kept = []
-    for start in starts:
-        fitted = _best_ramp(
-            window,
-            values,
-            np.array([start]),
-            np.array([2 * middle - start]),
-            standing=standing,
-        )
-        if fitted is not None and fitted[4] <= bound:
-            kept.append(float(start))
-    if not kept:
+    ends = 2 * middle - starts
+    inside = ends <= window[-1]
+    starts, ends = starts[inside], ends[inside]
+    if not len(starts):
         return None
-    return min(kept[0], t1), max(kept[-1], t1)
+    _, errors = _ramp_fits(window, values, starts, ends, standing=standing)
+    kept = starts[errors <= bound]
+    if not len(kept):
+        return None
+    return min(float(kept[0]), t1), max(float(kept[-1]), t1)
 
 
 #: How many times the noise's variance a ramp must explain beyond a steady speed to count
@@ -275,15 +297,7 @@ def _best_ramp(
     t1, t2 = t1[keep], t2[keep]
     if not len(t1):
         return None
-    ramp = _ramp_integral(window[None, :], t1[:, None], t2[:, None])
-    base = np.broadcast_to(window - window[0], ramp.shape)
-    before = np.zeros_like(ramp) if standing else base - ramp
-    design = np.stack([np.ones_like(ramp), before, ramp], axis=2)
-    normal = np.einsum("pni,pnj->pij", design, design)
-    right = np.einsum("pni,n->pi", design, values)
-    solution = np.linalg.solve(normal + 1e-9 * np.eye(3), right[..., None])[..., 0]
-    fitted = np.einsum("pni,pi->pn", design, solution)
-    errors = ((fitted - values) ** 2).sum(axis=1)
+    solution, errors = _ramp_fits(window, values, t1, t2, standing=standing)
     if limits is not None:
         v0, v1 = solution[:, 1], solution[:, 2]
         rate = np.abs(v1 - v0) / (t2 - t1)
@@ -301,7 +315,49 @@ def _best_ramp(
     )
 
 
-def _ramp_integral(t: Array, t1: Array, t2: Array) -> Array:
+def _ramp_fits(
+    window: Array, values: Array, t1: Array, t2: Array, *, standing: bool = False
+) -> tuple[Array, Array]:
+    """For each candidate pair (t1[p], t2[p]): the least-squares (s0, v0, v1) of the distance
+    driven, and its squared error.
+
+    The design has the columns 1, the time driven before the ramp (zero when `standing`) and
+    the ramp's integral r; its normal equations need only the sums of r, r², r·t and r·s per
+    pair (matrix-vector products), not the pairs' whole design matrices, which cost far more
+    to build and multiply (most of an extraction's time before).
+    """
+    ramp = ramp_integral(window[None, :], t1[:, None], t2[:, None])
+    base = window - window[0]
+    n = float(len(window))
+    sum_r = ramp.sum(axis=1)
+    sum_rr = np.einsum("pn,pn->p", ramp, ramp)
+    sum_rb = ramp @ base
+    sum_rv = ramp @ values
+    sum_b, sum_bb = float(base.sum()), float(base @ base)
+    sum_v, sum_bv = float(values.sum()), float(base @ values)
+    normal = np.zeros((len(t1), 3, 3))
+    right = np.zeros((len(t1), 3))
+    normal[:, 0, 0] = n
+    normal[:, 0, 2] = normal[:, 2, 0] = sum_r
+    normal[:, 2, 2] = sum_rr
+    right[:, 0] = sum_v
+    right[:, 2] = sum_rv
+    if not standing:
+        # The column before the ramp is base - r.
+        normal[:, 0, 1] = normal[:, 1, 0] = sum_b - sum_r
+        normal[:, 1, 1] = sum_bb - 2 * sum_rb + sum_rr
+        normal[:, 1, 2] = normal[:, 2, 1] = sum_rb - sum_rr
+        right[:, 1] = sum_bv - sum_rv
+    solution = np.asarray(
+        np.linalg.solve(normal + 1e-9 * np.eye(3), right[..., None])[..., 0], dtype=np.float64
+    )
+    s0, v0, v1 = solution[:, 0:1], solution[:, 1:2], solution[:, 2:3]
+    fitted = s0 + v1 * ramp if standing else s0 + v0 * base + (v1 - v0) * ramp
+    errors: Array = ((fitted - values) ** 2).sum(axis=1)
+    return solution, errors
+
+
+def ramp_integral(t: Array, t1: Array, t2: Array) -> Array:
     """The integral from t[..., 0] to each t of w(u) = clip((u - t1) / (t2 - t1), 0, 1)."""
 
     def primitive(u: Array) -> Array:
@@ -414,8 +470,40 @@ def _fit_step(event: Event, motion: Motion, until: float) -> None:
     assert best is not None
     _, jump, speed = best
     if speed > 0:
+        if motion.noisy:
+            jump = _jump_in_plane(motion, jump)
         event.start = event.end = event.finish = jump
         event.parameters["speed"] = round(speed, 2)
+
+
+#: Over this long (s) after a step from standing its time is fitted in the plane.
+_JUMP_AFTER = 2.0
+
+
+def _jump_in_plane(motion: Motion, jump: float) -> float:
+    """The time of a step from standing, fitted to the raw positions: standing at P until tj,
+    then a steady velocity, over a few seconds either side of the first estimate `jump`.
+
+    The distance driven of a noisy recording is worked out along the smoothed path, which
+    the filter moves before a sudden start and which loses what it moved while the actor
+    counted as standing: a car's step came out 0.04 s early (0.4 m at 10 m/s), and the car,
+    replayed, a metre off once what it waits for ran a step early too. The raw positions
+    have no such bias; the speed is still the one fitted over all the driving after.
+    """
+    step = motion.step
+    keep = (motion.times >= jump - 3.0) & (motion.times <= jump + _JUMP_AFTER)
+    times, x, y = motion.times[keep], motion.raw_x[keep], motion.raw_y[keep]
+    if len(times) < 8:
+        return jump
+    jumps = jump + np.arange(-2 * step, 2 * step + 1e-9, step / 10)
+    best_error, best_jump = np.inf, jump
+    for candidate in jumps:
+        design = np.column_stack([np.ones_like(times), np.maximum(times - candidate, 0.0)])
+        _, residual, *_ = np.linalg.lstsq(design, np.column_stack([x, y]), rcond=None)
+        error = float(residual.sum()) if len(residual) else np.inf
+        if error < best_error:
+            best_error, best_jump = error, float(candidate)
+    return best_jump
 
 
 def _target(event: Event) -> float:
@@ -447,3 +535,43 @@ def end_by_crossings(events: list[Event]) -> None:
         event.start_range = (earliest, high)
         if event.start < earliest:
             event.retime(earliest)
+
+
+#: Over at most this long (s) from the recording's start the start position is fitted.
+_START_SPAN = 6.0
+
+
+def start_shift(motion: Motion, events: list[Event], initial_speed: float) -> float:
+    """How far (m) along its heading a moving actor was at the recording's start from the
+    smoothed first point, on a noisy recording (else 0).
+
+    The filter extrapolates a cubic there, off by more than the noise itself; a start 0.25 m
+    ahead put UIS2's ego as far ahead all the way, and the car that waits for it set off a
+    step early (a metre at 10 m/s). The speed profile up to the actor's next maneuver is known
+    by then (its initial speed, and a speed change that starts with the recording), so the
+    distance driven is fitted with one unknown, its offset at the start: the mean of what is
+    left, which noise moves by its own deviation over the square root of seconds of samples.
+    """
+    if not motion.noisy or not motion.moving[0]:
+        return 0.0
+    t0 = float(motion.times[0])
+    first = next(
+        (e for e in events if e.longitudinal and e.start <= t0 + 1e-9 and e.from_speed is not None),
+        None,
+    )
+    if first is not None and first.kind == "DriveDistance":
+        return 0.0
+    until = min([t0 + _START_SPAN] + [e.start for e in events if e is not first and e.start > t0])
+    keep = motion.times <= until + 1e-9
+    if keep.sum() < 5:
+        return 0.0
+    times = motion.times[keep]
+    if first is None:
+        driven = initial_speed * (times - t0)
+    else:
+        v0, v1 = float(first.from_speed or 0.0), _target(first)
+        ramp = ramp_integral(
+            times, np.array(first.start), np.array(max(first.end, first.start + 1e-3))
+        )
+        driven = v0 * (times - t0) + (v1 - v0) * ramp
+    return float(np.mean(motion.along[keep] - driven))

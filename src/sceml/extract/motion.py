@@ -20,7 +20,9 @@ Array = NDArray[np.float64]
 class Motion:
     """One actor's motion on a uniform clock: smoothed x, y (m), speed (m/s), heading (rad,
     unwrapped; held while standing) and arc length driven (m); `heading_error` is the standard
-    deviation (rad) that the recording's noise gives the heading (0 on a clean recording)."""
+    deviation (rad) that the recording's noise gives the heading (0 on a clean recording);
+    `raw_x` and `raw_y` are the recorded positions on the same clock, unsmoothed; `noise` the
+    standard deviation (m) of their noise, estimated from the filter's residuals."""
 
     name: str
     times: Array
@@ -33,6 +35,14 @@ class Motion:
     arc: Array
     along: Array
     heading_error: Array
+    raw_x: Array
+    raw_y: Array
+    noise: float
+
+    @property
+    def noisy(self) -> bool:
+        """Whether the recording has position noise (a player's log has none)."""
+        return self.noise >= _CLEAN
 
     @property
     def step(self) -> float:
@@ -99,7 +109,9 @@ def smooth(track: Track, thresholds: Thresholds, step: float | None = None) -> M
     along = _along(x, y, xs, ys, arc, heading, thresholds.standing_speed, speed, noise)
     error = _heading_error(xs, ys, window, noise)
     xs, ys = _hold_standing_start(x, y, xs, ys, moving, speed, half)
-    return Motion(track.name, times, xs, ys, speed, moving, heading, turn_rate, arc, along, error)
+    return Motion(
+        track.name, times, xs, ys, speed, moving, heading, turn_rate, arc, along, error, x, y, noise
+    )
 
 
 def _hold_standing_start(

@@ -24,11 +24,13 @@ from .longitudinal import (
     drive_distances,
     end_by_crossings,
     speed_events,
+    start_shift,
     within_limits,
 )
 from .motion import Motion, sample_step, smooth
 from .recording import Recording, Track
 from .replay import ReplayFit, replay
+from .setoff import fit_set_offs
 from .thresholds import Thresholds
 
 
@@ -165,6 +167,7 @@ def _actor(
     )
     events = sorted(speeds + path_events(motion, kind, thresholds, road_map), key=lambda e: e.start)
     drive_distances(events, motion)
+    fit_set_offs(events, motion, thresholds, rates.acceleration)
     end_by_crossings(events)
     speed = _initial_speed(motion, events, thresholds.standing_speed)
     length = spec.length if spec and spec.length else track.length
@@ -174,7 +177,7 @@ def _actor(
         kind,
         track.name,
         ego=track.name == ego,
-        start=start_position(motion, kind, road_map),
+        start=start_position(motion, kind, road_map, start_shift(motion, events, speed)),
         speed=round(speed, 2),
         **cast(dict[str, Any], size),
     )

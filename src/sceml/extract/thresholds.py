@@ -42,3 +42,6 @@ class Thresholds:
     min_wait: float = 0.3
     #: How far (s) an inferred condition may fire from the start it explains, on the recording.
     sync_tolerance: float = 0.3
+    #: A set-off from standing that a crossing follows with a bend at least this sharp (rad) is
+    #: fitted to the raw positions in the plane, the bend pinning the ramp's end (`setoff`).
+    sharp_bend: float = 0.5
