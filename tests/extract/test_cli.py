@@ -82,6 +82,36 @@ def test_the_json_report_lists_maneuvers_conditions_and_the_replay(tmp_path: Pat
     assert any("above the Car limit" in note for note in report["notes"])
 
 
+def test_each_threshold_option_sets_its_threshold(tmp_path: Path, monkeypatch) -> None:
+    import sceml.extract as extraction
+    from sceml.extract import Thresholds
+
+    seen: list[Thresholds] = []
+
+    def stop_after_reading_the_thresholds(*args: object, thresholds: Thresholds, **kw: object):
+        seen.append(thresholds)
+        raise SystemExit(3)
+
+    monkeypatch.setattr(extraction, "extract", stop_after_reading_the_thresholds)
+    options = {
+        "--smoothing": ("smoothing_window", 1.5),
+        "--accel-threshold": ("accel_threshold", 0.7),
+        "--turn-angle": ("turn_angle", 0.6),
+        "--vehicle-radius": ("vehicle_radius", 15.0),
+        "--tolerance": ("arrival_tolerance", 3.0),
+        "--sharp-bend": ("sharp_bend", 0.8),
+    }
+    arguments = ["extract", str(DATA / "uis1-esmini.csv"), "-o", str(tmp_path / "x.xmi")]
+    arguments += ["--map", str(map_copy(tmp_path))]
+    for option, (_, value) in options.items():
+        arguments += [option, str(value)]
+    result = CliRunner().invoke(cli, arguments)
+    assert result.exit_code == 3, result.output
+    assert len(seen) == 1
+    for field, value in options.values():
+        assert getattr(seen[0], field) == value != getattr(Thresholds(), field)
+
+
 def test_a_broken_recording_is_a_usage_error_naming_its_line(tmp_path: Path) -> None:
     bad = tmp_path / "bad.csv"
     bad.write_text("time,actor,x,y\n0,ego,1,2\n0.1,ego,one,2\n", encoding="utf-8")

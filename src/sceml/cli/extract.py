@@ -96,6 +96,12 @@ def _actor(text: str) -> object:
     type=click.FloatRange(min=0.1),
     help="Arrival tolerance (m) of turns and crossings [default: 2].",
 )
+@click.option(
+    "--sharp-bend",
+    type=click.FloatRange(min=0.05),
+    help="Bend (rad) after a set-off from standing from which the set-off is fitted to the raw "
+    "positions, the bend pinning the ramp's end [default: 0.5].",
+)
 @click.option("--no-replay", is_flag=True, help="Skip the replay in the preview.")
 @click.option("--report", "show_report", is_flag=True, help="Print what was found and why.")
 @click.option(
@@ -120,6 +126,7 @@ def extract_command(
     turn_angle: float | None,
     vehicle_radius: float | None,
     tolerance: float | None,
+    sharp_bend: float | None,
     no_replay: bool,
     show_report: bool,
     report_format: str,
@@ -146,6 +153,7 @@ def extract_command(
         "turn_angle": turn_angle,
         "vehicle_radius": vehicle_radius,
         "arrival_tolerance": tolerance,
+        "sharp_bend": sharp_bend,
     }
     thresholds = replace(Thresholds(), **{k: v for k, v in settings.items() if v is not None})
     recorded = read_recording(
