@@ -128,7 +128,7 @@ def test_every_kind_maps_in_every_version_of_the_generic_profile() -> None:
     from sceml.model import catalog
 
     # Variables came with OpenSCENARIO 1.2.
-    since_1_2 = {"VariableCondition", "SetVariable"}
+    since_1_2 = {"VariableCondition", "SetVariable", "LightState"}
     for cls in catalog.action_node_kinds():
         for version in ("1.0", "1.1", "1.2", "1.3"):
             if (cls.__name__, version) == ("OverrideController", "1.0"):

@@ -72,6 +72,10 @@ VIEWS: dict[str, tuple[str, ...]] = {
         "TimeToCollision",
         "TraveledDistance",
         "TimeHeadway",
+        "StandStill",
+        "AccelerationCondition",
+        "AppearanceManeuver",
+        "LightState",
         "ControllerManeuver",
         "ActivateController",
         "AssignController",
@@ -143,6 +147,7 @@ CATEGORY_FILL = {
     "lateral": "#ff9e9e",
     "composite": "#9ee6a0",
     "controller": "#8e7cc3",
+    "appearance": "#80cbc4",
     "condition": "#9ec9ff",
     "global": "#ffb74d",
 }

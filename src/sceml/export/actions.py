@@ -464,5 +464,12 @@ def plan_ttc(ctx: Context, node: scm.TimeToCollision, groups: list[Group]) -> Pl
 
 
 # Registers the planners of sceml import's OpaqueAction, the controller changes, the global
-# kinds and LaneOffset.
-from . import controller_actions, global_kinds, lane_offset, opaque  # noqa: E402, F401
+# kinds, LaneOffset, LightState, StandStill and AccelerationCondition.
+from . import (  # noqa: E402, F401
+    appearance,
+    controller_actions,
+    global_kinds,
+    lane_offset,
+    motion_conditions,
+    opaque,
+)

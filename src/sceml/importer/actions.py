@@ -371,8 +371,9 @@ def _lane_offset(
     return node
 
 
-#: What other modules use to register and add their own kinds (global_kinds.py).
+#: What other modules use to register and add their own kinds (global_kinds.py, lights.py).
 maps = _maps
 add_node = _add
 
-from . import controllers, global_kinds  # noqa: E402, F401  (register their actions' mappers)
+# Register their actions' mappers.
+from . import controllers, global_kinds, lights  # noqa: E402, F401

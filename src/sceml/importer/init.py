@@ -101,7 +101,10 @@ def _private(build: Build, actor: scm.Actor, private: etree._Element) -> bool:
     follow = private.find("RoutingAction/FollowTrajectoryAction")
     if follow is not None and actor.startPosition is None:
         return _starts_on_trajectory(build, actor, private, follow)
-    if private.find("LateralAction/LaneOffsetAction") is not None:
+    if (
+        private.find("LateralAction/LaneOffsetAction") is not None
+        or private.find("AppearanceAction/LightStateAction") is not None
+    ):
         return _from_the_start(build, actor, private)
     speed = private.find("LongitudinalAction/SpeedAction")
     if speed is not None and speed.find("SpeedActionTarget/RelativeTargetSpeed") is not None:
@@ -209,8 +212,8 @@ def _starts_on_trajectory(
 
 
 def _from_the_start(build: Build, actor: scm.Actor, private: etree._Element) -> bool:
-    """An Init action that takes time (a lane offset): its node right after the root, as
-    players run it from the start."""
+    """An Init action that takes time (a lane offset, a light's transition): its node right
+    after the root, as players run it from the start."""
     made = _as_story_action(
         build,
         actor,

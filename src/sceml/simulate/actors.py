@@ -11,7 +11,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Protocol
 
-from ..xosc.meaning import GapLimits, gap_acceleration
+from ..xosc.meaning import GapLimits, gap_acceleration, standing_after
 from .paths import Path
 
 
@@ -113,6 +113,11 @@ class Actor:
         self.x = self.y = self.heading = 0.0
         #: Metres moved since the run started, whichever way (TraveledDistance's odometer).
         self.odometer = 0.0
+        #: Seconds stood still since the step it stopped in (StandStill); None while moving
+        #: and before the first step (`xosc.meaning.standing_after`).
+        self.standing_for: float | None = None
+        #: The change of speed over the last step (AccelerationCondition), m/s².
+        self.acceleration = 0.0
         self.place()
 
     def place(self) -> None:
@@ -133,6 +138,8 @@ class Actor:
         it stops there in this step."""
         speed = max(speed, 0.0)
         step = (self.speed + speed) / 2.0 * dt
+        self.acceleration = (speed - self.speed) / dt
+        self.standing_for = standing_after(self.standing_for, speed, dt)
         self.speed = speed
         end = self.path.end_of_road
         if end is not None and self.d >= end - 1e-9:

@@ -429,3 +429,19 @@ class LaneOffset(Behaviour):
 
     def release(self, world: World) -> None:
         self.actor.settle_shift()
+
+
+@kind("LightState")
+class LightState(Behaviour):
+    """Switch a light: nothing moves (the preview draws no lights); finished once the
+    transition is over, never while flashing (`xosc.meaning.light_state_duration`)."""
+
+    def start(self, world: World) -> None:
+        world.note(f"{self.name}: the preview draws no lights; only its timing is kept")
+        duration = meaning.light_state_duration(
+            concrete(self.node, "transitionTime"), self.node.mode.name
+        )
+        self.until = None if duration is None else world.t + duration
+
+    def done(self, world: World) -> bool:
+        return self.until is not None and world.t >= self.until - 1e-9

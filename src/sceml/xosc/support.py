@@ -21,6 +21,7 @@ __all__ = [
 MAPPED_KINDS = frozenset(
     {
         "Accelerate",
+        "AccelerationCondition",
         "ActivateController",
         "Approach",
         "AssignController",
@@ -37,6 +38,7 @@ MAPPED_KINDS = frozenset(
         "KeepVelocity",
         "LaneChange",
         "LaneOffset",
+        "LightState",
         "OpaqueAction",
         "OutPort",
         "OverrideController",
@@ -45,6 +47,7 @@ MAPPED_KINDS = frozenset(
         "SetParameter",
         "SetVariable",
         "SpeedCondition",
+        "StandStill",
         "Stop",
         "TimeElapsed",
         "TimeHeadway",
@@ -69,6 +72,7 @@ REPEATABLE_KINDS = frozenset(
         "Decelerate",
         "LaneChange",
         "LaneOffset",
+        "LightState",
         "OpaqueAction",
         "OverrideController",
         "SetParameter",
@@ -98,6 +102,7 @@ SINCE: dict[str, tuple[str, str | None]] = {
     "OverrideController": ("1.1", None),
     "VariableCondition": ("1.2", _VARIABLES),
     "SetVariable": ("1.2", _VARIABLES),
+    "LightState": ("1.2", "LightStateAction came with 1.2"),
 }
 
 
@@ -146,7 +151,7 @@ def _minor(version: str) -> int:
 def unsupported_setting(node: object, version: str) -> str | None:
     """Why a node's or actor's settings (not its kind) cannot be said in `version`; None when
     they can."""
-    reason = _controller_setting(node, _minor(version))
+    reason = _controller_setting(node, _minor(version)) or _direction_setting(node, version)
     if reason is not None or version != "1.0":
         return reason
     for feature, plain in _SINCE_1_1:
@@ -163,6 +168,16 @@ def unsupported_setting(node: object, version: str) -> str | None:
 def supported_kinds(version: str, profile: str = "generic") -> tuple[str, ...]:
     """The action, join and port kinds that map for a version and profile."""
     return tuple(k for k in sorted(MAPPED_KINDS) if unsupported_reason(k, version, profile) is None)
+
+
+def _direction_setting(node: object, version: str) -> str | None:
+    """An AccelerationCondition's direction: OpenSCENARIO 1.2 added it (before, the magnitude)."""
+    direction = (
+        getattr(node, "direction", None) if _kind_name(node) == "AccelerationCondition" else None
+    )
+    if direction is not None and direction.name != "total" and _minor(version) < 2:
+        return f"an acceleration's direction ({direction.name}) needs OpenSCENARIO 1.2 or later"
+    return None
 
 
 _ACTIVATE_SINCE_1_1 = ("lateral", "longitudinal")
