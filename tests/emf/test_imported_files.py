@@ -201,3 +201,19 @@ def test_emf_reads_and_writes_imported_route_positions(emf: Harness, tmp_path: P
     ego = next(a for a in from_emf.nodes[0].actors if a.name == "Ego").startPosition
     assert [w.routeStrategy.name for w in ego.waypoints] == ["shortest", "fastest"]
     assert (ego.laneId, ego.pathS.value) == (-2, 30.0)
+
+
+def test_emf_reads_and_writes_imported_lights_and_motion_conditions(
+    emf: Harness, tmp_path: Path
+) -> None:
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    import_to_file(FILES / "lights-and-stops.xosc", source / "lights.xmi")
+    written = (source / "lights.xmi").read_text()
+    for kind in ("LightState", "StandStill", "AccelerationCondition"):
+        assert f'xsi:type="scemlmodel:{kind}"' in written
+    assert 'mode="flashing"' in written and 'direction="longitudinal"' in written
+    result = emf.run("roundtrip", ECORE, source, out, Path("lights.xmi"))
+    assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+    assert differences(load(source / "lights.xmi").root, load(out / "lights.xmi").root) == []

@@ -1,4 +1,5 @@
-"""LightState: one LightStateAction (1.2+), its event the node's finish.
+"""LightState: one LightStateAction (1.3: 1.2's schema cannot say one), its event the node's
+finish.
 
 Players end the action once the transition is over, and never while the light flashes, which
 is what the node means (`scemlmodel.LightState`), so the event's end is the node's finish.
@@ -22,7 +23,7 @@ _OPTIONAL = (
 
 @planner("LightState", one_event=True)
 def plan_light_state(ctx: Context, node: scm.LightState, groups: list[Group]) -> Plan:
-    """A LightStateAction of the node's vehicle light (its version refused before 1.2 by
+    """A LightStateAction of the node's vehicle light (versions before 1.3 refused by
     `xosc.support.SINCE`)."""
     name = ctx.event_names[node]
     data: dict[str, str | None] = {

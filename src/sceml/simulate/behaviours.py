@@ -43,6 +43,9 @@ class Behaviour:
         self.name = str(node.name)
         self.actor: Actor = world.actor(node.referenceActor, self.name)
         self.claims = meaning.controls(node.eClass.name)
+        #: When the node started (the instant its trigger held), which is a step before the
+        #: maneuver acts when it waits for the next step; set by the engine before `start`.
+        self.started_at: float | None = None
 
     def start(self, world: World) -> None:
         """Take control of the actor."""
@@ -441,7 +444,9 @@ class LightState(Behaviour):
         duration = meaning.light_state_duration(
             concrete(self.node, "transitionTime"), self.node.mode.name
         )
-        self.until = None if duration is None else world.t + duration
+        # The transition runs from the node's start, as esmini's from its action's start.
+        began = world.t if self.started_at is None else self.started_at
+        self.until = None if duration is None else began + duration
 
     def done(self, world: World) -> bool:
         return self.until is not None and world.t >= self.until - 1e-9

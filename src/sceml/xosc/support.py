@@ -102,7 +102,10 @@ SINCE: dict[str, tuple[str, str | None]] = {
     "OverrideController": ("1.1", None),
     "VariableCondition": ("1.2", _VARIABLES),
     "SetVariable": ("1.2", _VARIABLES),
-    "LightState": ("1.2", "LightStateAction came with 1.2"),
+    # The action came with 1.2, but 1.2's schema wants a UserDefinedLight beside every
+    # VehicleLight (its LightType is a sequence; 1.3 made it a choice), so an XSD-valid 1.2
+    # file cannot switch a vehicle light.
+    "LightState": ("1.3", "1.2's schema asks for a user-defined light beside each vehicle light"),
 }
 
 
