@@ -55,6 +55,8 @@ LightMode = EEnum('LightMode', literals=['on', 'off', 'flashing'])
 AccelerationDirection = EEnum('AccelerationDirection', literals=[
                               'total', 'longitudinal', 'lateral', 'vertical'])
 
+SpeedRelation = EEnum('SpeedRelation', literals=['delta', 'factor'])
+
 
 @abstract
 class NamedElement(EObject, metaclass=MetaEClass):
@@ -1775,6 +1777,36 @@ class LightState(AppearanceManeuver):
 
         if flashingOffDuration is not None:
             self.flashingOffDuration = flashingOffDuration
+
+
+class MatchSpeed(LongitudinalManeuver):
+    """Brings the reference actor's speed to the target actor's speed plus speedDelta, or times speedFactor (relation), at rate (unset: at once, a step), as OpenSCENARIO's SpeedAction with a RelativeTargetSpeed. It follows the target's speed as it changes and is finished when the speed is first reached; a continuous one keeps the relation afterwards (as Follow keeps its gap) until another maneuver of the actor's speed takes over, as a later speed action overrides a continuous one in players (release 1.4)."""
+    relation = EAttribute(eType=SpeedRelation, unique=True, derived=False,
+                          changeable=True, default_value=SpeedRelation.delta)
+    continuous = EAttribute(eType=EBoolean, unique=True, derived=False,
+                            changeable=True, default_value=False)
+    speedDelta = EReference(ordered=True, unique=True, containment=True, derived=False)
+    speedFactor = EReference(ordered=True, unique=True, containment=True, derived=False)
+    rate = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, relation=None, speedDelta=None, speedFactor=None, rate=None, continuous=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if relation is not None:
+            self.relation = relation
+
+        if continuous is not None:
+            self.continuous = continuous
+
+        if speedDelta is not None:
+            self.speedDelta = speedDelta
+
+        if speedFactor is not None:
+            self.speedFactor = speedFactor
+
+        if rate is not None:
+            self.rate = rate
 
 
 class TurnLeft(RoutedManeuver):

@@ -210,10 +210,13 @@ def test_emf_reads_and_writes_imported_lights_and_motion_conditions(
     source.mkdir()
     out.mkdir()
     import_to_file(FILES / "lights-and-stops.xosc", source / "lights.xmi")
-    written = (source / "lights.xmi").read_text()
-    for kind in ("LightState", "StandStill", "AccelerationCondition"):
+    import_to_file(FILES / "relative-speeds.xosc", source / "speeds.xmi")
+    written = (source / "lights.xmi").read_text() + (source / "speeds.xmi").read_text()
+    for kind in ("LightState", "StandStill", "AccelerationCondition", "MatchSpeed"):
         assert f'xsi:type="scemlmodel:{kind}"' in written
     assert 'mode="flashing"' in written and 'direction="longitudinal"' in written
-    result = emf.run("roundtrip", ECORE, source, out, Path("lights.xmi"))
-    assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
-    assert differences(load(source / "lights.xmi").root, load(out / "lights.xmi").root) == []
+    assert 'relation="factor"' in written
+    for name in ("lights.xmi", "speeds.xmi"):
+        result = emf.run("roundtrip", ECORE, source, out, Path(name))
+        assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+        assert differences(load(source / name).root, load(out / name).root) == []

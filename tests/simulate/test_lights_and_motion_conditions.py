@@ -55,3 +55,17 @@ def test_a_stand_still_of_an_actor_standing_from_the_start() -> None:
     still = b.add("StandStill", ego, duration=0.5)
     b.chain(b.root, still, b.end)
     assert simulate(b.scenario).node(str(still.name)).finished == pytest.approx(0.6)
+
+
+RELATIVE = LIGHTS.parent / "relative-speeds.xosc"
+
+
+def test_a_relative_speed_follows_the_target_as_in_esmini() -> None:
+    # esmini 3.6's log of relative-speeds.xosc (read by hand): the follower starts at 18 m/s
+    # (0.9 of 20) and FollowerSlows runs from 3.00 s to 4.45 s (18 to 15 m/s at 2 m/s²); the
+    # preview ends a speed change a step later, as for every speed change (docs/simulate.md).
+    run = simulate(import_file(RELATIVE).scenario, RELATIVE)
+    keep = run.node("Init_Follower")
+    assert keep.finished == pytest.approx(0.05)  # reached in its first step; it keeps on
+    slows = run.node("FollowerSlows")
+    assert (slows.started, slows.finished) == (pytest.approx(3.0), pytest.approx(4.5))

@@ -57,6 +57,7 @@ VIEWS: dict[str, tuple[str, ...]] = {
         "DriveDistance",
         "Follow",
         "Approach",
+        "MatchSpeed",
         "LaneChange",
         "LaneOffset",
         "RoutedManeuver",

@@ -96,8 +96,8 @@ def _kmh(value: scm.ParameterValue | None) -> str:
 
 
 def unit_text(unit: str) -> str:
-    """A unit as people write it (`m/s2` -> `m/s²`)."""
-    return unit.replace("m/s2", "m/s²")
+    """A unit as people write it (`m/s2` -> `m/s²`; a ratio's `1` is not written)."""
+    return "" if unit == "1" else unit.replace("m/s2", "m/s²")
 
 
 def describe_value(value: scm.ParameterValue | None, unit: str, scope: Scope) -> str:

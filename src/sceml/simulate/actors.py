@@ -64,6 +64,21 @@ class Ramp:
 
 
 @dataclass(frozen=True)
+class SpeedMatching:
+    """Bring the speed to the `target` actor's times `factor` plus `delta`, following it as it
+    changes, at `rate` (m/s2; a step when infinite): MatchSpeed."""
+
+    target: str
+    factor: float
+    delta: float
+    rate: float = math.inf
+
+    def next_speed(self, actor: Actor, others: Mapping[str, Actor], dt: float) -> float:
+        wanted = others[self.target].speed * self.factor + self.delta
+        return Ramp(wanted, self.rate).next_speed(actor, others, dt)
+
+
+@dataclass(frozen=True)
 class GapKeeping:
     """Drive towards a gap of `distance` m (centre to centre, along the actor's heading) to
     the `target` actor, by the players' law (`xosc.meaning.gap_acceleration`)."""

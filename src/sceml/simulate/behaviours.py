@@ -24,7 +24,7 @@ from ..maps import RoadMap
 from ..model.params import concrete
 from ..xosc import meaning
 from . import lanes
-from .actors import Actor, GapKeeping, Hold, Ramp, Shift
+from .actors import Actor, GapKeeping, Hold, Ramp, Shift, SpeedMatching
 from .paths import LaneSpot, Path, joined, straight
 from .world import World
 
@@ -450,3 +450,28 @@ class LightState(Behaviour):
 
     def done(self, world: World) -> bool:
         return self.until is not None and world.t >= self.until - 1e-9
+
+
+@kind("MatchSpeed")
+class MatchSpeed(Behaviour):
+    """Bring the speed to the target actor's times the factor or plus the delta, following it
+    (`actors.SpeedMatching`); finished when first reached. A continuous one keeps following
+    afterwards (as Follow keeps its gap) until another maneuver of the actor's speed takes
+    over; any other holds the speed it reached."""
+
+    def start(self, world: World) -> None:
+        node = self.node
+        self.other = world.actor(node.targetActor, self.name)
+        factor = node.relation.name == "factor"
+        self.factor = concrete(node, "speedFactor") if factor else 1.0
+        self.delta = 0.0 if factor else concrete(node, "speedDelta")
+        rate = math.inf if node.rate is None else concrete(node, "rate")
+        self.actor.control = SpeedMatching(self.other.name, self.factor, self.delta, rate)
+
+    def done(self, world: World) -> bool:
+        wanted = self.other.speed * self.factor + self.delta
+        if abs(self.actor.speed - wanted) >= meaning.SPEED_TOLERANCE:
+            return False
+        if not self.node.continuous:
+            self.actor.control = Hold()
+        return True

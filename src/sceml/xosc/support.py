@@ -39,6 +39,7 @@ MAPPED_KINDS = frozenset(
         "LaneChange",
         "LaneOffset",
         "LightState",
+        "MatchSpeed",
         "OpaqueAction",
         "OutPort",
         "OverrideController",
