@@ -182,6 +182,7 @@ def test_target_actor_kinds() -> None:
     assert needing == {
         "Follow",
         "Approach",
+        "MatchSpeed",
         "Overtake",
         "InVehicleRadius",
         "TimeToCollision",
