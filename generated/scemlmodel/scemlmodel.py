@@ -47,6 +47,16 @@ CoordinateSystem = EEnum('CoordinateSystem', literals=['entity', 'lane', 'road',
 
 LaneChangeShape = EEnum('LaneChangeShape', literals=['sinusoidal', 'linear', 'cubic', 'step'])
 
+VehicleLightType = EEnum('VehicleLightType', literals=['daytimeRunningLights', 'lowBeam', 'highBeam', 'fogLights', 'fogLightsFront', 'fogLightsRear',
+                         'brakeLights', 'warningLights', 'indicatorLeft', 'indicatorRight', 'reversingLights', 'licensePlateIllumination', 'specialPurposeLights'])
+
+LightMode = EEnum('LightMode', literals=['on', 'off', 'flashing'])
+
+AccelerationDirection = EEnum('AccelerationDirection', literals=[
+                              'total', 'longitudinal', 'lateral', 'vertical'])
+
+SpeedRelation = EEnum('SpeedRelation', literals=['delta', 'factor'])
+
 
 @abstract
 class NamedElement(EObject, metaclass=MetaEClass):
@@ -1438,6 +1448,49 @@ class TimeHeadway(Condition):
             self.time = time
 
 
+@abstract
+class AppearanceManeuver(Maneuver):
+    """A change of how the reference actor looks to others (its lights; release 1.4): it controls neither its speed nor its path, so it runs beside the actor's other maneuvers."""
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
+class StandStill(Condition):
+    """Holds once the reference actor has stood still for longer than duration, counted from when it stopped, also before the node's activation (OpenSCENARIO's StandStillCondition, as esmini measures it)."""
+    duration = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, duration=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if duration is not None:
+            self.duration = duration
+
+
+class AccelerationCondition(Condition):
+    """Compares by rule the reference actor's acceleration (negative: braking, for a component) with acceleration (OpenSCENARIO's AccelerationCondition)."""
+    rule = EAttribute(eType=ComparisonRule, unique=True, derived=False,
+                      changeable=True, default_value=ComparisonRule.greaterThan)
+    direction = EAttribute(eType=AccelerationDirection, unique=True, derived=False,
+                           changeable=True, default_value=AccelerationDirection.total)
+    acceleration = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, rule=None, acceleration=None, direction=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if rule is not None:
+            self.rule = rule
+
+        if direction is not None:
+            self.direction = direction
+
+        if acceleration is not None:
+            self.acceleration = acceleration
+
+
 class Accelerate(LongitudinalManeuver):
 
     targetSpeed = EReference(ordered=True, unique=True, containment=True, derived=False)
@@ -1702,6 +1755,70 @@ class LaneOffset(LateralManeuver):
 
         if maxLateralAcc is not None:
             self.maxLateralAcc = maxLateralAcc
+
+
+class LightState(AppearanceManeuver):
+    """Switches one of the reference actor's lights on, off or to flashing over transitionTime (OpenSCENARIO 1.2's LightStateAction). Finished when the transition is over for on and off; a flashing light never finishes, as players keep its action running until another overrides it."""
+    lightType = EAttribute(eType=VehicleLightType, unique=True, derived=False,
+                           changeable=True, default_value=VehicleLightType.lowBeam)
+    mode = EAttribute(eType=LightMode, unique=True, derived=False,
+                      changeable=True, default_value=LightMode.on)
+    transitionTime = EReference(ordered=True, unique=True, containment=True, derived=False)
+    luminousIntensity = EReference(ordered=True, unique=True, containment=True, derived=False)
+    flashingOnDuration = EReference(ordered=True, unique=True, containment=True, derived=False)
+    flashingOffDuration = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, lightType=None, mode=None, transitionTime=None, luminousIntensity=None, flashingOnDuration=None, flashingOffDuration=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if lightType is not None:
+            self.lightType = lightType
+
+        if mode is not None:
+            self.mode = mode
+
+        if transitionTime is not None:
+            self.transitionTime = transitionTime
+
+        if luminousIntensity is not None:
+            self.luminousIntensity = luminousIntensity
+
+        if flashingOnDuration is not None:
+            self.flashingOnDuration = flashingOnDuration
+
+        if flashingOffDuration is not None:
+            self.flashingOffDuration = flashingOffDuration
+
+
+class MatchSpeed(LongitudinalManeuver):
+    """Brings the reference actor's speed to the target actor's speed plus speedDelta, or times speedFactor (relation), at rate (unset: at once, a step), as OpenSCENARIO's SpeedAction with a RelativeTargetSpeed. It follows the target's speed as it changes and is finished when the speed is first reached; a continuous one keeps the relation afterwards (as Follow keeps its gap) until another maneuver of the actor's speed takes over, as a later speed action overrides a continuous one in players (release 1.4)."""
+    relation = EAttribute(eType=SpeedRelation, unique=True, derived=False,
+                          changeable=True, default_value=SpeedRelation.delta)
+    continuous = EAttribute(eType=EBoolean, unique=True, derived=False,
+                            changeable=True, default_value=False)
+    speedDelta = EReference(ordered=True, unique=True, containment=True, derived=False)
+    speedFactor = EReference(ordered=True, unique=True, containment=True, derived=False)
+    rate = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, relation=None, speedDelta=None, speedFactor=None, rate=None, continuous=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if relation is not None:
+            self.relation = relation
+
+        if continuous is not None:
+            self.continuous = continuous
+
+        if speedDelta is not None:
+            self.speedDelta = speedDelta
+
+        if speedFactor is not None:
+            self.speedFactor = speedFactor
+
+        if rate is not None:
+            self.rate = rate
 
 
 class TurnLeft(RoutedManeuver):

@@ -141,7 +141,7 @@ def test_spec_concepts_exist(package) -> None:
 def test_every_action_kind_has_category_complexity_and_typed_parameters() -> None:
     # OpaqueAction (what `sceml import` keeps verbatim) is no paper kind: category "opaque".
     kinds = [k for k in catalog.action_node_kinds() if k.__name__ != "OpaqueAction"]
-    assert len(kinds) == 30
+    assert len(kinds) == 34
     assert catalog.category("OpaqueAction") == "opaque"
     for kind in kinds:
         assert catalog.category(kind) in catalog.CATEGORIES, kind
@@ -182,6 +182,7 @@ def test_target_actor_kinds() -> None:
     assert needing == {
         "Follow",
         "Approach",
+        "MatchSpeed",
         "Overtake",
         "InVehicleRadius",
         "TimeToCollision",

@@ -82,21 +82,22 @@ def test_a_problem_in_a_module_use_marks_the_use(uis2: EditorSession) -> None:
 def test_palette_groups_and_libraries(uis2: EditorSession) -> None:
     palette = uis2.view()["palette"]
     groups = [g["group"] for g in palette]
-    assert groups[:7] == [
+    assert groups[:8] == [
         "longitudinal",
         "lateral",
         "composite",
         "controller",
+        "appearance",
         "condition",
         "global",
         "join",
     ]
-    assert groups[7] == "library:library/sceml-library.xmi"
+    assert groups[8] == "library:library/sceml-library.xmi"
     longitudinal = [i["kind"] for i in palette[0]["items"]]
     assert "Accelerate" in longitudinal and "TurnLeft" not in longitudinal
-    modules = [i["module"] for i in palette[7]["items"]]
-    assert "CrossingManeuver" in modules and palette[7]["items"][0]["kind"] == "ModuleUse"
-    crossing = next(i for i in palette[7]["items"] if i["module"] == "CrossingManeuver")
+    modules = [i["module"] for i in palette[8]["items"]]
+    assert "CrossingManeuver" in modules and palette[8]["items"][0]["kind"] == "ModuleUse"
+    crossing = next(i for i in palette[8]["items"] if i["module"] == "CrossingManeuver")
     # UIS2's actors: ego and car are Cars (FourWheelers), pedestrian a Pedestrian.
     assert crossing["roles"] == [
         {"role": "crosser", "allowedKinds": ["TwoWheeler", "Pedestrian"], "actors": ["pedestrian"]},

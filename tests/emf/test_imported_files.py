@@ -221,3 +221,22 @@ def test_emf_reads_and_writes_trailers_and_reverse_speeds(emf: Harness, tmp_path
     assert (actors["Car"].hitchX.value, actors["Car+"].couplerX.value) == (-1.2, 3.25)
     reverse = next(n for n in load(out / "reversing.xmi").root.nodes if n.name == "Reverse")
     assert reverse.targetSpeed.value == -3.0
+
+
+def test_emf_reads_and_writes_imported_lights_and_motion_conditions(
+    emf: Harness, tmp_path: Path
+) -> None:
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    import_to_file(FILES / "lights-and-stops.xosc", source / "lights.xmi")
+    import_to_file(FILES / "relative-speeds.xosc", source / "speeds.xmi")
+    written = (source / "lights.xmi").read_text() + (source / "speeds.xmi").read_text()
+    for kind in ("LightState", "StandStill", "AccelerationCondition", "MatchSpeed"):
+        assert f'xsi:type="scemlmodel:{kind}"' in written
+    assert 'mode="flashing"' in written and 'direction="longitudinal"' in written
+    assert 'relation="factor"' in written
+    for name in ("lights.xmi", "speeds.xmi"):
+        result = emf.run("roundtrip", ECORE, source, out, Path(name))
+        assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+        assert differences(load(source / name).root, load(out / name).root) == []

@@ -41,6 +41,8 @@ SKIPPED = {
 
 def _number(owner: EObject, feature: str) -> str:
     held = owner.eGet(feature)
+    if held is None and any(s.name == feature and s.optional for s in catalog.parameters(owner)):
+        return "unset"  # unset has a meaning of its own (a light's intensity: the player's)
     if isinstance(held, scm.ParameterValue) and not isinstance(held, scm.Value):
         return _spread(held)
     return f"{params.concrete(owner, feature):.6f}"

@@ -89,11 +89,13 @@ def test_opaque_nodes_open_in_the_editor_and_are_not_in_the_palette(tmp_path: Pa
     session.open(output)
     view = session.view()
     opaque = [node for node in view["nodes"] if node["kind"] == "OpaqueAction"]
-    # The VisibilityAction; its TraveledDistanceCondition maps to TraveledDistance.
+    # The VisibilityAction; its TraveledDistanceCondition maps to TraveledDistance. The box
+    # says what it is: its type and key values, as the file has them, and where it came from.
     assert [node["look"] for node in opaque] == ["opaque"]
     assert opaque[0]["lines"] == [
         "SideVehicle",
         "Action VisibilityAction",
+        "graphics=false traffic=true sensors=true",
         "OpenSCENARIO 1.3, line 81",
     ]
     assert view["style"]["looks"]["opaque"]["dashed"] is True

@@ -579,16 +579,17 @@ def test_the_conditions_of_one_group_are_a_group_not_a_chain(tmp_path: Path) -> 
 
 # --- same run: opaque conditions and relative speeds ---------------------------------------
 
-STAND_STILL = (
-    '<ConditionGroup><Condition name="Still" delay="4" conditionEdge="rising"><ByEntityCondition>'
+# An end of road condition: a kind SceML keeps opaque (StandStill maps since release 1.4).
+END_OF_ROAD = (
+    '<ConditionGroup><Condition name="RoadEnd" delay="4" conditionEdge="rising"><ByEntityCondition>'
     '<TriggeringEntities triggeringEntitiesRule="any"><EntityRef entityRef="Ego"/>'
-    '</TriggeringEntities><EntityCondition><StandStillCondition duration="1"/>'
+    '</TriggeringEntities><EntityCondition><EndOfRoadCondition duration="1"/>'
     "</EntityCondition></ByEntityCondition></Condition></ConditionGroup>"
 )
 
 
 def test_an_opaque_conditions_delay_is_waited_for_once(tmp_path: Path) -> None:
-    imported = import_file(scenario(tmp_path, stop=STAND_STILL))
+    imported = import_file(scenario(tmp_path, stop=END_OF_ROAD))
     kept = next(n for n in imported.scenario.nodes if isinstance(n, scm.OpaqueAction))
     wait = next(f.target for f in kept.outgoing)
     # The 4 s are the TimeElapsed after the node; the kept XML no longer waits for them too.
@@ -597,7 +598,7 @@ def test_an_opaque_conditions_delay_is_waited_for_once(tmp_path: Path) -> None:
     assert 'delay="0"' in kept.xml
     assert 'conditionEdge="rising"' in kept.xml
     stop = build_xosc(imported.scenario, version="1.1", source_path=tmp_path / "s.xosc").tree
-    kept_xml = [c for c in stop.iter("Condition") if c.find(".//StandStillCondition") is not None]
+    kept_xml = [c for c in stop.iter("Condition") if c.find(".//EndOfRoadCondition") is not None]
     waits = [
         c.get("delay")
         for c in stop.iterfind("Storyboard/StopTrigger//Condition")

@@ -140,3 +140,42 @@ def test_the_editor_offers_an_in_vehicle_radius_its_measure_and_rule() -> None:
     assert fields["coordinateSystem"]["options"] == ["entity", "lane", "road", "trajectory"]
     assert fields["rule"]["options"] == ["greaterThan", "lessThan", "equalTo"]
     assert fields["rule"]["value"] == "lessThan"
+
+
+def test_release_1_4_boxes_show_what_they_set() -> None:
+    b = ScenarioBuilder("labels", level="concrete")
+    ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0), speed=10.0)
+    lead = b.actor("Car", "lead", start=world(30.0, 0.0), speed=5.0)
+    light = b.add(
+        "LightState", ego, lightType="indicatorLeft", mode="flashing", flashingOnDuration=0.4
+    )
+    # The defaults (lowBeam, on, no transition) are not repeated; a ratio has no unit.
+    assert action_lines(light, Scope()) == [
+        "ego",
+        "lightType: indicatorLeft",
+        "mode: flashing",
+        "flashingOnDuration: 0.4 s",
+    ]
+    keep = b.add(
+        "MatchSpeed", ego, target=lead, relation="factor", speedFactor=0.9, continuous=True
+    )
+    assert action_lines(keep, Scope()) == [
+        "ego, target lead",
+        "relation: factor",
+        "continuous: True",
+        "speedFactor: 0.9",
+    ]
+    braking = b.add("AccelerationCondition", ego, acceleration=-0.9, direction="longitudinal")
+    assert action_lines(braking, Scope())[-2:] == [
+        "direction: longitudinal",
+        "acceleration: -0.9 m/s²",
+    ]
+
+
+def test_the_palette_offers_lights_in_their_own_group() -> None:
+    from sceml.editor.palette import node_groups
+
+    groups = {g["group"]: [i["kind"] for i in g["items"]] for g in node_groups()}
+    assert groups["appearance"] == ["LightState"]
+    assert "MatchSpeed" in groups["longitudinal"]
+    assert {"StandStill", "AccelerationCondition"} <= set(groups["condition"])

@@ -397,6 +397,37 @@ def negative_radius(out: Path) -> None:
     save(b.scenario, out, "p007-negative-radius.xmi")
 
 
+@case("p007-negative-light-transition", "SCEML-P007")
+def negative_light_transition(out: Path) -> None:
+    b, ego = scenario()
+    light = b.add("LightState", ego, lightType="brakeLights", transitionTime=-0.5)
+    b.chain(b.root, light, b.end)
+    save(b.scenario, out, "p007-negative-light-transition.xmi")
+
+
+@case("p007-negative-stand-still", "SCEML-P007")
+def negative_stand_still(out: Path) -> None:
+    b, ego = scenario()
+    b.chain(b.root, b.add("StandStill", ego, duration=-1.0), b.end)
+    save(b.scenario, out, "p007-negative-stand-still.xmi")
+
+
+@case("p000-lights-and-motion-conditions-clean", "")
+def lights_and_motion_conditions_clean(out: Path) -> None:
+    """Release 1.4's kinds, set as the corpora set them: a braking below -0.9 m/s² along the
+    road, a stop of 0.1 s, the warning lights on."""
+    b, ego = scenario()
+    braking = b.add(
+        "AccelerationCondition", ego, acceleration=-0.9, rule="lessThan", direction="longitudinal"
+    )
+    stop = b.add("Stop", ego, rate=3.0)
+    still = b.add("StandStill", ego, duration=0.1)
+    lights = b.add("LightState", ego, lightType="warningLights", transitionTime=0.5)
+    b.chain(b.root, stop, b.end)
+    b.chain(b.root, braking, still, lights, b.end)
+    save(b.scenario, out, "p000-lights-and-motion-conditions-clean.xmi")
+
+
 @case("p008-parameter-ref-in-scenario", "SCEML-P008")
 def parameter_ref_in_scenario(out: Path) -> None:
     b, ego = scenario()

@@ -162,6 +162,19 @@ def test_kinds_a_profile_cannot_export() -> None:
     assert codes(b.scenario) == set()
 
 
+def test_an_acceleration_direction_needs_1_2_and_a_light_1_3() -> None:
+    b, ego = scenario()
+    braking = b.add("AccelerationCondition", ego, acceleration=-3.0, direction="lateral")
+    b.chain(b.root, braking, b.end)
+    assert codes(b.scenario, osc_version="1.1") == {"SCEML-E008"}
+    assert codes(b.scenario, osc_version="1.2") == set()
+    braking.direction = scm.AccelerationDirection.total  # the magnitude: every version
+    assert codes(b.scenario, osc_version="1.0") == set()
+    b.chain(b.root, b.add("LightState", ego, lightType="brakeLights"), b.end)
+    assert codes(b.scenario, osc_version="1.2") == {"SCEML-E003"}
+    assert codes(b.scenario, osc_version="1.3") == set()
+
+
 def test_settings_a_version_cannot_say() -> None:
     # OpenSCENARIO 1.0 has no relativeDistanceType: a longitudinal time to collision needs 1.1;
     # the carla profile writes 1.0, so it refuses it too.

@@ -64,6 +64,7 @@ export type Look =
   | "lateral"
   | "composite"
   | "controller"
+  | "appearance"
   | "condition"
   | "root"
   | "end"

@@ -484,6 +484,17 @@ def plan_ttc(ctx: Context, node: scm.TimeToCollision, groups: list[Group]) -> Pl
     return marker_plan(ctx, node, groups, ctx.entity(node.referenceActor), check)
 
 
+#: What match_speed.py uses to add a finish marker.
+finish_marker = _finish_marker
+
 # Registers the planners of sceml import's OpaqueAction, the controller changes, the global
-# kinds and LaneOffset.
-from . import controller_actions, global_kinds, lane_offset, opaque  # noqa: E402, F401
+# kinds, LaneOffset, LightState, MatchSpeed, StandStill and AccelerationCondition.
+from . import (  # noqa: E402, F401
+    appearance,
+    controller_actions,
+    global_kinds,
+    lane_offset,
+    match_speed,
+    motion_conditions,
+    opaque,
+)

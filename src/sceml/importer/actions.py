@@ -102,7 +102,7 @@ def _speed(
     target = speed.find("SpeedActionTarget/AbsoluteTargetSpeed")
     if target is None:
         _relative_speed(build, request, speed, motion)
-        return "a relative target speed has no SceML kind"
+        return _match_speed(build, request, speed)
     value = number(target, "value")
     actor = str(request.actor.name)
     before = motion.speed.get(actor)
@@ -136,6 +136,39 @@ def _relative_speed(build: Build, request: Request, speed: etree._Element, motio
     motion.speed[str(request.actor.name)] = reached
     message = f"the relative target speed taken as {reached:g} m/s, from {other.name}'s"
     _guess(build, request, message)
+
+
+def _match_speed(build: Build, request: Request, speed: etree._Element) -> scm.ActionNode | str:
+    """A speed relative to another actor's: MatchSpeed, at once (a step) or at a linear rate."""
+    target = speed.find("SpeedActionTarget/RelativeTargetSpeed")
+    dynamics = speed.find("SpeedActionDynamics")
+    if target is None or dynamics is None:
+        return "this speed target has no SceML form"
+    shape, dimension = dynamics.get("dynamicsShape"), dynamics.get("dynamicsDimension")
+    amount = number(dynamics, "value", 0.0)
+    if shape == "step" or amount == 0:
+        rate = None  # at once
+    elif shape == "linear" and dimension == "rate":
+        rate = abs(amount)  # some files write a deceleration as a negative rate
+    else:
+        return f"a relative speed reached by a {shape} {dimension} has no SceML form"
+    if rate is not None and target.get("continuous") == "true":
+        # Its finish (the speed first reached) would need a relative speed condition.
+        return "a continuous relative speed reached at a rate has no SceML form"
+    factor = target.get("speedTargetValueType") == "factor"
+    value = number(target, "value")
+    node = _add(
+        build,
+        request,
+        "MatchSpeed",
+        relation="factor" if factor else "delta",
+        speedFactor=value if factor else None,
+        speedDelta=None if factor else value,
+        rate=rate,
+        continuous=target.get("continuous") == "true",
+    )
+    node.targetActor = build.actor(target.get("entityRef"), target)
+    return node
 
 
 def _rate(
@@ -383,8 +416,9 @@ def _lane_offset(
     return node
 
 
-#: What other modules use to register and add their own kinds (global_kinds.py).
+#: What other modules use to register and add their own kinds (global_kinds.py, lights.py).
 maps = _maps
 add_node = _add
 
-from . import controllers, global_kinds  # noqa: E402, F401  (register their actions' mappers)
+# Register their actions' mappers.
+from . import controllers, global_kinds, lights  # noqa: E402, F401

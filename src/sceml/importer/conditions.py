@@ -2,7 +2,8 @@
 
 ReachPosition and Distance (to a position, less than) to InLocationRadius, RelativeDistance to
 InVehicleRadius with its measure and rule, Speed to SpeedCondition, TimeToCollision (to an entity) to TimeToCollision with
-its measure, TraveledDistance to TraveledDistance.
+its measure, TraveledDistance to TraveledDistance, StandStill to StandStill, Acceleration to
+AccelerationCondition with its direction.
 With several triggering entities there is one node per entity, joined: `any` by JoinOneFinished,
 `all` by JoinAllFinished.
 """
@@ -320,4 +321,31 @@ def _ttc(build: Build, test: etree._Element, actor: scm.Actor, wanted: str) -> s
         node.eSet(feature, value)
     node.rule = scm.ComparisonRule.getEEnumLiteral(rule[0])
     node.targetActor = build.actor(target.get("entityRef"), target)
+    return node
+
+
+@_maps("StandStillCondition")
+def _stand_still(
+    build: Build, test: etree._Element, actor: scm.Actor, wanted: str
+) -> scm.ActionNode | str:
+    # esmini counts from when the actor stopped, also before the condition was evaluated.
+    return _node(build, "StandStill", actor, wanted, duration=number(test, "duration"))
+
+
+@_maps("AccelerationCondition")
+def _acceleration(
+    build: Build, test: etree._Element, actor: scm.Actor, wanted: str
+) -> scm.ActionNode | str:
+    rule = RULES.get(str(test.get("rule")))
+    direction = test.get("direction") or "total"  # absent: the magnitude (esmini's GetAcc)
+    literal = scm.AccelerationDirection.getEEnumLiteral(direction)
+    if rule is None or literal is None or direction == "total" and test.get("direction"):
+        return f"the rule {test.get('rule')} or the direction {direction} has no SceML form"
+    if rule[1]:
+        build.report.add(
+            "guessed", f"{wanted}: {test.get('rule')} read as {rule[0]}", build.where(test)
+        )
+    node = _node(build, "AccelerationCondition", actor, wanted, acceleration=number(test, "value"))
+    node.rule = scm.ComparisonRule.getEEnumLiteral(rule[0])
+    node.direction = literal
     return node

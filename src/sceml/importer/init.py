@@ -101,11 +101,14 @@ def _private(build: Build, actor: scm.Actor, private: etree._Element) -> bool:
     follow = private.find("RoutingAction/FollowTrajectoryAction")
     if follow is not None and actor.startPosition is None:
         return _starts_on_trajectory(build, actor, private, follow)
-    if private.find("LateralAction/LaneOffsetAction") is not None:
+    if (
+        private.find("LateralAction/LaneOffsetAction") is not None
+        or private.find("AppearanceAction/LightStateAction") is not None
+    ):
         return _from_the_start(build, actor, private)
     speed = private.find("LongitudinalAction/SpeedAction")
     if speed is not None and speed.find("SpeedActionTarget/RelativeTargetSpeed") is not None:
-        return _relative_speed(build, actor, speed)
+        return _relative_speed(build, actor, private, speed)
     target = None if speed is None else speed.find("SpeedActionTarget/AbsoluteTargetSpeed")
     if speed is None or target is None:
         return False
@@ -123,11 +126,13 @@ def _private(build: Build, actor: scm.Actor, private: etree._Element) -> bool:
     return True
 
 
-def _relative_speed(build: Build, actor: scm.Actor, speed: etree._Element) -> bool:
+def _relative_speed(
+    build: Build, actor: scm.Actor, private: etree._Element, speed: etree._Element
+) -> bool:
     """A step Init speed relative to another actor's Init speed (ALKS: the lead vehicle at the
     ego's speed): the initial speed it comes to, from that actor's, once it is known. A
-    continuous one (it keeps tracking the other's speed) or one before the other's speed is
-    set stays opaque."""
+    continuous one (it keeps tracking the other's speed), a gradual one or one before the
+    other's speed is set is also a MatchSpeed right after the root."""
     target = speed.find("SpeedActionTarget/RelativeTargetSpeed")
     dynamics = speed.find("SpeedActionDynamics")
     other = build.actors.get(str(target.get("entityRef")).split("::")[-1])
@@ -143,8 +148,15 @@ def _relative_speed(build: Build, actor: scm.Actor, speed: etree._Element) -> bo
         # actions given in time (a lane change's duration) get their length from it
         # (`lane_change_crest`: 2 s at 19.5 m/s, not the default 30 m).
         build.init_speeds[str(actor.name)] = base * value if factor else base + value
-    if other is None or target.get("continuous") == "true" or not step or not known:
+    if other is None:
         return False
+    continuous = target.get("continuous") == "true"
+    if continuous or not step or not known:
+        if continuous and known and step:
+            # Players set it at the start as a step, then keep it: the initial speed, and a
+            # MatchSpeed right after the root that keeps it.
+            actor.initialSpeed = traced.value(base * value if factor else base + value)
+        return _from_the_start(build, actor, private)
     actor.initialSpeed = traced.value(base * value if factor else base + value)
     build.report.add(
         "mapped",
@@ -233,8 +245,8 @@ def _starts_on_trajectory(
 
 
 def _from_the_start(build: Build, actor: scm.Actor, private: etree._Element) -> bool:
-    """An Init action that takes time (a lane offset): its node right after the root, as
-    players run it from the start."""
+    """An Init action that takes time (a lane offset, a light's transition): its node right
+    after the root, as players run it from the start."""
     made = _as_story_action(
         build,
         actor,

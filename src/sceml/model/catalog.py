@@ -30,7 +30,15 @@ POSITIVE = "positive"
 NON_NEGATIVE = "nonNegative"
 SIGNED = "signed"
 
-CATEGORIES = ("longitudinal", "lateral", "composite", "controller", "condition", "global")
+CATEGORIES = (
+    "longitudinal",
+    "lateral",
+    "composite",
+    "controller",
+    "appearance",
+    "condition",
+    "global",
+)
 
 #: Features that only say how a node is drawn (the editor's layout); never a parameter or a meaning.
 NOTATION_FEATURES = frozenset({"diagramPosition"})
@@ -193,7 +201,7 @@ def class_name(kind: EObject | EClass | type | str) -> str:
 
 
 def category(kind: EObject | EClass | type | str) -> str | None:
-    """`longitudinal`, `lateral`, `composite`, `controller`, `condition` or `global` for action
+    """`longitudinal`, `lateral`, `composite`, `controller`, `appearance`, `condition` or `global` for action
     nodes (`opaque` for an OpaqueAction), else None."""
     return _node_details(class_name(kind)).get("category")
 

@@ -9,18 +9,20 @@ gives them (override, else the module's default).
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, field
 
+from lxml import etree
 from pyecore.ecore import EAttribute, EEnum, EObject, EReference
 
 import scemlmodel as scm
 
 from ..errors import SceMLError
+from ..files.safexml import hardened_parser
 from ..model import catalog, params
 from ..model.graph import actors, root_level, root_node
 from ..modules.resolve import resolved_definition
+from ..xosc.kept import key_values, kind_text
 from ..xosc.meaning import CONTROLLER_DOMAINS
 
 #: Features every action node has that labels show in other ways, or never.
@@ -94,8 +96,8 @@ def _kmh(value: scm.ParameterValue | None) -> str:
 
 
 def unit_text(unit: str) -> str:
-    """A unit as people write it (`m/s2` -> `m/s²`)."""
-    return unit.replace("m/s2", "m/s²")
+    """A unit as people write it (`m/s2` -> `m/s²`; a ratio's `1` is not written)."""
+    return "" if unit == "1" else unit.replace("m/s2", "m/s²")
 
 
 def describe_value(value: scm.ParameterValue | None, unit: str, scope: Scope) -> str:
@@ -420,30 +422,12 @@ def definition_lines(definition: scm.ModuleDefinition) -> list[str]:
 
 
 def opaque_lines(node: scm.OpaqueAction) -> list[str]:
-    """What an opaque node keeps: the OpenSCENARIO element's kind and the line it came from."""
-    match = _OPAQUE_TAGS.findall(str(node.xml or ""))
-    inner = [
-        tag for tag in match[1:] if tag.endswith(("Action", "Condition")) and tag not in _WRAPPERS
-    ]
-    what = f"{match[0]} {inner[0]}" if match and inner else (match[0] if match else "(empty)")
+    """What an opaque node keeps: the OpenSCENARIO element's kind, its key values (the same
+    words as the import report, `xosc.kept`) and the line it came from."""
     where = f"OpenSCENARIO {node.sourceVersion or '?'}, line {node.sourceLine or '?'}"
-    return [what, where]
-
-
-#: Element names in a kept element, in document order (the XML is our own serialisation).
-_OPAQUE_TAGS = re.compile(r"<([A-Za-z]+)")
-#: Wrappers skipped when naming what an opaque node does.
-_WRAPPERS = {
-    "PrivateAction",
-    "GlobalAction",
-    "LongitudinalAction",
-    "LateralAction",
-    "RoutingAction",
-    "ByEntityCondition",
-    "ByValueCondition",
-    "TriggeringEntities",
-    "EntityRef",
-    "EntityCondition",
-    "EntityAction",
-    "InfrastructureAction",
-}
+    try:
+        element = etree.fromstring(str(node.xml or "").encode("utf-8"), hardened_parser())
+    except etree.XMLSyntaxError:
+        return ["(not well-formed)", where]  # SCEML-E006 says why
+    values = key_values(element)
+    return [kind_text(element), *([values] if values else []), where]

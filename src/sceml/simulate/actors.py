@@ -11,7 +11,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Protocol
 
-from ..xosc.meaning import GapLimits, gap_acceleration
+from ..xosc.meaning import GapLimits, gap_acceleration, standing_after
 from .paths import Path
 
 
@@ -61,6 +61,21 @@ class Ramp:
         change = self.target - actor.speed
         limit = self.rate * dt
         return self.target if abs(change) <= limit else actor.speed + math.copysign(limit, change)
+
+
+@dataclass(frozen=True)
+class SpeedMatching:
+    """Bring the speed to the `target` actor's times `factor` plus `delta`, following it as it
+    changes, at `rate` (m/s2; a step when infinite): MatchSpeed."""
+
+    target: str
+    factor: float
+    delta: float
+    rate: float = math.inf
+
+    def next_speed(self, actor: Actor, others: Mapping[str, Actor], dt: float) -> float:
+        wanted = others[self.target].speed * self.factor + self.delta
+        return Ramp(wanted, self.rate).next_speed(actor, others, dt)
 
 
 @dataclass(frozen=True)
@@ -115,6 +130,11 @@ class Actor:
         self.odometer = 0.0
         #: Dragged by another actor (`trailers.py`): it neither drives nor follows its path.
         self.towed = False
+        #: Seconds stood still since the step it stopped in (StandStill); None while moving
+        #: and before the first step (`xosc.meaning.standing_after`).
+        self.standing_for: float | None = None
+        #: The change of speed over the last step (AccelerationCondition), m/s².
+        self.acceleration = 0.0
         self.place()
 
     def place(self) -> None:
@@ -135,6 +155,8 @@ class Actor:
         road without a link the actor stops, as players stop it; True when it stops there in
         this step."""
         step = (self.speed + speed) / 2.0 * dt
+        self.acceleration = (speed - self.speed) / dt
+        self.standing_for = standing_after(self.standing_for, speed, dt)
         self.speed = speed
         end = self.path.end_of_road
         if end is not None and self.d >= end - 1e-9 and step >= 0.0:

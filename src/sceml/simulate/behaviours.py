@@ -24,7 +24,7 @@ from ..maps import RoadMap
 from ..model.params import concrete
 from ..xosc import meaning
 from . import lanes
-from .actors import Actor, GapKeeping, Hold, Ramp, Shift
+from .actors import Actor, GapKeeping, Hold, Ramp, Shift, SpeedMatching
 from .paths import LaneSpot, Path, joined, straight
 from .world import World
 
@@ -43,6 +43,9 @@ class Behaviour:
         self.name = str(node.name)
         self.actor: Actor = world.actor(node.referenceActor, self.name)
         self.claims = meaning.controls(node.eClass.name)
+        #: When the node started (the instant its trigger held), which is a step before the
+        #: maneuver acts when it waits for the next step; set by the engine before `start`.
+        self.started_at: float | None = None
 
     def start(self, world: World) -> None:
         """Take control of the actor."""
@@ -429,3 +432,46 @@ class LaneOffset(Behaviour):
 
     def release(self, world: World) -> None:
         self.actor.settle_shift()
+
+
+@kind("LightState")
+class LightState(Behaviour):
+    """Switch a light: nothing moves (the preview draws no lights); finished once the
+    transition is over, never while flashing (`xosc.meaning.light_state_duration`)."""
+
+    def start(self, world: World) -> None:
+        world.note(f"{self.name}: the preview draws no lights; only its timing is kept")
+        duration = meaning.light_state_duration(
+            concrete(self.node, "transitionTime"), self.node.mode.name
+        )
+        # The transition runs from the node's start, as esmini's from its action's start.
+        began = world.t if self.started_at is None else self.started_at
+        self.until = None if duration is None else began + duration
+
+    def done(self, world: World) -> bool:
+        return self.until is not None and world.t >= self.until - 1e-9
+
+
+@kind("MatchSpeed")
+class MatchSpeed(Behaviour):
+    """Bring the speed to the target actor's times the factor or plus the delta, following it
+    (`actors.SpeedMatching`); finished when first reached. A continuous one keeps following
+    afterwards (as Follow keeps its gap) until another maneuver of the actor's speed takes
+    over; any other holds the speed it reached."""
+
+    def start(self, world: World) -> None:
+        node = self.node
+        self.other = world.actor(node.targetActor, self.name)
+        factor = node.relation.name == "factor"
+        self.factor = concrete(node, "speedFactor") if factor else 1.0
+        self.delta = 0.0 if factor else concrete(node, "speedDelta")
+        rate = math.inf if node.rate is None else concrete(node, "rate")
+        self.actor.control = SpeedMatching(self.other.name, self.factor, self.delta, rate)
+
+    def done(self, world: World) -> bool:
+        wanted = self.other.speed * self.factor + self.delta
+        if abs(self.actor.speed - wanted) >= meaning.SPEED_TOLERANCE:
+            return False
+        if not self.node.continuous:
+            self.actor.control = Hold()
+        return True

@@ -207,3 +207,29 @@ def time_to_collision(node: EObject, world: World) -> Test:
         return ttc is not None and _compare(node.rule, ttc, threshold, None)
 
     return holds
+
+
+@kind("StandStill")
+def stand_still(node: EObject, world: World) -> Test:
+    actor = world.actor(node.referenceActor, str(node.name))
+    duration = concrete(node, "duration")
+    # Counted from when the actor stopped, before the activation too (esmini's timestamp).
+    return lambda w: actor.standing_for is not None and actor.standing_for > duration + 1e-9
+
+
+@kind("AccelerationCondition")
+def acceleration_condition(node: EObject, world: World) -> Test:
+    actor = world.actor(node.referenceActor, str(node.name))
+    threshold = concrete(node, "acceleration")
+    direction = node.direction.name
+    if direction in ("lateral", "vertical"):
+        world.note(f"{node.name}: the preview has no {direction} acceleration, taken as 0")
+    previous: list[float | None] = [None]
+
+    def holds(w: World) -> bool:
+        now = meaning.measured_acceleration(direction, actor.acceleration)
+        result = _compare(node.rule, now, threshold, previous[0])
+        previous[0] = now
+        return result
+
+    return holds

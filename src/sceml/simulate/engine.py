@@ -239,6 +239,7 @@ class Scheduler:
                 superseded.append(previous)
             self.owners[(behaviour.actor.name, part)] = state
         state.behaviour = behaviour
+        behaviour.started_at = state.started
         behaviour.start(self.world)
         self.active.append(state)
         return [*superseded, state] if behaviour.done(self.world) else superseded

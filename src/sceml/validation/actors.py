@@ -86,8 +86,8 @@ def actors_declared_here(node: scm.ActionNode, context: Context) -> Iterator[Fin
     "SCEML-A003",
     ERROR,
     "ActionNode",
-    "kinds that act relative to another actor (Follow, Approach, Overtake, InVehicleRadius, "
-    "TimeToCollision, TimeHeadway) have a target actor",
+    "kinds that act relative to another actor (Follow, Approach, MatchSpeed, Overtake, "
+    "InVehicleRadius, TimeToCollision, TimeHeadway) have a target actor",
     reads=Reads(SELF),
     export=True,
 )

@@ -144,13 +144,14 @@ def kinds_exportable(scenario: scm.Scenario, context: Context) -> Iterator[Findi
         "InVehicleRadius",
         "ActivateController",
         "AssignController",
+        "AccelerationCondition",
         "Actor",
     ),
     "with a target OpenSCENARIO version or export profile given, every node's and actor's "
     "settings can be said in it (1.0 has no coordinateSystem, no relativeDistanceType but "
     "a RelativeDistanceCondition's, no "
-    "assignment that activates; before 1.2 no lighting or animation domain, no controllerType; "
-    "before 1.3 no trailer)",
+    "assignment that activates; before 1.2 no lighting or animation domain, no controllerType, "
+    "no acceleration direction; before 1.3 no trailer)",
     # The node's own measure or controller settings, or the actor's controller, against the
     # target version.
     reads=Reads(SELF),

@@ -81,6 +81,36 @@ def completes_at_once(kind: str) -> bool:
 
 #: A speed counts as reached within this much (m/s): Accelerate, Decelerate, Stop.
 SPEED_TOLERANCE = 1e-6
+#: Below this speed (m/s) an actor stands still for a StandStill condition (esmini 3.6's
+#: STAND_STILL_THRESHOLD).
+STAND_STILL_SPEED = 1e-3
+
+
+def standing_after(standing_for: float | None, speed: float, dt: float) -> float | None:
+    """How long an actor has stood still after a step of `dt` ending at `speed`: 0 in the step
+    it stops in, one step more for each step after, None while it moves. esmini 3.6 stamps the
+    stop with the step's time and a StandStillCondition compares the time since with
+    `duration` (strictly greater); it stamps an actor standing from the start only in the
+    first step (a stamp of t = 0 counts as none)."""
+    if abs(speed) >= STAND_STILL_SPEED:
+        return None
+    return 0.0 if standing_for is None else standing_for + dt
+
+
+def light_state_duration(transition_time: float, mode: str) -> float | None:
+    """How long a LightState runs: its transition (esmini 3.6 ends a LightStateAction when the
+    transition is over), or None, forever, for a flashing light (esmini never ends that
+    action; another action on the light overrides it)."""
+    return None if mode == "flashing" else transition_time
+
+
+def measured_acceleration(direction: str, longitudinal: float) -> float:
+    """The acceleration an AccelerationCondition compares, from the longitudinal one (the only
+    one the preview knows, its lateral and vertical taken as 0): the magnitude without a
+    direction (esmini 3.6's GetAcc), else the component."""
+    if direction == "total":
+        return abs(longitudinal)
+    return longitudinal if direction == "longitudinal" else 0.0
 
 
 def drive_distance_duration(distance: float, speed: float) -> float:

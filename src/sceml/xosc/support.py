@@ -21,6 +21,7 @@ __all__ = [
 MAPPED_KINDS = frozenset(
     {
         "Accelerate",
+        "AccelerationCondition",
         "ActivateController",
         "Approach",
         "AssignController",
@@ -37,6 +38,8 @@ MAPPED_KINDS = frozenset(
         "KeepVelocity",
         "LaneChange",
         "LaneOffset",
+        "LightState",
+        "MatchSpeed",
         "OpaqueAction",
         "OutPort",
         "OverrideController",
@@ -45,6 +48,7 @@ MAPPED_KINDS = frozenset(
         "SetParameter",
         "SetVariable",
         "SpeedCondition",
+        "StandStill",
         "Stop",
         "TimeElapsed",
         "TimeHeadway",
@@ -69,6 +73,7 @@ REPEATABLE_KINDS = frozenset(
         "Decelerate",
         "LaneChange",
         "LaneOffset",
+        "LightState",
         "OpaqueAction",
         "OverrideController",
         "SetParameter",
@@ -98,6 +103,10 @@ SINCE: dict[str, tuple[str, str | None]] = {
     "OverrideController": ("1.1", None),
     "VariableCondition": ("1.2", _VARIABLES),
     "SetVariable": ("1.2", _VARIABLES),
+    # The action came with 1.2, but 1.2's schema wants a UserDefinedLight beside every
+    # VehicleLight (its LightType is a sequence; 1.3 made it a choice), so an XSD-valid 1.2
+    # file cannot switch a vehicle light.
+    "LightState": ("1.3", "1.2's schema asks for a user-defined light beside each vehicle light"),
 }
 
 
@@ -146,7 +155,11 @@ def _minor(version: str) -> int:
 def unsupported_setting(node: object, version: str) -> str | None:
     """Why a node's or actor's settings (not its kind) cannot be said in `version`; None when
     they can."""
-    reason = _trailer_setting(node, _minor(version)) or _controller_setting(node, _minor(version))
+    reason = (
+        _trailer_setting(node, _minor(version))
+        or _controller_setting(node, _minor(version))
+        or _direction_setting(node, version)
+    )
     if reason is not None or version != "1.0":
         return reason
     for feature, plain in _SINCE_1_1:
@@ -170,6 +183,16 @@ def _trailer_setting(node: object, minor: int) -> str | None:
     are OpenSCENARIO 1.3 elements."""
     if minor < 3 and getattr(node, "trailer", None) is not None:
         return "a trailer (TrailerHitch, TrailerCoupler, Trailer) needs OpenSCENARIO 1.3 or later"
+    return None
+
+
+def _direction_setting(node: object, version: str) -> str | None:
+    """An AccelerationCondition's direction: OpenSCENARIO 1.2 added it (before, the magnitude)."""
+    direction = (
+        getattr(node, "direction", None) if _kind_name(node) == "AccelerationCondition" else None
+    )
+    if direction is not None and direction.name != "total" and _minor(version) < 2:
+        return f"an acceleration's direction ({direction.name}) needs OpenSCENARIO 1.2 or later"
     return None
 
 
