@@ -9,6 +9,7 @@ lanes of 3.5 m each side: lane -2 spans t = -3.5 .. -7, centre -5.25).
 
 from __future__ import annotations
 
+import math
 import shutil
 from pathlib import Path
 
@@ -521,6 +522,25 @@ def test_a_lane_offset_reaching_into_the_next_lane_is_that_lane(tmp_path: Path) 
     # Within its lane, a position stays as written.
     start, _ = start_of(tmp_path, '<LanePosition roadId="1" laneId="-1" s="70" offset="-1"/>')
     assert lane(start) == ("1", -1, 70.0, -1.0)
+    assert start.h is None
+
+
+def test_a_lane_offset_reaching_across_the_centre_keeps_facing_its_own_lanes_way(
+    tmp_path: Path,
+) -> None:
+    # 3.5 m left of lane -1's centre (t = -1.75) is t = 1.75, the centre of lane 1, whose traffic
+    # runs the other way: without an Orientation the actor faces along lane -1 (increasing s),
+    # so in lane 1 it faces backwards (speed-profile's Car2 drove the wrong way).
+    start, _ = start_of(tmp_path, '<LanePosition roadId="1" laneId="-1" s="70" offset="3.5"/>')
+    assert lane(start) == ("1", 1, 70.0, 0.0)
+    assert abs(start.h.value) == pytest.approx(math.pi)
+    # A written heading is kept relative to the lane it now lies in: 0.2 rad off lane -1's way.
+    start, _ = start_of(
+        tmp_path,
+        '<LanePosition roadId="1" laneId="-1" s="70" offset="3.5">'
+        '<Orientation type="relative" h="0.2"/></LanePosition>',
+    )
+    assert start.h.value == pytest.approx(0.2 - math.pi)
 
 
 def test_with_a_time_limit_too_it_is_the_maximum_duration_and_the_stop_alone_ends_the_run(

@@ -136,8 +136,9 @@ def _in_its_lane(
         return given
     if moved is None or isinstance(given.s.value, traced.Traced):
         return given  # off the road, or a distributed s: left as written
-    if given.h is not None:
-        moved.h = _same_heading(build, given, moved)
+    heading = _same_heading(build, given, moved)
+    if heading is not None:
+        moved.h = heading
     where = None if holder is None else holder.find(".//LanePosition")
     build.report.add(
         "guessed",
@@ -150,16 +151,23 @@ def _in_its_lane(
 
 def _same_heading(
     build: Build, given: scm.LanePosition, moved: scm.LanePosition
-) -> scm.ParameterValue:
-    """`given`'s heading relative to `moved`'s lane, which may carry traffic the other way."""
+) -> scm.ParameterValue | None:
+    """`given`'s heading relative to `moved`'s lane, which may carry traffic the other way;
+    None when `given` has none and `moved`'s traffic runs the same way. A position without a
+    heading faces along its own lane's traffic (as players place it), so moved into a lane of
+    the other direction it faces backwards there (speed-profile's Car2: lane -1 with offset
+    3.07 m lies in lane 1, and drives along lane -1's direction)."""
     assert build.road_map is not None
-    h = given.h.value if isinstance(given.h, scm.Value) else None
+    h = given.h.value if isinstance(given.h, scm.Value) else (None if given.h else 0.0)
     if h is None or isinstance(h, traced.Traced):
         return given.h
     s = float(given.s.value)
     old = build.road_map.lane_to_world(str(given.roadId), int(given.laneId), s).heading
     new = build.road_map.lane_to_world(str(moved.roadId), int(moved.laneId), s).heading
-    return scm.Value(value=wrap_angle(float(h) + old - new))
+    turned = wrap_angle(float(h) + old - new)
+    if given.h is None and abs(turned) < 1e-9:
+        return None
+    return scm.Value(value=turned)
 
 
 def _compute(build: Build, kind: etree._Element) -> scm.Position | None:
