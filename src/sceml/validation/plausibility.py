@@ -49,12 +49,30 @@ def highest(value: EObject | None) -> float | None:
     return max(sizes) if sizes else None
 
 
+#: Limit key -> the Actor feature (release 1.4) that states the actor's own limit.
+OWN_LIMITS = {
+    "max_speed": "maxSpeed",
+    "max_acceleration": "maxAcceleration",
+    "max_deceleration": "maxDeceleration",
+}
+
+
+def actor_limit(actor: EObject, context: Context, key: str) -> tuple[float | None, str]:
+    """The limit `key` an actor's values are judged by, and whose it is: the actor's own
+    Performance where it states one (an imported vehicle's; esmini holds it to that), else its
+    kind's plausible limit. SCEML-L004 judges a stated limit against the kind's."""
+    own = actor.eGet(OWN_LIMITS[key]) if isinstance(actor, scm.Actor) else None
+    stated = highest(own)
+    if stated is not None:
+        return stated, f"{actor.name!r}'s own"
+    return context.limits.limit(actor.eClass.name, key), f"{actor.eClass.name}"
+
+
 def _over_limit(owner: EObject, context: Context, key: str, unit: str) -> Iterator[Finding]:
     actor = performer(owner)
     if actor is None:
         return
-    kind = actor.eClass.name
-    limit = context.limits.limit(kind, key)
+    limit, whose = actor_limit(actor, context, key)
     if limit is None:
         return
     for name in catalog.limited(owner.eClass.name, key):
@@ -65,7 +83,7 @@ def _over_limit(owner: EObject, context: Context, key: str, unit: str) -> Iterat
             yield (
                 value,
                 f"{parameter_path(owner, name)} is {describe(value, unit)}, above the "
-                f"{kind} limit of {limit:g} {unit}{in_kmh}",
+                f"{whose} limit of {limit:g} {unit}{in_kmh}",
             )
 
 
@@ -74,7 +92,7 @@ def _over_limit(owner: EObject, context: Context, key: str, unit: str) -> Iterat
     ERROR,
     _KINDS,
     "speeds (initial, target, driving, overtaking, compared) do not exceed the actor kind's "
-    "max_speed",
+    "max_speed (or its own maxSpeed)",
     paper_rule="5",
     through_modules=True,
     # the performer's kind
@@ -89,7 +107,8 @@ def speed_fits_actor(owner: EObject, context: Context) -> Iterator[Finding]:
     "SCEML-L002",
     ERROR,
     _KINDS,
-    "acceleration rates do not exceed the actor kind's max_acceleration",
+    "acceleration rates do not exceed the actor kind's max_acceleration (or its own "
+    "maxAcceleration)",
     paper_rule="5",
     through_modules=True,
     # the performer's kind
@@ -104,7 +123,8 @@ def acceleration_fits_actor(owner: EObject, context: Context) -> Iterator[Findin
     "SCEML-L003",
     ERROR,
     _KINDS,
-    "deceleration rates (Decelerate, Stop) do not exceed the actor kind's max_deceleration",
+    "deceleration rates (Decelerate, Stop) do not exceed the actor kind's max_deceleration "
+    "(or its own maxDeceleration)",
     paper_rule="5",
     through_modules=True,
     # the performer's kind
@@ -113,3 +133,30 @@ def acceleration_fits_actor(owner: EObject, context: Context) -> Iterator[Findin
 )
 def deceleration_fits_actor(owner: EObject, context: Context) -> Iterator[Finding]:
     yield from _over_limit(owner, context, "max_deceleration", "m/s2")
+
+
+@constraint(
+    "SCEML-L004",
+    Severity.WARNING,
+    "Actor",
+    "an actor's own performance (maxSpeed, maxAcceleration, maxDeceleration) does not exceed its "
+    "kind's plausible limits",
+    paper_rule="5",
+    # the actor's own values and kind
+    reads=Reads(SELF),
+    judges_stated_values=True,
+)
+def performance_plausible(actor: scm.Actor, context: Context) -> Iterator[Finding]:
+    # A warning, not an error: real catalogs state generous limits (esmini's bus: 70 m/s) that
+    # only cap the motion; the speeds the scenario asks for are still judged (L001..L003).
+    for key, feature in OWN_LIMITS.items():
+        value = actor.eGet(feature)
+        top = highest(value)
+        limit = context.limits.limit(actor.eClass.name, key)
+        if top is not None and limit is not None and top > limit:
+            unit = "m/s" if key == "max_speed" else "m/s2"
+            yield (
+                value,
+                f"{parameter_path(actor, feature)} is {describe(value, unit)}, above the "
+                f"{actor.eClass.name} limit of {limit:g} {unit}",
+            )
