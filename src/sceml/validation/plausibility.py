@@ -19,7 +19,7 @@ from ..model import catalog
 from ..model.params import describe
 from .context import Context, performer
 from .parameters import parameter_path
-from .reads import VALUE, Reads
+from .reads import SELF, VALUE, Reads
 from .registry import Finding, constraint
 
 ERROR = Severity.ERROR
