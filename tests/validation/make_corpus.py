@@ -518,12 +518,21 @@ def own_braking_beyond_the_table(out: Path) -> None:
     save(b.scenario, out, "l004-own-braking-beyond-the-table.xmi")
 
 
-@case("l003-own-braking-too-hard", "SCEML-L003")
-def own_braking_too_hard(out: Path) -> None:
-    # 6 m/s2 is within the Truck table's 8 but above the truck's own maxDeceleration of 5.
+@case("l005-own-braking-held", "SCEML-L005")
+def own_braking_held(out: Path) -> None:
+    # 6 m/s2 is within the Truck table's 8 but above the truck's own maxDeceleration of 5: a
+    # warning (players hold it to 5), not L003.
     b, ego = scenario()
     _own_truck(b, 6.0, maxDeceleration=5.0)
-    save(b.scenario, out, "l003-own-braking-too-hard.xmi")
+    save(b.scenario, out, "l005-own-braking-held.xmi")
+
+
+@case("l003-above-a-raised-own-limit", "SCEML-L003 SCEML-L004")
+def above_a_raised_own_limit(out: Path) -> None:
+    # The truck's own maxDeceleration (10) raises the ceiling from the table's 8; 12 is above it.
+    b, ego = scenario()
+    _own_truck(b, 12.0, maxDeceleration=10.0)
+    save(b.scenario, out, "l003-above-a-raised-own-limit.xmi")
 
 
 @case("l004-own-top-speed-implausible", "SCEML-L004")

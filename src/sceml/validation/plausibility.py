@@ -57,22 +57,27 @@ OWN_LIMITS = {
 }
 
 
-def actor_limit(actor: EObject, context: Context, key: str) -> tuple[float | None, str]:
-    """The limit `key` an actor's values are judged by, and whose it is: the actor's own
-    Performance where it states one (an imported vehicle's; esmini holds it to that), else its
-    kind's plausible limit. SCEML-L004 judges a stated limit against the kind's."""
+def own_limit(actor: EObject, key: str) -> float | None:
+    """The limit `key` the actor states itself (release 1.4's Actor.maxSpeed, ...), or None."""
     own = actor.eGet(OWN_LIMITS[key]) if isinstance(actor, scm.Actor) else None
-    stated = highest(own)
-    if stated is not None:
-        return stated, f"{actor.name!r}'s own"
-    return context.limits.limit(actor.eClass.name, key), f"{actor.eClass.name}"
+    return highest(own)
 
 
-def _over_limit(owner: EObject, context: Context, key: str, unit: str) -> Iterator[Finding]:
-    actor = performer(owner)
-    if actor is None:
-        return
-    limit, whose = actor_limit(actor, context, key)
+def actor_limit(actor: EObject, context: Context, key: str) -> tuple[float | None, str]:
+    """The limit `key` above which an actor's values are implausible (L001..L003), and whose
+    it is: its kind's, unless the actor states a higher one itself (esmini's catalog bus is good
+    for 70 m/s, and plays so). An own limit below the kind's does not make a value beyond it
+    implausible: the players hold the actor to it, which SCEML-L005 says."""
+    kind = context.limits.limit(actor.eClass.name, key)
+    own = own_limit(actor, key)
+    if own is not None and (kind is None or own > kind):
+        return own, f"{actor.name}'s own"
+    return kind, f"the {actor.eClass.name}"
+
+
+def _over(
+    owner: EObject, key: str, unit: str, limit: float | None, whose: str
+) -> Iterator[Finding]:
     if limit is None:
         return
     for name in catalog.limited(owner.eClass.name, key):
@@ -82,9 +87,15 @@ def _over_limit(owner: EObject, context: Context, key: str, unit: str) -> Iterat
             in_kmh = f" ({limit * 3.6:g} km/h)" if unit == "m/s" else ""
             yield (
                 value,
-                f"{parameter_path(owner, name)} is {describe(value, unit)}, above the "
+                f"{parameter_path(owner, name)} is {describe(value, unit)}, above "
                 f"{whose} limit of {limit:g} {unit}{in_kmh}",
             )
+
+
+def _over_limit(owner: EObject, context: Context, key: str, unit: str) -> Iterator[Finding]:
+    actor = performer(owner)
+    if actor is not None:
+        yield from _over(owner, key, unit, *actor_limit(actor, context, key))
 
 
 @constraint(
@@ -92,7 +103,7 @@ def _over_limit(owner: EObject, context: Context, key: str, unit: str) -> Iterat
     ERROR,
     _KINDS,
     "speeds (initial, target, driving, overtaking, compared) do not exceed the actor kind's "
-    "max_speed (or its own maxSpeed)",
+    "max_speed (or its own maxSpeed where that is higher)",
     paper_rule="5",
     through_modules=True,
     # the performer's kind
@@ -108,7 +119,7 @@ def speed_fits_actor(owner: EObject, context: Context) -> Iterator[Finding]:
     ERROR,
     _KINDS,
     "acceleration rates do not exceed the actor kind's max_acceleration (or its own "
-    "maxAcceleration)",
+    "maxAcceleration where that is higher)",
     paper_rule="5",
     through_modules=True,
     # the performer's kind
@@ -124,7 +135,7 @@ def acceleration_fits_actor(owner: EObject, context: Context) -> Iterator[Findin
     ERROR,
     _KINDS,
     "deceleration rates (Decelerate, Stop) do not exceed the actor kind's max_deceleration "
-    "(or its own maxDeceleration)",
+    "(or its own maxDeceleration where that is higher)",
     paper_rule="5",
     through_modules=True,
     # the performer's kind
@@ -160,3 +171,31 @@ def performance_plausible(actor: scm.Actor, context: Context) -> Iterator[Findin
                 f"{parameter_path(actor, feature)} is {describe(value, unit)}, above the "
                 f"{actor.eClass.name} limit of {limit:g} {unit}",
             )
+
+
+@constraint(
+    "SCEML-L005",
+    Severity.WARNING,
+    _KINDS,
+    "speeds and rates do not exceed the actor's own maxSpeed, maxAcceleration and "
+    "maxDeceleration (where they are below its kind's limits: the players hold it to them)",
+    paper_rule="5",
+    through_modules=True,
+    # the performer's own limits
+    reads=Reads(VALUE),
+    judges_stated_values=True,
+)
+def within_own_performance(owner: EObject, context: Context) -> Iterator[Finding]:
+    actor = performer(owner)
+    if actor is None:
+        return
+    for key, unit in (
+        ("max_speed", "m/s"),
+        ("max_acceleration", "m/s2"),
+        ("max_deceleration", "m/s2"),
+    ):
+        own, (ceiling, _) = own_limit(actor, key), actor_limit(actor, context, key)
+        if own is None or (ceiling is not None and own >= ceiling):
+            continue  # no own limit, or it is the ceiling L001..L003 judge by
+        for value, message in _over(owner, key, unit, own, f"{actor.name}'s own"):
+            yield value, f"{message}: the players hold it to that"
