@@ -38,9 +38,7 @@ def read_performance(vehicle: etree._Element) -> Performance:
     element = vehicle.find("Performance")
     if element is None:
         return Performance(None, None, None)
-    values = [
-        number(element, name) if element.get(name) is not None else None for name in FEATURES
-    ]
+    values = [number(element, name) if element.get(name) is not None else None for name in FEATURES]
     return Performance(*values)
 
 
