@@ -886,10 +886,13 @@ class Actor(Participant):
     trailer = EReference(ordered=True, unique=True, containment=False, derived=False)
     hitchX = EReference(ordered=True, unique=True, containment=True, derived=False)
     couplerX = EReference(ordered=True, unique=True, containment=True, derived=False)
+    maxSpeed = EReference(ordered=True, unique=True, containment=True, derived=False)
+    maxAcceleration = EReference(ordered=True, unique=True, containment=True, derived=False)
+    maxDeceleration = EReference(ordered=True, unique=True, containment=True, derived=False)
     controller = EReference(ordered=True, unique=True, containment=True, derived=False)
     controllerActivation = EReference(ordered=True, unique=True, containment=True, derived=False)
 
-    def __init__(self, *, isEgo=None, model=None, startPosition=None, initialSpeed=None, length=None, width=None, height=None, boxCenterX=None, trailer=None, hitchX=None, couplerX=None, controller=None, controllerActivation=None, **kwargs):
+    def __init__(self, *, isEgo=None, model=None, startPosition=None, initialSpeed=None, length=None, width=None, height=None, boxCenterX=None, trailer=None, hitchX=None, couplerX=None, maxSpeed=None, maxAcceleration=None, maxDeceleration=None, controller=None, controllerActivation=None, **kwargs):
 
         super().__init__(**kwargs)
 
@@ -925,6 +928,15 @@ class Actor(Participant):
 
         if couplerX is not None:
             self.couplerX = couplerX
+
+        if maxSpeed is not None:
+            self.maxSpeed = maxSpeed
+
+        if maxAcceleration is not None:
+            self.maxAcceleration = maxAcceleration
+
+        if maxDeceleration is not None:
+            self.maxDeceleration = maxDeceleration
 
         if controller is not None:
             self.controller = controller

@@ -36,6 +36,10 @@ SIGNED_SPEEDS = {
 @pytest.mark.parametrize("kind", KINDS)
 def test_every_speed_has_its_sign_and_is_bounded_by_max_speed(kind: str) -> None:
     for spec in catalog.parameters(kind):
+        if spec.name == "maxSpeed":
+            # The actor's own limit (release 1.4): it bounds the others, SCEML-L004 judges it.
+            assert (spec.sign, spec.limit, spec.optional) == (catalog.POSITIVE, None, True)
+            continue
         # A difference of speeds (MatchSpeed's delta: slower than the target) may be negative.
         if spec.unit == "m/s" and (kind, spec.name) != ("MatchSpeed", "speedDelta"):
             sign = catalog.SIGNED if (kind, spec.name) in SIGNED_SPEEDS else catalog.NON_NEGATIVE

@@ -506,3 +506,27 @@ def test_a_trailer_and_its_hitch_and_coupler_are_fields(uis1: EditorSession) -> 
         uis1.apply([{"op": "set_actor", "actor": ego, "field": "trailer", "value": "truck"}])
     with pytest.raises(OperationError, match="cannot tow itself"):
         uis1.apply([{"op": "set_actor", "actor": ego, "field": "trailer", "value": "ego"}])
+
+
+def test_an_actors_own_performance_is_a_field_unset_by_default(uis1: EditorSession) -> None:
+    # Release 1.4: Actor.maxSpeed, maxAcceleration, maxDeceleration (a Vehicle's Performance).
+    view = uis1.view()
+    ego = actor_id(view, "ego")
+    ego_view = next(a for a in view["actors"] if a["id"] == ego)
+    top = field(ego_view, "maxSpeed")
+    assert (top["label"], top["value"]) == ("Top speed", None)
+    after = roundtrip(
+        uis1,
+        [
+            {
+                "op": "set_actor_parameter",
+                "actor": ego,
+                "field": "maxAcceleration",
+                "value": {"type": "value", "value": 5.0},
+            },
+        ],
+    )
+    ego_view = next(a for a in after["actors"] if a["id"] == ego)
+    assert field(ego_view, "maxAcceleration")["label"] == "Max acceleration"
+    assert field(ego_view, "maxAcceleration")["value"]["value"] == 5.0
+    assert field(ego_view, "maxDeceleration")["value"] is None

@@ -240,3 +240,19 @@ def test_emf_reads_and_writes_imported_lights_and_motion_conditions(
         result = emf.run("roundtrip", ECORE, source, out, Path(name))
         assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
         assert differences(load(source / name).root, load(out / name).root) == []
+
+
+def test_emf_reads_and_writes_an_actors_own_performance(emf: Harness, tmp_path: Path) -> None:
+    """Release 1.4: Actor.maxSpeed, maxAcceleration, maxDeceleration (a Vehicle's Performance),
+    set on some actors and unset on others."""
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    import_to_file(FILES / "performance.xosc", source / "performance.xmi")
+    result = emf.run("roundtrip", ECORE, source, out, Path("performance.xmi"))
+    assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+    original, from_emf = load(source / "performance.xmi"), load(out / "performance.xmi")
+    assert differences(original.root, from_emf.root) == []
+    actors = {a.name: a for a in from_emf.root.nodes[0].actors}
+    assert (actors["Ego"].maxSpeed.value, actors["Ego"].maxAcceleration.value) == (25.0, 4.0)
+    assert actors["Ego"].maxDeceleration is None and actors["Lead"].maxSpeed.value == 50.0

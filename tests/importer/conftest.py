@@ -45,6 +45,8 @@ def _number(owner: EObject, feature: str) -> str:
         return "unset"  # unset has a meaning of its own (a light's intensity: the player's)
     if isinstance(held, scm.ParameterValue) and not isinstance(held, scm.Value):
         return _spread(held)
+    if held is None and catalog.parameter(owner, feature).optional:
+        return "unset"  # an optional value (an actor's own maxSpeed, release 1.4) not stated
     return f"{params.concrete(owner, feature):.6f}"
 
 

@@ -80,6 +80,8 @@ def test_the_rules_that_judge_stated_values_are_the_limits_and_the_map() -> None
         "SCEML-L001",
         "SCEML-L002",
         "SCEML-L003",
+        "SCEML-L004",
+        "SCEML-L005",
         "SCEML-R003",
         "SCEML-R004",
         "SCEML-R005",

@@ -532,6 +532,55 @@ def truck_braking(out: Path) -> None:
     save(b.scenario, out, "l003-truck-braking.xmi")
 
 
+def _own_truck(b: ScenarioBuilder, rate: float, **own: float) -> None:
+    """A truck stating its own limits (release 1.4) that brakes to a stop at `rate`."""
+    truck = b.actor("Truck", "truck", start=lane(1, 1, 40.0), speed=20.0)
+    for feature, value in own.items():
+        truck.eSet(feature, scm.Value(value=value))
+    b.chain(b.root, b.add("Stop", truck, rate=rate), b.end)
+
+
+@case("l004-own-braking-beyond-the-table", "SCEML-L004")
+def own_braking_beyond_the_table(out: Path) -> None:
+    # 10 m/s2 is above the Truck table's 8 but within the truck's own maxDeceleration: no L003;
+    # the own limit itself is above the table (L004, a warning).
+    b, ego = scenario()
+    _own_truck(b, 10.0, maxDeceleration=10.0)
+    save(b.scenario, out, "l004-own-braking-beyond-the-table.xmi")
+
+
+@case("l005-own-braking-held", "SCEML-L005")
+def own_braking_held(out: Path) -> None:
+    # 6 m/s2 is within the Truck table's 8 but above the truck's own maxDeceleration of 5: a
+    # warning (players hold it to 5), not L003.
+    b, ego = scenario()
+    _own_truck(b, 6.0, maxDeceleration=5.0)
+    save(b.scenario, out, "l005-own-braking-held.xmi")
+
+
+@case("l003-above-a-raised-own-limit", "SCEML-L003 SCEML-L004")
+def above_a_raised_own_limit(out: Path) -> None:
+    # The truck's own maxDeceleration (10) raises the ceiling from the table's 8; 12 is above it.
+    b, ego = scenario()
+    _own_truck(b, 12.0, maxDeceleration=10.0)
+    save(b.scenario, out, "l003-above-a-raised-own-limit.xmi")
+
+
+@case("l004-own-top-speed-implausible", "SCEML-L004")
+def own_top_speed_implausible(out: Path) -> None:
+    # A truck that says it is good for 90 m/s (324 km/h), above the Truck table's 35.
+    b, ego = scenario()
+    _own_truck(b, 5.0, maxSpeed=90.0)
+    save(b.scenario, out, "l004-own-top-speed-implausible.xmi")
+
+
+@case("p007-own-acceleration-negative", "SCEML-P007")
+def own_acceleration_negative(out: Path) -> None:
+    b, ego = scenario()
+    _own_truck(b, 5.0, maxAcceleration=-1.0)
+    save(b.scenario, out, "p007-own-acceleration-negative.xmi")
+
+
 # Modules -------------------------------------------------------------------------------------
 
 

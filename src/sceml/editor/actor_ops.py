@@ -28,6 +28,9 @@ _ACTOR_PARAMETERS = (
     "boxCenterX",
     "hitchX",
     "couplerX",
+    "maxSpeed",
+    "maxAcceleration",
+    "maxDeceleration",
 )
 
 
@@ -127,7 +130,8 @@ def _change_kind(ctx: EditContext, actor: scm.Actor, cls: type) -> None:
 
 
 def set_actor_parameter(ctx: EditContext, op: dict[str, Any]) -> None:
-    """Set (or unset) an actor's initial speed or bounding-box dimension."""
+    """Set (or unset) an actor's initial speed, bounding-box dimension, hitch or coupler, or
+    its own performance limit (release 1.4)."""
     actor = ctx.actor(argument(op, "actor"))
     field = argument(op, "field")
     require(field in _ACTOR_PARAMETERS, f"an actor has no parameter {field!r}")

@@ -31,6 +31,9 @@ _LABELS = {
     "hitchX": "Hitch x",
     "couplerX": "Coupler x",
     "trailer": "Tows",
+    "maxSpeed": "Top speed",
+    "maxAcceleration": "Max acceleration",
+    "maxDeceleration": "Max deceleration",
 }
 _SPEED_UNIT = "m/s"
 

@@ -19,7 +19,7 @@ from ..model.graph import OwnFlows, reachable
 from ..xosc import meaning
 from ..xosc.support import MAPPED_KINDS, REPEATABLE_KINDS
 from .context import Action, Context, Event
-from .entities import performance_of
+from .entities import own_performance
 from .speeds import speed_dynamics
 from .triggers import Condition, Finish, Group, delayed, finished, with_extra
 from .values import number
@@ -171,7 +171,7 @@ def plan_distance_keeping(ctx: Context, node: scm.ActionNode, groups: list[Group
     Approach ends when the gap is held (the player's own end of a non-continuous action)."""
     name = ctx.event_names[node]
     follow = isinstance(node, scm.Follow)
-    limits = meaning.gap_limits(*performance_of(node.referenceActor.eClass.name))
+    limits = meaning.gap_limits(*own_performance(node.referenceActor))
     data = {
         "target": ctx.entity(node.targetActor),
         "distance": ctx.values.text(node, "distance"),

@@ -7,6 +7,7 @@ from typing import Any
 
 import scemlmodel as scm
 
+from ..model import params
 from ..model.towing import is_towed
 from .context import Context
 from .controllers import init_activation, object_controller
@@ -33,6 +34,8 @@ PERFORMANCE = {
 #: A Pedestrian has no Performance element; its limits for actions that need some (walking pace).
 PEDESTRIAN_PERFORMANCE = (3.0, 1.5, 3.0)
 PEDESTRIAN_MASS = "80.0"
+#: The Actor features (release 1.4) that hold an actor's own Performance, in table order.
+PERFORMANCE_FEATURES = ("maxSpeed", "maxAcceleration", "maxDeceleration")
 
 
 def entity(ctx: Context, actor: scm.Actor) -> dict[str, Any]:
@@ -79,7 +82,7 @@ def entity(ctx: Context, actor: scm.Actor) -> dict[str, Any]:
         "model_name": actor.model or category,
         "category": category,
         "bbox": bbox,
-        "performance": performance(actor),
+        "performance": performance(ctx, actor),
         "front_axle": _axle(0.5, wheel, track, round(length * 0.6, 6)),
         "rear_axle": _axle(0.0, wheel, track, 0.0),
         **_coupling(ctx, actor),
@@ -144,14 +147,28 @@ def performance_of(kind: str) -> tuple[float, float, float]:
     return limits or PEDESTRIAN_PERFORMANCE
 
 
-def performance(actor: scm.Actor) -> dict[str, str]:
+def own_performance(actor: scm.Participant) -> tuple[float, float, float]:
+    """(maxSpeed, maxAcceleration, maxDeceleration) of an actor: its own limits where it states
+    them (release 1.4, from an imported Vehicle's Performance), its kind's otherwise."""
+    defaults = performance_of(actor.eClass.name)
+    if not isinstance(actor, scm.Actor):
+        return defaults
+    own = (
+        params.concrete(actor, feature) if actor.eGet(feature) is not None else default
+        for feature, default in zip(PERFORMANCE_FEATURES, defaults, strict=True)
+    )
+    max_speed, max_acceleration, max_deceleration = own
+    return max_speed, max_acceleration, max_deceleration
+
+
+def performance(ctx: Context, actor: scm.Actor) -> dict[str, str]:
     """The actor's limits as OpenSCENARIO attributes (maxSpeed, maxAcceleration, maxDeceleration):
-    the Vehicle's Performance."""
-    max_speed, max_acceleration, max_deceleration = performance_of(actor.eClass.name)
+    the Vehicle's Performance, each the actor's own where it states one (as a `$parameter`
+    where the hook names it), its kind's otherwise."""
+    defaults = performance_of(actor.eClass.name)
     return {
-        "maxSpeed": number(max_speed),
-        "maxAcceleration": number(max_acceleration),
-        "maxDeceleration": number(max_deceleration),
+        feature: ctx.values.text(actor, feature) if actor.eGet(feature) is not None else number(d)
+        for feature, d in zip(PERFORMANCE_FEATURES, defaults, strict=True)
     }
 
 

@@ -12,6 +12,7 @@ from ..model import catalog
 from . import traced
 from .context import Build
 from .controllers import object_controller
+from .performance import keep_performance
 from .positions import number
 from .unplaced import is_referenced, is_sumo_template
 
@@ -176,6 +177,8 @@ def _actor(build: Build, item: etree._Element, name: str) -> scm.Actor | None:
         )
         return None
     _dimensions(actor, body)
+    if body.tag == "Vehicle":
+        keep_performance(build, actor, body)
     if _is_marked_ego(body):
         actor.isEgo = True
     build.report.add("mapped", f"entity {name!r} -> {actor.eClass.name}", build.where(item))

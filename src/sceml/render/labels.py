@@ -377,8 +377,24 @@ def root_lines(root: scm.RootNode | None, scenario: scm.Scenario) -> list[str]:
         ego = ", ego" if actor.isEgo else ""
         driven = f", {describe_controller(actor.controller)}" if actor.controller else ""
         tows = f", tows {actor.trailer.name}" if actor.trailer is not None else ""
-        lines.append(f"  {actor.name}: {actor.eClass.name}{ego}{driven}{tows}")
+        limits = _own_limits(actor)
+        lines.append(f"  {actor.name}: {actor.eClass.name}{ego}{driven}{tows}{limits}")
     return lines
+
+
+def _own_limits(actor: scm.Actor) -> str:
+    """`, top speed 70 m/s, max acceleration 5 m/s2`: the limits an actor states itself (release 1.4), which the
+    players hold it to instead of its kind's."""
+    parts = [
+        f"{what} {params.describe(actor.eGet(feature), unit)}"
+        for feature, what, unit in (
+            ("maxSpeed", "top speed", "m/s"),
+            ("maxAcceleration", "max acceleration", "m/s2"),
+            ("maxDeceleration", "max deceleration", "m/s2"),
+        )
+        if actor.eGet(feature) is not None
+    ]
+    return "".join(f", {part}" for part in parts)
 
 
 def scenario_title(scenario: scm.Scenario) -> str:

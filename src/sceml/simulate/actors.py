@@ -51,16 +51,41 @@ class Hold:
 
 
 @dataclass(frozen=True)
+class OwnLimits:
+    """An actor's own Performance (release 1.4's Actor.maxSpeed, maxAcceleration,
+    maxDeceleration; m/s, m/s2, m/s2); None where it states none (the preview then caps nothing,
+    as before)."""
+
+    max_speed: float | None = None
+    max_acceleration: float | None = None
+    max_deceleration: float | None = None
+
+    def target(self, speed: float) -> float:
+        """A target speed held to the top speed either way, as esmini holds a SpeedAction's."""
+        if self.max_speed is None:
+            return speed
+        return max(-self.max_speed, min(speed, self.max_speed))
+
+    def rate(self, rate: float, speeding_up: bool) -> float:
+        """A finite rate held to the largest acceleration (speeding up) or deceleration; a step
+        (an infinite rate) stays a step, as in esmini."""
+        most = self.max_acceleration if speeding_up else self.max_deceleration
+        return rate if most is None or math.isinf(rate) else min(rate, most)
+
+
+@dataclass(frozen=True)
 class Ramp:
-    """Change the speed towards `target` at `rate` (m/s2); a step when `rate` is infinite."""
+    """Change the speed towards `target` at `rate` (m/s2); a step when `rate` is infinite.
+    Both are held to the actor's own limits (`OwnLimits`)."""
 
     target: float
     rate: float = math.inf
 
     def next_speed(self, actor: Actor, others: Mapping[str, Actor], dt: float) -> float:
-        change = self.target - actor.speed
-        limit = self.rate * dt
-        return self.target if abs(change) <= limit else actor.speed + math.copysign(limit, change)
+        target = actor.own_limits.target(self.target)
+        change = target - actor.speed
+        limit = actor.own_limits.rate(self.rate, abs(target) > abs(actor.speed)) * dt
+        return target if abs(change) <= limit else actor.speed + math.copysign(limit, change)
 
 
 @dataclass(frozen=True)
@@ -135,6 +160,8 @@ class Actor:
         self.standing_for: float | None = None
         #: The change of speed over the last step (AccelerationCondition), m/s².
         self.acceleration = 0.0
+        #: The actor's own Performance, where the model states one (`setup.make_actor`).
+        self.own_limits = OwnLimits()
         self.place()
 
     def place(self) -> None:

@@ -132,7 +132,13 @@ class GapManeuver(Behaviour):
     def start(self, world: World) -> None:
         self.lead = world.actor(self.node.targetActor, self.name)
         self.distance = concrete(self.node, "distance")
-        limits = meaning.gap_limits(*performance_of(self.actor.kind))
+        # The limits the export writes to the LongitudinalDistanceAction: the actor's own.
+        own = self.actor.own_limits
+        kind = performance_of(self.actor.kind)
+        stated = (own.max_speed, own.max_acceleration, own.max_deceleration)
+        limits = meaning.gap_limits(
+            *(mine if mine is not None else d for mine, d in zip(stated, kind, strict=True))
+        )
         self.follow = isinstance(self.node, scm.Follow)
         hold = None if self.follow else meaning.APPROACH_HOLD
         self.actor.control = GapKeeping(self.lead.name, self.distance, limits, hold)

@@ -12,7 +12,7 @@ from ..maps import PositionError, RoadMap, WorldPose
 from ..maps.resolve import is_relative, resolve, road_pose, road_to_lane, route_pose
 from ..model.params import concrete
 from . import lanes
-from .actors import Actor
+from .actors import Actor, OwnLimits
 from .paths import LaneSpot, heading_path
 from .world import SimulationError
 
@@ -27,7 +27,17 @@ def make_actor(
     made = _placed(actor, road_map, starts)
     # Positions are the reference point; the box (gaps, collisions) is centred this far ahead.
     made.box_ahead = concrete(actor, "boxCenterX")
+    made.own_limits = own_limits(actor)
     return made
+
+
+def own_limits(actor: scm.Actor) -> OwnLimits:
+    """The limits the actor states itself (release 1.4); unset ones stay None."""
+    stated = (
+        concrete(actor, feature) if actor.eGet(feature) is not None else None
+        for feature in ("maxSpeed", "maxAcceleration", "maxDeceleration")
+    )
+    return OwnLimits(*stated)
 
 
 def trailer_at_rest(actor: scm.Actor) -> Actor:

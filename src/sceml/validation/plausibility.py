@@ -20,7 +20,7 @@ from ..model.params import describe
 from ..model.traversal import single_value
 from .context import Context, performer
 from .parameters import parameter_path
-from .reads import VALUE, Reads
+from .reads import SELF, VALUE, Reads
 from .registry import Finding, constraint
 
 ERROR = Severity.ERROR
@@ -50,12 +50,35 @@ def highest(value: EObject | None) -> float | None:
     return max(sizes) if sizes else None
 
 
-def _over_limit(owner: EObject, context: Context, key: str, unit: str) -> Iterator[Finding]:
-    actor = performer(owner)
-    if actor is None:
-        return
-    kind = actor.eClass.name
-    limit = context.limits.limit(kind, key)
+#: Limit key -> the Actor feature (release 1.4) that states the actor's own limit.
+OWN_LIMITS = {
+    "max_speed": "maxSpeed",
+    "max_acceleration": "maxAcceleration",
+    "max_deceleration": "maxDeceleration",
+}
+
+
+def own_limit(actor: EObject, key: str) -> float | None:
+    """The limit `key` the actor states itself (release 1.4's Actor.maxSpeed, ...), or None."""
+    own = actor.eGet(OWN_LIMITS[key]) if isinstance(actor, scm.Actor) else None
+    return highest(own)
+
+
+def actor_limit(actor: EObject, context: Context, key: str) -> tuple[float | None, str]:
+    """The limit `key` above which an actor's values are implausible (L001..L003), and whose
+    it is: its kind's, unless the actor states a higher one itself (esmini's catalog bus is good
+    for 70 m/s, and plays so). An own limit below the kind's does not make a value beyond it
+    implausible: the players hold the actor to it, which SCEML-L005 says."""
+    kind = context.limits.limit(actor.eClass.name, key)
+    own = own_limit(actor, key)
+    if own is not None and (kind is None or own > kind):
+        return own, f"{actor.name}'s own"
+    return kind, f"the {actor.eClass.name}"
+
+
+def _over(
+    owner: EObject, key: str, unit: str, limit: float | None, whose: str
+) -> Iterator[Finding]:
     if limit is None:
         return
     for name in catalog.limited(owner.eClass.name, key):
@@ -65,9 +88,15 @@ def _over_limit(owner: EObject, context: Context, key: str, unit: str) -> Iterat
             in_kmh = f" ({limit * 3.6:g} km/h)" if unit == "m/s" else ""
             yield (
                 value,
-                f"{parameter_path(owner, name)} is {describe(value, unit)}, above the "
-                f"{kind} limit of {limit:g} {unit}{in_kmh}",
+                f"{parameter_path(owner, name)} is {describe(value, unit)}, above "
+                f"{whose} limit of {limit:g} {unit}{in_kmh}",
             )
+
+
+def _over_limit(owner: EObject, context: Context, key: str, unit: str) -> Iterator[Finding]:
+    actor = performer(owner)
+    if actor is not None:
+        yield from _over(owner, key, unit, *actor_limit(actor, context, key))
 
 
 @constraint(
@@ -75,7 +104,7 @@ def _over_limit(owner: EObject, context: Context, key: str, unit: str) -> Iterat
     ERROR,
     _KINDS,
     "speeds (initial, target, driving, overtaking, compared) do not exceed the actor kind's "
-    "max_speed",
+    "max_speed (or its own maxSpeed where that is higher)",
     paper_rule="5",
     through_modules=True,
     # the performer's kind
@@ -90,7 +119,8 @@ def speed_fits_actor(owner: EObject, context: Context) -> Iterator[Finding]:
     "SCEML-L002",
     ERROR,
     _KINDS,
-    "acceleration rates do not exceed the actor kind's max_acceleration",
+    "acceleration rates do not exceed the actor kind's max_acceleration (or its own "
+    "maxAcceleration where that is higher)",
     paper_rule="5",
     through_modules=True,
     # the performer's kind
@@ -105,7 +135,8 @@ def acceleration_fits_actor(owner: EObject, context: Context) -> Iterator[Findin
     "SCEML-L003",
     ERROR,
     _KINDS,
-    "deceleration rates (Decelerate, Stop) do not exceed the actor kind's max_deceleration",
+    "deceleration rates (Decelerate, Stop) do not exceed the actor kind's max_deceleration "
+    "(or its own maxDeceleration where that is higher)",
     paper_rule="5",
     through_modules=True,
     # the performer's kind
@@ -114,3 +145,58 @@ def acceleration_fits_actor(owner: EObject, context: Context) -> Iterator[Findin
 )
 def deceleration_fits_actor(owner: EObject, context: Context) -> Iterator[Finding]:
     yield from _over_limit(owner, context, "max_deceleration", "m/s2")
+
+
+@constraint(
+    "SCEML-L004",
+    Severity.WARNING,
+    "Actor",
+    "an actor's own performance (maxSpeed, maxAcceleration, maxDeceleration) does not exceed its "
+    "kind's plausible limits",
+    paper_rule="5",
+    # the actor's own values and kind
+    reads=Reads(SELF),
+    judges_stated_values=True,
+)
+def performance_plausible(actor: scm.Actor, context: Context) -> Iterator[Finding]:
+    # A warning, not an error: real catalogs state generous limits (esmini's bus: 70 m/s) that
+    # only cap the motion; the speeds the scenario asks for are still judged (L001..L003).
+    for key, feature in OWN_LIMITS.items():
+        value = actor.eGet(feature)
+        top = highest(value)
+        limit = context.limits.limit(actor.eClass.name, key)
+        if top is not None and limit is not None and top > limit:
+            unit = "m/s" if key == "max_speed" else "m/s2"
+            yield (
+                value,
+                f"{parameter_path(actor, feature)} is {describe(value, unit)}, above the "
+                f"{actor.eClass.name} limit of {limit:g} {unit}",
+            )
+
+
+@constraint(
+    "SCEML-L005",
+    Severity.WARNING,
+    _KINDS,
+    "speeds and rates do not exceed the actor's own maxSpeed, maxAcceleration and "
+    "maxDeceleration (where they are below its kind's limits: the players hold it to them)",
+    paper_rule="5",
+    through_modules=True,
+    # the performer's own limits
+    reads=Reads(VALUE),
+    judges_stated_values=True,
+)
+def within_own_performance(owner: EObject, context: Context) -> Iterator[Finding]:
+    actor = performer(owner)
+    if actor is None:
+        return
+    for key, unit in (
+        ("max_speed", "m/s"),
+        ("max_acceleration", "m/s2"),
+        ("max_deceleration", "m/s2"),
+    ):
+        own, (ceiling, _) = own_limit(actor, key), actor_limit(actor, context, key)
+        if own is None or (ceiling is not None and own >= ceiling):
+            continue  # no own limit, or it is the ceiling L001..L003 judge by
+        for value, message in _over(owner, key, unit, own, f"{actor.name}'s own"):
+            yield value, f"{message}: the players hold it to that"
