@@ -18,7 +18,10 @@ JoinPolicy = EEnum('JoinPolicy', literals=['joinAll', 'joinOne'])
 
 LaneChangeDirection = EEnum('LaneChangeDirection', literals=['left', 'right'])
 
-ComparisonRule = EEnum('ComparisonRule', literals=['greaterThan', 'lessThan', 'equalTo'])
+ComparisonRule = EEnum('ComparisonRule', literals=[
+                       'greaterThan', 'lessThan', 'equalTo', 'greaterOrEqual', 'lessOrEqual'])
+
+SpeedShape = EEnum('SpeedShape', literals=['linear', 'step', 'cubic', 'sinusoidal'])
 
 CloudState = EEnum('CloudState', literals=['free', 'cloudy', 'overcast', 'rainy'])
 
@@ -1428,12 +1431,17 @@ class TimeHeadway(Condition):
 
 class Accelerate(LongitudinalManeuver):
 
+    shape = EAttribute(eType=SpeedShape, unique=True, derived=False,
+                       changeable=True, default_value=SpeedShape.linear)
     targetSpeed = EReference(ordered=True, unique=True, containment=True, derived=False)
     rate = EReference(ordered=True, unique=True, containment=True, derived=False)
 
-    def __init__(self, *, targetSpeed=None, rate=None, **kwargs):
+    def __init__(self, *, targetSpeed=None, rate=None, shape=None, **kwargs):
 
         super().__init__(**kwargs)
+
+        if shape is not None:
+            self.shape = shape
 
         if targetSpeed is not None:
             self.targetSpeed = targetSpeed
@@ -1444,12 +1452,17 @@ class Accelerate(LongitudinalManeuver):
 
 class Decelerate(LongitudinalManeuver):
 
+    shape = EAttribute(eType=SpeedShape, unique=True, derived=False,
+                       changeable=True, default_value=SpeedShape.linear)
     targetSpeed = EReference(ordered=True, unique=True, containment=True, derived=False)
     rate = EReference(ordered=True, unique=True, containment=True, derived=False)
 
-    def __init__(self, *, targetSpeed=None, rate=None, **kwargs):
+    def __init__(self, *, targetSpeed=None, rate=None, shape=None, **kwargs):
 
         super().__init__(**kwargs)
+
+        if shape is not None:
+            self.shape = shape
 
         if targetSpeed is not None:
             self.targetSpeed = targetSpeed
@@ -1460,11 +1473,16 @@ class Decelerate(LongitudinalManeuver):
 
 class Stop(LongitudinalManeuver):
 
+    shape = EAttribute(eType=SpeedShape, unique=True, derived=False,
+                       changeable=True, default_value=SpeedShape.linear)
     rate = EReference(ordered=True, unique=True, containment=True, derived=False)
 
-    def __init__(self, *, rate=None, **kwargs):
+    def __init__(self, *, rate=None, shape=None, **kwargs):
 
         super().__init__(**kwargs)
+
+        if shape is not None:
+            self.shape = shape
 
         if rate is not None:
             self.rate = rate

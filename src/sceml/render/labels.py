@@ -283,6 +283,8 @@ _OPERATORS = {
     "greaterThan": ">",
     "lessThan": "<",
     "equalTo": "==",
+    "greaterOrEqual": ">=",
+    "lessOrEqual": "<=",
     "set": "=",
     "add": "+=",
     "multiply": "*=",
