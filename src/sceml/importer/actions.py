@@ -187,7 +187,8 @@ def _within_performance(
     """The rate players drive: one above the Vehicle's maxAcceleration (speeding up) or
     maxDeceleration (slowing down) is slowed down to it, as esmini does."""
     limits = build.performance.get(str(request.actor.name))
-    if rate is None or limits is None:
+    if rate is None or limits is None or isinstance(rate, traced.Traced):
+        # A distributed rate keeps its distribution (each sample may or may not be above).
         return rate
     slowing = before is not None and after < before
     limit = limits[1] if slowing else limits[0]
