@@ -201,3 +201,21 @@ def test_emf_reads_and_writes_imported_route_positions(emf: Harness, tmp_path: P
     ego = next(a for a in from_emf.nodes[0].actors if a.name == "Ego").startPosition
     assert [w.routeStrategy.name for w in ego.waypoints] == ["shortest", "fastest"]
     assert (ego.laneId, ego.pathS.value) == (-2, 30.0)
+
+
+def test_emf_reads_and_writes_speed_shapes_and_inclusive_rules(
+    emf: Harness, tmp_path: Path
+) -> None:
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    import_to_file(FILES / "speed-shapes.xosc", source / "shapes.xmi")
+    written = (source / "shapes.xmi").read_text()
+    # The defaults (linear, greaterThan) are not written: these are the release 1.4 literals.
+    assert written.count('shape="cubic"') == 1 and written.count('rule="lessOrEqual"') == 1
+    result = emf.run("roundtrip", ECORE, source, out, Path("shapes.xmi"))
+    assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+    original, from_emf = load(source / "shapes.xmi"), load(out / "shapes.xmi")
+    assert differences(original.root, from_emf.root) == []
+    shapes = sorted(n.shape.name for n in from_emf.root.nodes if hasattr(n, "shape"))
+    assert shapes == ["cubic", "linear", "sinusoidal", "step", "step"]
