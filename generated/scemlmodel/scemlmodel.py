@@ -876,10 +876,13 @@ class Actor(Participant):
     width = EReference(ordered=True, unique=True, containment=True, derived=False)
     height = EReference(ordered=True, unique=True, containment=True, derived=False)
     boxCenterX = EReference(ordered=True, unique=True, containment=True, derived=False)
+    trailer = EReference(ordered=True, unique=True, containment=False, derived=False)
+    hitchX = EReference(ordered=True, unique=True, containment=True, derived=False)
+    couplerX = EReference(ordered=True, unique=True, containment=True, derived=False)
     controller = EReference(ordered=True, unique=True, containment=True, derived=False)
     controllerActivation = EReference(ordered=True, unique=True, containment=True, derived=False)
 
-    def __init__(self, *, isEgo=None, model=None, startPosition=None, initialSpeed=None, length=None, width=None, height=None, boxCenterX=None, controller=None, controllerActivation=None, **kwargs):
+    def __init__(self, *, isEgo=None, model=None, startPosition=None, initialSpeed=None, length=None, width=None, height=None, boxCenterX=None, trailer=None, hitchX=None, couplerX=None, controller=None, controllerActivation=None, **kwargs):
 
         super().__init__(**kwargs)
 
@@ -906,6 +909,15 @@ class Actor(Participant):
 
         if boxCenterX is not None:
             self.boxCenterX = boxCenterX
+
+        if trailer is not None:
+            self.trailer = trailer
+
+        if hitchX is not None:
+            self.hitchX = hitchX
+
+        if couplerX is not None:
+            self.couplerX = couplerX
 
         if controller is not None:
             self.controller = controller

@@ -23,11 +23,22 @@ def test_signs_and_limits_come_from_the_annotations() -> None:
     assert "Actor" in catalog.limited_kinds()
 
 
+#: Speeds that may be negative, driving backwards (release 1.4): a target, the speed a
+#: condition compares, the initial speed; OpenSCENARIO's SpeedAction and SpeedCondition are signed.
+SIGNED_SPEEDS = {
+    ("Accelerate", "targetSpeed"),
+    ("Decelerate", "targetSpeed"),
+    ("SpeedCondition", "speed"),
+    *((kind, "initialSpeed") for kind in (c.__name__ for c in catalog.actor_kinds())),
+}
+
+
 @pytest.mark.parametrize("kind", KINDS)
-def test_every_speed_is_non_negative_and_bounded_by_max_speed(kind: str) -> None:
+def test_every_speed_has_its_sign_and_is_bounded_by_max_speed(kind: str) -> None:
     for spec in catalog.parameters(kind):
         if spec.unit == "m/s":
-            assert (spec.sign, spec.limit) == (catalog.NON_NEGATIVE, "max_speed"), spec
+            sign = catalog.SIGNED if (kind, spec.name) in SIGNED_SPEEDS else catalog.NON_NEGATIVE
+            assert (spec.sign, spec.limit) == (sign, "max_speed"), spec
 
 
 @pytest.mark.parametrize("feature", ["rate", "gap"])

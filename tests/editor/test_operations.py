@@ -464,3 +464,45 @@ def test_a_condition_edge_and_a_box_centre_are_fields(uis1: EditorSession) -> No
     centre = field(ego_view, "boxCenterX")
     assert centre["label"] == "Box centre x"
     assert centre["value"]["value"] == 1.25
+
+
+def test_a_trailer_and_its_hitch_and_coupler_are_fields(uis1: EditorSession) -> None:
+    # Release 1.4: Actor.trailer (the actor towed, chosen by name) and hitchX/couplerX.
+    view = uis1.view()
+    ego, bike = actor_id(view, "ego"), actor_id(view, "bike")
+    ego_view = next(a for a in view["actors"] if a["id"] == ego)
+    tows = field(ego_view, "trailer")
+    assert (tows["label"], tows["type"], tows["value"], tows["required"]) == (
+        "Tows",
+        "actor",
+        None,
+        False,
+    )
+    after = roundtrip(
+        uis1,
+        [
+            {"op": "set_actor", "actor": ego, "field": "trailer", "value": "bike"},
+            {
+                "op": "set_actor_parameter",
+                "actor": ego,
+                "field": "hitchX",
+                "value": {"type": "value", "value": -1.2},
+            },
+            {
+                "op": "set_actor_parameter",
+                "actor": bike,
+                "field": "couplerX",
+                "value": {"type": "value", "value": 3.25},
+            },
+        ],
+    )
+    ego_view = next(a for a in after["actors"] if a["id"] == ego)
+    bike_view = next(a for a in after["actors"] if a["id"] == bike)
+    assert field(ego_view, "trailer")["value"] == "bike"
+    assert field(ego_view, "hitchX")["label"] == "Hitch x"
+    assert field(ego_view, "hitchX")["value"]["value"] == -1.2
+    assert field(bike_view, "couplerX")["value"]["value"] == 3.25
+    with pytest.raises(OperationError, match="no actor is named 'truck'"):
+        uis1.apply([{"op": "set_actor", "actor": ego, "field": "trailer", "value": "truck"}])
+    with pytest.raises(OperationError, match="cannot tow itself"):
+        uis1.apply([{"op": "set_actor", "actor": ego, "field": "trailer", "value": "ego"}])

@@ -203,6 +203,26 @@ def test_emf_reads_and_writes_imported_route_positions(emf: Harness, tmp_path: P
     assert (ego.laneId, ego.pathS.value) == (-2, 30.0)
 
 
+def test_emf_reads_and_writes_trailers_and_reverse_speeds(emf: Harness, tmp_path: Path) -> None:
+    """Release 1.4: Actor.trailer (a reference to another actor, `Car+` included), hitchX and
+    couplerX; a negative target speed."""
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    import_to_file(FILES / "trailers.xosc", source / "trailers.xmi")
+    import_to_file(FILES / "reversing.xosc", source / "reversing.xmi")
+    result = emf.run("roundtrip", ECORE, source, out, Path("trailers.xmi"), Path("reversing.xmi"))
+    assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+    for name in ("trailers.xmi", "reversing.xmi"):
+        original, from_emf = load(source / name), load(out / name)
+        assert differences(original.root, from_emf.root) == []
+    actors = {a.name: a for a in load(out / "trailers.xmi").root.nodes[0].actors}
+    assert actors["Car"].trailer is actors["Car+"] and actors["Tractor"].trailer is actors["Semi"]
+    assert (actors["Car"].hitchX.value, actors["Car+"].couplerX.value) == (-1.2, 3.25)
+    reverse = next(n for n in load(out / "reversing.xmi").root.nodes if n.name == "Reverse")
+    assert reverse.targetSpeed.value == -3.0
+
+
 def test_emf_reads_and_writes_speed_shapes_and_inclusive_rules(
     emf: Harness, tmp_path: Path
 ) -> None:

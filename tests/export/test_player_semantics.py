@@ -264,14 +264,20 @@ def test_turns_are_routes_that_leave_the_speed_alone(version: str) -> None:
     Accelerate or Follow of the actor for it; AssignRouteAction controls no domain."""
     _, document, events_of = exported("every-kind", version, "generic")
     assert next(document.iter("AcquirePositionAction"), None) is None
+    routes = {}
     for node in ("TurnLeft_1", "TurnRight_1"):
         event = document.find(f".//Event[@name='{events_of[node][0]}']")
         waypoints = list(event.iter("Waypoint"))
         assert len(waypoints) == 2
-        # From the actor's start (resolved when the file loads) to the destination.
-        start = waypoints[0].find("Position/LanePosition")
-        assert (start.get("roadId"), start.get("laneId"), start.get("s")) == ("2", "-1", "5.0")
         assert waypoints[1].find("Position/WorldPosition") is not None
+        routes[node] = waypoints[0].find("Position/*")
+    # From where the actor is when the turn starts (positions resolve when the file loads):
+    # the first turn from the ego's start, the second from the first's destination (a route
+    # from the start would lie behind the actor).
+    start, after_the_first = routes["TurnLeft_1"], routes["TurnRight_1"]
+    assert (start.get("roadId"), start.get("laneId"), start.get("s")) == ("2", "-1", "5.0")
+    assert after_the_first.tag == "WorldPosition"
+    assert (after_the_first.get("x"), after_the_first.get("y")) == ("-34.0", "1.75")
 
 
 def test_the_carla_profile_keeps_acquire_position_and_traveled_distance() -> None:

@@ -156,3 +156,43 @@ def tee_network(folder: Path) -> Path:
     path = folder / "tee.xodr"
     odr.write_xml(str(path))
     return path
+
+
+#: Roads of `two_tees_network`: the first junction's west and south arms, the road between the
+#: junctions, the second junction's east and north arms; and the two junction ids.
+FIRST_WEST, FIRST_SOUTH, BETWEEN, SECOND_EAST, SECOND_NORTH = "30", "31", "32", "33", "34"
+FIRST_TEE, SECOND_TEE = "7", "8"
+
+
+def two_tees_network(folder: Path) -> Path:
+    """Two T junctions 130 m apart on one east-west street, one lane each way: the first has a
+    south arm, the second a north arm. Driving east from the west arm, the north arm is reached
+    only through both junctions: straight on at the first, left at the second."""
+    odr = _opendrive()
+    first = xodr.CommonJunctionCreator(int(FIRST_TEE), "first", startnum=200)
+    second = xodr.CommonJunctionCreator(int(SECOND_TEE), "second", startnum=300)
+    between = xodr.create_road(xodr.Line(100), int(BETWEEN), 1, 1, lane_width=3.5)
+    odr.add_road(between)
+    first.add_incoming_road_cartesian_geometry(between, 15.0, 0.0, math.pi, "predecessor")
+    second.add_incoming_road_cartesian_geometry(between, 115.0, 0.0, 0.0, "successor")
+    arms = {
+        FIRST_WEST: (first, -15.0, 0.0, 0.0, "successor"),
+        FIRST_SOUTH: (first, 0.0, -15.0, math.pi / 2, "predecessor"),
+        SECOND_EAST: (second, 145.0, 0.0, math.pi, "predecessor"),
+        SECOND_NORTH: (second, 130.0, 15.0, -math.pi / 2, "predecessor"),
+    }
+    for road_id, (creator, x, y, heading, end) in arms.items():
+        road = xodr.create_road(xodr.Line(60), int(road_id), 1, 1, lane_width=3.5)
+        odr.add_road(road)
+        creator.add_incoming_road_cartesian_geometry(road, x, y, heading, road_connection=end)
+    for creator, roads in (
+        (first, (FIRST_WEST, BETWEEN, FIRST_SOUTH)),
+        (second, (BETWEEN, SECOND_EAST, SECOND_NORTH)),
+    ):
+        for one, two in ((roads[0], roads[1]), (roads[0], roads[2]), (roads[1], roads[2])):
+            creator.add_connection(int(one), int(two))
+        odr.add_junction_creator(creator)
+    odr.adjust_roads_and_lanes()
+    path = folder / "two-tees.xodr"
+    odr.write_xml(str(path))
+    return path

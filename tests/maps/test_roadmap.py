@@ -12,6 +12,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from lxml import etree
 from numpy.polynomial import Polynomial
 
 import scemlmodel as scm
@@ -20,11 +21,12 @@ from maps import test_intersection_map as evaluator
 from sceml.maps import MapError, PositionError, RoadMap, load_map, wrap_angle
 from sceml.maps.positions import centre, is_concrete, locate, nominal, spread
 from sceml.maps.reader import parse_opendrive
-from sceml.maps.routes import routes_from
+from sceml.maps.routes import routes_from, way_to
 from sceml.model.build import lane, world
 from sceml.model.params import discrete, normal, span, uniform, value
 
 CM = 0.01  # m: the agreement every conversion must reach
+IMPORT_FILES = Path(__file__).resolve().parents[1] / "importer" / "files"
 
 
 @pytest.fixture(scope="module")
@@ -38,6 +40,7 @@ def built(tmp_path_factory: pytest.TempPathFactory) -> dict[str, RoadMap]:
     return {
         "curvy": load_map(sg.curvy_network(folder)),
         "tee": load_map(sg.tee_network(folder)),
+        "two tees": load_map(sg.two_tees_network(folder)),
     }
 
 
@@ -531,3 +534,33 @@ def test_a_direct_junction_leads_into_its_linked_road(tmp_path: Path) -> None:
     (route,) = routes_from(road_map, "1", -1)
     assert (route.connecting_road, route.turn) == ("2", "straight")
     assert route.reaches("2", -1)
+
+
+def test_a_way_through_several_junctions(built: dict[str, RoadMap]) -> None:
+    """Junction by junction, through the fewest: the north arm of the second T is straight on
+    at the first and left at the second from the first's west arm (eastbound, lane -1)."""
+    road_map = built["two tees"]
+    way = way_to(road_map, sg.FIRST_WEST, -1, sg.SECOND_NORTH)
+    assert [(r.junction, r.exit_road, r.turn) for r in way or []] == [
+        (sg.FIRST_TEE, sg.BETWEEN, "straight"),
+        (sg.SECOND_TEE, sg.SECOND_NORTH, "left"),
+    ]
+    # Back from the north arm (southbound, lane 1) to the first T's south arm: right, then left.
+    back = way_to(road_map, sg.SECOND_NORTH, 1, sg.FIRST_SOUTH, -1)
+    assert [(r.junction, r.turn) for r in back or []] == [
+        (sg.SECOND_TEE, "right"),
+        (sg.FIRST_TEE, "left"),
+    ]
+    # The next junction is enough for the road between them.
+    assert len(way_to(road_map, sg.FIRST_WEST, -1, sg.BETWEEN) or []) == 1
+    # No connection turns back: the west arm's own westbound lane is out of reach from it.
+    assert way_to(road_map, sg.FIRST_WEST, -1, sg.FIRST_WEST, 1) is None
+
+
+def test_the_import_tests_two_tees_map_is_the_builders(tmp_path: Path) -> None:
+    """tests/importer/files/two-tees.xodr is `two_tees_network`'s output (all but its date)."""
+    built, kept = sg.two_tees_network(tmp_path), IMPORT_FILES / "two-tees.xodr"
+    roots = [etree.parse(str(path)).getroot() for path in (built, kept)]
+    for root in roots:
+        root.find("header").attrib.pop("date", None)
+    assert etree.tostring(roots[0]) == etree.tostring(roots[1])

@@ -893,6 +893,42 @@ on_map("r004-relative-start-on-sidewalk", "SCEML-R004")(_beside_ego)
 on_map("a008-start-relative-to-itself", "SCEML-A008")(_relative_starts("itself"))
 on_map("a008-starts-relative-in-a-cycle", "SCEML-A008 SCEML-A008")(_relative_starts("cycle"))
 on_map("a008-relative-start-names-nobody", "SCEML-A008")(_relative_starts("nobody"))
+
+
+def _towing(how: str) -> Callable[[ScenarioBuilder, scm.Actor], None]:
+    """Release 1.4: ego tows `trailer`, which has no start (it starts at the hitch: clean); or
+    ego tows itself, or ego and a truck tow each other (SCEML-A009)."""
+
+    def add(b: ScenarioBuilder, ego: scm.Actor) -> None:
+        if how == "itself":
+            ego.trailer = ego
+        elif how == "loop":
+            truck = b.actor("Truck", "truck", start=lane(1, -1, 40.0))
+            ego.trailer, truck.trailer = truck, ego
+        else:
+            ego.trailer = b.actor("Truck", "trailer")
+            ego.hitchX, ego.trailer.couplerX = scm.Value(value=-1.2), scm.Value(value=3.25)
+        b.chain(b.root, b.add("Accelerate", ego, targetSpeed=8.0), b.end)
+
+    return add
+
+
+on_map("a009-trailer-clean", "")(_towing("clean"))
+on_map("a009-tows-itself", "SCEML-A009")(_towing("itself"))
+on_map("a009-towing-loop", "SCEML-A009")(_towing("loop"))
+
+
+def _reverse(speed: float) -> Callable[[ScenarioBuilder, scm.Actor], None]:
+    """Release 1.4: ego slows to a negative target speed, reversing (clean within its limit)."""
+
+    def add(b: ScenarioBuilder, ego: scm.Actor) -> None:
+        b.chain(b.root, b.add("Decelerate", ego, targetSpeed=speed), b.end)
+
+    return add
+
+
+on_map("p007-reverse-target-speed-clean", "")(_reverse(-3.0))
+on_map("l001-reversing-too-fast", "SCEML-L001")(_reverse(-80.0))
 on_map("r004-car-off-road", "SCEML-R004")(_start(world(30.0, 30.0, h=0.0)))
 # A pedestrian may stand on the roadway (it crosses it): clean.
 on_map("r004-pedestrian-on-roadway", "")(_start(lane(1, -1, 30.0), kind="Pedestrian"))
@@ -916,6 +952,16 @@ on_map("r006-turn-left-is-a-right-turn", "SCEML-R006")(_turn("TurnLeft", lane(4,
 on_map("r006-turn-right-unreachable", "SCEML-R006")(_turn("TurnRight", lane(1, -1, 20.0)))
 
 
+@on_map("r006-turn-after-the-junction-is-passed", "SCEML-R006")
+def _turn_once_through(b: ScenarioBuilder, ego: scm.Actor) -> None:
+    """The car `other` from the north turns left only once it is within 2 m of a point on the
+    south arm, past the junction: from there no junction is ahead (from its start, the left
+    turn would be fine)."""
+    other = b.actor("Car", "other", start=lane(1, 1, 30.0), speed=5.0)
+    through = b.add("InLocationRadius", other, position=lane(3, -1, 30.0), radius=2.0)
+    b.chain(b.root, through, b.add("TurnLeft", other, destination=lane(2, -1, 20.0)), b.end)
+
+
 def _walk(destination: scm.Position) -> Callable[[ScenarioBuilder, scm.Actor], None]:
     """A pedestrian on the west arm's south sidewalk (road 4, lane 2) crosses to `destination`."""
 
@@ -935,11 +981,13 @@ def _drive_at_rest(b: ScenarioBuilder, ego: scm.Actor) -> None:
 
 
 def _turn_after_trajectory(b: ScenarioBuilder, ego: scm.Actor) -> None:
-    """The car `other` from the north follows its lane to s = 20, then turns left (east)."""
+    """The car `other` from the north follows its lane to 10 m behind the ego (a place relative
+    to it, which the exported route cannot start from), then turns left (east)."""
     other = b.actor("Car", "other", start=lane(1, 1, 30.0), speed=5.0)
+    behind = relative_object(ego, -10.0)
     b.chain(
         b.root,
-        b.add("FollowTrajectory", other, waypoints=[lane(1, 1, 25.0), lane(1, 1, 20.0)]),
+        b.add("FollowTrajectory", other, waypoints=[lane(1, 1, 25.0), behind]),
         b.add("TurnLeft", other, destination=lane(2, -1, 20.0)),
         b.end,
     )

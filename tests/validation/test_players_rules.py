@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from sceml.model.build import LibraryBuilder, ScenarioBuilder, lane, world
+from sceml.model.build import LibraryBuilder, ScenarioBuilder, lane, relative_object, world
 from sceml.validation import validate
 
 
@@ -46,14 +46,22 @@ def test_a_zero_speed_drive_distance_inside_a_module_is_found_at_its_use() -> No
     assert len(found) == 1 and "Creep_1.DriveDistance_1" in found[0].message
 
 
-def test_a_turn_after_another_routed_maneuver_of_its_actor_is_warned() -> None:
+def test_a_turn_after_another_routed_maneuver_of_its_actor_is_warned_if_it_leaves_no_place() -> (
+    None
+):
+    """The export routes a turn from where its actor's latest routed maneuver leaves it; a
+    place relative to an entity is read at t = 0, so the route starts at the start instead."""
     b = scenario(speed=5.0)
     ego = b.root.actors[0]
-    first = b.add("TurnRight", ego, destination=world(34.0, -1.75), tolerance=3.0)
+    car = b.actor("Car", "car", start=lane(1, -1, 30.0), speed=0.0)
+    first = b.add("TurnRight", ego, destination=relative_object(car, 5.0), tolerance=3.0)
     second = b.add("TurnLeft", ego, destination=world(-1.75, 34.0), tolerance=3.0)
     b.chain(b.root, first, second, b.end)
     diagnostics = [d for d in validate(b.scenario) if d.code == "SCEML-Y002"]
     assert [d.path for d in diagnostics] == ["TurnLeft_1"]
+    # After a turn to a place on the map, the second turn's route starts there: no warning.
+    first.destination = world(34.0, -1.75)
+    assert "SCEML-Y002" not in codes(b.scenario)
     # Another actor's turn before it does not matter.
     c = scenario(speed=5.0)
     ego = c.root.actors[0]

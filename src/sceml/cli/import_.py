@@ -10,6 +10,7 @@ import click
 from ..diagnostics import Severity
 from ..files.safefiles import reading_roots
 from ..importer import import_to_file
+from ..importer.verdict import judge
 from ..model.loading import load_scenario
 from ..validation import validate
 from .common import SceMLCommand, allow_option, echo_diagnostics, input_file, output_file
@@ -48,6 +49,12 @@ from .common import SceMLCommand, allow_option, echo_diagnostics, input_file, ou
 @click.option(
     "--report", "show_report", is_flag=True, help="Print what was mapped, kept opaque and guessed."
 )
+@click.option(
+    "--strict",
+    is_flag=True,
+    help="Exit 1 on any validation error, the original's too (a speed above the kind's limit, "
+    "a position the map lacks).",
+)
 def import_command(
     file: Path,
     output: Path,
@@ -56,6 +63,7 @@ def import_command(
     catalog_paths: tuple[Path, ...],
     allow: tuple[Path, ...],
     show_report: bool,
+    strict: bool,
 ) -> None:
     """Import the OpenSCENARIO 1.0-1.3 FILE as a SceML scenario OUT.
 
@@ -69,8 +77,15 @@ def import_command(
     an opaque node with its XML and line (docs/import.md). Catalogs are found as esmini finds
     them: CatalogLocations relative to FILE, then relative to each --catalog-path. Files FILE
     names (catalogs, LogicFile, a distribution's ScenarioFile) are read only from FILE's
-    folder, its project root, --allow and --catalog-path folders. The scenario is validated after it
-    is written: exit 1 when it has errors, 2 when FILE cannot be used.
+    folder, its project root, --allow and --catalog-path folders.
+
+    The scenario is validated after it is written. Errors of rules that judge a value as the
+    file states it against the world (a speed or rate above the actor kind's limit, a position
+    on a lane the map lacks) are the original's too: the import copied the value as written,
+    and they are listed under "the original has these too" without failing the import. Any
+    other error (an actor with no start, a lost construct) means the model is not what FILE
+    means. Exit 0 when the model means what FILE means; 1 when the import caused an error, or
+    with --strict on any error; 2 when FILE cannot be used.
     """
     imported = import_to_file(
         file,
@@ -97,7 +112,17 @@ def import_command(
     document = load_scenario(
         output, allow=[*reading_roots(file), *allow, *catalog_paths, *given_map]
     )
-    diagnostics = validate(document.root, document=document)
-    echo_diagnostics([d for d in diagnostics if d.severity is not Severity.INFO], document, output)
-    if any(d.severity is Severity.ERROR for d in diagnostics):
-        raise click.exceptions.Exit(1)
+    verdict = judge(validate(document.root, document=document))
+    echo_diagnostics([d for d in verdict.own if d.severity is not Severity.INFO], document, output)
+    if verdict.originals:
+        click.echo(
+            f"the original has these too ({len(verdict.originals)}: values {file.name} states, "
+            "copied as written; they do not fail the import"
+            + ("" if strict else ", --strict makes them")
+            + "):",
+            err=True,
+        )
+        echo_diagnostics(verdict.originals, document, output)
+    code = verdict.exit_code(strict=strict)
+    if code:
+        raise click.exceptions.Exit(code)

@@ -20,7 +20,15 @@ from .node_ops import adopt, attribute_value, nested_holder, place, set_attribut
 from .values import position_from_json, value_from_json
 
 _ACTOR_TEXT_FIELDS = ("name", "isEgo", "model")
-_ACTOR_PARAMETERS = ("initialSpeed", "length", "width", "height", "boxCenterX")
+_ACTOR_PARAMETERS = (
+    "initialSpeed",
+    "length",
+    "width",
+    "height",
+    "boxCenterX",
+    "hitchX",
+    "couplerX",
+)
 
 
 def _root(ctx: EditContext) -> scm.RootNode:
@@ -72,6 +80,9 @@ def set_actor(ctx: EditContext, op: dict[str, Any]) -> None:
         require(isinstance(feature, EAttribute), f"an actor has no field {field!r} to set")
         set_attribute(ctx, owner, feature, attribute_value(feature, value))
         return
+    if field == "trailer":
+        _set_trailer(ctx, actor, value)
+        return
     require(field in _ACTOR_TEXT_FIELDS, f"an actor has no field {field!r} to set")
     if field == "name":
         others = {str(a.name) for a in _root(ctx).actors if a is not actor}
@@ -79,6 +90,17 @@ def set_actor(ctx: EditContext, op: dict[str, Any]) -> None:
         require(value not in others, f"an actor is already named {value!r}")
     feature = actor.eClass.findEStructuralFeature(field)
     ctx.rec.set(actor, field, attribute_value(feature, value))
+
+
+def _set_trailer(ctx: EditContext, actor: scm.Actor, value: object) -> None:
+    """The actor this one tows, by name (null: none); SCEML-A009 judges chains and loops."""
+    if value is None:
+        ctx.rec.set(actor, "trailer", None)
+        return
+    towed = next((a for a in _root(ctx).actors if a.name == value), None)
+    require(towed is not None, f"no actor is named {value!r}")
+    require(towed is not actor, "an actor cannot tow itself")
+    ctx.rec.set(actor, "trailer", towed)
 
 
 def _change_kind(ctx: EditContext, actor: scm.Actor, cls: type) -> None:

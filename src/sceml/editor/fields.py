@@ -28,6 +28,9 @@ _LABELS = {
     "laneId": "Lane",
     "controllerType": "Type",
     "boxCenterX": "Box centre x",
+    "hitchX": "Hitch x",
+    "couplerX": "Coupler x",
+    "trailer": "Tows",
 }
 _SPEED_UNIT = "m/s"
 
@@ -81,6 +84,9 @@ def feature_field(
         # An optional target (a LaneChange's) may stay empty.
         required = name != "targetActor" or catalog.needs_target(owner)
         return {**base, "type": "actor", "value": _participant(held), "required": required}
+    if kind == "Actor" and not feature.containment:
+        # The actor an actor tows (release 1.4's Actor.trailer): none is a meaning of its own.
+        return {**base, "type": "actor", "value": _participant(held), "required": False}
     if kind == "ParameterValue":
         return {**base, **parameter_field(owner, name, held)}
     if kind == "Position" and feature.many:

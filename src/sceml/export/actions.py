@@ -13,6 +13,9 @@ from typing import Any
 
 import scemlmodel as scm
 
+from ..maps.resolve import is_relative
+from ..model.departure import departure
+from ..model.graph import OwnFlows, reachable
 from ..xosc import meaning
 from ..xosc.support import MAPPED_KINDS, REPEATABLE_KINDS
 from .context import Action, Context, Event
@@ -259,24 +262,42 @@ def arrived(
 
 @planner("TurnLeft", "TurnRight")
 def plan_turn(ctx: Context, node: scm.RoutedManeuver, groups: list[Group]) -> Plan:
-    """AssignRouteAction from the actor's start to the destination; finished by an arrival
-    marker, because players complete routing actions as soon as the route is set (SPEC §7).
-    Not AcquirePositionAction: esmini runs that in the longitudinal domain and so stops a
-    running speed maneuver of the actor; a route controls no domain (`xosc.meaning`)."""
+    """AssignRouteAction from where the actor is when the turn starts to the destination;
+    finished by an arrival marker, because players complete routing actions as soon as the
+    route is set (SPEC §7). Not AcquirePositionAction: esmini runs that in the longitudinal
+    domain and so stops a running speed maneuver of the actor; a route controls no domain
+    (`xosc.meaning`)."""
     name = ctx.event_names[node]
     destination = ctx.position(node.destination)
     if ctx.profile == "carla":  # scenario_runner reads no AssignRouteAction
         route = Action(ctx.action_name(name), "acquire", {"position": destination})
     else:
         # Players resolve a route's waypoints when they load the file, so a position relative
-        # to the actor would be where it stands at t = 0: the route starts at its start.
-        start = ctx.position(node.referenceActor.startPosition)
+        # to the actor would be where it stands at t = 0; the route starts where the graph
+        # leaves the actor (its start, or its last destination or InLocationRadius): a route
+        # from its start would lie behind an actor that has driven on (`routing-test`).
+        start = ctx.position(_where_it_turns(node))
         data = {"route": ctx.names.claim(f"{name}_route"), "waypoints": [start, destination]}
         route = Action(ctx.action_name(name), "route", data)
     event = Event(name, ctx.entity(node.referenceActor), [route], groups)
     here = arrived(ctx, node, f"{name}_arrived", destination, ctx.values.text(node, "tolerance"))
     done = _finish_marker(ctx, node, "arrived", groups, here)
     return [event, done], done.name
+
+
+def _where_it_turns(node: scm.RoutedManeuver) -> scm.Position:
+    """Where the turn's actor is when it starts (`model.departure`), or its start."""
+    flows = OwnFlows(node.eContainer())
+    earlier = reachable([node], backwards=True, flows=flows)
+    actor = node.referenceActor
+    mine = [n for n in flows.nodes if n in earlier and n is not node and _performs(n, actor)]
+    place = departure(node, mine, lambda other: reachable([other], backwards=True) - {other})
+    # A place relative to an entity would be read where that entity stands at t = 0.
+    return place if place is not None and not is_relative(place) else actor.startPosition
+
+
+def _performs(node: Any, actor: scm.Participant) -> bool:
+    return isinstance(node, scm.ActionNode) and node.referenceActor is actor
 
 
 @planner("Cross", "FollowTrajectory")

@@ -7,6 +7,7 @@ from typing import Any
 
 import scemlmodel as scm
 
+from ..model.towing import is_towed
 from .context import Context
 from .controllers import init_activation, object_controller
 from .values import number
@@ -81,8 +82,60 @@ def entity(ctx: Context, actor: scm.Actor) -> dict[str, Any]:
         "performance": performance(actor),
         "front_axle": _axle(0.5, wheel, track, round(length * 0.6, 6)),
         "rear_axle": _axle(0.0, wheel, track, 0.0),
+        **_coupling(ctx, actor),
         "properties": properties,
     }
+
+
+def _coupling(ctx: Context, actor: scm.Actor) -> dict[str, Any]:
+    """TrailerHitch, TrailerCoupler and Trailer (1.3; SCEML-E008 refuses earlier versions).
+
+    A towed actor without a start of its own is written in place, inside its tower's Trailer,
+    as the files that have such trailers write them (players place it at the hitch and name it
+    after its tower, `Truck+`); one with a start is its own ScenarioObject, named by TrailerRef."""
+    towed = actor.trailer
+    trailer = None
+    if towed is not None:
+        inline = entity(ctx, towed) if written_in_place(towed) else None
+        trailer = {"inline": inline, "ref": ctx.entity(towed)}
+    return {
+        "hitch": _offset(ctx, actor, "hitchX"),
+        "coupler": _offset(ctx, actor, "couplerX"),
+        "trailer": trailer,
+    }
+
+
+def _offset(ctx: Context, actor: scm.Actor, feature: str) -> str | None:
+    """A hitch or coupler offset where the actor sets one (else no element at all). Before 1.3
+    there is none to write: with nothing towed (SCEML-E008 refuses a trailer there) a hitch
+    means nothing, as esmini's catalog cars, which all have one, show."""
+    if actor.eGet(feature) is None or ctx.traits.rev_minor < 3:
+        return None
+    return ctx.values.text(actor, feature)
+
+
+def towed_first(actors: list[scm.Actor]) -> list[scm.Actor]:
+    """The actors in order, but each towed one before its tower: esmini resolves a TrailerRef
+    as it reads the entities ("Failed to find object" when the trailer comes later)."""
+    ordered: list[scm.Actor] = []
+
+    def put(actor: scm.Actor, chain: tuple[scm.Actor, ...]) -> None:
+        if actor in ordered or actor in chain:
+            return  # placed already, or a towing loop (SCEML-A009 refuses the export)
+        towed = actor.trailer
+        if towed is not None and towed in actors:
+            put(towed, (*chain, actor))
+        ordered.append(actor)
+
+    for actor in actors:
+        put(actor, ())
+    return ordered
+
+
+def written_in_place(actor: scm.Actor) -> bool:
+    """Whether an actor is written inside its tower's Trailer, not as a ScenarioObject of its
+    own: it is towed and has no start (it starts at the hitch), so it has no Init either."""
+    return actor.startPosition is None and is_towed(actor)
 
 
 def performance_of(kind: str) -> tuple[float, float, float]:

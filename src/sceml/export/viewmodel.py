@@ -19,7 +19,7 @@ from ..xosc.flows import inlined
 from ..xosc.profiles import DEFAULT_VERSION
 from .actions import PLANNERS
 from .context import Context, Event, node_name
-from .entities import entity, init_actions
+from .entities import entity, init_actions, towed_first, written_in_place
 from .environment import environment
 from .global_kinds import declarations
 from .names import NameTable, sanitize
@@ -109,8 +109,10 @@ def build_view(scenario: scm.Scenario, options: Options) -> View:
     max_duration = ctx.values.text(root, "maxDuration")
     stop = _unique(names, [*stop, [simulation_time_over(max_duration, "End")]])
     env = environment(ctx, root, options.date)
-    entities = [entity(ctx, actor) for actor in actors]
-    privates = [init_actions(ctx, actor) for actor in actors]
+    # A towed actor without a start is written inside its tower's Trailer, with no Init.
+    placed = [actor for actor in actors if not written_in_place(actor)]
+    entities = [entity(ctx, actor) for actor in towed_first(placed)]
+    privates = [init_actions(ctx, actor) for actor in placed]
     # Declarations are complete only now that every value has been written.
     return View(
         traits=ctx.traits,
@@ -192,6 +194,8 @@ def _groups(ctx: Context, actors: list[scm.Actor], events: list[Event]) -> list[
             for event in events
             if event.actor == entity_name
         ]
+        if not maneuvers and written_in_place(actor):
+            continue  # players name a trailer written in place after its tower (`Truck+`)
         groups.append(
             {
                 "name": ctx.names.claim(f"{entity_name}_Group"),

@@ -41,6 +41,7 @@ from .overlaps import separate
 from .reading import Source, is_distribution, load, read, scenario_source
 from .report import ImportReport
 from .storyboard import Storyboard
+from .unplaced import start_on_first_trajectory
 
 __all__ = ["ImportReport", "Imported", "XoscImportError", "import_file", "import_to_file"]
 
@@ -107,6 +108,7 @@ def _build(
     storyboard = Storyboard(build)
     storyboard.collect()
     storyboard.run()
+    start_on_first_trajectory(build)
     separate(build)
     read_stop(build, storyboard)
     if varied is not None:

@@ -22,6 +22,7 @@ from ..xosc import PLAYER_STEP
 from . import traced
 from .context import Build, last_name
 from .geometry import classify
+from .lane_rate import rate_seconds
 from .opaque import summary
 from .placing import place
 from .positions import lane_id, number
@@ -242,9 +243,13 @@ def _lane_change(
         distance = number(dynamics, "value")
     elif dynamics is not None:
         speed = motion.speed.get(str(request.actor.name))
+        value = number(dynamics, "value")
+        timed = dynamics.get("dynamicsDimension") == "time"
+        if dynamics.get("dynamicsDimension") == "rate":
+            # A peak lateral speed: as long as players take for it (`lane_rate`).
+            seconds = rate_seconds(build, request.actor, shape, value)
+            value, timed = (value, False) if seconds is None else (seconds, True)
         if speed:
-            value = number(dynamics, "value")
-            timed = dynamics.get("dynamicsDimension") == "time"
             distance = speed * (_lane_change_time(value) if timed else value)
             _guess(
                 build,
@@ -331,6 +336,13 @@ def _trajectory(
     polyline = None if shape is None else shape.find("Polyline")
     if polyline is None:
         return "only polyline trajectories map (FollowTrajectory); clothoids and NURBS do not"
+    if follow.find("TimeReference/Timing") is not None:
+        # Players then reach each vertex at its time, whatever the actor's speed
+        # (`bicycle_fall_over`: 20 m in 2 s, then 5 m in 0.5 s, then standing still).
+        return (
+            "a trajectory followed in time (TimeReference Timing) has no SceML form: "
+            "FollowTrajectory is followed at the actor's speed"
+        )
     vertices = polyline.findall("Vertex")
     if vertices and _is_self(vertices[0], request.actor):
         vertices = vertices[1:]

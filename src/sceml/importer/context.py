@@ -44,6 +44,11 @@ class Build:
     #: (activating node, the condition's content) -> its node: one node for the same condition
     #: after the same node in several triggers (`triggers.Trigger.condition`).
     conditions: dict[tuple[int, bytes], scm.GraphElement] = field(default_factory=dict)
+    #: (tower, the entity its TrailerRef names, the Trailer element): linked once every
+    #: entity is read (`entities.py`).
+    trailer_refs: list[tuple[scm.Actor, str, etree._Element]] = field(default_factory=list)
+    #: Entities of vehicleCategory trailer or semitrailer: never guessed to be the ego.
+    trailer_entities: set[str] = field(default_factory=set)
     _taken: set[str] = field(default_factory=set)
 
     @property

@@ -99,7 +99,7 @@ def init_controller(build: Build, actor: scm.Actor, private: etree._Element) -> 
     group = private.find("ControllerAction")
     assign = None if group is None else group.find("AssignControllerAction")
     if activate is not None and (group is None or len(group) == 1):
-        actor.controllerActivation = read_activation(activate) or scm.ControllerActivation()
+        actor.controllerActivation = _merged(actor.controllerActivation, read_activation(activate))
         build.report.add("mapped", f"{actor.name}: controller activation", build.where(activate))
         return True
     if (
@@ -116,9 +116,29 @@ def init_controller(build: Build, actor: scm.Actor, private: etree._Element) -> 
     actor.controller = made
     switched = read_activation(assign, "activate")
     if switched is not None:
-        actor.controllerActivation = switched
+        actor.controllerActivation = _merged(actor.controllerActivation, switched)
     build.report.add("mapped", f"{actor.name}: controller {made.name!r}", build.where(assign))
     return True
+
+
+def _merged(
+    before: scm.ControllerActivation | None, switched: scm.ControllerActivation | None
+) -> scm.ControllerActivation:
+    """The domains after a further Init activation: those it sets, the others as they were
+    (`distance_test` switches longitudinal and lateral on in two actions)."""
+    merged = scm.ControllerActivation()
+    for domain in DOMAINS:
+        value = None if switched is None else switched.eGet(domain)
+        if value is None and before is not None:
+            value = before.eGet(domain)
+        merged.eSet(domain, value)
+    return merged
+
+
+def controls_speed(actor: scm.Actor) -> bool:
+    """Whether an Init action read so far switched the actor's longitudinal domain on."""
+    activation = actor.controllerActivation
+    return activation is not None and activation.longitudinal is True
 
 
 def _activation_element(private: etree._Element) -> etree._Element | None:

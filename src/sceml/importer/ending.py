@@ -4,6 +4,8 @@ Groups that are only `SimulationTime > T` give the maximum duration; the others 
 node waits for (one group: join-all over its elements; one per element: join-one). Every node
 must reach the end in SceML, so branches the StopTrigger does not name also flow into it, through
 a join-all with the stop (which then alone decides when the run ends, as in OpenSCENARIO).
+A StopTrigger without a time limit gets `UNLIMITED_RUN`, not SceML's default of 60 s: the
+original runs until its StopTrigger holds, however late.
 """
 
 from __future__ import annotations
@@ -17,6 +19,13 @@ from .context import Build
 from .positions import number
 from .storyboard import Storyboard
 from .triggers import Group, Trigger, first_holds
+
+#: The maximum duration of a scenario whose StopTrigger sets no time limit. OpenSCENARIO then
+#: runs until the StopTrigger holds; a SceML run needs a limit, and SceML's default (60 s)
+#: cut `acc-toggle` (117.8 s) and `cut-in_sloppy` (218.65 s) short. 1200 s is the limit
+#: esmini's own scenarios give a run that has no other end, and the preview records it for up
+#: to 83 actors at 0.05 s (`simulate.limits.MAX_SAMPLES`).
+UNLIMITED_RUN = 1200.0
 
 
 def read_stop(build: Build, storyboard: Storyboard) -> None:
@@ -39,8 +48,11 @@ def read_stop(build: Build, storyboard: Storyboard) -> None:
             "mapped", f"StopTrigger: maximum duration {min(limits):g} s", build.where(stop)
         )
     else:
+        build.root.maxDuration = scm.Value(value=UNLIMITED_RUN)
         build.report.add(
-            "guessed", "no SimulationTime limit in the StopTrigger: the default maximum duration"
+            "guessed",
+            "no SimulationTime limit in the StopTrigger: a maximum duration of "
+            f"{UNLIMITED_RUN:g} s (the original runs until its StopTrigger holds)",
         )
     ends = _ends(build, trigger, groups)
     others = [n for n in _sinks(build) if all(n is not e for e in ends)]

@@ -13,6 +13,7 @@ from . import traced
 from .context import Build
 from .controllers import object_controller
 from .positions import number
+from .unplaced import is_referenced, is_sumo_template
 
 #: OpenSCENARIO vehicleCategory -> SceML actor kind (and whether that is a guess).
 VEHICLE_KINDS = {
@@ -42,21 +43,110 @@ def read_entities(build: Build) -> None:
                 "not represented", f"<{item.tag} name={item.get('name')!r}>", build.where(item)
             )
             continue
-        actor = _actor(build, item)
-        if actor is not None:
-            build.root.actors.append(actor)
-            build.actors[str(item.get("name"))] = actor
+        if is_sumo_template(item) and not is_referenced(build, str(item.get("name"))):
+            _sumo_template(build, item)
+            continue
+        _add(build, item, str(item.get("name")))
+    _link_trailers(build)
     if not build.actors:
         raise build.source.error("the file declares no vehicle or pedestrian entity", entities)
     _choose_ego(build)
 
 
-def _actor(build: Build, item: etree._Element) -> scm.Actor | None:
-    name = str(item.get("name"))
+def _sumo_template(build: Build, item: etree._Element) -> None:
+    """esmini never places a SUMO controller's template entity (SUMO adds its vehicles): no
+    actor, so no actor without a start; SceML has no co-simulated traffic to keep it in."""
+    build.report.add(
+        "not represented",
+        f"entity {item.get('name')!r}: the template of the vehicles its SUMO controller adds "
+        "from the SUMO configuration; esmini never places it itself, and SceML has no "
+        "co-simulated traffic (the export runs without SUMO's vehicles)",
+        build.where(item),
+    )
+
+
+def _add(build: Build, item: etree._Element, name: str) -> scm.Actor | None:
+    """The actor of a ScenarioObject (or of a trailer written in place), with its own trailer."""
+    actor = _actor(build, item, name)
+    if actor is None:
+        return None
+    build.root.actors.append(actor)
+    build.actors[name] = actor
+    body = next((c for c in item if isinstance(c.tag, str) and c.tag == "Vehicle"), None)
+    if body is not None:
+        _coupling(build, actor, body)
+    return actor
+
+
+def _coupling(build: Build, actor: scm.Actor, body: etree._Element) -> None:
+    """A vehicle's TrailerHitch and TrailerCoupler offsets and the Trailer it tows (1.3).
+
+    A trailer written in place (a ScenarioObject inside Trailer, or a catalog entry copied
+    there) becomes an actor of its own named as esmini names it, its tower's name and a `+`
+    (`Truck+`, and its own trailer `Truck++`); it has no start: it starts at the hitch. A
+    TrailerRef is linked once every entity is read; an empty one (a catalog's default) tows
+    nothing."""
+    for tag, feature in (("TrailerHitch", "hitchX"), ("TrailerCoupler", "couplerX")):
+        element = body.find(tag)
+        if element is not None and element.get("dx") is not None:
+            actor.eSet(feature, traced.value(number(element, "dx")))
+    trailer = body.find("Trailer")
+    if trailer is None:
+        return
+    reference = trailer.find("TrailerRef")
+    if reference is not None:
+        named = str(reference.get("entityRef") or "")
+        if named:
+            _needs_trailers(build, trailer)
+            build.trailer_refs.append((actor, named, trailer))
+        return
+    inline = trailer.find("Trailer")
+    if inline is not None:
+        _needs_trailers(build, trailer)
+        towed = _add(build, inline, f"{actor.name}+")
+        if towed is not None:
+            actor.trailer = towed
+            build.report.add(
+                "mapped",
+                f"entity {actor.name!r} tows {towed.name!r} (a trailer written in place)",
+                build.where(inline),
+            )
+
+
+def _needs_trailers(build: Build, trailer: etree._Element) -> None:
+    """Trailers are OpenSCENARIO 1.3: a file of an earlier version that has them (esmini reads
+    them in any) can only be exported back as 1.3."""
+    if build.report.version < "1.3":
+        build.report.needs_version = "1.3"
+        build.report.add(
+            "guessed",
+            f"a trailer in an OpenSCENARIO {build.report.version} file (trailers are 1.3): its "
+            "export needs 1.3",
+            build.where(trailer),
+        )
+
+
+def _link_trailers(build: Build) -> None:
+    for actor, named, element in build.trailer_refs:
+        towed = build.actors.get(named)
+        if towed is None or towed is actor:
+            build.report.add(
+                "not represented",
+                f"entity {actor.name!r}: its trailer {named!r} is no other vehicle of the file",
+                build.where(element),
+            )
+            continue
+        actor.trailer = towed
+        build.report.add("mapped", f"entity {actor.name!r} tows {named!r}", build.where(element))
+
+
+def _actor(build: Build, item: etree._Element, name: str) -> scm.Actor | None:
     body = next((c for c in item if isinstance(c.tag, str) and c.tag != "ObjectController"), None)
     if body is not None and body.tag == "Vehicle":
         category = str(body.get("vehicleCategory"))
         kind, guessed = VEHICLE_KINDS.get(category, ("Car", True))
+        if category in ("trailer", "semitrailer"):
+            build.trailer_entities.add(name)
         if guessed:
             build.report.add(
                 "guessed",
@@ -168,7 +258,11 @@ def _choose_ego(build: Build) -> None:
     if named:
         chosen, why = named[0], "by its name"
     else:
-        vehicles = [a for a in actors if not isinstance(a, scm.Pedestrian)]
+        vehicles = [
+            a
+            for a in actors
+            if not isinstance(a, scm.Pedestrian) and str(a.name) not in build.trailer_entities
+        ]
         chosen, why = (vehicles or actors)[0], "the first vehicle (no ego property or ego name)"
     chosen.isEgo = True
     build.ego = chosen

@@ -12,7 +12,7 @@ import scemlmodel as scm
 from . import traced
 from .actions import Motion, Request, map_action
 from .context import Build
-from .controllers import init_controller
+from .controllers import controls_speed, init_controller
 from .opaque import opaque_node
 from .placing import place
 from .positions import number
@@ -116,6 +116,8 @@ def _private(build: Build, actor: scm.Actor, private: etree._Element) -> bool:
         and number(dynamics, "value", 0.0) != 0  # zero time or distance: a step after all
     ):
         return _gradual(build, actor, private, speed)
+    if controls_speed(actor):
+        return _after_the_controller(build, actor, private, speed)
     actor.initialSpeed = traced.value(number(target, "value"))
     build.report.add("mapped", f"{actor.name}: initial speed", build.where(speed))
     return True
@@ -158,6 +160,28 @@ def _gradual(
 ) -> bool:
     """A gradual Init speed change: a speed maneuver right after the root, as players run it
     (the actor starts at the speed it had, and reaches the target at the given rate)."""
+    shape = speed.find("SpeedActionDynamics").get("dynamicsShape")
+    return _speed_from_the_start(build, actor, private, speed, f"the Init speed change ({shape})")
+
+
+def _after_the_controller(
+    build: Build, actor: scm.Actor, private: etree._Element, speed: etree._Element
+) -> bool:
+    """An Init speed set after a controller took the actor's longitudinal domain: a speed
+    maneuver right after the root, so that the export writes it after the activation again.
+
+    Players' controllers take over at the speed the actor has when they are activated (esmini's
+    interactive, ACC, ALKS and sloppy drivers read it then); as the initial speed it would be
+    set before the activation, and the interactive driver of `cut-in_interactive` drove off at
+    30 m/s where the original stands still."""
+    return _speed_from_the_start(
+        build, actor, private, speed, "the Init speed, set after its controller took over,"
+    )
+
+
+def _speed_from_the_start(
+    build: Build, actor: scm.Actor, private: etree._Element, speed: etree._Element, what: str
+) -> bool:
     name = str(actor.name)
     before = build.init_speeds.get(name, _speed_of(actor))
     motion = Motion(speed={name: before})
@@ -168,8 +192,8 @@ def _gradual(
     build.init_speeds[name] = motion.speed[name]
     build.report.add(
         "guessed",
-        f"{name}: the Init speed change ({speed.find('SpeedActionDynamics').get('dynamicsShape')}) "
-        f"is {made.name} from the start, from {before:g} m/s (it is not the initial speed)",
+        f"{name}: {what} is {made.name} from the start, from {before:g} m/s "
+        "(it is not the initial speed)",
         build.where(speed),
     )
     return True

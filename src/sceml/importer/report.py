@@ -27,6 +27,9 @@ class ImportReport:
 
     file: str
     version: str = ""
+    #: The lowest OpenSCENARIO version that can say everything read, where it is above
+    #: `version` (esmini reads a 1.3 trailer in a 1.1 file; its export needs 1.3); "" when not.
+    needs_version: str = ""
     entries: list[Entry] = field(default_factory=list)
     parameters: dict[str, str] = field(default_factory=dict)
     catalog_entries: list[str] = field(default_factory=list)

@@ -206,21 +206,27 @@ class Storyboard:
         return join
 
     def _runs(self, info: Event, nodes: list[scm.GraphElement]) -> None:
-        """The event's maximumExecutionCount as its node's maxRuns (one action, of a kind the
-        export writes as one event); otherwise reported: SceML repeats nodes one by one, not a
-        group, and players cannot repeat an event together with the event of its finish."""
+        """The event's maximumExecutionCount as its nodes' maxRuns (one action, or controller
+        changes only, of kinds the export writes as one event); otherwise reported: SceML
+        repeats nodes one by one, not a group, and players cannot repeat an event together
+        with the event of its finish."""
         count = int(info.element.get("maximumExecutionCount", "1"))
         if count <= 1:
             return
-        node = nodes[0] if len(nodes) == 1 else None
-        if isinstance(node, scm.ActionNode) and repeatable(node.eClass.name):
-            node.maxRuns = count
-            self.build.report.add(
-                "mapped",
-                f"{node.name}: maximumExecutionCount {count} -> maxRuns",
-                self.build.where(info.element),
-                str(node.name),
-            )
+        # Controller changes complete at once: each repeating on the event's trigger runs
+        # with the others, as the event's actions do (`acc-toggle` assigns and activates).
+        together = len(nodes) == 1 or all(isinstance(n, scm.ControllerManeuver) for n in nodes)
+        if together and all(
+            isinstance(n, scm.ActionNode) and repeatable(n.eClass.name) for n in nodes
+        ):
+            for node in nodes:
+                node.maxRuns = count
+                self.build.report.add(
+                    "mapped",
+                    f"{node.name}: maximumExecutionCount {count} -> maxRuns",
+                    self.build.where(info.element),
+                    str(node.name),
+                )
             return
         self.build.report.add(
             "not represented",

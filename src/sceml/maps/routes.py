@@ -1,10 +1,12 @@
-"""Routes through the next junction: from a lane, which roads traffic can reach and how it turns.
+"""Routes through junctions: from a lane, which roads traffic can reach and how it turns.
 
 Traffic on a lane runs to one end of its road (see `RoadMap.drives_along_s`). Roads linked end to
 end are followed to the first junction; there every connection whose incoming road and lane match
 leads, through its connecting road, to an exit road. The turn is read from the change of heading
 between entering and leaving the connecting road: more than 30 degrees to the left is a left turn,
 to the right a right turn, more than 150 degrees either way a U-turn, and straight otherwise.
+`way_to` chains these routes junction by junction to a road further away, as players route an
+actor to a destination beyond the next junction (esmini's AcquirePositionAction and routes).
 """
 
 from __future__ import annotations
@@ -22,6 +24,8 @@ STRAIGHT_LIMIT = math.radians(30)
 U_TURN_LIMIT = math.radians(150)
 #: Roads followed end to end before giving up on reaching a junction.
 MAX_ROADS_TO_JUNCTION = 20
+#: Junctions passed before giving up on reaching a road (a city map's far side is within it).
+MAX_JUNCTIONS = 30
 
 
 @dataclass(frozen=True)
@@ -125,3 +129,48 @@ def _through_junction(
                 )
             )
     return routes
+
+
+def way_to(
+    road_map: RoadMap, road_id: str, lane_id: int, goal_road: str, goal_lane: int | None = None
+) -> list[Route] | None:
+    """The routes, one per junction, by which traffic on a lane reaches `goal_road` (and
+    `goal_lane`) through the fewest junctions; None when no way within `MAX_JUNCTIONS` does.
+
+    Searched breadth first over the lanes each junction leads onto, in the map's order of
+    connections, so the answer is the same every time; roads before the first junction count as
+    reached only when they lie ahead on the lane (`Route.reaches`).
+    """
+    frontier = [(road_id, lane_id)]
+    came: dict[tuple[str, int], tuple[tuple[str, int], Route] | None] = {frontier[0]: None}
+    for _ in range(MAX_JUNCTIONS):
+        following: list[tuple[str, int]] = []
+        for lane in frontier:
+            for route in routes_from(road_map, *lane):
+                if route.reaches(goal_road, goal_lane):
+                    return _chain(came, lane, route)
+                if route.exit_road is None or route.exit_lane is None:
+                    continue
+                ahead = (route.exit_road, route.exit_lane)
+                if ahead not in came:
+                    came[ahead] = (lane, route)
+                    following.append(ahead)
+        if not following:
+            return None
+        frontier = following
+    return None
+
+
+def _chain(
+    came: dict[tuple[str, int], tuple[tuple[str, int], Route] | None],
+    lane: tuple[str, int],
+    last: Route,
+) -> list[Route]:
+    """The routes from the search's first lane to `last`, first junction first."""
+    chain = [last]
+    step = came[lane]
+    while step is not None:
+        lane, route = step
+        chain.append(route)
+        step = came[lane]
+    return chain[::-1]

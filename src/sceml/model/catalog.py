@@ -24,9 +24,11 @@ ACTOR_ANNOTATION = "http://sceml.org/actor"
 #: A parameter whose default depends on the actor kind (its bounding box).
 ACTOR_DEFAULT = "actor"
 
-#: Signs a parameter annotation may require: above zero, or zero and above.
+#: Signs a parameter annotation may state: above zero, zero and above, or either sign where the
+#: sign has a meaning of its own (a speed below zero is driving backwards, release 1.4).
 POSITIVE = "positive"
 NON_NEGATIVE = "nonNegative"
+SIGNED = "signed"
 
 CATEGORIES = ("longitudinal", "lateral", "composite", "controller", "condition", "global")
 
@@ -38,7 +40,8 @@ NOTATION_FEATURES = frozenset({"diagramPosition"})
 class ParameterSpec:
     """One numeric parameter of a kind: its feature name, SI unit and language default.
 
-    `sign` is `positive` (above zero), `nonNegative` (zero or above) or None (any number);
+    `sign` is `positive` (above zero), `nonNegative` (zero or above), `signed` (any number, the
+    sign meaning a direction: a negative speed reverses) or None (any number);
     `limit` names the actor limit that bounds it (a key of the limits file, e.g. `max_speed`).
     `optional` (annotation `optional="true"`): unset has a meaning of its own, so no level
     requires it (a road position's h: unset follows the lane).
@@ -262,7 +265,7 @@ def parameter(kind: EObject | EClass | type | str, name: str) -> ParameterSpec:
 
 
 def sign(kind: EObject | EClass | type | str, name: str) -> str | None:
-    """`positive`, `nonNegative` or None: what the metamodel requires of a parameter's numbers.
+    """`positive`, `nonNegative`, `signed` or None: what the metamodel says of a parameter's sign.
 
     None as well for a feature that is no annotated parameter (an override's value, say).
     """

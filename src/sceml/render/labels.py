@@ -248,7 +248,26 @@ def parameter_items(node: EObject, scope: Scope) -> Iterator[tuple[str, str]]:
             elif held is not None and name != "description":
                 yield name, str(held)
         elif isinstance(feature, EReference) and feature.containment:
+            if units.get(name) == "m/s" and _backwards(_resolve(held, scope)):
+                yield name, _reverse_text(node, held, scope)
+                continue
             yield from _reference_items(name, held, units.get(name, ""), scope)
+
+
+def _backwards(value: scm.ParameterValue | None) -> bool:
+    """A single speed below zero: driving backwards (release 1.4)."""
+    return isinstance(value, scm.Value) and value.value is not None and value.value < 0
+
+
+def _reverse_text(node: EObject, held: scm.ParameterValue, scope: Scope) -> str:
+    """A negative speed as people say it: `reverse at 3 m/s = 10.8 km/h` for a speed to drive,
+    `-0.01 m/s (reversing)` for a speed a condition compares with (its rule reads signed)."""
+    resolved = _resolve(held, scope)
+    assert isinstance(resolved, scm.Value) and resolved.value is not None
+    if isinstance(node, scm.Condition):
+        return f"{describe_value(held, 'm/s', scope)} (reversing)"
+    size = scm.Value(value=-resolved.value)
+    return f"reverse at {describe_value(size, 'm/s', scope)}"
 
 
 def _reference_items(name: str, held: object, unit: str, scope: Scope) -> Iterator[tuple[str, str]]:
@@ -357,7 +376,8 @@ def root_lines(root: scm.RootNode | None, scenario: scm.Scenario) -> list[str]:
     for actor in actors(scenario):
         ego = ", ego" if actor.isEgo else ""
         driven = f", {describe_controller(actor.controller)}" if actor.controller else ""
-        lines.append(f"  {actor.name}: {actor.eClass.name}{ego}{driven}")
+        tows = f", tows {actor.trailer.name}" if actor.trailer is not None else ""
+        lines.append(f"  {actor.name}: {actor.eClass.name}{ego}{driven}{tows}")
     return lines
 
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable, Iterator, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
@@ -26,6 +26,7 @@ from ..maps.resolve import is_relative, start_poses
 from ..model import catalog
 from ..model.documents import allowed_roots_of
 from ..model.graph import actors, level_text, root_node, topological_order
+from ..model.towing import couplings
 from ..modules import flatten
 from . import style
 from .flow import RenderError
@@ -231,6 +232,23 @@ def _add_actors(scene: MapScene, scenario: scm.Scenario) -> None:
                 nominal(actor.boxCenterX, 0.0) or 0.0,
             )
         )
+    _hitch_trailers(scene, scenario)
+
+
+def _hitch_trailers(scene: MapScene, scenario: scm.Scenario) -> None:
+    """Each towed actor in line behind its tower, its coupler at the hitch (Actor.trailer,
+    release 1.4), as players and the preview place it whatever start it has."""
+    marks = {mark.name: index for index, mark in enumerate(scene.actors)}
+    for link in couplings(actors(scenario)):
+        tower = scene.actors[marks[link.tower]]
+        if tower.place is None:
+            continue
+        at = tower.place.centre
+        heading = at.heading or 0.0
+        back = link.hitch - link.coupler
+        point = Located(at.x + back * math.cos(heading), at.y + back * math.sin(heading), heading)
+        index = marks[link.trailer]
+        scene.actors[index] = replace(scene.actors[index], place=Place(point, (point,)))
 
 
 def _add_nodes(scene: MapScene, scenario: scm.Scenario) -> None:

@@ -130,6 +130,8 @@ class Actor:
         self.x = self.y = self.heading = 0.0
         #: Metres moved since the run started, whichever way (TraveledDistance's odometer).
         self.odometer = 0.0
+        #: Dragged by another actor (`trailers.py`): it neither drives nor follows its path.
+        self.towed = False
         self.place()
 
     def place(self) -> None:
@@ -146,16 +148,16 @@ class Actor:
     def advance_to(self, speed: float, dt: float) -> bool:
         """Move one step ending at `speed`: the mean speed of the step gives the distance.
 
-        At the end of a road without a link the actor stops, as players stop it; True when
-        it stops there in this step."""
-        speed = max(speed, 0.0)
+        A negative speed drives backwards along the path (the heading stays). At the end of a
+        road without a link the actor stops, as players stop it; True when it stops there in
+        this step."""
         step = (self.speed + speed) / 2.0 * dt
         self.speed = speed
         end = self.path.end_of_road
-        if end is not None and self.d >= end - 1e-9:
+        if end is not None and self.d >= end - 1e-9 and step >= 0.0:
             self.speed = 0.0
             return False
-        if step > 0.0:  # standing actors (waiting for their trigger) cost nothing
+        if step != 0.0:  # standing actors (waiting for their trigger) cost nothing
             # The speed is along the heading: during a lane change part of it goes sideways.
             slope = self.shift.slope(self.d) if self.shift is not None else 0.0
             self.d += step / math.sqrt(1.0 + slope * slope)

@@ -26,7 +26,7 @@ import scemlmodel as scm
 from ..model.graph import finishes_with_first, predecessors, successors
 from ..xosc import meaning
 from ..xosc.flows import flow_steps, inlined
-from . import global_values
+from . import global_values, trailers
 from .behaviours import Behaviour, behaviour_for
 from .conditions import Test, condition_for
 from .run import END_NODE, MAX_DURATION, NodeRecord
@@ -287,8 +287,9 @@ def run_schedule(
         scheduler.activate_due()
         speeds = [actor.control.next_speed(actor, world.actors, world.dt) for actor in actors]
         for actor, speed in zip(actors, speeds, strict=True):
-            if actor.advance_to(speed, world.dt):
+            if not actor.towed and actor.advance_to(speed, world.dt):
                 scheduler.stopped_at_road_end(actor.name)
+        trailers.drag(world.actors, world.couplings)
         scheduler.check()
         record()
         if progress is not None and k % PROGRESS_EVERY == 0:

@@ -13,7 +13,7 @@ from weakref import WeakKeyDictionary
 import numpy as np
 
 from ..maps import LaneCoordinate, PositionError, RoadMap
-from ..maps.routes import Route, routes_from
+from ..maps.routes import Route, routes_from, way_to
 from .paths import LaneSpot, Path, offset_path
 
 SAMPLE_STEP = 0.5  # m of s between samples of a lane's centre line
@@ -24,7 +24,9 @@ _MAX_ROADS = 12
 _Samples = tuple[np.ndarray, np.ndarray]
 _samples: WeakKeyDictionary[RoadMap, dict[tuple[str, int], _Samples]] = WeakKeyDictionary()
 #: Paths already built, per map (a path is never changed once built); at most `_KEEP` per map.
-_paths: WeakKeyDictionary[RoadMap, dict[tuple[LaneSpot, Route | None], Path]] = WeakKeyDictionary()
+_paths: WeakKeyDictionary[RoadMap, dict[tuple[LaneSpot, tuple[Route, ...]], Path]] = (
+    WeakKeyDictionary()
+)
 _KEEP = 512
 
 
@@ -56,28 +58,32 @@ def start_spot(road_map: RoadMap, road_id: str, lane_id: int, s: float) -> LaneS
     return LaneSpot(road_id, lane_id, s, road_map.drives_along_s(road_map.road(road_id), lane_id))
 
 
-def lane_path(road_map: RoadMap, spot: LaneSpot, via: Route | None = None) -> Path:
-    """The centre line ahead of `spot`, through linked roads, up to `AHEAD` m.
+def lane_path(road_map: RoadMap, spot: LaneSpot, via: Route | tuple[Route, ...] = ()) -> Path:
+    """The centre line ahead of `spot`, through linked roads, up to `AHEAD` m (or, given
+    several routes, until past the last of them).
 
-    At a junction the path takes `via` when it enters there, else the straight route, else
-    the only route; it stops (and goes on straight) when there is no such choice.
+    At a junction the path takes the route of `via` that enters there, else the straight
+    route, else the only route; it stops (and goes on straight) when there is no such choice.
     """
     built = _paths.setdefault(road_map, {})
-    key = (spot, via)
+    key = (spot, via if isinstance(via, tuple) else (via,))
     if key not in built:
         if len(built) >= _KEEP:
             built.pop(next(iter(built)))
-        built[key] = _build_lane_path(road_map, spot, via)
+        built[key] = _build_lane_path(road_map, spot, key[1])
     return built[key]
 
 
-def _build_lane_path(road_map: RoadMap, spot: LaneSpot, via: Route | None) -> Path:
+def _build_lane_path(road_map: RoadMap, spot: LaneSpot, via: tuple[Route, ...]) -> Path:
     points: list[tuple[float, float]] = []
     spots: list[LaneSpot | None] = []
     road, lane, s_from, forward = spot.road, spot.lane, spot.s, spot.forward
     travelled = 0.0
     dead_end = False
-    for _ in range(_MAX_ROADS):
+    # A chain of routes is followed past its last junction, however far (with up to
+    # `_MAX_ROADS` more roads for each junction after the first).
+    entries = {route.entry_road for route in via[1:]}
+    for _ in range(_MAX_ROADS * (1 + len(entries))):
         ss, xy = centre_samples(road_map, road, lane)
         s_from = min(max(s_from, float(ss[0])), float(ss[-1]))
         first = (float(np.interp(s_from, ss, xy[:, 0])), float(np.interp(s_from, ss, xy[:, 1])))
@@ -95,7 +101,8 @@ def _build_lane_path(road_map: RoadMap, spot: LaneSpot, via: Route | None) -> Pa
         travelled += (
             float(np.sum(np.hypot(*np.diff(np.array(piece), axis=0).T))) if len(piece) > 1 else 0.0
         )
-        if travelled >= AHEAD:
+        entries.discard(road)
+        if travelled >= AHEAD and not entries:
             break
         following = next_lane(road_map, road, lane, forward, via)
         if following is None:
@@ -113,7 +120,7 @@ def _ends_here(road_map: RoadMap, road_id: str, forward: bool) -> bool:
 
 
 def next_lane(
-    road_map: RoadMap, road_id: str, lane_id: int, forward: bool, via: Route | None = None
+    road_map: RoadMap, road_id: str, lane_id: int, forward: bool, via: tuple[Route, ...] = ()
 ) -> tuple[str, int, bool, float] | None:
     """The lane that continues this one at its end in the direction of travel, or None."""
     road = road_map.road(road_id)
@@ -130,7 +137,7 @@ def next_lane(
         return next_road.id, following, ahead, 0.0 if ahead else next_road.length
     if road_map.drives_along_s(road, lane_id) != forward:
         return None  # against the traffic: the junction's connections do not say where to go
-    route = via if via is not None and via.entry_road == road_id else None
+    route = next((r for r in via if r.entry_road == road_id), None)
     if route is None:
         routes = [r for r in routes_from(road_map, road_id, lane_id) if r.entry_road == road_id]
         straight = [r for r in routes if r.turn == "straight"]
@@ -146,10 +153,18 @@ def turn_path(
     road_map: RoadMap, spot: LaneSpot, turn: str, destination: tuple[float, float]
 ) -> Path | None:
     """The path from `spot` through the next junction turning `turn` (left or right), by the
-    route that passes nearest to `destination`; None when no such route exists."""
+    route that passes nearest to `destination`; when no such route leads to the destination's
+    road but a way through several junctions that turns so does, that way (as players route
+    there); None when there is neither."""
     if road_map.drives_along_s(road_map.road(spot.road), spot.lane) != spot.forward:
         return None
     candidates = [r for r in routes_from(road_map, spot.road, spot.lane) if r.turn == turn]
+    goals = {lane.road_id for lane in road_map.world_to_lane(*destination)}
+    if goals and not any(r.reaches(goal) for r in candidates for goal in goals):
+        ways = [w for g in sorted(goals) if (w := way_to(road_map, spot.road, spot.lane, g))]
+        way = min(ways, key=len) if ways else None
+        if way is not None and len(way) > 1 and any(r.turn == turn for r in way):
+            return lane_path(road_map, spot, via=tuple(way))
     paths = [lane_path(road_map, spot, via=route) for route in candidates]
     if not paths:
         return None

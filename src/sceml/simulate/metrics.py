@@ -37,7 +37,7 @@ def box_centres(states: Array, ahead: float) -> Array:
 def pair_metrics(
     times: Array, actors: tuple[ActorInfo, ...], states: Array
 ) -> tuple[PairMetrics, ...]:
-    """The metrics of each pair of actors, in actor order."""
+    """The metrics of each pair of actors, in actor order; none for a trailer and its tower."""
     centred = [box_centres(s, a.box_ahead) for a, s in zip(actors, states, strict=True)]
     boxes = [
         Boxes.moving(s[:, 0], s[:, 1], s[:, 2], s[:, 3], a.length, a.width)
@@ -45,6 +45,8 @@ def pair_metrics(
     ]
     results = []
     for i, j in itertools.combinations(range(len(actors)), 2):
+        if actors[i].towed_by == actors[j].name or actors[j].towed_by == actors[i].name:
+            continue
         results.append(
             _pair(times, actors[i], actors[j], boxes[i], boxes[j], centred[i], centred[j])
         )

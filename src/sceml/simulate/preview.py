@@ -16,14 +16,16 @@ from ..model.documents import allowed_roots_of
 from ..model.graph import actors as scenario_actors
 from ..model.graph import root_node, scenario_level
 from ..model.params import concrete
+from ..model.towing import couplings, is_towed
 from ..modules.flatten import Flattened, expand
 from ..xosc import PLAYER_STEP
+from . import trailers
 from .engine import Scheduler, run_schedule
 from .global_values import initial_values
 from .limits import located_in, refuse_unresolved, refuse_unusable
 from .metrics import pair_metrics
 from .run import ActorInfo, Run
-from .setup import make_actor
+from .setup import make_actor, trailer_at_rest
 from .world import SimulationError, World
 
 #: The default time step (s): fine enough for walking and urban speeds.
@@ -83,9 +85,16 @@ def _simulate(
     if road_map is None:
         road_map = _road_map(flat_root, scenario_file, allowed_roots_of(scenario))
     world = World(road_map, {}, step, values=initial_values(flat_root))
-    starts = start_poses(scenario_actors(flat), road_map)
-    for actor in scenario_actors(flat):
-        world.actors[str(actor.name)] = make_actor(actor, road_map, starts)
+    actors = scenario_actors(flat)
+    starts = start_poses(actors, road_map)
+    for actor in actors:
+        world.actors[str(actor.name)] = (
+            make_actor(actor, road_map, starts)
+            if actor.startPosition is not None or not is_towed(actor)
+            else trailer_at_rest(actor)
+        )
+    world.couplings = couplings(actors)
+    trailers.couple(world.actors, world.couplings)
     scheduler = Scheduler(list(flat.nodes), world)
     names = list(world.actors)
     times: list[float] = []
@@ -99,8 +108,9 @@ def _simulate(
     states = np.array(rows, dtype=float).reshape(len(rows), len(names), 4).transpose(1, 0, 2)
     states[:, :, 2] = np.unwrap(states[:, :, 2], axis=1)
     time_array = np.array(times)
+    towers = {link.trailer: link.tower for link in world.couplings}
     infos = tuple(
-        ActorInfo(a.name, a.kind, a.ego, a.length, a.width, a.box_ahead)
+        ActorInfo(a.name, a.kind, a.ego, a.length, a.width, a.box_ahead, towers.get(a.name, ""))
         for a in world.actors.values()
     )
     return Run(

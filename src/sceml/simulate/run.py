@@ -23,6 +23,9 @@ class ActorInfo:
     length: float
     width: float
     box_ahead: float = 0.0
+    #: The actor towing this one (Actor.trailer, release 1.4); "" when none. A coupled pair's
+    #: boxes overlap by design (a semi-trailer under its tractor): no metrics for it.
+    towed_by: str = ""
 
 
 @dataclass(frozen=True)

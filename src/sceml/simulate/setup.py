@@ -30,6 +30,14 @@ def make_actor(
     return made
 
 
+def trailer_at_rest(actor: scm.Actor) -> Actor:
+    """A towed actor without a start of its own: `trailers.couple` places it at the hitch."""
+    size = (concrete(actor, "length"), concrete(actor, "width"))
+    made = Actor(*_identity(actor), size, heading_path(0.0, 0.0, 0.0), 0.0)
+    made.box_ahead = concrete(actor, "boxCenterX")
+    return made
+
+
 def _placed(
     actor: scm.Actor, road_map: RoadMap | None, starts: Mapping[EObject, WorldPose] | None
 ) -> Actor:

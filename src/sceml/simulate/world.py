@@ -10,6 +10,7 @@ from ..errors import SceMLError
 from ..maps import RoadMap, WorldPose
 from ..maps.positions import centre
 from ..maps.resolve import is_relative, resolve
+from ..model.towing import Coupling
 from .actors import Actor
 
 
@@ -35,6 +36,8 @@ class World:
     #: The scenario's parameters and variables by (variable?, name): their current text, set
     #: from the root's declarations and changed by SetParameter and SetVariable.
     values: dict[tuple[bool, str], str] = field(default_factory=dict)
+    #: Who tows whom, towers first (`model.towing.couplings`); dragged after every step.
+    couplings: list[Coupling] = field(default_factory=list)
 
     def actor(self, participant: EObject | None, node: str) -> Actor:
         """The actor a node's reference or target names."""

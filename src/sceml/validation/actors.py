@@ -165,6 +165,52 @@ def exactly_one_ego(root: scm.RootNode, context: Context) -> Iterator[Finding]:
 
 
 @constraint(
+    "SCEML-A009",
+    ERROR,
+    "RootNode",
+    "an actor tows another actor of the scenario, not a pedestrian and not itself; an actor is "
+    "towed by at most one other, and towing forms no loop (release 1.4's Actor.trailer)",
+    # the root's actors and their trailers are its contents
+    reads=Reads(SELF, Aspect.CAST),
+)
+def trailers_form_chains(root: scm.RootNode, context: Context) -> Iterator[Finding]:
+    actors = list(root.actors)
+    towers: dict[EObject, list[scm.Actor]] = {}
+    for actor in actors:
+        towed = actor.trailer
+        if towed is None:
+            continue
+        if towed is actor or towed not in actors:
+            what = "itself" if towed is actor else f"{label(towed)}, not an actor of the scenario"
+            yield actor, f"actor {label(actor)} tows {what}"
+        elif isinstance(actor, scm.Pedestrian) or isinstance(towed, scm.Pedestrian):
+            yield (
+                actor,
+                f"actor {label(actor)} tows {label(towed)}: pedestrians neither tow nor are towed",
+            )
+        else:
+            towers.setdefault(towed, []).append(actor)
+    for towed, by in towers.items():
+        if len(by) > 1:
+            names = ", ".join(label(a) for a in by)
+            yield towed, f"actor {label(towed)} is towed by {len(by)} actors ({names}); at most one"
+    yield from _towing_loops(actors)
+
+
+def _towing_loops(actors: list[scm.Actor]) -> Iterator[Finding]:
+    reported: set[EObject] = set()
+    for first in actors:
+        chain, current = [first], first.trailer
+        while current is not None and current is not first and current not in chain:
+            chain.append(current)
+            current = current.trailer
+        if current is first and first.trailer is not first and not reported & set(chain):
+            reported.update(chain)
+            names = " -> ".join(label(actor) for actor in [*chain, first])
+            yield first, f"actors tow each other in a loop: {names}"
+
+
+@constraint(
     "SCEML-A008",
     ERROR,
     RELATIVE_KINDS,

@@ -39,10 +39,11 @@ docs/validation-rules.md`. A test fails when it is stale.
   without listing pairs.
 - **Plausibility is an error.** A speed or rate beyond the actor kind's limit is an error (paper
   rule 5: the scenario is not valid). The limits are plausible maxima; a project that needs more
-  raises them with `--limits FILE`. A value is judged by the highest number it allows: a range or
-  uniform distribution by its max, a normal distribution by its upper bound (by its mean when
-  unbounded), a discrete one by its largest option. Unset parameters (language defaults) are not
-  judged.
+  raises them with `--limits FILE`. A value is judged by the largest size (absolute number) it
+  allows: a range or uniform distribution by its larger end, a normal distribution by its bounds
+  (and its mean where a side is unbounded), a discrete one by its largest option. A negative
+  speed is driving backwards (release 1.4), judged by its size. Unset parameters (language
+  defaults) are not judged.
 - **Levels.** A functional scenario may leave anything unset. Logical and concrete ones need every
   value without a language default (SCEML-P002, SCEML-M006); concrete ones hold single values only
   (SCEML-P001).
@@ -58,6 +59,11 @@ docs/validation-rules.md`. A test fails when it is stale.
 - **Export.** `sceml export` refuses a model with any error, then runs the rules marked
   *checked* in the Export column again on the scenario with its module uses expanded, with the
   chosen OpenSCENARIO version and profile: what the mapping needs beyond a valid graph.
+- **Imported scenarios.** Some rules judge a value as the scenario states it against the world
+  (the actor kind's limits, the map): {stated}. A file `sceml import` reads states the same
+  value, so their findings are the original's too: the import lists them apart and does not
+  fail on them unless `--strict` (docs/import.md). Every other error of an imported scenario is
+  one the import caused.
 - **Internal errors.** A rule that fails unexpectedly on a malformed model does not stop the run:
   it becomes a diagnostic with code `{internal}` naming the rule, and all other rules still run.
 - **Older metamodel releases.** A file saved with an earlier release of the metamodel (its nsURI
@@ -87,6 +93,11 @@ def rules_table(registry: Registry = REGISTRY) -> str:
     return "\n".join(lines) + "\n"
 
 
+def _stated(registry: Registry) -> str:
+    """The codes of the rules that judge stated values, as the Decisions list them."""
+    return ", ".join(f"`{r.code}`" for r in registry.rules() if r.judges_stated_values)
+
+
 def limits_table() -> str:
     """The built-in plausibility limits as a Markdown table (SI units and km/h)."""
     keys = list(LIMIT_KEYS)
@@ -112,7 +123,7 @@ def render(registry: Registry = REGISTRY) -> str:
         "```yaml\nPedestrian:\n  max_speed: 3.0\nFourWheeler:\n  max_deceleration: 9.0\n```\n\n"
     )
     return (
-        INTRO.format(internal=INTERNAL_ERROR, older=OLDER_RELEASE)
+        INTRO.format(internal=INTERNAL_ERROR, older=OLDER_RELEASE, stated=_stated(registry))
         + "\n## Rules\n\n"
         + rules_table(registry)
         + "\n"

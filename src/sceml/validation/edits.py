@@ -88,6 +88,8 @@ _FEATURES: dict[str, Aspect] = {
     "actor": Aspect.ROLES | Aspect.MODULES,
     "actors": Aspect.CAST,
     "isEgo": Aspect.CAST,
+    # Which actor tows which: who needs a start of its own (SCEML-E002), towing loops (A009).
+    "trailer": Aspect.CAST,
     "roles": Aspect.CAST | Aspect.MODULES,
     "allowedKinds": Aspect.CAST | Aspect.MODULES,
     "kind": Aspect.CAST | Aspect.MODULES,

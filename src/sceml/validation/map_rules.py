@@ -187,6 +187,7 @@ def town_is_not_checked(root: scm.RootNode, context: Context) -> Iterator[Findin
     source=SOURCE,
     through_modules=True,
     reads=Reads(VALUE, LEVEL),
+    judges_stated_values=True,
 )
 def lane_position_exists(position: scm.LanePosition, context: Context) -> Iterator[Finding]:
     road_map = map_of(position, context)
@@ -209,6 +210,7 @@ def lane_position_exists(position: scm.LanePosition, context: Context) -> Iterat
     source=SOURCE,
     through_modules=True,
     reads=Reads(VALUE, LEVEL),
+    judges_stated_values=True,
 )
 def road_position_exists(position: scm.RoadPosition, context: Context) -> Iterator[Finding]:
     road_map = map_of(position, context)
@@ -293,6 +295,7 @@ def _grounds(position: EObject, road_map: RoadMap, context: Context) -> Iterator
     through_modules=True,
     # A relative start reads the starts of the actors it is placed after.
     reads=Reads(VALUE, LEVEL | Aspect.CAST | Aspect.POSITIONS),
+    judges_stated_values=True,
 )
 def position_fits_actor(position: EObject, context: Context) -> Iterator[Finding]:
     road_map = map_of(position, context)
@@ -324,6 +327,7 @@ def position_fits_actor(position: EObject, context: Context) -> Iterator[Finding
     source=SOURCE,
     through_modules=True,
     reads=Reads(VALUE, LEVEL | Aspect.CAST | Aspect.POSITIONS),
+    judges_stated_values=True,
 )
 def vehicle_on_the_edge(position: EObject, context: Context) -> Iterator[Finding]:
     road_map = map_of(position, context)
@@ -370,6 +374,7 @@ def _nearest(road_map: RoadMap, point: Located) -> str:
     source=SOURCE,
     through_modules=True,
     reads=Reads(VALUE, LEVEL | Aspect.CAST),
+    judges_stated_values=True,
 )
 def heading_follows_lane(position: scm.WorldPosition, context: Context) -> Iterator[Finding]:
     road_map = map_of(position, context)

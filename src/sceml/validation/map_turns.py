@@ -1,5 +1,5 @@
-"""Map rules on where actors go (SPEC §12): a turn starts where its actor can turn that way at a
-junction (SCEML-R006), and a crossing crosses the road (SCEML-R007).
+"""Map rules on where actors go (SPEC §12): a turn's destination is reachable from where its actor
+is, turning that way at a junction (SCEML-R006), and a crossing crosses the road (SCEML-R007).
 
 The rules on positions and the map file itself are in `map_rules`, whose helpers these share.
 """
@@ -21,7 +21,8 @@ from ..maps import (
     wrap_angle,
 )
 from ..maps.positions import Located, centre
-from ..maps.routes import routes_from
+from ..maps.routes import Route, routes_from, way_to
+from ..model.departure import latest_placing, place_after
 from ..model.graph import Flows, OwnFlows, reachable
 from .context import Context, is_kind
 from .map_rules import (
@@ -75,24 +76,19 @@ def _actions_by_actor(flows: Flows, context: Context) -> dict[object, list[scm.A
 
 
 def _departure(node: scm.ActionNode, context: Context) -> tuple[EObject | None, bool]:
-    """Where the actor is when `node` starts: the destination of its latest earlier routed
-    maneuver or trajectory, else its start position; and whether a lane change or overtake of
-    the actor since then leaves its lane open."""
+    """Where the actor is when `node` starts (`model.departure`: the place of its latest earlier
+    routed maneuver, trajectory or InLocationRadius, else its start), and whether a lane change
+    or overtake of the actor since then leaves its lane open."""
     actor = node.referenceActor
     flows = _flows_of(node, context)
     earlier = _ancestors(node, flows, context)
     # In the graph's own order, so that of two parallel latest maneuvers the same one counts.
     mine = [n for n in _actions_by_actor(flows, context).get(actor, ()) if n in earlier]
-    routed = [n for n in mine if isinstance(n, scm.RoutedManeuver | scm.FollowTrajectory)]
-    before_others = set().union(*(_ancestors(o, flows, context) for o in routed))
-    latest = [n for n in routed if n not in before_others]
+    latest = latest_placing(mine, lambda other: _ancestors(other, flows, context))
     since = reachable(latest, backwards=False, flows=flows) if latest else set(earlier)
     lane_open = any(isinstance(n, scm.LaneChange | scm.Overtake) for n in mine if n in since)
     if latest:
-        last = latest[0]
-        if isinstance(last, scm.FollowTrajectory):
-            return (last.waypoints[-1] if last.waypoints else None), lane_open
-        return last.destination, lane_open
+        return place_after(latest[0]), lane_open
     return (actor.startPosition if actor is not None else None), lane_open
 
 
@@ -112,8 +108,8 @@ def _lanes_at(road_map: RoadMap, point: Located, usable: frozenset[str]) -> list
     "SCEML-R006",
     ERROR,
     ("TurnLeft", "TurnRight"),
-    "a turn's destination is reachable from the actor's lane through the next junction's "
-    "connections, turning the named way",
+    "a turn's destination is reachable from the actor's lane through the junctions' "
+    "connections, turning the named way at the next junction (or, beyond it, at one of them)",
     source=SOURCE,
     through_modules=True,
     reads=Reads(VALUE, ROUTE),
@@ -159,6 +155,18 @@ def turn_follows_junction(node: scm.RoutedManeuver, context: Context) -> Iterato
         route for lane in starts for route in routes_from(road_map, lane.road_id, lane.lane_id)
     ]
     arriving = [r for r in routes if any(r.reaches(g.road_id) for g in goals)]
+    farther = None if arriving or not routes else _way_beyond(road_map, starts, goals)
+    if farther is not None:
+        # Players route to a destination beyond the next junction through as many as it
+        # takes (esmini's AcquirePositionAction and the export's AssignRouteAction); the turn
+        # is then one the way takes at some junction.
+        if not any(r.turn == wanted for r in farther):
+            yield (
+                node.destination or node,
+                f"{node.name}: the way to the destination from {lane_words(starts[0])} is "
+                f"{_way_words(farther)}, with no {wanted} turn",
+            )
+        return
     if not routes:
         lane = starts[0]
         yield (
@@ -194,6 +202,25 @@ _TURN_WORDS = {
     "straight": "straight on",
     "u-turn": "a U-turn",
 }
+
+
+def _way_beyond(
+    road_map: RoadMap, starts: list[LaneCoordinate], goals: list[LaneCoordinate]
+) -> list[Route] | None:
+    """The way through the fewest junctions from one of the start lanes to one of the goals
+    (on the goal's road; its lane is the position rule's business), or None."""
+    ways = [
+        way
+        for lane in starts
+        for goal in goals
+        if (way := way_to(road_map, lane.road_id, lane.lane_id, goal.road_id)) is not None
+    ]
+    return min(ways, key=len) if ways else None
+
+
+def _way_words(way: list[Route]) -> str:
+    """`straight on at junction 7, then a left turn at junction 8`."""
+    return ", then ".join(f"{_TURN_WORDS[r.turn]} at junction {r.junction}" for r in way)
 
 
 def _same_direction_lanes(

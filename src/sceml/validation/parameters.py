@@ -220,7 +220,8 @@ def discrete_distribution_well_formed(
     ERROR,
     "ParameterValue",
     "values are finite and physically meaningful: radius, tolerance, duration, distance, rate, "
-    "time, gap and dimensions above zero; speeds and lane s at least zero",
+    "time, gap and dimensions above zero; driving speeds and lane s at least zero (initial, "
+    "target and compared speeds may be negative: driving backwards)",
     paper_rule="2",
     through_modules=True,
     reads=Reads(VALUE),

@@ -1,8 +1,8 @@
 """Plausibility rules (paper rule 5): speeds and rates fit the kind of actor that has to reach them.
 
-A value is judged by the highest number it allows: a range or uniform distribution by its max, a
-normal distribution by its upper bound (by its mean when unbounded), a discrete one by its largest
-option. Exceeding a limit is an error: the limits are plausible maxima, and a project that means
+A value is judged by the largest size (absolute number) it allows: a range or uniform
+distribution by its larger end, a normal distribution by its bounds (and its mean when a side is
+unbounded), a discrete one by its largest option; a negative speed (reversing) by its size. Exceeding a limit is an error: the limits are plausible maxima, and a project that means
 to go beyond them raises them in a limits file (`sceml validate --limits FILE`).
 """
 
@@ -29,18 +29,24 @@ _KINDS = catalog.limited_kinds()
 
 
 def highest(value: EObject | None) -> float | None:
-    """The largest number a parameter value allows, or None when it states none."""
-    bound: float | None = None
+    """The largest size (absolute number) a parameter value allows, or None when it states none.
+
+    Sizes, not signed numbers: a speed below zero is driving backwards (release 1.4), and
+    reversing at 40 m/s is as far beyond a car's limit as driving forwards at 40 m/s.
+    """
+    bounds: list[float | None] = []
     if isinstance(value, scm.Value):
-        bound = value.value
+        bounds = [value.value]
     elif isinstance(value, scm.Range | scm.UniformDistribution):
-        bound = value.max
+        bounds = [value.min, value.max]
     elif isinstance(value, scm.NormalDistribution):
-        bound = value.upperBound if value.upperBound is not None else value.mean
+        bounds = [value.lowerBound, value.upperBound]
+        if value.upperBound is None or value.lowerBound is None:
+            bounds.append(value.mean)
     elif isinstance(value, scm.DiscreteDistribution):
-        options = [option.value for option in value.options if option.value is not None]
-        bound = max(options) if options else None
-    return bound
+        bounds = [option.value for option in value.options]
+    sizes = [abs(bound) for bound in bounds if bound is not None]
+    return max(sizes) if sizes else None
 
 
 def _over_limit(owner: EObject, context: Context, key: str, unit: str) -> Iterator[Finding]:
@@ -73,6 +79,7 @@ def _over_limit(owner: EObject, context: Context, key: str, unit: str) -> Iterat
     through_modules=True,
     # the performer's kind
     reads=Reads(VALUE),
+    judges_stated_values=True,
 )
 def speed_fits_actor(owner: EObject, context: Context) -> Iterator[Finding]:
     yield from _over_limit(owner, context, "max_speed", "m/s")
@@ -87,6 +94,7 @@ def speed_fits_actor(owner: EObject, context: Context) -> Iterator[Finding]:
     through_modules=True,
     # the performer's kind
     reads=Reads(VALUE),
+    judges_stated_values=True,
 )
 def acceleration_fits_actor(owner: EObject, context: Context) -> Iterator[Finding]:
     yield from _over_limit(owner, context, "max_acceleration", "m/s2")
@@ -101,6 +109,7 @@ def acceleration_fits_actor(owner: EObject, context: Context) -> Iterator[Findin
     through_modules=True,
     # the performer's kind
     reads=Reads(VALUE),
+    judges_stated_values=True,
 )
 def deceleration_fits_actor(owner: EObject, context: Context) -> Iterator[Finding]:
     yield from _over_limit(owner, context, "max_deceleration", "m/s2")

@@ -14,6 +14,8 @@ from pyecore.ecore import EObject
 import scemlmodel as scm
 
 from ..diagnostics import Severity
+from ..maps.resolve import is_relative
+from ..model.departure import latest_placing, place_after
 from ..model.graph import reachable
 from ..model.params import is_single_value
 from .context import Context
@@ -59,24 +61,27 @@ def drive_distance_moves(node: scm.DriveDistance, context: Context) -> Iterator[
     "SCEML-Y002",
     Severity.WARNING,
     ("TurnLeft", "TurnRight"),
-    "a turn comes before every other routed or trajectory maneuver of its actor: the exported "
-    "route starts at the actor's start position (players resolve a route's waypoints when they "
-    "load the file), so after an earlier turn, Cross or FollowTrajectory the actor may no "
-    "longer be on it; use FollowTrajectory through the junction instead",
+    "a turn after another routed or trajectory maneuver of its actor starts where that one leaves "
+    "the actor: the exported route starts there, unless that place is relative to an entity "
+    "(players resolve a route's waypoints when they load the file, so the route then starts at "
+    "the actor's start position, where the actor may no longer be)",
     source=_SOURCE,
     through_modules=True,
-    # the earlier nodes of its actor along the flows (their names in the message)
-    reads=Reads(SELF | ACTORS, SHAPE | Aspect.ROLES),
+    # the earlier nodes of its actor along the flows (their names and places in the message)
+    reads=Reads(SELF | ACTORS, SHAPE | Aspect.ROLES | Aspect.POSITIONS),
 )
 def turn_starts_from_the_start(node: scm.RoutedManeuver, context: Context) -> Iterator[Finding]:
-    earlier = sorted(
-        str(before.name) for before in _earlier_of_same_actor(node) if before.eClass.name in _ROUTED
-    )
-    if earlier:
+    mine = list(_earlier_of_same_actor(node))
+    latest = latest_placing(mine, lambda other: reachable([other], backwards=True) - {other})
+    if not latest or not is_relative(place_after(latest[0])):
+        return
+    routed = sorted(str(before.name) for before in mine if before.eClass.name in _ROUTED)
+    if routed:
         yield (
             node,
-            f"{node.name!r} comes after {', '.join(map(repr, earlier))} of the same actor: "
-            "players route it from the actor's start position",
+            f"{node.name!r} comes after {', '.join(map(repr, routed))} of the same actor, and "
+            f"{latest[0].name!r} leaves it at a place relative to an entity: players route it "
+            "from the actor's start position",
         )
 
 

@@ -18,9 +18,10 @@ from pyecore.ecore import EObject
 import scemlmodel as scm
 
 from ..diagnostics import Severity
+from ..model.towing import is_towed
 from ..xosc.support import default_version, unsupported_reason, unsupported_setting
 from .context import Context
-from .reads import EXPANSION, LEVEL, SELF, Reads
+from .reads import EXPANSION, LEVEL, SELF, Aspect, Reads
 from .registry import Finding, constraint
 
 ERROR = Severity.ERROR
@@ -53,13 +54,15 @@ def map_is_set(root: scm.RootNode, context: Context) -> Iterator[Finding]:
     "SCEML-E002",
     ERROR,
     "Actor",
-    "in a logical or concrete scenario every actor has a start position",
-    reads=Reads(SELF, LEVEL),
+    "in a logical or concrete scenario every actor has a start position, but one another actor "
+    "tows (it starts at its tower's hitch)",
+    # the other actors' trailers (which actor is towed)
+    reads=Reads(SELF, LEVEL | Aspect.CAST),
     export=True,
 )
 def actor_has_start(actor: scm.Actor, context: Context) -> Iterator[Finding]:
     level = context.level_of(actor)
-    if level in _EXECUTABLE and actor.startPosition is None:
+    if level in _EXECUTABLE and actor.startPosition is None and not is_towed(actor):
         yield actor, f"actor {actor.name!r} has no start position ({level} scenario)"
 
 
@@ -149,7 +152,8 @@ def kinds_exportable(scenario: scm.Scenario, context: Context) -> Iterator[Findi
     "with a target OpenSCENARIO version or export profile given, every node's and actor's "
     "settings can be said in it (1.0 has no coordinateSystem, no relativeDistanceType but "
     "a RelativeDistanceCondition's, no greaterOrEqual or lessOrEqual rule, no "
-    "assignment that activates; before 1.2 no lighting or animation domain, no controllerType)",
+    "assignment that activates; before 1.2 no lighting or animation domain, no controllerType; "
+    "before 1.3 no trailer)",
     # The node's own measure or controller settings, or the actor's controller, against the
     # target version.
     reads=Reads(SELF),

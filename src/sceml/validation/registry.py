@@ -3,7 +3,8 @@
 A rule is a plain function `check(obj, context)` that yields `(element, message)` pairs, one per
 violation. The decorator gives it a stable code, a severity, the metaclass it applies to (and so to
 every subclass) and a one-line description for docs/validation-rules.md; and, stated once here
-beside the rule, what it reads (for incremental validation) and whether an export checks it.
+beside the rule, what it reads (for incremental validation), whether an export checks it, and
+whether it judges values as stated (then an imported file has its findings too).
 """
 
 from __future__ import annotations
@@ -33,6 +34,12 @@ class Rule:
     `reads` says what the rule reads (sceml.validation.reads); None makes incremental validation
     re-run it everywhere, every time. `export` rules are what an export checks on the flattened
     scenario beyond a valid graph (sceml.export.checks).
+
+    `judges_stated_values` rules judge a value as the scenario states it against the world (the
+    actor kind's limits, the map), not how the model is built or whether it is complete: an
+    OpenSCENARIO file that states the same value breaks the same rule, so on a scenario
+    `sceml import` read from a file their findings are the original's too
+    (sceml.importer.verdict).
     """
 
     code: str
@@ -44,6 +51,7 @@ class Rule:
     through_modules: bool = False
     reads: Reads | None = None
     export: bool = False
+    judges_stated_values: bool = False
 
     @property
     def name(self) -> str:
@@ -115,6 +123,7 @@ class Registry:
         through_modules: bool = False,
         reads: Reads | None = None,
         export: bool = False,
+        judges_stated_values: bool = False,
     ) -> Callable[[Check], Check]:
         """Register the decorated function as a constraint; see `Rule`."""
         metaclasses = (metaclass,) if isinstance(metaclass, str) else metaclass
@@ -132,6 +141,7 @@ class Registry:
                     through_modules=through_modules,
                     reads=reads,
                     export=export,
+                    judges_stated_values=judges_stated_values,
                 )
             )
             return check
@@ -154,6 +164,7 @@ def constraint(
     through_modules: bool = False,
     reads: Reads | None = None,
     export: bool = False,
+    judges_stated_values: bool = False,
 ) -> Callable[[Check], Check]:
     """Register a constraint in the package registry (see `Registry.constraint`)."""
     return REGISTRY.constraint(
@@ -166,6 +177,7 @@ def constraint(
         through_modules=through_modules,
         reads=reads,
         export=export,
+        judges_stated_values=judges_stated_values,
     )
 
 

@@ -150,7 +150,7 @@ def _minor(version: str) -> int:
 def unsupported_setting(node: object, version: str) -> str | None:
     """Why a node's or actor's settings (not its kind) cannot be said in `version`; None when
     they can."""
-    reason = _controller_setting(node, _minor(version))
+    reason = _trailer_setting(node, _minor(version)) or _controller_setting(node, _minor(version))
     if reason is not None or version != "1.0":
         return reason
     rule = getattr(getattr(node, "rule", None), "name", None)
@@ -172,6 +172,14 @@ def unsupported_setting(node: object, version: str) -> str | None:
 def supported_kinds(version: str, profile: str = "generic") -> tuple[str, ...]:
     """The action, join and port kinds that map for a version and profile."""
     return tuple(k for k in sorted(MAPPED_KINDS) if unsupported_reason(k, version, profile) is None)
+
+
+def _trailer_setting(node: object, minor: int) -> str | None:
+    """A towing actor (release 1.4's Actor.trailer): TrailerHitch, TrailerCoupler and Trailer
+    are OpenSCENARIO 1.3 elements."""
+    if minor < 3 and getattr(node, "trailer", None) is not None:
+        return "a trailer (TrailerHitch, TrailerCoupler, Trailer) needs OpenSCENARIO 1.3 or later"
+    return None
 
 
 _ACTIVATE_SINCE_1_1 = ("lateral", "longitudinal")
