@@ -23,6 +23,8 @@ ComparisonRule = EEnum('ComparisonRule', literals=[
 
 SpeedShape = EEnum('SpeedShape', literals=['linear', 'step', 'cubic', 'sinusoidal'])
 
+TrajectoryFollowingMode = EEnum('TrajectoryFollowingMode', literals=['position', 'follow'])
+
 CloudState = EEnum('CloudState', literals=['free', 'cloudy', 'overcast', 'rainy'])
 
 PrecipitationType = EEnum('PrecipitationType', literals=['dry', 'rain', 'snow'])
@@ -1605,12 +1607,17 @@ class RoutedManeuver(LateralManeuver):
 
 class FollowTrajectory(CompositeManeuver):
 
+    followingMode = EAttribute(eType=TrajectoryFollowingMode, unique=True, derived=False,
+                               changeable=True, default_value=TrajectoryFollowingMode.position)
     waypoints = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
     tolerance = EReference(ordered=True, unique=True, containment=True, derived=False)
 
-    def __init__(self, *, waypoints=None, tolerance=None, **kwargs):
+    def __init__(self, *, waypoints=None, tolerance=None, followingMode=None, **kwargs):
 
         super().__init__(**kwargs)
+
+        if followingMode is not None:
+            self.followingMode = followingMode
 
         if waypoints:
             self.waypoints.extend(waypoints)

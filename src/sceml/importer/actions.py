@@ -351,13 +351,20 @@ def _trajectory(
         return "a trajectory vertex is not a world or lane position"
     actor = str(request.actor.name)
     motion.place[actor] = points[-1]
+    mode = follow.find("TrajectoryFollowingMode")
+    steered = mode is not None and mode.get("followingMode") == "follow"
     # One point after the actor itself is a straight crossing to it (SceML's Cross).
     if len(points) == 1 and request.hint != "FollowTrajectory":
+        if steered:
+            _guess(build, request, "a one-point trajectory in follow mode read as a Cross")
         node = _add(build, request, "Cross")
         node.destination = points[0]
         return node
     node = _add(build, request, "FollowTrajectory")
     node.waypoints.extend(points)
+    if steered:
+        # Players steer towards the path then (esmini: a little behind it on bends).
+        node.followingMode = scm.TrajectoryFollowingMode.follow
     return node
 
 
