@@ -43,7 +43,7 @@ def test_follow_mode_exports_as_it_was_read(version: str, tmp_path: Path) -> Non
     export_to_file(load(model).root, exported, version=version, source_path=model)
     assert schema.validate_file(exported, version) == []
     assert modes(exported) == ["follow"]
-    # Read again: the same kinds of node (the opaque VisibilityActions come back under the
+    # Read again: the same kinds of node, joins aside (the opaque VisibilityActions come back under the
     # export's action names, so the whole scenarios are not compared), the walk in follow mode.
     first, again = import_file(source).scenario, import_file(exported).scenario
     assert kinds(again) == kinds(first)
@@ -52,4 +52,7 @@ def test_follow_mode_exports_as_it_was_read(version: str, tmp_path: Path) -> Non
 
 
 def kinds(scenario: object) -> list[str]:
-    return sorted(str(n.eClass.name) for n in scenario.nodes)  # type: ignore[attr-defined]
+    """The kinds of its nodes but the joins: the walk's own join (its speed change and path)
+    comes back folded into the join of the act's end."""
+    nodes = scenario.nodes  # type: ignore[attr-defined]
+    return sorted(str(n.eClass.name) for n in nodes if n.eClass.name != "JoinAllFinished")
