@@ -18,7 +18,12 @@ JoinPolicy = EEnum('JoinPolicy', literals=['joinAll', 'joinOne'])
 
 LaneChangeDirection = EEnum('LaneChangeDirection', literals=['left', 'right'])
 
-ComparisonRule = EEnum('ComparisonRule', literals=['greaterThan', 'lessThan', 'equalTo'])
+ComparisonRule = EEnum('ComparisonRule', literals=[
+                       'greaterThan', 'lessThan', 'equalTo', 'greaterOrEqual', 'lessOrEqual'])
+
+SpeedShape = EEnum('SpeedShape', literals=['linear', 'step', 'cubic', 'sinusoidal'])
+
+TrajectoryFollowingMode = EEnum('TrajectoryFollowingMode', literals=['position', 'follow'])
 
 CloudState = EEnum('CloudState', literals=['free', 'cloudy', 'overcast', 'rainy'])
 
@@ -1505,12 +1510,17 @@ class AccelerationCondition(Condition):
 
 class Accelerate(LongitudinalManeuver):
 
+    shape = EAttribute(eType=SpeedShape, unique=True, derived=False,
+                       changeable=True, default_value=SpeedShape.linear)
     targetSpeed = EReference(ordered=True, unique=True, containment=True, derived=False)
     rate = EReference(ordered=True, unique=True, containment=True, derived=False)
 
-    def __init__(self, *, targetSpeed=None, rate=None, **kwargs):
+    def __init__(self, *, targetSpeed=None, rate=None, shape=None, **kwargs):
 
         super().__init__(**kwargs)
+
+        if shape is not None:
+            self.shape = shape
 
         if targetSpeed is not None:
             self.targetSpeed = targetSpeed
@@ -1521,12 +1531,17 @@ class Accelerate(LongitudinalManeuver):
 
 class Decelerate(LongitudinalManeuver):
 
+    shape = EAttribute(eType=SpeedShape, unique=True, derived=False,
+                       changeable=True, default_value=SpeedShape.linear)
     targetSpeed = EReference(ordered=True, unique=True, containment=True, derived=False)
     rate = EReference(ordered=True, unique=True, containment=True, derived=False)
 
-    def __init__(self, *, targetSpeed=None, rate=None, **kwargs):
+    def __init__(self, *, targetSpeed=None, rate=None, shape=None, **kwargs):
 
         super().__init__(**kwargs)
+
+        if shape is not None:
+            self.shape = shape
 
         if targetSpeed is not None:
             self.targetSpeed = targetSpeed
@@ -1537,11 +1552,16 @@ class Decelerate(LongitudinalManeuver):
 
 class Stop(LongitudinalManeuver):
 
+    shape = EAttribute(eType=SpeedShape, unique=True, derived=False,
+                       changeable=True, default_value=SpeedShape.linear)
     rate = EReference(ordered=True, unique=True, containment=True, derived=False)
 
-    def __init__(self, *, rate=None, **kwargs):
+    def __init__(self, *, rate=None, shape=None, **kwargs):
 
         super().__init__(**kwargs)
+
+        if shape is not None:
+            self.shape = shape
 
         if rate is not None:
             self.rate = rate
@@ -1652,12 +1672,17 @@ class RoutedManeuver(LateralManeuver):
 
 class FollowTrajectory(CompositeManeuver):
 
+    followingMode = EAttribute(eType=TrajectoryFollowingMode, unique=True, derived=False,
+                               changeable=True, default_value=TrajectoryFollowingMode.position)
     waypoints = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
     tolerance = EReference(ordered=True, unique=True, containment=True, derived=False)
 
-    def __init__(self, *, waypoints=None, tolerance=None, **kwargs):
+    def __init__(self, *, waypoints=None, tolerance=None, followingMode=None, **kwargs):
 
         super().__init__(**kwargs)
+
+        if followingMode is not None:
+            self.followingMode = followingMode
 
         if waypoints:
             self.waypoints.extend(waypoints)

@@ -13,7 +13,8 @@ from sceml.model.traversal import features
 
 #: Not set by parameter or position ops (maxRuns: every node of UIS1 runs once, the default;
 #: its InVehicleRadius measures as the defaults say: within, straight line, reference points;
-#: no condition has an edge).
+#: no condition has an edge; its speed changes are linear and a trajectory would be followed in
+#: position mode, release 1.4's defaults).
 _SKIPPED = {
     "name",
     "referenceActor",
@@ -27,6 +28,8 @@ _SKIPPED = {
     "relativeDistanceType",
     "coordinateSystem",
     "edge",
+    "shape",
+    "followingMode",
 }
 
 

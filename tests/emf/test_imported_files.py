@@ -256,3 +256,35 @@ def test_emf_reads_and_writes_an_actors_own_performance(emf: Harness, tmp_path: 
     actors = {a.name: a for a in from_emf.root.nodes[0].actors}
     assert (actors["Ego"].maxSpeed.value, actors["Ego"].maxAcceleration.value) == (25.0, 4.0)
     assert actors["Ego"].maxDeceleration is None and actors["Lead"].maxSpeed.value == 50.0
+
+
+def test_emf_reads_and_writes_speed_shapes_and_inclusive_rules(
+    emf: Harness, tmp_path: Path
+) -> None:
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    import_to_file(FILES / "speed-shapes.xosc", source / "shapes.xmi")
+    written = (source / "shapes.xmi").read_text()
+    # The defaults (linear, greaterThan) are not written: these are the release 1.4 literals.
+    assert written.count('shape="cubic"') == 1 and written.count('rule="lessOrEqual"') == 1
+    result = emf.run("roundtrip", ECORE, source, out, Path("shapes.xmi"))
+    assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+    original, from_emf = load(source / "shapes.xmi"), load(out / "shapes.xmi")
+    assert differences(original.root, from_emf.root) == []
+    shapes = sorted(n.shape.name for n in from_emf.root.nodes if hasattr(n, "shape"))
+    assert shapes == ["cubic", "linear", "sinusoidal", "step", "step"]
+
+
+def test_emf_reads_and_writes_a_trajectory_in_follow_mode(emf: Harness, tmp_path: Path) -> None:
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    import_to_file(FILES / "trajectory-follow-mode.xosc", source / "follow.xmi")
+    assert (source / "follow.xmi").read_text().count('followingMode="follow"') == 1
+    result = emf.run("roundtrip", ECORE, source, out, Path("follow.xmi"))
+    assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+    original, from_emf = load(source / "follow.xmi"), load(out / "follow.xmi")
+    assert differences(original.root, from_emf.root) == []
+    walk = next(n for n in from_emf.root.nodes if n.eClass.name == "FollowTrajectory")
+    assert walk.followingMode.name == "follow"

@@ -85,6 +85,8 @@ HAND_WRITTEN = {
             "FollowTrajectory",
             "InLocationRadius",
             "JoinAllFinished",
+            # The walk's speed change and path start together: the event's own join.
+            "JoinAllFinished",
             # The unnamed branches joined with the StopTrigger's wait: they reach the end, and
             # the StopTrigger alone decides when the run ends.
             "JoinAllFinished",
@@ -453,6 +455,9 @@ def test_scenariogeneration_pedestrian_crossing(version: int, tmp_path: Path) ->
         "EndNode",
         "InLocationRadius",
         "InVehicleRadius",
+        # The walk's step speed and its crossing start together (a Cross leaves the speed
+        # alone): the event's join.
+        "JoinAllFinished",
         "RootNode",
         "Stop",
         "TimeElapsed",

@@ -138,7 +138,13 @@ def test_the_editor_offers_an_in_vehicle_radius_its_measure_and_rule() -> None:
     assert fields["freespace"]["value"] is False
     assert fields["relativeDistanceType"]["value"] == "euclidean"
     assert fields["coordinateSystem"]["options"] == ["entity", "lane", "road", "trajectory"]
-    assert fields["rule"]["options"] == ["greaterThan", "lessThan", "equalTo"]
+    assert fields["rule"]["options"] == [
+        "greaterThan",
+        "lessThan",
+        "equalTo",
+        "greaterOrEqual",
+        "lessOrEqual",
+    ]
     assert fields["rule"]["value"] == "lessThan"
 
 

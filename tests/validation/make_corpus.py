@@ -482,6 +482,32 @@ def composite_and_lateral(out: Path) -> None:
     save(b.scenario, out, "c001-composite-and-lateral.xmi")
 
 
+@case("c001-trajectory-beside-lane-change", "SCEML-C001")
+def trajectory_beside_lane_change(out: Path) -> None:
+    # A FollowTrajectory drives the path: a lane change beside it conflicts (a speed change
+    # beside it does not: see c001-trajectory-beside-speed-clean).
+    b, ego = scenario()
+    path = b.add("FollowTrajectory", ego, waypoints=[lane(1, -1, 30.0), lane(1, -1, 50.0)])
+    change = b.add("LaneChange", ego, direction="left")
+    b.chain(b.root, path)
+    b.chain(b.root, change)
+    b.chain(b.join_all(path, change), b.end)
+    save(b.scenario, out, "c001-trajectory-beside-lane-change.xmi")
+
+
+@case("c001-trajectory-beside-speed-clean", "")
+def trajectory_beside_speed(out: Path) -> None:
+    # Followed at the actor's speed, a FollowTrajectory leaves the speed to an Accelerate that
+    # starts with it, as an OpenSCENARIO event with both actions does.
+    b, ego = scenario()
+    path = b.add("FollowTrajectory", ego, waypoints=[lane(1, -1, 30.0), lane(1, -1, 50.0)])
+    speed_up = b.add("Accelerate", ego, targetSpeed=8.0)
+    b.chain(b.root, path)
+    b.chain(b.root, speed_up)
+    b.chain(b.join_all(path, speed_up), b.end)
+    save(b.scenario, out, "c001-trajectory-beside-speed-clean.xmi")
+
+
 @case("c001-through-module", "SCEML-C001")
 def through_module(out: Path) -> None:
     b, ego = scenario()

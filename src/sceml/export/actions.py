@@ -314,7 +314,9 @@ def plan_trajectory(ctx: Context, node: scm.ActionNode, groups: list[Group]) -> 
     # it (a pedestrian facing along the kerb, crossing) is taken as driven backwards and ends in
     # the step it starts (docs/openscenario-mapping.md, "Trajectories").
     vertices = [here, *({**ctx.position(point), "h": None} for point in points)]
-    data = {"trajectory": ctx.names.claim(f"{name}_path"), "vertices": vertices}
+    # A Cross has no following mode: players put the actor on its straight path.
+    mode = "position" if isinstance(node, scm.Cross) else node.followingMode.name
+    data = {"trajectory": ctx.names.claim(f"{name}_path"), "vertices": vertices, "mode": mode}
     event = Event(name, entity, [Action(ctx.action_name(name), "trajectory", data)], groups)
     end = arrived(ctx, node, f"{name}_arrived", vertices[-1], ctx.values.text(node, "tolerance"))
     done = _finish_marker(ctx, node, "arrived", groups, end)

@@ -13,6 +13,7 @@ import scemlmodel as scm
 
 from ..model import params
 from ..model.graph import predecessors
+from ..model.speed_shapes import PEAK_FACTORS
 from .context import Context
 from .values import number
 
@@ -20,17 +21,19 @@ _DEFAULT_RATE_FEATURE = "rate"
 
 
 def speed_dynamics(ctx: Context, node: scm.ActionNode) -> dict[str, str]:
-    """shape/dimension/value of the SpeedActionDynamics of Accelerate, Decelerate and Stop."""
+    """shape/dimension/value of the SpeedActionDynamics of Accelerate, Decelerate and Stop. A
+    step is written as a zero time (players change the speed at once whatever the dimension)."""
+    shape = node.shape.name
+    if shape == "step":
+        return {"shape": "step", "dimension": "time", "value": "0.0"}
     if ctx.profile != "carla":
-        return {"shape": "linear", "dimension": "rate", "value": ctx.values.text(node, "rate")}
+        return {"shape": shape, "dimension": "rate", "value": ctx.values.text(node, "rate")}
     target = 0.0 if isinstance(node, scm.Stop) else params.concrete(node, "targetSpeed")
     rate = params.concrete(node, _DEFAULT_RATE_FEATURE)
     before = speed_before(node)
-    return {
-        "shape": "linear",
-        "dimension": "time",
-        "value": number(round(abs(target - before) / rate, 6)),
-    }
+    # The rate of a cubic or sinusoidal change is its peak: the change lasts longer.
+    seconds = PEAK_FACTORS[shape] * abs(target - before) / rate
+    return {"shape": shape, "dimension": "time", "value": number(round(seconds, 6))}
 
 
 def speed_before(node: scm.ActionNode) -> float:

@@ -17,6 +17,7 @@ import scemlmodel as scm
 
 from ..maps.resolve import is_relative, resolve, start_poses
 from ..model import catalog
+from ..model.speed_shapes import PEAK_FACTORS
 from ..xosc import PLAYER_STEP
 from . import traced
 from .context import Build, last_name
@@ -116,11 +117,12 @@ def _speed(
         kind = "Decelerate" if before is not None and value < before else "Accelerate"
         if before is None:
             _guess(build, request, "the speed before is unknown: taken as Accelerate")
-    rate = _rate(build, request, speed.find("SpeedActionDynamics"), before, value)
+    shape, rate = _dynamics(build, request, speed.find("SpeedActionDynamics"), before, value)
+    rate = _within_performance(build, request, rate, before, value)
     motion.speed[actor] = value
     if kind == "Stop":
-        return _add(build, request, kind, rate=rate)
-    return _add(build, request, kind, targetSpeed=value, rate=rate)
+        return _add(build, request, kind, rate=rate, shape=shape)
+    return _add(build, request, kind, targetSpeed=value, rate=rate, shape=shape)
 
 
 def _relative_speed(build: Build, request: Request, speed: etree._Element, motion: Motion) -> None:
@@ -171,43 +173,64 @@ def _match_speed(build: Build, request: Request, speed: etree._Element) -> scm.A
     return node
 
 
-def _rate(
+def _dynamics(
     build: Build,
     request: Request,
     dynamics: etree._Element | None,
     before: float | None,
     after: float,
-) -> float | None:
-    """The rate (m/s²) of a speed change; None (the language default) when it cannot be read."""
+) -> tuple[str, float | None]:
+    """The shape and (peak) rate in m/s² of a speed change; a rate of None is the language
+    default (for a step, or when it cannot be read)."""
     if dynamics is None:
-        return None
-    shape, dimension = dynamics.get("dynamicsShape"), dynamics.get("dynamicsDimension")
+        return "linear", None
+    shape, dimension = dynamics.get("dynamicsShape", "linear"), dynamics.get("dynamicsDimension")
     # Some files write a deceleration as a negative rate; the rate is a magnitude (a positive
     # one is kept as read, so that a distributed rate is still recognised).
     value = number(dynamics, "value", 0.0)
     value = value if value >= 0 else -value
-    if shape != "linear" and shape != "step":
-        _guess(build, request, f"a {shape} speed change read as linear")
-    if shape == "step" or value <= 0:
-        _guess(build, request, "an instantaneous speed change: the language's default rate")
-        return None
+    if shape not in PEAK_FACTORS and shape != "step":
+        _guess(build, request, f"a speed change shaped {shape} read as linear")
+        shape = "linear"
+    if shape == "step" or value <= 0:  # a zero time or distance is a step too, as players read it
+        return "step", None
     if dimension == "rate":
-        return value
+        return shape, value
     if before is None or before == after:
         _guess(
             build,
             request,
             f"the speed before is unknown: the {dimension} is not converted to a rate",
         )
-        return None
-    _guess(
-        build,
-        request,
-        f"the rate computed from the {dimension} and the speed before ({before} m/s)",
-    )
+        return shape, None
     if dimension == "time":
-        return abs(after - before) / value
-    return abs(after * after - before * before) / (2 * value)
+        return shape, PEAK_FACTORS[shape] * abs(after - before) / value
+    message = f"the rate computed from the distance and the speed before ({before} m/s)"
+    if shape != "linear":
+        # Players change a speed over a distance with the shape along the distance, not in
+        # time: taken as lasting as long as a linear change over that distance would.
+        message += f", the {shape} change taken to last as long as a linear one"
+    _guess(build, request, message)
+    seconds = 2 * value / (after + before)
+    return shape, PEAK_FACTORS[shape] * abs(after - before) / seconds
+
+
+def _within_performance(
+    build: Build, request: Request, rate: float | None, before: float | None, after: float
+) -> float | None:
+    """The rate players drive: one above the Vehicle's maxAcceleration (speeding up) or
+    maxDeceleration (slowing down) is slowed down to it, as esmini does."""
+    limits = build.performance.get(str(request.actor.name))
+    if rate is None or limits is None or isinstance(rate, traced.Traced):
+        # A distributed rate keeps its distribution (each sample may or may not be above).
+        return rate
+    slowing = before is not None and after < before
+    limit = limits[1] if slowing else limits[0]
+    if limit <= 0 or rate <= limit:
+        return rate
+    word = "maxDeceleration" if slowing else "maxAcceleration"
+    _guess(build, request, f"the rate {rate:g} m/s² taken down to the Vehicle's {word} {limit:g}")
+    return limit
 
 
 @_maps("PrivateAction/LongitudinalAction/LongitudinalDistanceAction")
@@ -361,13 +384,20 @@ def _trajectory(
         return "a trajectory vertex is not a world or lane position"
     actor = str(request.actor.name)
     motion.place[actor] = points[-1]
+    mode = follow.find("TrajectoryFollowingMode")
+    steered = mode is not None and mode.get("followingMode") == "follow"
     # One point after the actor itself is a straight crossing to it (SceML's Cross).
     if len(points) == 1 and request.hint != "FollowTrajectory":
+        if steered:
+            _guess(build, request, "a one-point trajectory in follow mode read as a Cross")
         node = _add(build, request, "Cross")
         node.destination = points[0]
         return node
     node = _add(build, request, "FollowTrajectory")
     node.waypoints.extend(points)
+    if steered:
+        # Players steer towards the path then (esmini: a little behind it on bends).
+        node.followingMode = scm.TrajectoryFollowingMode.follow
     return node
 
 

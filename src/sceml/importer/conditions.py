@@ -24,13 +24,11 @@ from .opaque import opaque_node
 from .placing import place
 from .positions import number
 
-#: Comparison rules SceML has, and the 1.2+ ones read as their strict neighbour (a guess).
+#: Comparison rules SceML has (the ComparisonRule literal, whether it is a guess); 1.1's
+#: notEqualTo has no SceML form.
 RULES = {
-    "greaterThan": ("greaterThan", False),
-    "lessThan": ("lessThan", False),
-    "equalTo": ("equalTo", False),
-    "greaterOrEqual": ("greaterThan", True),
-    "lessOrEqual": ("lessThan", True),
+    name: (name, False)
+    for name in ("greaterThan", "lessThan", "equalTo", "greaterOrEqual", "lessOrEqual")
 }
 _BELOW = ("lessThan", "lessOrEqual")
 

@@ -38,6 +38,9 @@ class Build:
     marker: str | None = None
     #: Actor name -> its speed once a gradual Init speed change (a node after the root) is done.
     init_speeds: dict[str, float] = field(default_factory=dict)
+    #: Actor name -> (maxAcceleration, maxDeceleration) of its Vehicle's Performance: players
+    #: slow a speed change whose (peak) rate is above them down to them.
+    performance: dict[str, tuple[float, float]] = field(default_factory=dict)
     #: (activating node, the condition's content) -> its node: one node for the same condition
     #: after the same node in several triggers (`triggers.Trigger.condition`).
     conditions: dict[tuple[int, bytes], scm.GraphElement] = field(default_factory=dict)

@@ -156,6 +156,10 @@ def _actor(build: Build, item: etree._Element, name: str) -> scm.Actor | None:
             )
         model = body.get("name")
         actor = _make(kind, name, None if model == category else model)
+        limits = body.find("Performance")
+        if limits is not None:
+            rates = (number(limits, "maxAcceleration", 0.0), number(limits, "maxDeceleration", 0.0))
+            build.performance[name] = (float(rates[0]), float(rates[1]))
     elif body is not None and body.tag == "Pedestrian":
         category = str(body.get("pedestrianCategory"))
         if category != "pedestrian":

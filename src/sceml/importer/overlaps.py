@@ -14,15 +14,9 @@ import math
 
 import scemlmodel as scm
 
-from ..model import catalog
+from ..model.axes import maneuver_axes
 from ..xosc.flows import is_condition_element
 from .context import Build
-
-_AXES = {
-    "longitudinal": {"longitudinal"},
-    "lateral": {"lateral"},
-    "composite": {"longitudinal", "lateral"},
-}
 
 
 def separate(build: Build) -> None:
@@ -50,8 +44,8 @@ def separate(build: Build) -> None:
                 order[id(join)] = order[id(later)] - 0.75
 
 
-def _axes(node: scm.Maneuver) -> set[str]:
-    return _AXES.get(catalog.category(node) or "", set())
+def _axes(node: scm.Maneuver) -> frozenset[str]:
+    return maneuver_axes(node)
 
 
 def _topological(nodes: list[scm.GraphElement]) -> dict[int, float]:

@@ -14,6 +14,7 @@ from lxml import etree
 import scemlmodel as scm
 
 from ..model import params
+from ..model.axes import maneuver_axes
 from ..xosc.support import repeatable
 from . import markers, traced
 from .actions import Motion, Request, map_action
@@ -183,7 +184,9 @@ class Storyboard:
         for index, action in enumerate(info.element.iterchildren("Action")):
             for each in info.actors:
                 made = self._action(info, action, each, kind)
-                before = after.pop(str(each.name), activation)
+                before = activation
+                if not _beside_speed(made):
+                    before = after.pop(str(each.name), activation)
                 if before is not activation:
                     nodes.remove(before)
                     self.build.report.add(
@@ -347,3 +350,9 @@ def _is_step_speed(action: etree._Element) -> bool:
     """A speed action that changes the speed at once (it completes as soon as it starts)."""
     dynamics = action.find("PrivateAction/LongitudinalAction/SpeedAction/SpeedActionDynamics")
     return dynamics is not None and dynamics.get("dynamicsShape") == "step"
+
+
+def _beside_speed(node: scm.GraphElement) -> bool:
+    """A maneuver that leaves the speed alone (a lane change, a FollowTrajectory: `model.axes`)
+    runs beside a step speed change of its event, as players run them, not after it."""
+    return isinstance(node, scm.Maneuver) and "longitudinal" not in maneuver_axes(node)

@@ -239,6 +239,8 @@ def _speed_rule(node: EObject, at: Moment) -> str | None:
         "greaterThan": speed > threshold - SPEED_SLACK,
         "lessThan": speed < threshold + SPEED_SLACK,
         "equalTo": abs(speed - threshold) <= SPEED_SLACK,
+        "greaterOrEqual": speed > threshold - SPEED_SLACK,
+        "lessOrEqual": speed < threshold + SPEED_SLACK,
     }.get(rule, True)
     return None if held else f"the speed was {speed:.2f} m/s, not {rule} {threshold:g} m/s"
 

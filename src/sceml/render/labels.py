@@ -304,6 +304,8 @@ _OPERATORS = {
     "greaterThan": ">",
     "lessThan": "<",
     "equalTo": "==",
+    "greaterOrEqual": ">=",
+    "lessOrEqual": "<=",
     "set": "=",
     "add": "+=",
     "multiply": "*=",

@@ -11,6 +11,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Protocol
 
+from ..model import speed_shapes
 from ..xosc.meaning import GapLimits, gap_acceleration, standing_after
 from .paths import Path
 
@@ -101,6 +102,22 @@ class SpeedMatching:
     def next_speed(self, actor: Actor, others: Mapping[str, Actor], dt: float) -> float:
         wanted = others[self.target].speed * self.factor + self.delta
         return Ramp(wanted, self.rate).next_speed(actor, others, dt)
+
+
+class ShapedRamp:
+    """Change the speed from `start` to `target` over `duration` s along a cubic or sinusoidal
+    curve (`model.speed_shapes`), as players do; it counts its own time step by step."""
+
+    def __init__(self, shape: str, start: float, target: float, duration: float) -> None:
+        self.shape, self.start, self.target, self.duration = shape, start, target, duration
+        self.elapsed = 0.0
+
+    def next_speed(self, actor: Actor, others: Mapping[str, Actor], dt: float) -> float:
+        self.elapsed += dt
+        if self.elapsed >= self.duration - 1e-9:
+            return self.target
+        share = speed_shapes.fraction(self.shape, self.elapsed / self.duration)
+        return self.start + (self.target - self.start) * share
 
 
 @dataclass(frozen=True)

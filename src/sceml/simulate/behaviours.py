@@ -21,10 +21,11 @@ import scemlmodel as scm
 
 from ..export.entities import performance_of
 from ..maps import RoadMap
+from ..model import speed_shapes
 from ..model.params import concrete
 from ..xosc import meaning
 from . import lanes
-from .actors import Actor, GapKeeping, Hold, Ramp, Shift, SpeedMatching
+from .actors import Actor, GapKeeping, Hold, Ramp, ShapedRamp, Shift, SpeedMatching
 from .paths import LaneSpot, Path, joined, straight
 from .world import World
 
@@ -87,12 +88,21 @@ def step_speed(actor: Actor, speed: float) -> None:
 
 @kind("Accelerate", "Decelerate", "Stop")
 class SpeedChange(Behaviour):
-    """Change the speed linearly at `rate` to `targetSpeed` (Stop: to 0)."""
+    """Change the speed to `targetSpeed` (Stop: to 0) in its shape: linearly at `rate`, at
+    once (step), or along a cubic or sinusoidal curve whose peak rate is `rate`."""
 
     def start(self, world: World) -> None:
         stop = isinstance(self.node, scm.Stop)
         self.target = 0.0 if stop else concrete(self.node, "targetSpeed")
-        self.actor.control = Ramp(self.target, concrete(self.node, "rate"))
+        shape, rate = self.node.shape.name, concrete(self.node, "rate")
+        if shape == "step":
+            step_speed(self.actor, self.target)
+        elif shape == "linear":
+            self.actor.control = Ramp(self.target, rate)
+        else:
+            start = self.actor.speed
+            seconds = speed_shapes.duration(shape, start, self.target, rate)
+            self.actor.control = ShapedRamp(shape, start, self.target, seconds)
 
     def done(self, world: World) -> bool:
         return abs(self.actor.speed - self.target) < meaning.SPEED_TOLERANCE

@@ -65,12 +65,10 @@ def on_edge(test: Test, edge: str) -> Test:
 
 def _compare(rule: EObject | None, value: float, threshold: float, previous: float | None) -> bool:
     name = getattr(rule, "name", "greaterThan")
-    if name == "lessThan":
-        return value < threshold
     if name == "equalTo":
         crossed = previous is not None and (previous - threshold) * (value - threshold) <= 0
         return abs(value - threshold) < 1e-6 or crossed
-    return value > threshold
+    return meaning.compares(name, value, threshold)
 
 
 @kind("InLocationRadius")
@@ -96,7 +94,7 @@ def in_vehicle_radius(node: EObject, world: World) -> Test:
 
     def holds(w: World) -> bool:
         distance = meaning.measured_distance(separation(actor, other), freespace, measure)
-        if rule == "lessThan":
+        if rule in ("lessThan", "lessOrEqual"):
             # Within the radius counts its edge, as InVehicleRadius always has.
             result = distance <= radius + 1e-9
         else:

@@ -7,7 +7,7 @@ run, so it is ordered after a only when *every* one of its predecessors is. Two 
 are not ordered either way can run at the same time.
 
 The maneuvers of one actor and one category (longitudinal or lateral; a composite maneuver counts
-as both) are conflict-free exactly when they form a chain under this order, and a set forms a
+as both, but a FollowTrajectory only as lateral: `model.axes`) are conflict-free exactly when they form a chain under this order, and a set forms a
 chain exactly when each member, taken in topological order, is ordered after the previous one.
 One pass over the topological order carries, for every node, the set of maneuvers it is ordered
 after as a bitset (a Python int), so the check is linear in nodes times a machine-word fraction of
@@ -25,16 +25,10 @@ from pyecore.ecore import EObject
 import scemlmodel as scm
 
 from ..diagnostics import Severity
-from ..model import catalog
+from ..model.axes import maneuver_axes
 from .context import Context
 from .reads import EXPANSION, Reads
 from .registry import Finding, constraint
-
-_CATEGORIES = {
-    "longitudinal": ("longitudinal",),
-    "lateral": ("lateral",),
-    "composite": ("longitudinal", "lateral"),
-}
 
 Conflict = tuple[scm.Maneuver, scm.Maneuver, str]
 
@@ -49,7 +43,7 @@ def _previous_in_group(
     for node in order:
         if not isinstance(node, scm.Maneuver) or node.referenceActor is None:
             continue
-        for category in _CATEGORIES.get(catalog.category(node.eClass.name) or "", ()):
+        for category in sorted(maneuver_axes(node)):
             key = (node.referenceActor, category)
             if key in last:
                 previous.setdefault(node, []).append((last[key], category))
@@ -135,7 +129,8 @@ def _combine(node: EObject, inputs: list[int]) -> int:
     Severity.ERROR,
     ("Scenario", "ModuleDefinition"),
     "two maneuvers of the same actor and category (longitudinal or lateral; composite counts as "
-    "both) cannot run at the same time: one must be ordered after the other. A path through a "
+    "both, but a FollowTrajectory, followed at the actor's speed, as lateral) cannot run at the "
+    "same time: one must be ordered after the other. A path through a "
     "JoinOneFinished orders only if all of the join's branches are ordered. Module uses are "
     "checked expanded",
     paper_rule="4",

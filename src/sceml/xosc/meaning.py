@@ -310,11 +310,20 @@ def value_holds(current: str, rule: str, value: str) -> bool:
     held, wanted = _as_number(current), _as_number(value)
     if held is None or wanted is None:
         return rule == "equalTo" and current.strip().lower() == value.strip().lower()
+    return compares(rule, held, wanted)
+
+
+def compares(rule: str, value: float, threshold: float) -> bool:
+    """Whether `value` stands to `threshold` as a ComparisonRule says (equalTo within 1e-9)."""
     if rule == "lessThan":
-        return held < wanted
+        return value < threshold
     if rule == "greaterThan":
-        return held > wanted
-    return abs(held - wanted) < 1e-9
+        return value > threshold
+    if rule == "lessOrEqual":
+        return value <= threshold
+    if rule == "greaterOrEqual":
+        return value >= threshold
+    return abs(value - threshold) < 1e-9
 
 
 def value_after(current: str, modify: str, value: str) -> str:

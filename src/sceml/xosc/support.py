@@ -143,6 +143,10 @@ _SINCE_1_1 = (("relativeDistanceType", "euclidean"), ("coordinateSystem", "entit
 _IN_1_0 = (("InVehicleRadius", "relativeDistanceType"),)
 
 
+#: ComparisonRule literals OpenSCENARIO 1.0's Rule does not have.
+_RULES_SINCE_1_1 = ("greaterOrEqual", "lessOrEqual")
+
+
 def _kind_name(node: object) -> str:
     eclass = getattr(node, "eClass", None)
     return str(getattr(eclass, "name", ""))
@@ -162,6 +166,11 @@ def unsupported_setting(node: object, version: str) -> str | None:
     )
     if reason is not None or version != "1.0":
         return reason
+    rule = getattr(getattr(node, "rule", None), "name", None)
+    if rule in _RULES_SINCE_1_1:
+        # Not written as the strict neighbour: a value that settles on the threshold (a
+        # speed stopped at 0 for `lessOrEqual 0`) would never fulfil it.
+        return f"the rule {rule} needs OpenSCENARIO 1.1 or later (1.0 compares strictly)"
     for feature, plain in _SINCE_1_1:
         if (_kind_name(node), feature) in _IN_1_0:
             continue
