@@ -60,14 +60,15 @@ def test_each_vehicles_own_performance_is_imported_where_it_is_not_the_usual() -
     }
     unkept = [e.message for e in imported.report.section("not represented")]
     assert any("'Ego': Performance maxAccelerationRate" in m for m in unkept), unkept
-    # Ego is asked for more than it is good for, though not more than a car: a warning that
-    # the players hold it to its own limits (the export goes ahead, as esmini plays it).
+    # Ego is asked for more than it is good for, though not more than a car. Its rate of 8 m/s²
+    # is taken down to its maxAcceleration of 4 as it is read (the rate players drive, reported
+    # as a guess); its target speed is kept, with a warning that the players hold it to its own
+    # top speed (the export goes ahead, as esmini plays it).
+    guesses = [e.message for e in imported.report.section("guessed")]
+    assert any(
+        "the rate 8 m/s² taken down to the Vehicle's maxAcceleration 4" in m for m in guesses
+    )
     assert sorted((d.code, d.message) for d in validate(imported.scenario)) == [
-        (
-            "SCEML-L005",
-            "Ego.SpeedUp.rate is 8 m/s2, above Ego's own limit of 4 m/s2: the players hold it "
-            "to that",
-        ),
         (
             "SCEML-L005",
             "Ego.SpeedUp.targetSpeed is 30 m/s, above Ego's own limit of 25 m/s (90 km/h): the "
@@ -118,6 +119,19 @@ def test_the_preview_holds_ego_to_its_own_rate_and_top_speed() -> None:
     assert at(3.75, 0) == pytest.approx(115.625)
     assert at(6.0, 3) == pytest.approx(25.0)
     assert at(6.0, 0) == pytest.approx(171.875)
+
+
+def test_an_own_limit_beyond_what_the_preview_simulates_caps_nothing() -> None:
+    # esmini's and CARLA's hero cars say maxAcceleration 200 m/s²: a cap above the preview's
+    # ceiling (100 m/s²) is no motion to refuse. With Ego's rate cap raised so far, its 8 m/s²
+    # speed-up (taken down to 4 at import) runs at 4 m/s² up to its 25 m/s top speed.
+    scenario = import_file(SOURCE).scenario
+    ego = next(a for a in scenario.nodes[0].actors if a.name == "Ego")
+    ego.maxAcceleration.value = 200.0
+    run = simulate(scenario, SOURCE)
+    speeds = run.states[run.actor_index("Ego")][:, 3]
+    assert float(speeds[int(np.argmin(np.abs(run.times - 1.0)))]) == pytest.approx(14.0)
+    assert float(speeds.max()) == pytest.approx(25.0)
 
 
 def test_the_root_box_names_the_own_limits() -> None:

@@ -12,7 +12,7 @@ from ..model import catalog
 from . import traced
 from .context import Build
 from .controllers import object_controller
-from .performance import keep_performance
+from .performance import keep_performance, read_performance
 from .positions import number
 from .unplaced import is_referenced, is_sumo_template
 
@@ -156,10 +156,12 @@ def _actor(build: Build, item: etree._Element, name: str) -> scm.Actor | None:
             )
         model = body.get("name")
         actor = _make(kind, name, None if model == category else model)
-        limits = body.find("Performance")
-        if limits is not None:
-            rates = (number(limits, "maxAcceleration", 0.0), number(limits, "maxDeceleration", 0.0))
-            build.performance[name] = (float(rates[0]), float(rates[1]))
+        own = read_performance(body)
+        if body.find("Performance") is not None:
+            build.performance[name] = (
+                float(own.max_acceleration or 0.0),
+                float(own.max_deceleration or 0.0),
+            )
     elif body is not None and body.tag == "Pedestrian":
         category = str(body.get("pedestrianCategory"))
         if category != "pedestrian":
