@@ -93,6 +93,15 @@ def test_palette_groups_and_libraries(uis2: EditorSession) -> None:
         "join",
     ]
     assert groups[8] == "library:library/sceml-library.xmi"
+    assert [g["label"] for g in palette[:7]] == [
+        "Longitudinal maneuvers",
+        "Lateral maneuvers",
+        "Composite maneuvers",
+        "Controller changes",
+        "Appearance (lights)",
+        "Conditions",
+        "Global (no actor)",
+    ]
     longitudinal = [i["kind"] for i in palette[0]["items"]]
     assert "Accelerate" in longitudinal and "TurnLeft" not in longitudinal
     modules = [i["module"] for i in palette[8]["items"]]

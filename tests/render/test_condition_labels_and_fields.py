@@ -185,3 +185,20 @@ def test_the_palette_offers_lights_in_their_own_group() -> None:
     assert groups["appearance"] == ["LightState"]
     assert "MatchSpeed" in groups["longitudinal"]
     assert {"StandStill", "AccelerationCondition"} <= set(groups["condition"])
+
+
+def test_a_speed_change_shows_its_shape_only_when_it_is_not_linear() -> None:
+    # A speed change's shape (release 1.4) defaults to linear, a lane change's to sinusoidal:
+    # each box stays quiet at its own kind's default.
+    b = ScenarioBuilder("labels", level="concrete")
+    ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0), speed=10.0)
+    plain = b.add("Accelerate", ego, targetSpeed=20.0, rate=2.0)
+    cubic = b.add("Accelerate", ego, targetSpeed=25.0, rate=2.0, shape="cubic")
+    assert action_lines(plain, Scope()) == [
+        "ego",
+        "targetSpeed: 20 m/s = 72 km/h",
+        "rate: 2 m/s²",
+    ]
+    assert "shape: cubic" in action_lines(cubic, Scope())
+    lane_change = b.add("LaneChange", ego, direction="left", shape="linear")
+    assert "shape: linear" in action_lines(lane_change, Scope())

@@ -22,6 +22,13 @@ def _item(kind: str, module: str | None = None, library: str | None = None) -> d
     return {"kind": kind, "label": module or kind, "module": module, "library": library}
 
 
+def _plural(legend: str) -> str:
+    """The legend's caption made plural for a palette group: "Longitudinal maneuver" ->
+    "Longitudinal maneuvers"; one with a note in brackets stays as it is ("Global (no actor)",
+    "Appearance (lights)": a group of kinds, not a count of things)."""
+    return legend if legend.endswith(")") else legend + "s"
+
+
 @cache
 def node_groups() -> tuple[dict[str, Any], ...]:
     """One group per action-node category (catalog order), then the joins.
@@ -34,8 +41,7 @@ def node_groups() -> tuple[dict[str, Any], ...]:
         groups.append(
             {
                 "group": category,
-                # The legend's caption, made plural: "Longitudinal maneuver" -> "...maneuvers".
-                "label": style.CATEGORY_LOOKS[category].legend + "s",
+                "label": _plural(style.CATEGORY_LOOKS[category].legend),
                 "look": category,
                 "items": [_item(kind) for kind in kinds],
             }

@@ -191,14 +191,17 @@ def _is_zero(value: scm.ParameterValue | None) -> bool:
 _MEASURE = {"freespace": True, "relativeDistanceType": "euclidean", "coordinateSystem": "entity"}
 
 
-#: Attributes shown only when they differ from these defaults (a LaneChange of one lane,
-#: sinusoidal, stays the box it was before these features existed).
+#: Attributes shown only when they differ from these defaults (a LaneChange of one lane
+#: stays the box it was before these features existed).
 _QUIET_DEFAULTS: dict[str, object] = {
     "lanes": 1,
-    "shape": "sinusoidal",
     "maxRuns": 1,
     "edge": "none",
 }
+#: Attributes shown only when they differ from their feature's own default, which differs by
+#: kind: a LaneChange is sinusoidal unless it says otherwise, a speed change linear (release
+#: 1.4), a trajectory followed by position.
+_QUIET_AT_OWN_DEFAULT = ("shape", "followingMode")
 
 
 def _quiet(node: EObject, name: str, held: object) -> bool:
@@ -209,6 +212,10 @@ def _quiet(node: EObject, name: str, held: object) -> bool:
     value = getattr(held, "name", held)
     if name == "rule" and node.eClass.name == "InVehicleRadius":
         return value == "lessThan"  # within the radius: what the kind's name says
+    if name in _QUIET_AT_OWN_DEFAULT:
+        feature = node.eClass.findEStructuralFeature(name)
+        default = None if feature is None else feature.get_default_value()
+        return value == getattr(default, "name", default)
     return name in _QUIET_DEFAULTS and value == _QUIET_DEFAULTS[name]
 
 
