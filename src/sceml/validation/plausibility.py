@@ -56,6 +56,8 @@ OWN_LIMITS = {
     "max_acceleration": "maxAcceleration",
     "max_deceleration": "maxDeceleration",
 }
+#: Limit key -> the unit its values are stated in.
+LIMIT_UNITS = {"max_speed": "m/s", "max_acceleration": "m/s2", "max_deceleration": "m/s2"}
 
 
 def own_limit(actor: EObject, key: str) -> float | None:
@@ -166,7 +168,7 @@ def performance_plausible(actor: scm.Actor, context: Context) -> Iterator[Findin
         top = highest(value)
         limit = context.limits.limit(actor.eClass.name, key)
         if top is not None and limit is not None and top > limit:
-            unit = "m/s" if key == "max_speed" else "m/s2"
+            unit = LIMIT_UNITS[key]
             yield (
                 value,
                 f"{parameter_path(actor, feature)} is {describe(value, unit)}, above the "
@@ -190,11 +192,7 @@ def within_own_performance(owner: EObject, context: Context) -> Iterator[Finding
     actor = performer(owner)
     if actor is None:
         return
-    for key, unit in (
-        ("max_speed", "m/s"),
-        ("max_acceleration", "m/s2"),
-        ("max_deceleration", "m/s2"),
-    ):
+    for key, unit in LIMIT_UNITS.items():
         own, (ceiling, _) = own_limit(actor, key), actor_limit(actor, context, key)
         if own is None or (ceiling is not None and own >= ceiling):
             continue  # no own limit, or it is the ceiling L001..L003 judge by
