@@ -5,7 +5,7 @@ from pyecore.ecore import *
 
 
 name = 'scemlmodel'
-nsURI = 'https://sceml.org/metamodel/1.4'
+nsURI = 'https://sceml.org/metamodel/1.5'
 nsPrefix = 'scemlmodel'
 
 eClass = EPackage(name=name, nsURI=nsURI, nsPrefix=nsPrefix)
