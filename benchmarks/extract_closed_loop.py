@@ -9,8 +9,11 @@ jumped faster than its kind allows, the bound `closedloop.allowed_error` gives),
 error's median and 95th percentile,
 and the time per extraction beside one preview run of the original (the anchor, measured in
 this run). Under noise, speed changes below 1 m/s are not compared (closedloop.signature).
+With `--misses`, each sample that missed is printed too (scenario, case, sample index, which is
+also its noise seed): the maneuvers or waits it showed against those expected, and each actor's
+replay error, so that a miss can be reproduced and looked into.
 
-    .venv/bin/python benchmarks/extract_closed_loop.py [--n 200]
+    .venv/bin/python benchmarks/extract_closed_loop.py [--n 200] [--misses]
 """
 
 from __future__ import annotations
@@ -21,8 +24,8 @@ from pathlib import Path
 
 import numpy as np
 
-from sceml.extract import extract
-from sceml.extract.closedloop import recording_of, replays_closely, signature
+from sceml.extract import Extraction, extract
+from sceml.extract.closedloop import Signature, recording_of, replays_closely, signature
 from sceml.levels.apply import FlatTemplate
 from sceml.levels.sampling import design, plan_for
 from sceml.levels.space import parameter_space
@@ -37,6 +40,9 @@ CASES = {"clean, 20 Hz": {}, "noise 0.1 m, 10 Hz": {"noise": 0.1, "every": 2}}
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--n", type=int, default=200, help="samples per logical scenario")
+    parser.add_argument(
+        "--misses", action="store_true", help="print each sample that missed, and how"
+    )
     options = parser.parse_args()
     road_map = load_map(REPO / "maps" / "intersection.xodr")
     for name in ("uis1-logical.xmi", "uis2-logical.xmi"):
@@ -80,6 +86,8 @@ def main() -> None:
                 tally["within 1 m"] += found.replay.largest < 1.0  # type: ignore[operator]
                 tally["within bound"] += replays_closely(found)  # type: ignore[operator]
                 tally["errors"].append(found.replay.largest)  # type: ignore[union-attr]
+                if options.misses:
+                    _print_miss(name, case, index, expected, shown, found)
         n = len(rows)
         print(f"{name}: {n} samples; one preview run of the original: {anchor / n * 1000:.1f} ms")
         for case, tally in tallies.items():
@@ -91,6 +99,28 @@ def main() -> None:
                 f"{np.median(errors):.2f} m, 95th percentile {np.percentile(errors, 95):.2f} m; "
                 f"{float(tally['time']) / n * 1000:.0f} ms per extraction (with its replay)"  # type: ignore[arg-type]
             )
+
+
+def _print_miss(
+    name: str, case: str, index: int, expected: Signature, shown: Signature, found: Extraction
+) -> None:
+    """One line per way a sample missed: maneuvers or waits (shown against expected), replay."""
+    assert found.replay is not None
+    where = f"  miss {name} [{case}] sample {index}:"
+    for actor in sorted(set(expected.maneuvers) | set(shown.maneuvers)):
+        if shown.maneuvers.get(actor) != expected.maneuvers.get(actor):
+            print(
+                f"{where} maneuvers of {actor} {shown.maneuvers.get(actor)} "
+                f"expected {expected.maneuvers.get(actor)}"
+            )
+    if shown.maneuvers == expected.maneuvers and shown.waits != expected.waits:
+        print(
+            f"{where} waits {sorted(shown.waits - expected.waits, key=str)} "
+            f"expected {sorted(expected.waits - shown.waits, key=str)}"
+        )
+    if not replays_closely(found):
+        errors = ", ".join(f"{f.name} {f.largest:.2f} m" for f in found.replay.actors)
+        print(f"{where} replay {errors}")
 
 
 if __name__ == "__main__":
