@@ -106,7 +106,9 @@ def smooth(track: Track, thresholds: Thresholds, step: float | None = None) -> M
     lengths[~(moving[1:] | moving[:-1])] = 0.0
     arc = np.concatenate([[0.0], np.cumsum(lengths)])
     noise = _noise(x, y, xs, ys, window)
-    along = _along(x, y, xs, ys, arc, heading, thresholds.standing_speed, speed, noise)
+    along = _along(
+        x, y, xs, ys, arc, heading, thresholds.standing_speed, speed, noise, window // 2
+    )
     error = _heading_error(xs, ys, window, noise)
     xs, ys = _hold_standing_start(x, y, xs, ys, moving, speed, half)
     return Motion(
@@ -246,6 +248,7 @@ def _along(
     standing: float,
     speed: Array,
     noise: float,
+    half: int,
 ) -> Array:
     """Each raw sample's distance along the path.
 
@@ -258,4 +261,19 @@ def _along(
         lengths = np.hypot(np.diff(x), np.diff(y))
         lengths[(speed[1:] + speed[:-1]) / 2 <= standing / 10] = 0.0
         return np.concatenate([[0.0], np.cumsum(lengths)])
-    return arc + (x - xs) * np.cos(heading) + (y - ys) * np.sin(heading)
+    along = arc + (x - xs) * np.cos(heading) + (y - ys) * np.sin(heading)
+    # In the first half window the smoothed path is an extrapolated cubic, which wanders
+    # sideways as well as along (a bike setting off "moved" at 2.9 m/s there), and its
+    # length counted that: the distance of UIS1's bike at the start came out 0.5 m short, and
+    # its set-off, fitted to it, from 1.2 m/s at 0.8 s rather than from standing at 0 s. Over
+    # half a window from the start the path is as good as straight, so there each raw point
+    # is placed along the heading from the first point inside instead. (Not at the end: an
+    # actor may be turning there, as a bike onto its lane after crossing, and the straight
+    # line lost length, a Decelerate that was not.)
+    if 0 < half < len(x):
+        along[:half] = (
+            along[half]
+            + (x[:half] - x[half]) * np.cos(heading[half])
+            + (y[:half] - y[half]) * np.sin(heading[half])
+        )
+    return along

@@ -45,3 +45,7 @@ class Thresholds:
     #: A set-off from standing that a crossing follows with a bend at least this sharp (rad) is
     #: fitted to the raw positions in the plane, the bend pinning the ramp's end (`setoff`).
     sharp_bend: float = 0.5
+    #: A speed change under way when a noisy recording starts is taken at this rate (m/s²)
+    #: where the noise leaves its length open: the distance driven pins only the speed change
+    #: times its length (`longitudinal._start_change`). 2 m/s² is a brisk, comfortable rate.
+    start_rate: float = 2.0
