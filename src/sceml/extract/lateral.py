@@ -128,6 +128,14 @@ def _turned(motion: Motion, first: int, last: int, span: int) -> float:
 
     after = median(last, last + span + 1)
     before = median(max(first - span, 0), first + 1)
+    if before is None:
+        # An actor that set off with the recording has no sure heading before the change:
+        # its first second is a slow set-off, whose chord the noise swings. Its heading is
+        # then the one it first surely had, over the span after `first` (a bike that set off
+        # at once and veered 0.21 rad across the road a second later had "turned" 0 and
+        # crossed nowhere, 2.9 m off in the replay). Part of the change may fall in that span,
+        # which only makes the turn smaller: it adds no change that was not there.
+        before = median(first, min(first + span, last) + 1)
     return 0.0 if after is None or before is None else after - before
 
 

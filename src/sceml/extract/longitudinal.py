@@ -251,6 +251,15 @@ def _fit_ramp(
             )
         if anchored is not None and anchored[4] - error <= _ANCHORED * variance:
             t1, t2, v0, v1, error = anchored
+            if limits is not None and v0 <= limits.standing and not standing:
+                # It set off with the recording: from standing, which the replay starts
+                # from (a free v0 of 0.3 m/s, replayed from 0 at the rate fitted with it,
+                # left UIS1's bike 1.1 m behind).
+                still = _best_ramp(
+                    window, values, np.array([times[0]]), t2 + fine, limits, standing=True
+                )
+                if still is not None:
+                    t1, t2, v0, v1, error = still
             return t1, t2, max(v0, 0.0), max(v1, 0.0), None
     starts_range = _start_range(window, values, t1, t2, step, error, variance, standing)
     return t1, t2, max(v0, 0.0), max(v1, 0.0), starts_range
@@ -615,6 +624,39 @@ def end_by_crossings(events: list[Event]) -> None:
         event.start_range = (earliest, high)
         if event.start < earliest:
             event.retime(earliest)
+
+
+def crossings_after_set_offs(events: list[Event], standing: float, window: float) -> None:
+    """Put a Cross that was seen while its actor was still setting off from standing (or up
+    to a smoothing `window` before) at the end of that set-off; sorts `events` by start.
+
+    SceML's crossing is a set-off, then a Cross when it has finished (the library's
+    CrossingManeuver; the preview and the export play it so). The Cross's start is where
+    the heading bent, judged from the chord across the smoothing window, and a slow set-off's
+    noisy heading bends early: a bike's Cross came out at 1.0 s, in the middle of its set-off
+    (0.6 to 2.9 s), and a walker's 0.17 s before its step of the speed. A Cross that starts
+    while another of the actor's maneuvers still runs gets a branch of its own, so the replay
+    crossed first and set off after, the other way round. An actor that stands has no heading
+    to bend: its crossing began once it was under way.
+    """
+    for cross in events:
+        if cross.kind != "Cross":
+            continue
+        for change in events:
+            if not change.longitudinal or change.from_speed is None:
+                continue
+            if change.from_speed > standing or not change.start - window < cross.start:
+                continue
+            if change.kind == "DriveDistance" and cross.start < change.start:
+                # A step: under way at once. It drives the least distance a node says
+                # (0.1 m, as `drive_distances`), then the Cross follows.
+                speed = float(str(change.parameters["speed"]))
+                change.parameters["distance"] = 0.1
+                change.end = change.finish = change.start + 0.1 / speed
+                cross.start = cross.end = change.end
+            elif change.kind != "DriveDistance" and cross.start < change.end:
+                cross.start = cross.end = change.end
+    events.sort(key=lambda e: e.start)
 
 
 #: Over at most this long (s) from the recording's start the start position is fitted.

@@ -21,6 +21,7 @@ from .events import Event
 from .lateral import path_events
 from .longitudinal import (
     RateLimits,
+    crossings_after_set_offs,
     drive_distances,
     end_by_crossings,
     speed_events,
@@ -167,6 +168,7 @@ def _actor(
     )
     events = sorted(speeds + path_events(motion, kind, thresholds, road_map), key=lambda e: e.start)
     drive_distances(events, motion)
+    crossings_after_set_offs(events, thresholds.standing_speed, thresholds.smoothing_window)
     fit_set_offs(events, motion, thresholds, rates.acceleration)
     end_by_crossings(events)
     speed = _initial_speed(motion, events, thresholds.standing_speed)
