@@ -13,6 +13,7 @@ from collections.abc import Iterator
 from functools import cache
 from pathlib import Path
 
+import numpy as np
 import pytest
 from conftest import EXAMPLES, REPO
 
@@ -179,3 +180,74 @@ def test_noisy_recordings_keep_the_maneuvers_of_overtaking() -> None:
         for found in noisy_runs(run, 8)
     ]
     assert sum(same) >= 6, same
+
+
+def benchmark_sample(name: str, index: int) -> tuple[scm.Scenario, Run]:
+    """Sample `index` of the benchmark's 100 (benchmarks/extract_closed_loop.py, seed 7)."""
+    path = EXAMPLES / name
+    logical = load_scenario(path).root
+    space = parameter_space(logical)
+    row = design(space, plan_for(space, "random", 100, 7))[index]
+    scenario = FlatTemplate(logical, space.paths).fill(list(row))
+    return scenario, simulate(scenario, path, road_map=road_map())
+
+
+def first_speed_change(found: Extraction, actor: str) -> tuple[str, float, float, float]:
+    """The kind, start (s), speed before and target (m/s) of an actor's first speed change."""
+    (extracted_actor,) = [a for a in found.actors if a.name == actor]
+    event = next(e for e in extracted_actor.maneuvers if e.longitudinal)
+    target = event.parameters.get("targetSpeed", event.parameters.get("speed"))
+    return event.kind, event.start, event.from_speed or 0.0, float(str(target))
+
+
+#: Each cause of a miss found this round (benchmark, 100 noisy samples each, sample index =
+#: noise seed), with a sample it made miss: the scenario, the sample, and what went wrong.
+#: Each now comes back whole; `test_each_cause_of_a_noisy_miss_is_gone` checks the cause too.
+CAUSES = {
+    # A change already under way at the start, 1.1 to 1.4 m/s over 0.55 to 0.7 s: within the
+    # noise of a steady speed for the free fit (missed in 7 UIS2 and 2 UIS1 samples).
+    "start change missed": ("uis2-logical.xmi", 62),
+    "start change missed, UIS1": ("uis1-logical.xmi", 16),
+    # A change from the start fitted late, the anchored fit's end held near the free fit's:
+    # a timed wait the scenario did not have (2 UIS2, 2 UIS1), or the change found twice.
+    "start change fitted late": ("uis2-logical.xmi", 42),
+    "start change split in two": ("uis2-logical.xmi", 44),
+    # A bike that set off with the recording: its first half window's distance, from the
+    # extrapolated cubic, came out 0.5 m short; its set-off from 1.2 m/s at 0.8 s, a wait.
+    "set-off at the start, from the edge's distance": ("uis1-logical.xmi", 72),
+    # ... and the set-off anchored at the start from 0.3 m/s, replayed from 0 (1.08 m off).
+    "set-off at the start, from a creep": ("uis1-logical.xmi", 9),
+    # A bike that set off at once, with no sure heading before its crossing: missed (2.9 m).
+    "crossing after a set-off at the start": ("uis1-logical.xmi", 81),
+    # A crossing seen during the set-off (bike) or before a walker's step: crossed first.
+    "crossing during the set-off": ("uis1-logical.xmi", 14),
+    "crossing before a walker's step": ("uis2-logical.xmi", 56),
+}
+
+
+@pytest.mark.parametrize("cause", sorted(CAUSES))
+def test_each_cause_of_a_noisy_miss_is_gone(cause: str) -> None:
+    name, index = CAUSES[cause]
+    scenario, run = benchmark_sample(name, index)
+    found = extracted(run, noise=0.1, every=2, seed=index)
+    assert noisy_outcome(scenario, found, run) == "whole", cause
+    if cause.startswith("start change"):
+        # The ego's first speed change starts with the recording, to the run's speed at 3 s
+        # (after the change) within 0.2 m/s, from its speed at 0 s within 0.4 m/s: the noise
+        # pins the change times its length, not each (sample 44: 6.36 for 6.0 m/s).
+        kind, start, before, target = first_speed_change(found, "ego")
+        ego = run.actor_index("ego")
+        speeds = run.states[ego, :, 3]
+        truth = (float(speeds[0]), float(np.interp(3.0, run.times, speeds)))
+        assert (kind, start) == ("Accelerate", 0.0)
+        assert before == pytest.approx(truth[0], abs=0.4)
+        assert target == pytest.approx(truth[1], abs=0.2)
+        assert sum(e.longitudinal and e.start < 1.0 for e in found.actors[0].maneuvers) == 1
+    if cause.startswith("set-off at the start"):
+        kind, start, before, _ = first_speed_change(found, "bike")
+        assert (kind, start, before) == ("Accelerate", 0.0, 0.0)
+    if cause.startswith("crossing"):
+        actor = "bike" if name.startswith("uis1") else "pedestrian"
+        (events,) = [a.maneuvers for a in found.actors if a.name == actor]
+        assert [e.kind for e in events] == ["Accelerate", "Cross"]
+        assert events[1].start >= events[0].end - 1e-9

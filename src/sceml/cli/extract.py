@@ -102,6 +102,12 @@ def _actor(text: str) -> object:
     help="Bend (rad) after a set-off from standing from which the set-off is fitted to the raw "
     "positions, the bend pinning the ramp's end [default: 0.5].",
 )
+@click.option(
+    "--start-rate",
+    type=click.FloatRange(min=0.1),
+    help="Rate (m/s²) taken for a speed change under way when a noisy recording starts, whose "
+    "length the noise leaves open [default: 2].",
+)
 @click.option("--no-replay", is_flag=True, help="Skip the replay in the preview.")
 @click.option("--report", "show_report", is_flag=True, help="Print what was found and why.")
 @click.option(
@@ -127,6 +133,7 @@ def extract_command(
     vehicle_radius: float | None,
     tolerance: float | None,
     sharp_bend: float | None,
+    start_rate: float | None,
     no_replay: bool,
     show_report: bool,
     report_format: str,
@@ -154,6 +161,7 @@ def extract_command(
         "vehicle_radius": vehicle_radius,
         "arrival_tolerance": tolerance,
         "sharp_bend": sharp_bend,
+        "start_rate": start_rate,
     }
     thresholds = replace(Thresholds(), **{k: v for k, v in settings.items() if v is not None})
     recorded = read_recording(
