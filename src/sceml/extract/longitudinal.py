@@ -111,17 +111,19 @@ def _fit_spans(
                 standing=standing,
             )
         fitted = fits[key]
-        if motion.noisy and motion.moving[0] and a <= half and before == 0:
+        at_start = motion.noisy and bool(motion.moving[0]) and a <= half and before == 0
+        if at_start and (
+            fitted is None or abs(fitted[3] - fitted[2]) < thresholds.min_speed_change
+        ):
             # A change under way at the start that the free fit cannot tell from noise, or
             # whose length it leaves open: tried at the start rate (`_start_change`).
-            if fitted is None or abs(fitted[3] - fitted[2]) < thresholds.min_speed_change:
-                fitted = _start_change(
-                    motion.times,
-                    motion.along,
-                    after,
-                    thresholds.start_rate,
-                    thresholds.min_speed_change,
-                )
+            fitted = _start_change(
+                motion.times,
+                motion.along,
+                after,
+                thresholds.start_rate,
+                thresholds.min_speed_change,
+            )
         if fitted is None:
             continue
         t1, t2, v0, v1, starts = fitted

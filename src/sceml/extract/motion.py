@@ -106,9 +106,7 @@ def smooth(track: Track, thresholds: Thresholds, step: float | None = None) -> M
     lengths[~(moving[1:] | moving[:-1])] = 0.0
     arc = np.concatenate([[0.0], np.cumsum(lengths)])
     noise = _noise(x, y, xs, ys, window)
-    along = _along(
-        x, y, xs, ys, arc, heading, thresholds.standing_speed, speed, noise, window // 2
-    )
+    along = _along(x, y, xs, ys, arc, heading, thresholds.standing_speed, speed, noise, window // 2)
     error = _heading_error(xs, ys, window, noise)
     xs, ys = _hold_standing_start(x, y, xs, ys, moving, speed, half)
     return Motion(
