@@ -101,6 +101,7 @@ def test_each_threshold_option_sets_its_threshold(tmp_path: Path, monkeypatch) -
         "--tolerance": ("arrival_tolerance", 3.0),
         "--sharp-bend": ("sharp_bend", 0.8),
         "--start-rate": ("start_rate", 1.5),
+        "--start-significance": ("start_significance", 6.0),
     }
     arguments = ["extract", str(DATA / "uis1-esmini.csv"), "-o", str(tmp_path / "x.xmi")]
     arguments += ["--map", str(map_copy(tmp_path))]

@@ -108,6 +108,12 @@ def _actor(text: str) -> object:
     help="Rate (m/s²) taken for a speed change under way when a noisy recording starts, whose "
     "length the noise leaves open [default: 2].",
 )
+@click.option(
+    "--start-significance",
+    type=click.FloatRange(min=0.5),
+    help="How many times the noise's variance a change under way at a noisy recording's start "
+    "must explain beyond a steady speed to count [default: 9].",
+)
 @click.option("--no-replay", is_flag=True, help="Skip the replay in the preview.")
 @click.option("--report", "show_report", is_flag=True, help="Print what was found and why.")
 @click.option(
@@ -134,6 +140,7 @@ def extract_command(
     tolerance: float | None,
     sharp_bend: float | None,
     start_rate: float | None,
+    start_significance: float | None,
     no_replay: bool,
     show_report: bool,
     report_format: str,
@@ -162,6 +169,7 @@ def extract_command(
         "arrival_tolerance": tolerance,
         "sharp_bend": sharp_bend,
         "start_rate": start_rate,
+        "start_significance": start_significance,
     }
     thresholds = replace(Thresholds(), **{k: v for k, v in settings.items() if v is not None})
     recorded = read_recording(

@@ -117,13 +117,7 @@ def _fit_spans(
         ):
             # A change under way at the start that the free fit cannot tell from noise, or
             # whose length it leaves open: tried at the start rate (`_start_change`).
-            fitted = _start_change(
-                motion.times,
-                motion.along,
-                after,
-                thresholds.start_rate,
-                thresholds.min_speed_change,
-            )
+            fitted = _start_change(motion.times, motion.along, after, thresholds)
         if fitted is None:
             continue
         t1, t2, v0, v1, starts = fitted
@@ -268,14 +262,11 @@ def _fit_ramp(
 
 
 #: How many times the noise's variance a change under way at the start must explain beyond a
-#: steady speed to count: a likelihood-ratio test for its one parameter more (the change; its
-#: length follows from the start rate), at a chance of about 1 in 500 of noise passing it.
-_START_SIGNIFICANT = 9.0
+#: steady speed to count, by default (`Thresholds.start_significance`): a likelihood-ratio
+#: test for its one parameter more (the change; its length follows from the start rate).
 
 
-def _start_change(
-    times: Array, along: Array, after: int, rate: float, min_change: float
-) -> _Fit | None:
+def _start_change(times: Array, along: Array, after: int, thresholds: Thresholds) -> _Fit | None:
     """A speed change under way when a noisy recording starts, fitted at the `rate` given.
 
     Five samples at 10 Hz and the filter's edge leave a short change at the start (1.3 m/s
@@ -286,8 +277,9 @@ def _start_change(
     given, dv is the one parameter more than a steady speed: for each dv on a grid the
     distance is s0 + v1 t + dv (r(t) - t), linear in (s0, v1), r the ramp's integral.
     Returns (t1, t2, v0, v1, None), or None when the change explains less than
-    `_START_SIGNIFICANT` times the noise's variance, or is smaller than `min_change`.
+    `start_significance` times the noise's variance, or is smaller than `min_speed_change`.
     """
+    rate = thresholds.start_rate
     window, values = times[: after + 1], along[: after + 1]
     if len(window) < 8:
         return None
@@ -305,17 +297,19 @@ def _start_change(
     errors = ((solution @ design.T - shifted) ** 2).sum(axis=1)
     best = int(np.argmin(errors))
     variance = float(errors[best]) / (len(window) - 3)
-    if _steady_error(window, values) - float(errors[best]) <= _START_SIGNIFICANT * variance:
+    gain = _steady_error(window, values) - float(errors[best])
+    if gain <= thresholds.start_significance * variance:
         return None
     change, v1 = float(changes[best]), float(solution[best, 1])
-    if abs(change) < min_change:
+    if abs(change) < thresholds.min_speed_change:
         return None
     t0 = float(window[0])
     return t0, t0 + float(lengths[best]), max(v1 - change, 0.0), max(v1, 0.0), None
 
 
 #: A ramp from the recording's start is preferred to a later start whose squared error is
-#: smaller by less than this many times the noise's variance (about 1 in 400 for noise alone):
+#: smaller by less than this many times the noise's variance (for noise alone about 1 in 400,
+#: the chi-squared tail for one parameter):
 #: a change fitted late needs a wait that nothing explains, a timed one, which a change under
 #: way from the start does not (at 6, UIS2's ego was fitted 0.65 s late in 1 of 100 samples).
 _ANCHORED = 9.0

@@ -168,7 +168,8 @@ def _actor(
     )
     events = sorted(speeds + path_events(motion, kind, thresholds, road_map), key=lambda e: e.start)
     drive_distances(events, motion)
-    crossings_after_set_offs(events, thresholds.standing_speed, thresholds.smoothing_window)
+    if motion.noisy:
+        crossings_after_set_offs(events, thresholds.standing_speed, thresholds.smoothing_window)
     fit_set_offs(events, motion, thresholds, rates.acceleration)
     end_by_crossings(events)
     speed = _initial_speed(motion, events, thresholds.standing_speed)

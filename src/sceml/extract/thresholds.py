@@ -49,3 +49,7 @@ class Thresholds:
     #: where the noise leaves its length open: the distance driven pins only the speed change
     #: times its length (`longitudinal._start_change`). 2 m/s² is a brisk, comfortable rate.
     start_rate: float = 2.0
+    #: ... and counts when it explains this many times the noise's variance beyond a steady
+    #: speed (a likelihood-ratio test for one parameter more: noise alone passes 9 about 1 in
+    #: 400 times; lower finds smaller changes and makes up more).
+    start_significance: float = 9.0
