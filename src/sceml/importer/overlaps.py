@@ -1,10 +1,18 @@
-"""One maneuver of a kind at a time per actor (SPEC §6, simultaneity), as SceML requires.
+"""One maneuver of a kind at a time per actor (SPEC §6, simultaneity), as players run them.
 
-In OpenSCENARIO a later longitudinal (or lateral) action of an actor overrides the one running;
-SceML has no overriding, and two maneuvers of one actor and category must not be able to run
-together. So when a maneuver could start while an earlier one of the same actor and category
-may still run, it also waits for that one to finish (a JoinAllFinished before it); the report
-says so, because the original would have cut the earlier one short.
+In OpenSCENARIO a later longitudinal (or lateral) action of an actor ends the one running:
+players end a running action of the entity whose control domain the new one shares, whatever
+the event's priority, and an event of priority overwrite/override ends the running events of
+its Maneuver (`xosc.meaning`, "one maneuver of a part at a time"). So when a maneuver could
+start while an earlier one of the same actor and category may still run, it *interrupts*
+(`Maneuver.interrupts`, release 1.5): when it starts, the earlier one ends and counts as
+finished, as in the original. An earlier one that runs again (maxRuns above 1) may start
+while the later one runs, so it interrupts too (`highway_merge_advanced`'s A3OpenEvent and
+A3CloseEvent, repeated and mutually exclusive). A turn (TurnLeft, TurnRight, Cross) is
+exported as a route, which players run in no control domain and so end nothing: a turn and
+a maneuver it may overlap still run one after the other, the later waiting for the earlier
+(a JoinAllFinished before it; the report says so, because the original would run them
+together).
 """
 
 from __future__ import annotations
@@ -20,13 +28,15 @@ from .context import Build
 
 
 def separate(build: Build) -> None:
-    """Make every pair of same-actor, same-category maneuvers run one after the other.
+    """Make every pair of same-actor, same-category maneuvers that may overlap either
+    interrupt (the later one, and the earlier one too if it runs again) or, with a turn,
+    run one after the other.
 
     The maneuvers of one actor and axis are taken in the graph's topological order, document
     order between unrelated ones (`_topological`): files list an actor's events in the order
-    they happen, however many nodes each waits through. Once each waits for the one before
-    it, it follows all of them, so each needs at most one new join: the whole pass is near
-    linear in the number of events, where comparing every pair was cubic (issue 26).
+    they happen, however many nodes each waits through. Each pair of neighbours in that order
+    that flows do not already order is settled, so the pass is near linear in the number of
+    events, where comparing every pair was cubic (issue 26).
     """
     order = _topological(build.scenario.nodes)
     lines: dict[tuple[int, str], list[scm.Maneuver]] = {}
@@ -38,10 +48,30 @@ def separate(build: Build) -> None:
             lines.setdefault((id(node.referenceActor), axis), []).append(node)
     for line in lines.values():
         for earlier, later in zip(line, line[1:], strict=False):
-            if not _reaches(earlier, later, order):
+            if _reaches(earlier, later, order):
+                continue
+            if isinstance(earlier, scm.RoutedManeuver) or isinstance(later, scm.RoutedManeuver):
                 join = _wait(build, earlier, later)
                 order[id(later.incoming[0].source)] = order[id(later)] - 0.5
                 order[id(join)] = order[id(later)] - 0.75
+            else:
+                _interrupt(build, earlier, later)
+
+
+def _interrupt(build: Build, earlier: scm.Maneuver, later: scm.Maneuver) -> None:
+    """`later` ends `earlier` if it is still running when `later` starts; so does `earlier`
+    end `later` when it runs again."""
+    later.interrupts = True
+    again = int(earlier.maxRuns) != 1
+    if again:
+        earlier.interrupts = True
+    build.report.add(
+        "mapped",
+        f"{later.name} interrupts {earlier.name} if that still runs when it starts (players "
+        "end a running action of the entity's domain when another starts)"
+        + (f"; {earlier.name}, which runs again, interrupts {later.name} too" if again else ""),
+        node=str(later.name),
+    )
 
 
 def _axes(node: scm.Maneuver) -> frozenset[str]:
@@ -114,8 +144,9 @@ def _wait(build: Build, earlier: scm.Maneuver, later: scm.Maneuver) -> scm.JoinA
     build.flow(join, target)
     build.report.add(
         "guessed",
-        f"{later.name} also waits for {earlier.name} to finish (in OpenSCENARIO it would cut "
-        f"{earlier.name} short; SceML runs one maneuver of an actor and kind at a time)"
+        f"{later.name} also waits for {earlier.name} to finish (in OpenSCENARIO they may run "
+        "together: a turn is a route, which ends no running action; SceML runs one maneuver "
+        "of an actor and kind at a time)"
         + (f"; {target.name} is evaluated once both have finished" if target is not later else ""),
         node=str(later.name),
     )

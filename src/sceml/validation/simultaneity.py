@@ -4,7 +4,9 @@ Node b is *ordered after* node a when b can only be activated once a has finishe
 b is a, or b's predecessor is ordered after a, or b is a JoinAllFinished with any predecessor
 ordered after a. A JoinOneFinished finishes with its first predecessor while the others may still
 run, so it is ordered after a only when *every* one of its predecessors is. Two maneuvers that
-are not ordered either way can run at the same time.
+are not ordered either way can run at the same time, which is allowed when one of them
+interrupts (`Maneuver.interrupts`, release 1.5): it is meant to start while the other runs, and
+ends it (`xosc.meaning`), as players end a running action of the domain another one takes.
 
 The maneuvers of one actor and one category (longitudinal or lateral; a composite maneuver counts
 as both, but a FollowTrajectory only as lateral: `model.axes`) are conflict-free exactly when they form a chain under this order, and a set forms a
@@ -97,7 +99,11 @@ def conflicts(
         if node in bit:
             bits |= 1 << bit[node]
         for earlier, category in previous.get(node, ()):
-            if not (bits >> bit[earlier]) & 1 and (earlier, node) not in seen:
+            if (
+                not (bits >> bit[earlier]) & 1
+                and not (earlier.interrupts or node.interrupts)
+                and (earlier, node) not in seen
+            ):
                 seen.add((earlier, node))
                 found.append((earlier, node, category))
         after[node] = bits
@@ -130,7 +136,8 @@ def _combine(node: EObject, inputs: list[int]) -> int:
     ("Scenario", "ModuleDefinition"),
     "two maneuvers of the same actor and category (longitudinal or lateral; composite counts as "
     "both, but a FollowTrajectory, followed at the actor's speed, as lateral) cannot run at the "
-    "same time: one must be ordered after the other. A path through a "
+    "same time: one must be ordered after the other, or one of them interrupt (when it "
+    "starts, the other ends). A path through a "
     "JoinOneFinished orders only if all of the join's branches are ordered. Module uses are "
     "checked expanded",
     paper_rule="4",
