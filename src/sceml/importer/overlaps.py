@@ -3,16 +3,16 @@
 In OpenSCENARIO a later longitudinal (or lateral) action of an actor ends the one running:
 players end a running action of the entity whose control domain the new one shares, whatever
 the event's priority, and an event of priority overwrite/override ends the running events of
-its Maneuver (`xosc.meaning`, "one maneuver of a part at a time"). So when a maneuver could
-start while an earlier one of the same actor and category may still run, it *interrupts*
-(`Maneuver.interrupts`, release 1.5): when it starts, the earlier one ends and counts as
-finished, as in the original. An earlier one that runs again (maxRuns above 1) may start
-while the later one runs, so it interrupts too (`highway_merge_advanced`'s A3OpenEvent and
-A3CloseEvent, repeated and mutually exclusive). A turn (TurnLeft, TurnRight, Cross) is
-exported as a route, which players run in no control domain and so end nothing: a turn and
-a maneuver it may overlap still run one after the other, the later waiting for the earlier
-(a JoinAllFinished before it; the report says so, because the original would run them
-together).
+its Maneuver (`xosc.meaning`, "one maneuver of a part at a time"). So two maneuvers of one
+actor and category that may run at the same time both *interrupt* (`Maneuver.interrupts`,
+release 1.5): whichever starts while the other runs ends it, and the ended one counts as
+finished, as in the original. They are the maneuvers simultaneity (SCEML-C001) judges
+unordered with another (`validation.simultaneity.overlapping`), so the model passes it.
+
+A turn (TurnLeft, TurnRight, Cross) is exported as a route, which players run in no control
+domain and so end nothing: a turn and a maneuver it may overlap still run one after the other,
+the later waiting for the earlier (a JoinAllFinished before it; the report says so, because
+the original would run them together).
 """
 
 from __future__ import annotations
@@ -23,20 +23,31 @@ import math
 import scemlmodel as scm
 
 from ..model.axes import maneuver_axes
+from ..validation.simultaneity import overlapping
 from ..xosc.flows import is_condition_element
 from .context import Build
 
 
 def separate(build: Build) -> None:
-    """Make every pair of same-actor, same-category maneuvers that may overlap either
-    interrupt (the later one, and the earlier one too if it runs again) or, with a turn,
-    run one after the other.
+    """Order each turn after a maneuver of its actor and category it may overlap (or that
+    maneuver after the turn), then make every other maneuver that may overlap one of its
+    actor and category interrupt."""
+    _order_turns(build)
+    flows = [(flow.source, flow.target) for flow in build.scenario.flows]
+    found = overlapping(build.scenario.nodes, flows)
+    for node in build.scenario.nodes:  # in document order, for the report
+        if node in found and not isinstance(node, scm.RoutedManeuver):
+            _interrupt(build, node)
+
+
+def _order_turns(build: Build) -> None:
+    """Make a turn and a maneuver of the same actor and axis run one after the other.
 
     The maneuvers of one actor and axis are taken in the graph's topological order, document
     order between unrelated ones (`_topological`): files list an actor's events in the order
-    they happen, however many nodes each waits through. Each pair of neighbours in that order
-    that flows do not already order is settled, so the pass is near linear in the number of
-    events, where comparing every pair was cubic (issue 26).
+    they happen, however many nodes each waits through. Once each waits for the one before
+    it, it follows all of them, so each needs at most one new join: the whole pass is near
+    linear in the number of events, where comparing every pair was cubic (issue 26).
     """
     order = _topological(build.scenario.nodes)
     lines: dict[tuple[int, str], list[scm.Maneuver]] = {}
@@ -48,29 +59,25 @@ def separate(build: Build) -> None:
             lines.setdefault((id(node.referenceActor), axis), []).append(node)
     for line in lines.values():
         for earlier, later in zip(line, line[1:], strict=False):
-            if _reaches(earlier, later, order):
-                continue
-            if isinstance(earlier, scm.RoutedManeuver) or isinstance(later, scm.RoutedManeuver):
+            routed = isinstance(earlier, scm.RoutedManeuver) or isinstance(
+                later, scm.RoutedManeuver
+            )
+            if routed and not _reaches(earlier, later, order):
                 join = _wait(build, earlier, later)
                 order[id(later.incoming[0].source)] = order[id(later)] - 0.5
                 order[id(join)] = order[id(later)] - 0.75
-            else:
-                _interrupt(build, earlier, later)
 
 
-def _interrupt(build: Build, earlier: scm.Maneuver, later: scm.Maneuver) -> None:
-    """`later` ends `earlier` if it is still running when `later` starts; so does `earlier`
-    end `later` when it runs again."""
-    later.interrupts = True
-    again = int(earlier.maxRuns) != 1
-    if again:
-        earlier.interrupts = True
+def _interrupt(build: Build, node: scm.Maneuver) -> None:
+    """`node` may start while another maneuver of its actor and category runs: it ends it."""
+    node.interrupts = True
+    axes = " and ".join(sorted(maneuver_axes(node)))
     build.report.add(
         "mapped",
-        f"{later.name} interrupts {earlier.name} if that still runs when it starts (players "
-        "end a running action of the entity's domain when another starts)"
-        + (f"; {earlier.name}, which runs again, interrupts {later.name} too" if again else ""),
-        node=str(later.name),
+        f"{node.name} may start while another {axes} maneuver of {node.referenceActor.name} "
+        "runs: it interrupts it (players end a running action of the entity's domain when "
+        "another starts)",
+        node=str(node.name),
     )
 
 

@@ -116,6 +116,47 @@ def conflicts(
     return found
 
 
+def overlapping(
+    nodes: Sequence[EObject], flows: Iterable[tuple[EObject | None, EObject | None]]
+) -> set[EObject]:
+    """The maneuvers that can run at the same time as another of their actor and category
+    (whatever their `interrupts`): those not ordered either way with every other member of
+    their group. The import marks them as interrupting (`importer.overlaps`), as players run
+    them. One pass carries the bitsets as `conflicts` does, then per group a suffix AND of
+    them: a member is ordered with all after it when each of those has its bit."""
+    order, sources, _ = _adjacency(nodes, flows)
+    if len(order) < len(nodes):
+        return set()
+    bit: dict[EObject, int] = {}
+    after: dict[EObject, int] = {}
+    groups: dict[tuple[EObject, str], list[EObject]] = {}
+    for node in order:
+        bits = _combine(node, [after[source] for source in sources[node]])
+        if isinstance(node, scm.Maneuver) and node.referenceActor is not None:
+            bit[node] = len(bit)
+            bits |= 1 << bit[node]
+            for category in maneuver_axes(node):
+                groups.setdefault((node.referenceActor, category), []).append(node)
+        after[node] = bits
+    found: set[EObject] = set()
+    for members in groups.values():
+        if len(members) < 2:
+            continue
+        below = 0  # the bits of the members before, in topological order
+        masks = [below := below | (1 << bit[m]) for m in members]
+        suffix = -1  # all ones: the AND over no bitsets
+        ordered_later = [0] * len(members)
+        for index in range(len(members) - 1, -1, -1):
+            ordered_later[index] = suffix
+            suffix &= after[members[index]]
+        for index, member in enumerate(members):
+            before_all = after[member] & masks[index] == masks[index]
+            after_all = (ordered_later[index] >> bit[member]) & 1
+            if not (before_all and after_all):
+                found.add(member)
+    return found
+
+
 def _combine(node: EObject, inputs: list[int]) -> int:
     if not inputs:
         return 0
