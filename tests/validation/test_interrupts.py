@@ -12,8 +12,8 @@ from pyecore.ecore import EObject
 from validation.test_simultaneity_sets import _random_graph
 
 import scemlmodel as scm
-from sceml.model.build import ScenarioBuilder, lane
 from sceml.model.axes import maneuver_axes
+from sceml.model.build import ScenarioBuilder, lane
 from sceml.validation import validate
 from sceml.validation.edits import Change
 from sceml.validation.incremental import IncrementalValidator
@@ -38,9 +38,9 @@ def _pairwise(nodes: list[EObject], flows: list[tuple[EObject, EObject]]) -> set
     found: set[EObject] = set()
     for a, b in combinations(maneuvers, 2):
         shared = maneuver_axes(a) & maneuver_axes(b)
-        if a.referenceActor is b.referenceActor and shared:
-            if a not in after[b] and b not in after[a]:
-                found |= {a, b}
+        unordered = a not in after[b] and b not in after[a]
+        if a.referenceActor is b.referenceActor and shared and unordered:
+            found |= {a, b}
     return found
 
 
