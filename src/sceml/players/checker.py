@@ -125,7 +125,7 @@ def check_run(
         finish[node_name] = check.finish
         checks[node_name] = check
         _check_order(check, finish)
-        ended = _ended_by_other(node, check, takeovers)
+        ended = _ended_by_other(node, check, takeovers, run.step)
         if first is not None and not ended:
             _check_cut_short(check, events[first], run)
         if run.traces and check.start is not None and check.finish is not None and not ended:
@@ -264,13 +264,18 @@ def _takeovers(
     return found
 
 
-def _ended_by_other(node: scm.GraphElement, check: NodeCheck, takeovers: Takeovers) -> bool:
-    """Whether the node finished when an interrupting maneuver of its actor took a part of it."""
+def _ended_by_other(
+    node: scm.GraphElement, check: NodeCheck, takeovers: Takeovers, step: float
+) -> bool:
+    """Whether the node finished when an interrupting maneuver of its actor took a part of it:
+    in that step, or, for a node whose finish is an event of its own (Follow's and Approach's
+    `__gap_reached`), in the next, when that event sees the ended action's completion."""
     actor = getattr(node, "referenceActor", None)
     if check.finish is None or actor is None or not isinstance(node, scm.Maneuver):
         return False
+    late = step if isinstance(node, scm.Follow | scm.Approach) else 0.0
     return any(
-        abs(when - check.finish) < 1e-6 and other != check.name
+        -1e-6 < check.finish - when < late + 1e-6 and other != check.name
         for part in meaning.controls(node.eClass.name)
         for when, other in takeovers.get((str(actor.name), part), ())
     )
