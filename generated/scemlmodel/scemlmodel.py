@@ -1057,9 +1057,15 @@ class FourWheeler(Actor):
 @abstract
 class Maneuver(ActionNode):
 
-    def __init__(self, **kwargs):
+    interrupts = EAttribute(eType=EBoolean, unique=True, derived=False,
+                            changeable=True, default_value=False)
+
+    def __init__(self, *, interrupts=None, **kwargs):
 
         super().__init__(**kwargs)
+
+        if interrupts is not None:
+            self.interrupts = interrupts
 
 
 @abstract

@@ -14,7 +14,7 @@ from sceml.model.traversal import features
 #: Not set by parameter or position ops (maxRuns: every node of UIS1 runs once, the default;
 #: its InVehicleRadius measures as the defaults say: within, straight line, reference points;
 #: no condition has an edge; its speed changes are linear and a trajectory would be followed in
-#: position mode, release 1.4's defaults).
+#: position mode, release 1.4's defaults; no maneuver interrupts another, release 1.5's).
 _SKIPPED = {
     "name",
     "referenceActor",
@@ -30,6 +30,7 @@ _SKIPPED = {
     "edge",
     "shape",
     "followingMode",
+    "interrupts",
 }
 
 

@@ -288,3 +288,18 @@ def test_emf_reads_and_writes_a_trajectory_in_follow_mode(emf: Harness, tmp_path
     assert differences(original.root, from_emf.root) == []
     walk = next(n for n in from_emf.root.nodes if n.eClass.name == "FollowTrajectory")
     assert walk.followingMode.name == "follow"
+
+
+def test_emf_reads_and_writes_interrupting_maneuvers(emf: Harness, tmp_path: Path) -> None:
+    # Release 1.5's Maneuver.interrupts: an attribute EMF reads from the .ecore and writes back.
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    import_to_file(FILES / "interrupts.xosc", source / "interrupts.xmi")
+    assert (source / "interrupts.xmi").read_text().count('interrupts="true"') == 2
+    result = emf.run("roundtrip", ECORE, source, out, Path("interrupts.xmi"))
+    assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+    original, from_emf = load(source / "interrupts.xmi"), load(out / "interrupts.xmi")
+    assert differences(original.root, from_emf.root) == []
+    interrupting = {n.name for n in from_emf.root.nodes if getattr(n, "interrupts", False)}
+    assert interrupting == {"SpeedUp", "Brake"}

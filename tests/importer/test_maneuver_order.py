@@ -1,6 +1,7 @@
-"""Maneuvers of one actor and kind run one after another in the order the file lists them
-(issue 24, "same run"): a lane change on a condition and a delay, listed first, goes before
-one at 8 s, though it waits through more nodes (`keep_lateral_distance`: its first lane
+"""Maneuvers of one actor and kind that may overlap are ordered as the file lists them (issue
+24, "same run"): the later one interrupts the earlier (release 1.5; before, it waited for it),
+and a lane change on a condition and a delay, listed first, is the earlier one of a lane
+change at 8 s, though it waits through more nodes (`keep_lateral_distance`: its first lane
 change waited for both timed ones and started at 15.05 s instead of 2.75 s).
 
 `files/maneuver-order.xosc` is written by hand; every expectation below is read off it."""
@@ -41,15 +42,23 @@ def _upstream(node: scm.GraphElement) -> set[str]:
     return seen
 
 
-def test_the_timed_lane_change_waits_for_the_one_listed_first(imported: scm.Scenario) -> None:
+def test_the_timed_lane_change_interrupts_the_one_listed_first(imported: scm.Scenario) -> None:
     close, timed = _node(imported, "Close"), _node(imported, "Timed")
-    assert "Close" in _upstream(timed)
+    # Either may start while the other runs (the graph cannot tell Close's distance is met
+    # before 8 s): both interrupt, as players run two actions of one domain; so does After,
+    # which may start while Close runs.
+    assert timed.interrupts is True
+    assert close.interrupts is True
+    assert "Close" not in _upstream(timed)
     # Close waits only for its own condition and its delay: nothing of Timed or After.
     assert not {"Timed", "After"} & _upstream(close)
     (wait,) = graph.predecessors(close)
     assert isinstance(wait, scm.TimeElapsed)
     (near,) = graph.predecessors(wait)
     assert near.eClass.name == "InVehicleRadius"  # a longitudinal distance to the lead
+    # After follows Timed: flows order them, nothing to interrupt.
+    assert "Timed" in _upstream(_node(imported, "After"))
+    assert _node(imported, "After").interrupts is True
 
 
 def test_the_export_starts_the_first_lane_change_on_its_condition_alone(
@@ -66,25 +75,23 @@ def test_the_export_starts_the_first_lane_change_on_its_condition_alone(
     assert distance.get("value") == "55.0"
     timed = document.find(".//Event[@name='Timed']")
     assert timed is not None
-    assert "Close" in {
+    assert "Close" not in {
         s.get("storyboardElementRef") for s in timed.iter("StoryboardElementStateCondition")
     }
 
 
-def test_a_speed_change_waits_for_the_one_before_ahead_of_its_condition_and_delay(
+def test_a_speed_change_interrupts_the_one_before_and_waits_for_its_condition_and_delay(
     imported: scm.Scenario,
 ) -> None:
-    # Fast <- its 0.5 s delay <- its SpeedCondition <- (the act's start, Slow): the join goes
-    # before the condition, not between the delay and Fast.
+    # Fast <- its 0.5 s delay <- its SpeedCondition <- the act's start; Slow is not waited for.
     fast = _node(imported, "Fast")
+    assert fast.interrupts is True
     (wait,) = graph.predecessors(fast)
     assert isinstance(wait, scm.TimeElapsed)
     assert float(wait.duration.value) == 0.5
     (slow_enough,) = graph.predecessors(wait)
     assert isinstance(slow_enough, scm.SpeedCondition)
-    (join,) = graph.predecessors(slow_enough)
-    assert isinstance(join, scm.JoinAllFinished)
-    assert "Slow" in {str(p.name) for p in graph.predecessors(join)}
+    assert "Slow" not in _upstream(fast)
 
 
 def test_the_export_starts_the_second_speed_change_on_its_condition_and_delay(
@@ -100,7 +107,7 @@ def test_the_export_starts_the_second_speed_change_on_its_condition_and_delay(
     (speed,) = [c for c in group.iterfind("Condition") if c.find(".//SpeedCondition") is not None]
     assert float(speed.get("delay")) == 0.5
     states = {s.get("storyboardElementRef") for s in group.iter("StoryboardElementStateCondition")}
-    assert states == {"Slow"}
+    assert "Slow" not in states  # Fast interrupts it
 
 
 def test_the_order_survives_export_then_import(imported: scm.Scenario, tmp_path: Path) -> None:
@@ -112,11 +119,13 @@ def test_the_order_survives_export_then_import(imported: scm.Scenario, tmp_path:
     )
     (tmp_path / "highway.xodr").write_bytes((SOURCE.parent / "highway.xodr").read_bytes())
     again = import_file(exported).scenario
-    assert "Close" in _upstream(_node(again, "Timed"))
+    assert _node(again, "Timed").interrupts is True
+    assert "Close" not in _upstream(_node(again, "Timed"))
     assert not {"Timed", "After"} & _upstream(_node(again, "Close"))
     assert "Timed" in _upstream(_node(again, "After"))
     fast = _node(again, "Fast")
     (wait,) = graph.predecessors(fast)
     (slow_enough,) = graph.predecessors(wait)
     assert isinstance(slow_enough, scm.SpeedCondition)
-    assert "Slow" in _upstream(slow_enough)
+    assert fast.interrupts is True
+    assert "Slow" not in _upstream(slow_enough)

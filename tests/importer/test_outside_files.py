@@ -110,6 +110,9 @@ HAND_WRITTEN = {
             "ActivateController",
             "EndNode",
             "Follow",
+            # The StopTrigger's two events, and the Follow's branch joined with them (the
+            # ego's Stop interrupts the Follow, release 1.5: it no longer waits for it).
+            "JoinAllFinished",
             "JoinAllFinished",
             "RootNode",
             "Stop",

@@ -72,23 +72,19 @@ def test_a_condition_alone_is_in_the_events_own_trigger(exported: etree._Element
     assert exported.find(".//Event[@name='Near']") is None
 
 
-def test_a_second_lane_change_waits_for_the_first_and_keeps_its_condition(
+def test_a_second_lane_change_interrupts_the_first_and_keeps_its_condition(
     imported: scm.Scenario, exported: etree._Element
 ) -> None:
-    # Back may start while Cut runs; SceML runs one lateral maneuver of an actor at a time, so
-    # it also waits for Cut, before its own condition, which stays in its trigger.
+    # Back may start while Cut runs, and Cut while Back runs: both interrupt (release 1.5;
+    # before, Back also waited for Cut), as players end a running lane change when another
+    # starts. Back starts on its own condition, which stays in its trigger.
     close = next(n for n in imported.nodes if n.name == "Close")
     back = next(n for n in imported.nodes if n.name == "Back")
+    cut = next(n for n in imported.nodes if n.name == "Cut")
+    assert (back.interrupts, cut.interrupts) == (True, True)
     assert graph.predecessors(back) == [close]
-    (join,) = graph.predecessors(close)
-    assert isinstance(join, scm.JoinAllFinished)
-    assert sorted(str(p.name) for p in graph.predecessors(join)) == [
-        "Cut",
-        "InStepAct_start_delay",
-    ]
-    assert groups(event(exported, "Back")) == [
-        ["RelativeDistanceCondition", "state:Cut", "time>=0+1.05"]
-    ]
+    assert [str(p.name) for p in graph.predecessors(close)] == ["InStepAct_start_delay"]
+    assert groups(event(exported, "Back")) == [["RelativeDistanceCondition", "time>=0+1.05"]]
 
 
 def test_waits_in_a_row_add_up_in_one_trigger(exported: etree._Element) -> None:

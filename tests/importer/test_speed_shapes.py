@@ -130,16 +130,19 @@ def test_the_preview_follows_each_shape() -> None:
     assert speed_at(0.8) == pytest.approx(11.40625)
     assert speed_at(1.55) == pytest.approx(14.5)
     assert (run.node("SpeedUp").started, run.node("SpeedUp").finished) == (0.05, 3.05)
-    # Sinusoid from 3.1 s at a peak 2 m/s² over 6 m/s: pi/2 * 6 / 2 = 4.712 s, so it ends in
-    # the step of 7.812 s (7.85 s); at 5.4 s p = 2.3 / 4.712 and v = 19 + 6 (1 - cos pi p) / 2.
-    progress = 2.3 / (math.pi * 1.5)
+    # SpeedUpMore's `>= 19` holds at 3.05 s, as SpeedUp reaches 19 m/s; it starts then, as in
+    # esmini (release 1.5: both may overlap as far as the graph tells, so both interrupt and
+    # neither waits for the other; before, SpeedUpMore waited for SpeedUp and started at 3.1 s).
+    # Sinusoid from 3.05 s at a peak 2 m/s² over 6 m/s: pi/2 * 6 / 2 = 4.712 s, so it ends in
+    # the step of 7.762 s (7.80 s); at 5.4 s p = 2.35 / 4.712 and v = 19 + 6 (1 - cos pi p) / 2.
+    progress = 2.35 / (math.pi * 1.5)
     assert speed_at(5.4) == pytest.approx(19 + 6 * (1 - math.cos(math.pi * progress)) / 2)
-    assert speed_at(5.4) == pytest.approx(21.888, abs=1e-3)
-    assert (run.node("SpeedUpMore").started, run.node("SpeedUpMore").finished) == (3.1, 7.85)
-    # The steps: the speed is 0 in the step the Stop starts (>= 25 holds at 7.85 s, the flow
-    # starts it a step later); the lead's `<= 16` holds on its linear change's end, 16 exactly.
-    # A node started in a step acts from the next (the step's motion came first): 25 m/s is
-    # recorded at 7.9 s and 0 at 7.95 s, with no ramp between.
-    assert run.node("Halt").started == 7.9
-    assert (speed_at(7.9), speed_at(7.95)) == (25.0, 0.0)
+    assert speed_at(5.4) == pytest.approx(21.988, abs=1e-3)
+    assert (run.node("SpeedUpMore").started, run.node("SpeedUpMore").finished) == (3.05, 7.8)
+    # The steps: `>= 25` holds at 7.80 s and starts the Stop then (its trigger); the lead's
+    # `<= 16` holds on its linear change's end, 16 exactly. A node started by a trigger in a
+    # step acts from the next (the step's motion came first): 25 m/s is recorded at 7.80 s and
+    # 0 at 7.85 s, with no ramp between.
+    assert run.node("Halt").started == 7.8
+    assert (speed_at(7.8), speed_at(7.85)) == (25.0, 0.0)
     assert run.node("LeadHalts").started == 3.1

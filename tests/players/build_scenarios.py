@@ -22,6 +22,8 @@ equal this script's output (tests/players/test_scenarios.py).
   join-one-race.xmi       two cars race; a JoinOneFinished of their arrivals ends it
   parallel.xmi            two actors, each with a lateral and a longitudinal maneuver at once
   stop-on-arrival.xmi     a condition that ends the run on its own (written into the StopTrigger)
+  interrupts.xmi          a Decelerate that interrupts a running Accelerate (release 1.5)
+  follow-interrupted.xmi  a Decelerate that interrupts a Follow before its gap is reached
 """
 
 from __future__ import annotations
@@ -247,6 +249,37 @@ def build_stop_on_arrival(map_text: str) -> scm.Scenario:
     return b.scenario
 
 
+def build_interrupts(map_text: str) -> scm.Scenario:
+    """Release 1.5: a Decelerate at 2 s interrupts an Accelerate of 10 s (players end the
+    running speed action when another starts); a KeepVelocity waits for the Accelerate, which
+    counts as finished when it is interrupted."""
+    b = new_scenario("Interrupts", map_text, "The ego brakes at 2 s, ending its speed-up.")
+    ego = b.actor("Car", "ego", ego=True, start=lane(EAST, -1, 5.0), speed=5.0)
+    faster = b.add("Accelerate", ego, targetSpeed=15.0, rate=1.0)
+    brake = b.add("Decelerate", ego, targetSpeed=3.0, rate=2.0, interrupts=True)
+    b.chain(b.root, faster)
+    b.chain(b.root, b.add("TimeElapsed", ego, duration=2.0), brake)
+    after = b.add("LaneChange", ego, direction="left", distance=20.0)
+    b.chain(faster, after)
+    b.chain(b.join_all(after, brake), b.end)
+    return b.scenario
+
+
+def build_follow_interrupted(map_text: str) -> scm.Scenario:
+    """Release 1.5: a Decelerate at 2 s interrupts a Follow that has not reached its gap; the
+    lane change after the Follow starts as the Follow counts as finished then."""
+    b = new_scenario("FollowInterrupted", map_text, "The ego brakes at 2 s, ending its Follow.")
+    ego = b.actor("Car", "ego", ego=True, start=lane(EAST, -1, 5.0), speed=8.0)
+    lead = b.actor("Car", "lead", start=lane(EAST, -1, 40.0), speed=4.0)
+    follow = b.add("Follow", ego, target=lead, distance=10.0)
+    brake = b.add("Decelerate", ego, targetSpeed=3.0, rate=2.0, interrupts=True)
+    change = b.add("LaneChange", ego, direction="left", distance=20.0)
+    b.chain(b.root, follow, change)
+    b.chain(b.root, b.add("TimeElapsed", ego, duration=2.0), brake)
+    b.chain(b.join_all(change, brake), b.end)
+    return b.scenario
+
+
 def build_library() -> scm.Library:
     """Inner in Middle in Outer, each with a role `driver` and a parameter passed down."""
     library = LibraryBuilder("player checks", "Modules nested three deep, with joins inside.")
@@ -313,6 +346,8 @@ def build_all(out: Path) -> list[Path]:
         "join-one-race.xmi": build_join_one_race(map_text),
         "parallel.xmi": build_parallel(map_text),
         "stop-on-arrival.xmi": build_stop_on_arrival(map_text),
+        "interrupts.xmi": build_interrupts(map_text),
+        "follow-interrupted.xmi": build_follow_interrupted(map_text),
     }
     for name, scenario in scenarios.items():
         written.append(save(scenario, out / name))

@@ -36,6 +36,8 @@ GOOD = [
     "longitudinal-1.0",
     "stop-on-arrival-1.3",
     "stop-on-arrival-1.0",
+    "interrupts-1.3",
+    "follow-interrupted-1.3",
 ]
 
 
@@ -93,6 +95,38 @@ def test_a_turn_no_longer_stops_the_speed_change_it_runs_beside(recording) -> No
     assert accelerate.start == pytest.approx(0.0)
     assert accelerate.finish == pytest.approx(5.95)
     assert not esmini.read(log, trace).cut_short
+
+
+def test_an_interrupted_maneuver_finishes_when_the_other_starts(recording) -> None:  # type: ignore[no-untyped-def]
+    log, trace = recording("interrupts-1.3")
+    run = esmini.read(log, trace)
+    # esmini ends the Accelerate at 2 s, when the Decelerate starts: a cut the check accepts,
+    # since the Decelerate interrupts (release 1.5), and not its goal (15 m/s, never reached).
+    assert [(cut.time, cut.event) for cut in run.cut_short] == [(2.0, "Accelerate_1")]
+    report = check_player_run(model("interrupts-1.3"), log, trace)
+    assert report.ok, report.violations()
+    times = {node.name: (node.start, node.finish) for node in report.nodes}
+    assert times["Accelerate_1"] == (pytest.approx(0.0), pytest.approx(2.0))
+    assert times["Decelerate_1"][0] == pytest.approx(2.0)
+    # The lane change after the Accelerate: a flow costs a step.
+    assert times["LaneChange_1"][0] == pytest.approx(2.05)
+    # 5 m/s + 2 s at 1 m/s2 = 7 m/s when it was ended, then down at 2 m/s2.
+    ego = run.traces["ego"]
+    assert float(ego.speed[ego.at(2.0)]) == pytest.approx(7.0, abs=0.11)
+    assert float(ego.speed[ego.at(2.5)]) == pytest.approx(6.0, abs=0.11)
+
+
+def test_an_interrupted_follow_counts_as_finished(recording) -> None:  # type: ignore[no-untyped-def]
+    log, trace = recording("follow-interrupted-1.3")
+    report = check_player_run(model("follow-interrupted-1.3"), log, trace)
+    assert report.ok, report.violations()
+    times = {node.name: (node.start, node.finish) for node in report.nodes}
+    # The Follow's gap (10 m) is never reached: 35 m apart, the ego brakes to 3 m/s at 2 s,
+    # below the lead's 4 m/s. Its finish event sees the ended action's completion a step
+    # later (2.05 s), and the lane change after it starts a step after that; the preview
+    # starts it at 2.05 s (docs/openscenario-mapping.md).
+    assert times["Follow_1"] == (pytest.approx(0.0), pytest.approx(2.05))
+    assert times["LaneChange_1"][0] == pytest.approx(2.10)
 
 
 def test_the_overtaking_example_overtakes_in_esmini(recording) -> None:  # type: ignore[no-untyped-def]

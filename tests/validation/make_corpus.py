@@ -508,6 +508,20 @@ def trajectory_beside_speed(out: Path) -> None:
     save(b.scenario, out, "c001-trajectory-beside-speed-clean.xmi")
 
 
+@case("c001-interrupting-clean", "")
+def interrupting(out: Path) -> None:
+    # The Decelerate may start while the Accelerate runs: it interrupts it (release 1.5), as
+    # an OpenSCENARIO event that overrides a running one, and the pair is allowed.
+    b, ego = scenario()
+    speed_up = b.add("Accelerate", ego, targetSpeed=8.0)
+    wait = b.add("TimeElapsed", ego, duration=2.0)
+    brake = b.add("Decelerate", ego, targetSpeed=2.0, interrupts=True)
+    b.chain(b.root, speed_up)
+    b.chain(b.root, wait, brake)
+    b.chain(b.join_all(speed_up, brake), b.end)
+    save(b.scenario, out, "c001-interrupting-clean.xmi")
+
+
 @case("c001-through-module", "SCEML-C001")
 def through_module(out: Path) -> None:
     b, ego = scenario()

@@ -34,6 +34,9 @@ _LABELS = {
     "maxSpeed": "Top speed",
     "maxAcceleration": "Max acceleration",
     "maxDeceleration": "Max deceleration",
+    # What the flag does (release 1.5): when the node starts, the actor's running maneuver
+    # of the same category ends.
+    "interrupts": "Interrupts a running one",
 }
 _SPEED_UNIT = "m/s"
 

@@ -213,7 +213,26 @@ def plan_distance_keeping(ctx: Context, node: scm.ActionNode, groups: list[Group
     ]
     done = _finish_marker(ctx, node, "gap_reached", groups, checks[0])
     done = replace(done, groups=[[*group, *checks[1:]] for group in done.groups])
+    if _may_be_interrupted(node):
+        # Interrupted, the node has finished (Maneuver.interrupts): the player ends its action
+        # and the event completes, with the gap perhaps never reached. Only then does a
+        # Follow's event complete; an Approach's completes after its gap is held anyway.
+        ended = finished(name, done.name)
+        done = replace(done, groups=[*done.groups, *([*group, ended] for group in groups)])
     return [event, done], done.name
+
+
+def _may_be_interrupted(node: scm.Maneuver) -> bool:
+    """Whether another maneuver of the node's actor that takes a part of it interrupts."""
+    parts = set(meaning.controls(node.eClass.name))
+    return any(
+        isinstance(other, scm.Maneuver)
+        and other is not node
+        and other.interrupts
+        and other.referenceActor is node.referenceActor
+        and parts & set(meaning.controls(other.eClass.name))
+        for other in node.eContainer().nodes
+    )
 
 
 @planner("LaneChange", one_event=True)

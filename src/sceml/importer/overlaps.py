@@ -1,10 +1,18 @@
-"""One maneuver of a kind at a time per actor (SPEC §6, simultaneity), as SceML requires.
+"""One maneuver of a kind at a time per actor (SPEC §6, simultaneity), as players run them.
 
-In OpenSCENARIO a later longitudinal (or lateral) action of an actor overrides the one running;
-SceML has no overriding, and two maneuvers of one actor and category must not be able to run
-together. So when a maneuver could start while an earlier one of the same actor and category
-may still run, it also waits for that one to finish (a JoinAllFinished before it); the report
-says so, because the original would have cut the earlier one short.
+In OpenSCENARIO a later longitudinal (or lateral) action of an actor ends the one running:
+players end a running action of the entity whose control domain the new one shares, whatever
+the event's priority, and an event of priority overwrite/override ends the running events of
+its Maneuver (`xosc.meaning`, "one maneuver of a part at a time"). So two maneuvers of one
+actor and category that may run at the same time both *interrupt* (`Maneuver.interrupts`,
+release 1.5): whichever starts while the other runs ends it, and the ended one counts as
+finished, as in the original. They are the maneuvers simultaneity (SCEML-C001) judges
+unordered with another (`validation.simultaneity.overlapping`), so the model passes it.
+
+A turn (TurnLeft, TurnRight, Cross) is exported as a route, which players run in no control
+domain and so end nothing: a turn and a maneuver it may overlap still run one after the other,
+the later waiting for the earlier (a JoinAllFinished before it; the report says so, because
+the original would run them together).
 """
 
 from __future__ import annotations
@@ -15,12 +23,25 @@ import math
 import scemlmodel as scm
 
 from ..model.axes import maneuver_axes
+from ..validation.simultaneity import overlapping
 from ..xosc.flows import is_condition_element
 from .context import Build
 
 
 def separate(build: Build) -> None:
-    """Make every pair of same-actor, same-category maneuvers run one after the other.
+    """Order each turn after a maneuver of its actor and category it may overlap (or that
+    maneuver after the turn), then make every other maneuver that may overlap one of its
+    actor and category interrupt."""
+    _order_turns(build)
+    flows = [(flow.source, flow.target) for flow in build.scenario.flows]
+    found = overlapping(build.scenario.nodes, flows)
+    for node in build.scenario.nodes:  # in document order, for the report
+        if node in found and not isinstance(node, scm.RoutedManeuver):
+            _interrupt(build, node)
+
+
+def _order_turns(build: Build) -> None:
+    """Make a turn and a maneuver of the same actor and axis run one after the other.
 
     The maneuvers of one actor and axis are taken in the graph's topological order, document
     order between unrelated ones (`_topological`): files list an actor's events in the order
@@ -38,10 +59,26 @@ def separate(build: Build) -> None:
             lines.setdefault((id(node.referenceActor), axis), []).append(node)
     for line in lines.values():
         for earlier, later in zip(line, line[1:], strict=False):
-            if not _reaches(earlier, later, order):
+            routed = isinstance(earlier, scm.RoutedManeuver) or isinstance(
+                later, scm.RoutedManeuver
+            )
+            if routed and not _reaches(earlier, later, order):
                 join = _wait(build, earlier, later)
                 order[id(later.incoming[0].source)] = order[id(later)] - 0.5
                 order[id(join)] = order[id(later)] - 0.75
+
+
+def _interrupt(build: Build, node: scm.Maneuver) -> None:
+    """`node` may start while another maneuver of its actor and category runs: it ends it."""
+    node.interrupts = True
+    axes = " and ".join(sorted(maneuver_axes(node)))
+    build.report.add(
+        "mapped",
+        f"{node.name} may start while another {axes} maneuver of {node.referenceActor.name} "
+        "runs: it interrupts it (players end a running action of the entity's domain when "
+        "another starts)",
+        node=str(node.name),
+    )
 
 
 def _axes(node: scm.Maneuver) -> frozenset[str]:
@@ -114,8 +151,9 @@ def _wait(build: Build, earlier: scm.Maneuver, later: scm.Maneuver) -> scm.JoinA
     build.flow(join, target)
     build.report.add(
         "guessed",
-        f"{later.name} also waits for {earlier.name} to finish (in OpenSCENARIO it would cut "
-        f"{earlier.name} short; SceML runs one maneuver of an actor and kind at a time)"
+        f"{later.name} also waits for {earlier.name} to finish (in OpenSCENARIO they may run "
+        "together: a turn is a route, which ends no running action; SceML runs one maneuver "
+        "of an actor and kind at a time)"
         + (f"; {target.name} is evaluated once both have finished" if target is not later else ""),
         node=str(later.name),
     )

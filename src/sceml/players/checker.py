@@ -8,7 +8,10 @@ Checked against the flattened graph and the exported document:
   goals      each maneuver's and condition's goal held when it finished (`goals`);
   teleports  no actor jumped between two samples of the trace;
   cut short  the player stopped no action of a node before the node finished, and stopped no
-             actor dead (as esmini does where a road ends: the scenario drove it off the map).
+             actor dead (as esmini does where a road ends: the scenario drove it off the map);
+             a node ended when an interrupting maneuver of its actor took its part is not cut
+             short but finished (`Maneuver.interrupts`, `xosc.meaning`), and its goal is not
+             asked for.
 """
 
 from __future__ import annotations
@@ -24,6 +27,7 @@ import scemlmodel as scm
 from ..export.names import SEPARATOR
 from ..maps import RoadMap
 from ..model import graph, params
+from ..xosc import meaning
 from ..xosc.flows import flow_steps, inlined, is_passing
 from .goals import goal_problems
 from .record import EventRun, PlayerRun
@@ -90,6 +94,7 @@ def check_run(
     checks: dict[str, NodeCheck] = {}
     order, _ = graph.topological_order(flat)
     inline = inlined(flat.nodes)
+    takeovers = _takeovers(flat, events_of, run)
     for node in order:
         node_name = str(node.name)
         if isinstance(node, scm.RootNode):
@@ -120,9 +125,10 @@ def check_run(
         finish[node_name] = check.finish
         checks[node_name] = check
         _check_order(check, finish)
-        if first is not None:
+        ended = _ended_by_other(node, check, takeovers, run.step)
+        if first is not None and not ended:
             _check_cut_short(check, events[first], run)
-        if run.traces and check.start is not None and check.finish is not None:
+        if run.traces and check.start is not None and check.finish is not None and not ended:
             ready = required([finish[p] for p in check.after], check.one)
             activated = check.start if ready is None else ready
             check.problems.extend(
@@ -234,6 +240,45 @@ def _check_order(check: NodeCheck, finish: dict[str, float | None]) -> None:
         check.problems.append(
             f"started at {check.start:.2f} s, before its activation at {ready:.2f} s"
         )
+
+
+#: (actor, part) -> (when, node) of each start of an interrupting maneuver in the run.
+Takeovers = dict[tuple[str, str], list[tuple[float, str]]]
+
+
+def _takeovers(
+    flat: scm.Scenario, events_of: dict[str, tuple[str, str]], run: PlayerRun
+) -> Takeovers:
+    """When each interrupting maneuver started in the run, by its actor and each part it takes."""
+    found: Takeovers = {}
+    for node in flat.nodes:
+        if not (isinstance(node, scm.Maneuver) and node.interrupts and node.referenceActor):
+            continue
+        first = events_of.get(str(node.name), (None, None))[0]
+        start = run.events.get(first, EventRun()).start if first else None
+        if start is None:
+            continue
+        for part in meaning.controls(node.eClass.name):
+            key = (str(node.referenceActor.name), part)
+            found.setdefault(key, []).append((start, str(node.name)))
+    return found
+
+
+def _ended_by_other(
+    node: scm.GraphElement, check: NodeCheck, takeovers: Takeovers, step: float
+) -> bool:
+    """Whether the node finished when an interrupting maneuver of its actor took a part of it:
+    in that step, or, for a node whose finish is an event of its own (Follow's and Approach's
+    `__gap_reached`), in the next, when that event sees the ended action's completion."""
+    actor = getattr(node, "referenceActor", None)
+    if check.finish is None or actor is None or not isinstance(node, scm.Maneuver):
+        return False
+    late = step if isinstance(node, scm.Follow | scm.Approach) else 0.0
+    return any(
+        -1e-6 < check.finish - when < late + 1e-6 and other != check.name
+        for part in meaning.controls(node.eClass.name)
+        for when, other in takeovers.get((str(actor.name), part), ())
+    )
 
 
 def _check_cut_short(check: NodeCheck, events: list[str], run: PlayerRun) -> None:

@@ -20,6 +20,7 @@ import scemlmodel as scm
 from ..errors import SceMLError
 from ..files.safexml import hardened_parser
 from ..model import catalog, params
+from ..model.axes import maneuver_axes
 from ..model.graph import actors, root_level, root_node
 from ..modules.resolve import resolved_definition
 from ..xosc.kept import key_values, kind_text
@@ -197,6 +198,7 @@ _QUIET_DEFAULTS: dict[str, object] = {
     "lanes": 1,
     "maxRuns": 1,
     "edge": "none",
+    "interrupts": False,
 }
 #: Attributes shown only when they differ from their feature's own default, which differs by
 #: kind: a LaneChange is sinusoidal unless it says otherwise, a speed change linear (release
@@ -252,7 +254,9 @@ def parameter_items(node: EObject, scope: Scope) -> Iterator[tuple[str, str]]:
         if isinstance(feature, EAttribute) and _quiet(node, name, held):
             continue
         if isinstance(feature, EAttribute):
-            if isinstance(feature.eType, EEnum) and held is not None:
+            if name == "interrupts":
+                yield name, interrupted_text(node)
+            elif isinstance(feature.eType, EEnum) and held is not None:
                 yield name, str(held.name if hasattr(held, "name") else held)
             elif held is not None and name != "description":
                 yield name, str(held)
@@ -261,6 +265,12 @@ def parameter_items(node: EObject, scope: Scope) -> Iterator[tuple[str, str]]:
                 yield name, _reverse_text(node, held, scope)
                 continue
             yield from _reference_items(name, held, units.get(name, ""), scope)
+
+
+def interrupted_text(node: EObject) -> str:
+    """What an interrupting maneuver ends when it starts: `the running longitudinal one`."""
+    axes = " and ".join(sorted(maneuver_axes(node)))
+    return f"the running {axes} one" if axes else "the running one"
 
 
 def _backwards(value: scm.ParameterValue | None) -> bool:

@@ -60,6 +60,8 @@ class NodeState:
     runs: int = 0
     #: When its first run started (the timeline shows the first start and the last finish).
     first_started: float | None = None
+    #: When a maneuver that took its part started: it finished then (`xosc.meaning`).
+    ended_by_other: float | None = None
 
     def ready(self) -> bool:
         done = [p.finished is not None for p in self.predecessors]
@@ -158,6 +160,7 @@ class Scheduler:
         if state in self.active:
             self.active.remove(state)
         state.started, state.since, state.test, state.behaviour = None, None, None, None
+        state.ended_by_other = None
         for key, owner in list(self.owners.items()):
             if owner is state:
                 del self.owners[key]
@@ -185,7 +188,7 @@ class Scheduler:
         return max(times) if state.needs_all else min(times)
 
     def _finish(self, state: NodeState) -> None:
-        state.finished = self.world.t
+        state.finished = self.world.t if state.ended_by_other is None else state.ended_by_other
         if state.started is None:
             state.started = self.world.t
         if state in self.active:
@@ -233,7 +236,11 @@ class Scheduler:
         for part in behaviour.claims:
             previous = self.owners.get((behaviour.actor.name, part))
             if previous is not None and previous.finished is None:
-                previous.note = f"superseded by {state.name}"
+                # Ended when the other started (players end the running action of the
+                # domain then), a step before the other acts if a trigger started it.
+                how = "interrupted" if state.node.interrupts else "superseded"
+                previous.note = f"{how} by {state.name}"
+                previous.ended_by_other = state.started
                 if previous.behaviour is not None:
                     previous.behaviour.release(self.world)
                 superseded.append(previous)

@@ -103,6 +103,8 @@ _FEATURES: dict[str, Aspect] = {
     "parameters": Aspect.MODULES,
     "default": Aspect.MODULES,
     "modules": EVERYTHING,
+    # Which maneuvers may run together (SCEML-C001 reads it with the graph's shape).
+    "interrupts": Aspect.STRUCTURE,
 }
 
 

@@ -4,7 +4,9 @@ Node b is *ordered after* node a when b can only be activated once a has finishe
 b is a, or b's predecessor is ordered after a, or b is a JoinAllFinished with any predecessor
 ordered after a. A JoinOneFinished finishes with its first predecessor while the others may still
 run, so it is ordered after a only when *every* one of its predecessors is. Two maneuvers that
-are not ordered either way can run at the same time.
+are not ordered either way can run at the same time, which is allowed when one of them
+interrupts (`Maneuver.interrupts`, release 1.5): it is meant to start while the other runs, and
+ends it (`xosc.meaning`), as players end a running action of the domain another one takes.
 
 The maneuvers of one actor and one category (longitudinal or lateral; a composite maneuver counts
 as both, but a FollowTrajectory only as lateral: `model.axes`) are conflict-free exactly when they form a chain under this order, and a set forms a
@@ -97,7 +99,11 @@ def conflicts(
         if node in bit:
             bits |= 1 << bit[node]
         for earlier, category in previous.get(node, ()):
-            if not (bits >> bit[earlier]) & 1 and (earlier, node) not in seen:
+            if (
+                not (bits >> bit[earlier]) & 1
+                and not (earlier.interrupts or node.interrupts)
+                and (earlier, node) not in seen
+            ):
                 seen.add((earlier, node))
                 found.append((earlier, node, category))
         after[node] = bits
@@ -107,6 +113,47 @@ def conflicts(
                 del after[source]
         if pending[node] == 0:
             del after[node]
+    return found
+
+
+def overlapping(
+    nodes: Sequence[EObject], flows: Iterable[tuple[EObject | None, EObject | None]]
+) -> set[EObject]:
+    """The maneuvers that can run at the same time as another of their actor and category
+    (whatever their `interrupts`): those not ordered either way with every other member of
+    their group. The import marks them as interrupting (`importer.overlaps`), as players run
+    them. One pass carries the bitsets as `conflicts` does, then per group a suffix AND of
+    them: a member is ordered with all after it when each of those has its bit."""
+    order, sources, _ = _adjacency(nodes, flows)
+    if len(order) < len(nodes):
+        return set()
+    bit: dict[EObject, int] = {}
+    after: dict[EObject, int] = {}
+    groups: dict[tuple[EObject, str], list[EObject]] = {}
+    for node in order:
+        bits = _combine(node, [after[source] for source in sources[node]])
+        if isinstance(node, scm.Maneuver) and node.referenceActor is not None:
+            bit[node] = len(bit)
+            bits |= 1 << bit[node]
+            for category in maneuver_axes(node):
+                groups.setdefault((node.referenceActor, category), []).append(node)
+        after[node] = bits
+    found: set[EObject] = set()
+    for members in groups.values():
+        if len(members) < 2:
+            continue
+        below = 0  # the bits of the members before, in topological order
+        masks = [below := below | (1 << bit[m]) for m in members]
+        suffix = -1  # all ones: the AND over no bitsets
+        ordered_later = [0] * len(members)
+        for index in range(len(members) - 1, -1, -1):
+            ordered_later[index] = suffix
+            suffix &= after[members[index]]
+        for index, member in enumerate(members):
+            before_all = after[member] & masks[index] == masks[index]
+            after_all = (ordered_later[index] >> bit[member]) & 1
+            if not (before_all and after_all):
+                found.add(member)
     return found
 
 
@@ -130,7 +177,8 @@ def _combine(node: EObject, inputs: list[int]) -> int:
     ("Scenario", "ModuleDefinition"),
     "two maneuvers of the same actor and category (longitudinal or lateral; composite counts as "
     "both, but a FollowTrajectory, followed at the actor's speed, as lateral) cannot run at the "
-    "same time: one must be ordered after the other. A path through a "
+    "same time: one must be ordered after the other, or one of them interrupt (when it "
+    "starts, the other ends). A path through a "
     "JoinOneFinished orders only if all of the join's branches are ordered. Module uses are "
     "checked expanded",
     paper_rule="4",

@@ -49,6 +49,20 @@ def controls(kind: str) -> tuple[str, ...]:
     return _CONTROLS.get(catalog.category(kind) or "", ())
 
 
+# --- one maneuver of a part at a time --------------------------------------------------------------
+
+# What an interrupting maneuver (`Maneuver.interrupts`, release 1.5) does when it starts: it
+# ends the maneuvers of its actor running on a part it controls (`controls`), and each ended
+# one counts as finished for its successors from that instant. Players do this to any action:
+# esmini 3.6's Event::Start ends every running action of the entity whose control domains
+# overlap the new one's (longitudinal, lateral; a routing action has none), with an end
+# transition, so its event completes and a trigger waiting for its completeState holds in the
+# next step; an event of priority overwrite (1.0, 1.1) or override (1.2+) ends the running
+# events of its Maneuver the same way. The preview does the same (`simulate.engine`: a
+# maneuver that claims a part supersedes its owner); SceML's flag makes the overlap explicit,
+# so that simultaneity (SCEML-C001) accepts it.
+
+
 # --- controllers ----------------------------------------------------------------------------------
 
 #: Categories whose nodes finish in the step they start. A controller change (ActivateController,
