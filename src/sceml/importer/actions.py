@@ -1,9 +1,9 @@
 """One OpenSCENARIO action of one actor to one SceML maneuver node, or None (kept opaque).
 
-Speed to Accelerate/Decelerate/Stop, longitudinal distance to Follow/Approach, a lane change by
+Speed to Accelerate/Decelerate/Stop, a lane change by
 one lane to LaneChange, routing to TurnLeft/TurnRight/Cross (`geometry.py`), a polyline
 trajectory to FollowTrajectory (Cross for a SceML export's two-point crossing); controller
-actions in `controllers.py`.
+actions in `controllers.py`, longitudinal distance to Follow/Approach in `distance_keeping.py`.
 """
 
 from __future__ import annotations
@@ -233,19 +233,6 @@ def _within_performance(
     return limit
 
 
-@_maps("PrivateAction/LongitudinalAction/LongitudinalDistanceAction")
-def _distance(
-    build: Build, request: Request, keep: etree._Element, motion: Motion
-) -> scm.ActionNode | str:
-    if keep.get("distance") is None:
-        return "a time gap has no SceML kind (Follow and Approach keep a distance)"
-    target = build.actor(keep.get("entityRef"), keep)
-    kind = "Follow" if keep.get("continuous") == "true" else "Approach"
-    node = _add(build, request, kind, distance=number(keep, "distance"))
-    node.targetActor = target
-    return node
-
-
 #: OpenSCENARIO's dynamicsShape values, SceML's LaneChangeShape literals of the same names.
 SHAPES = ("sinusoidal", "linear", "cubic", "step")
 
@@ -451,4 +438,4 @@ maps = _maps
 add_node = _add
 
 # Register their actions' mappers.
-from . import controllers, global_kinds, lights  # noqa: E402, F401
+from . import controllers, distance_keeping, global_kinds, lights  # noqa: E402, F401
