@@ -1696,15 +1696,20 @@ class FollowTrajectory(CompositeManeuver):
 
     followingMode = EAttribute(eType=TrajectoryFollowingMode, unique=True, derived=False,
                                changeable=True, default_value=TrajectoryFollowingMode.position)
+    fromFirstWaypoint = EAttribute(eType=EBoolean, unique=True,
+                                   derived=False, changeable=True, default_value=False)
     waypoints = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
     tolerance = EReference(ordered=True, unique=True, containment=True, derived=False)
 
-    def __init__(self, *, waypoints=None, tolerance=None, followingMode=None, **kwargs):
+    def __init__(self, *, waypoints=None, tolerance=None, followingMode=None, fromFirstWaypoint=None, **kwargs):
 
         super().__init__(**kwargs)
 
         if followingMode is not None:
             self.followingMode = followingMode
+
+        if fromFirstWaypoint is not None:
+            self.fromFirstWaypoint = fromFirstWaypoint
 
         if waypoints:
             self.waypoints.extend(waypoints)

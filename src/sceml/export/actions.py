@@ -256,11 +256,13 @@ def plan_trajectory(ctx: Context, node: scm.ActionNode, groups: list[Group]) -> 
     entity = ctx.entity(node.referenceActor)
     points = [node.destination] if isinstance(node, scm.Cross) else list(node.waypoints)
     here = {"kind": "relative_object", "entity": entity, "dx": "0.0", "dy": "0.0"}
+    # An imported trajectory begins at its first waypoint, as it did in the original.
+    start = [] if getattr(node, "fromFirstWaypoint", False) and len(points) > 1 else [here]
     # No vertex carries a heading: the actor then faces along its path. With a heading on any
     # vertex, esmini keeps the actor's own heading at the start, and a path that starts across
     # it (a pedestrian facing along the kerb, crossing) is taken as driven backwards and ends in
     # the step it starts (docs/openscenario-mapping.md, "Trajectories").
-    vertices = [here, *({**ctx.position(point), "h": None} for point in points)]
+    vertices = [*start, *({**ctx.position(point), "h": None} for point in points)]
     # A Cross has no following mode: players put the actor on its straight path.
     mode = "position" if isinstance(node, scm.Cross) else node.followingMode.name
     data = {"trajectory": ctx.names.claim(f"{name}_path"), "vertices": vertices, "mode": mode}

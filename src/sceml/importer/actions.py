@@ -364,7 +364,11 @@ def _trajectory(
             "FollowTrajectory is followed at the actor's speed"
         )
     vertices = polyline.findall("Vertex")
-    if vertices and _is_self(vertices[0], request.actor):
+    # SceML's exports start at the actor itself; any other trajectory begins at its first
+    # vertex, where players put the actor when the action starts (`pedestrian_traj_synch`: a
+    # path from the actor drove 0.5 m apart, its start 0.5 m behind the actor by then).
+    from_first = not (vertices and _is_self(vertices[0], request.actor))
+    if not from_first:
         vertices = vertices[1:]
     points = [place(build, vertex, initial=False) for vertex in vertices]
     if not points or any(point is None for point in points):
@@ -380,7 +384,7 @@ def _trajectory(
         node = _add(build, request, "Cross")
         node.destination = points[0]
         return node
-    node = _add(build, request, "FollowTrajectory")
+    node = _add(build, request, "FollowTrajectory", fromFirstWaypoint=from_first or None)
     node.waypoints.extend(points)
     if steered:
         # Players steer towards the path then (esmini: a little behind it on bends).

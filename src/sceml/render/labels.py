@@ -200,8 +200,9 @@ _QUIET_DEFAULTS: dict[str, object] = {
 }
 #: Attributes shown only when they differ from their feature's own default, which differs by
 #: kind: a LaneChange is sinusoidal unless it says otherwise, a speed change linear (release
-#: 1.4), a trajectory followed by position, a gap kept behind the target (release 1.5).
-_QUIET_AT_OWN_DEFAULT = ("shape", "followingMode", "displacement")
+#: 1.4), a trajectory followed by position, a gap kept behind the target, a trajectory from
+#: where the actor is (release 1.5).
+_QUIET_AT_OWN_DEFAULT = ("shape", "followingMode", "displacement", "fromFirstWaypoint")
 
 
 def _quiet(node: EObject, name: str, held: object) -> bool:

@@ -350,10 +350,14 @@ class Arrival(Behaviour):
     def done(self, world: World) -> bool:
         return self.actor.distance_to(*self.goal) <= self.tolerance + 1e-9
 
-    def go_straight(self, world: World, points: list[tuple[float, float]]) -> None:
-        """Head straight through `points` from where the actor is; past the last, on along the
-        lane there (as players go on after a trajectory), or straight on off the lanes."""
-        route = [(self.actor.x, self.actor.y), *points]
+    def go_straight(
+        self, world: World, points: list[tuple[float, float]], from_here: bool = True
+    ) -> None:
+        """Head straight through `points` from where the actor is (or, not `from_here`, from
+        the first point, where the actor is put); past the last, on along the lane there (as
+        players go on after a trajectory), or straight on off the lanes."""
+        here = [(self.actor.x, self.actor.y)] if from_here or len(points) < 2 else []
+        route = [*here, *points]
         (ax, ay), (bx, by) = route[-2], route[-1]
         heading = math.atan2(by - ay, bx - ax)
         onward = lanes.onward(world.road_map, bx, by, heading) if world.road_map else None
@@ -409,7 +413,8 @@ class FollowTrajectory(Arrival):
             points = [(self.actor.x, self.actor.y)]
         self.goal = points[-1]
         self.tolerance = concrete(self.node, "tolerance")
-        self.go_straight(world, points)
+        # An imported trajectory begins at its first waypoint: the actor is put there.
+        self.go_straight(world, points, from_here=not self.node.fromFirstWaypoint)
 
 
 @kind("Overtake")

@@ -1,5 +1,6 @@
-"""A Follow's or Approach's box says how it measures and what limits it states (release 1.5),
-and only that: a Follow with the defaults stays the box it was; the editor offers them all."""
+"""Release 1.5's settings on the boxes and in the editor: a Follow's or Approach's box says how
+it measures and what limits it states, and only that (a Follow with the defaults stays the box it
+was); a trajectory's box says when it begins at its first waypoint."""
 
 from __future__ import annotations
 
@@ -46,3 +47,15 @@ def test_the_editor_offers_the_measure_and_limits_as_fields() -> None:
     for name in ("maxAcceleration", "maxDeceleration", "maxSpeed", "timeGap"):
         assert name in fields
     assert fields["maxAccelerationRate"]["unit"] == "m/s3"
+
+
+def test_a_trajectory_box_says_when_it_begins_at_its_first_waypoint() -> None:
+    b = ScenarioBuilder("labels", level="concrete")
+    ped = b.actor("Pedestrian", "ped", ego=True, start=world(0.0, 0.0), speed=1.5)
+    points = [world(5.0, 0.0), world(5.0, 5.0)]
+    own = b.add("FollowTrajectory", ped, waypoints=points)
+    imported = b.add("FollowTrajectory", ped, waypoints=points, fromFirstWaypoint=True)
+    assert not any("fromFirstWaypoint" in line for line in action_lines(own, Scope()))
+    assert "fromFirstWaypoint: True" in action_lines(imported, Scope())
+    fields = {f["name"]: f for f in node_fields(imported)}
+    assert fields["fromFirstWaypoint"]["type"] == "bool"
