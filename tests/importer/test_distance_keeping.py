@@ -172,3 +172,19 @@ def test_a_distance_keeping_without_limits_writes_the_actors_own(tmp_path: Path)
         for a in etree.parse(str(exported)).iter("LongitudinalDistanceAction")
     ]
     assert dict(limits) == {"maxAcceleration": "3.0", "maxDeceleration": "6.0", "maxSpeed": "69.0"}
+
+
+def test_a_gap_in_another_frame_is_reported_as_not_kept(tmp_path: Path) -> None:
+    text = KEEPING.read_text().replace(
+        'timeGap="1.5" freespace="false"', 'timeGap="1.5" freespace="false" coordinateSystem="lane"'
+    )
+    framed = tmp_path / "framed.xosc"
+    framed.write_text(text)
+    shutil.copy(FILES / "highway.xodr", tmp_path)
+    shutil.copytree(FILES / "catalogs", tmp_path / "catalogs")
+    imported = import_file(framed)
+    kept = [e.message for e in imported.report.section("not represented")]
+    assert [m for m in kept if "lane frame" in m] == [
+        "LeadGetsAhead: the gap measured in the lane frame is measured along the actor's heading"
+    ]
+    assert imported.report.counts()["opaque"] == 0
