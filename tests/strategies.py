@@ -210,6 +210,8 @@ def _parameters(draw: st.DrawFn, kind: str, actor_kind: str) -> dict[str, object
     for spec in catalog.parameters(kind):
         if not spec.required and not draw(st.booleans()):
             continue
+        if spec.unit == "m/s3":
+            continue  # jerks (a Follow's limits) cannot be said before OpenSCENARIO 1.2
         if spec.unit == "m/s":
             chosen[spec.name] = _speed(draw, actor_kind)
         elif spec.unit == "m/s2":

@@ -25,6 +25,9 @@ SpeedShape = EEnum('SpeedShape', literals=['linear', 'step', 'cubic', 'sinusoida
 
 TrajectoryFollowingMode = EEnum('TrajectoryFollowingMode', literals=['position', 'follow'])
 
+LongitudinalDisplacement = EEnum('LongitudinalDisplacement', literals=[
+                                 'trailing', 'leading', 'any'])
+
 CloudState = EEnum('CloudState', literals=['free', 'cloudy', 'overcast', 'rainy'])
 
 PrecipitationType = EEnum('PrecipitationType', literals=['dry', 'rain', 'snow'])
@@ -1601,28 +1604,47 @@ class DriveDistance(LongitudinalManeuver):
             self.speed = speed
 
 
-class Follow(LongitudinalManeuver):
+@abstract
+class DistanceKeeping(LongitudinalManeuver):
+    """What Follow and Approach share (release 1.5): how they measure the gap and the limits they drive within, as OpenSCENARIO's LongitudinalDistanceAction and its DynamicConstraints say them. An unset limit is the actor's own performance, taken down to the language's gap-keeping limits (3 m/s2 speeding up, 6 m/s2 slowing down), what the export wrote before release 1.5; a set one is held to the actor's performance, as players do."""
+    freespace = EAttribute(eType=EBoolean, unique=True, derived=False,
+                           changeable=True, default_value=False)
+    displacement = EAttribute(eType=LongitudinalDisplacement, unique=True, derived=False,
+                              changeable=True, default_value=LongitudinalDisplacement.trailing)
+    maxAcceleration = EReference(ordered=True, unique=True, containment=True, derived=False)
+    maxDeceleration = EReference(ordered=True, unique=True, containment=True, derived=False)
+    maxSpeed = EReference(ordered=True, unique=True, containment=True, derived=False)
+    maxAccelerationRate = EReference(ordered=True, unique=True, containment=True, derived=False)
+    maxDecelerationRate = EReference(ordered=True, unique=True, containment=True, derived=False)
+    timeGap = EReference(ordered=True, unique=True, containment=True, derived=False)
 
-    distance = EReference(ordered=True, unique=True, containment=True, derived=False)
-
-    def __init__(self, *, distance=None, **kwargs):
-
-        super().__init__(**kwargs)
-
-        if distance is not None:
-            self.distance = distance
-
-
-class Approach(LongitudinalManeuver):
-
-    distance = EReference(ordered=True, unique=True, containment=True, derived=False)
-
-    def __init__(self, *, distance=None, **kwargs):
+    def __init__(self, *, maxAcceleration=None, maxDeceleration=None, maxSpeed=None, maxAccelerationRate=None, maxDecelerationRate=None, timeGap=None, freespace=None, displacement=None, **kwargs):
 
         super().__init__(**kwargs)
 
-        if distance is not None:
-            self.distance = distance
+        if freespace is not None:
+            self.freespace = freespace
+
+        if displacement is not None:
+            self.displacement = displacement
+
+        if maxAcceleration is not None:
+            self.maxAcceleration = maxAcceleration
+
+        if maxDeceleration is not None:
+            self.maxDeceleration = maxDeceleration
+
+        if maxSpeed is not None:
+            self.maxSpeed = maxSpeed
+
+        if maxAccelerationRate is not None:
+            self.maxAccelerationRate = maxAccelerationRate
+
+        if maxDecelerationRate is not None:
+            self.maxDecelerationRate = maxDecelerationRate
+
+        if timeGap is not None:
+            self.timeGap = timeGap
 
 
 class LaneChange(LateralManeuver):
@@ -1680,15 +1702,20 @@ class FollowTrajectory(CompositeManeuver):
 
     followingMode = EAttribute(eType=TrajectoryFollowingMode, unique=True, derived=False,
                                changeable=True, default_value=TrajectoryFollowingMode.position)
+    fromFirstWaypoint = EAttribute(eType=EBoolean, unique=True,
+                                   derived=False, changeable=True, default_value=False)
     waypoints = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
     tolerance = EReference(ordered=True, unique=True, containment=True, derived=False)
 
-    def __init__(self, *, waypoints=None, tolerance=None, followingMode=None, **kwargs):
+    def __init__(self, *, waypoints=None, tolerance=None, followingMode=None, fromFirstWaypoint=None, **kwargs):
 
         super().__init__(**kwargs)
 
         if followingMode is not None:
             self.followingMode = followingMode
+
+        if fromFirstWaypoint is not None:
+            self.fromFirstWaypoint = fromFirstWaypoint
 
         if waypoints:
             self.waypoints.extend(waypoints)
@@ -1862,6 +1889,30 @@ class MatchSpeed(LongitudinalManeuver):
 
         if rate is not None:
             self.rate = rate
+
+
+class Follow(DistanceKeeping):
+
+    distance = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, distance=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if distance is not None:
+            self.distance = distance
+
+
+class Approach(DistanceKeeping):
+
+    distance = EReference(ordered=True, unique=True, containment=True, derived=False)
+
+    def __init__(self, *, distance=None, **kwargs):
+
+        super().__init__(**kwargs)
+
+        if distance is not None:
+            self.distance = distance
 
 
 class TurnLeft(RoutedManeuver):

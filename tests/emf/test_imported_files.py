@@ -303,3 +303,35 @@ def test_emf_reads_and_writes_interrupting_maneuvers(emf: Harness, tmp_path: Pat
     assert differences(original.root, from_emf.root) == []
     interrupting = {n.name for n in from_emf.root.nodes if getattr(n, "interrupts", False)}
     assert interrupting == {"SpeedUp", "Brake"}
+
+
+def test_emf_reads_and_writes_a_distance_keeping_with_its_measure_and_limits(
+    emf: Harness, tmp_path: Path
+) -> None:
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    import_to_file(FILES / "distance-keeping.xosc", source / "keeping.xmi")
+    result = emf.run("roundtrip", ECORE, source, out, Path("keeping.xmi"))
+    assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+    original, from_emf = load(source / "keeping.xmi"), load(out / "keeping.xmi")
+    assert differences(original.root, from_emf.root) == []
+    nodes = {n.eClass.name: n for n in from_emf.root.nodes}
+    follow, approach = nodes["Follow"], nodes["Approach"]
+    assert (follow.freespace, follow.maxAccelerationRate.value) == (True, 2.0)
+    assert (approach.displacement.name, approach.timeGap.value) == ("leading", 1.5)
+
+
+def test_emf_reads_and_writes_a_trajectory_that_begins_at_its_first_waypoint(
+    emf: Harness, tmp_path: Path
+) -> None:
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    import_to_file(FILES / "trajectory-follow-mode.xosc", source / "walk.xmi")
+    result = emf.run("roundtrip", ECORE, source, out, Path("walk.xmi"))
+    assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+    original, from_emf = load(source / "walk.xmi"), load(out / "walk.xmi")
+    assert differences(original.root, from_emf.root) == []
+    (walk,) = [n for n in from_emf.root.nodes if n.eClass.name == "FollowTrajectory"]
+    assert walk.fromFirstWaypoint is True

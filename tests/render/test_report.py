@@ -141,3 +141,14 @@ def test_clicking_a_diagnostic_highlights_its_node_in_chromium(tmp_path: Path) -
             context.close()
     assert (tmp_path / "report.png").stat().st_size > 10_000
     shutil.rmtree(profile, ignore_errors=True)
+
+
+def test_a_follows_unset_limits_read_unset_in_the_report(tmp_path: Path) -> None:
+    # Optional parameters with no default (release 1.5's Follow limits) have no number to show.
+    b = ScenarioBuilder("Gap", map="Town03", level="concrete")
+    ego = b.actor("Car", "ego", ego=True, speed=10.0)
+    lead = b.actor("Car", "lead", speed=8.0)
+    b.chain(b.root, b.add("Follow", ego, target=lead, distance=12.0, maxSpeed=30.0), b.end)
+    html = build_report(load(save(b.scenario, tmp_path / "gap.xmi")), [])
+    assert html.count(">unset<") >= 5  # maxAcceleration, maxDeceleration, the jerks, timeGap
+    assert ">30 m/s" in html

@@ -405,6 +405,39 @@ def negative_light_transition(out: Path) -> None:
     save(b.scenario, out, "p007-negative-light-transition.xmi")
 
 
+@case("p007-negative-follow-limit", "SCEML-P007")
+def negative_follow_limit(out: Path) -> None:
+    """A Follow's maxDeceleration written as a negative number (release 1.5): a magnitude."""
+    b, ego = scenario()
+    lead = b.actor("Car", "lead", start=lane(1, -1, 40.0), speed=5.0)
+    follow = b.add("Follow", ego, target=lead, distance=10.0, maxDeceleration=-6.0)
+    b.chain(b.root, follow, b.end)
+    save(b.scenario, out, "p007-negative-follow-limit.xmi")
+
+
+@case("p000-distance-keeping-clean", "")
+def distance_keeping_clean(out: Path) -> None:
+    """Release 1.5's measure and limits of Follow and Approach, set as the corpora set them:
+    between the boxes within stated limits and jerks; a time gap ahead of the target."""
+    b, ego = scenario()
+    lead = b.actor("Car", "lead", start=lane(1, -1, 40.0), speed=5.0)
+    follow = b.add(
+        "Follow",
+        ego,
+        target=lead,
+        distance=10.0,
+        freespace=True,
+        maxAcceleration=15.0,
+        maxDeceleration=15.0,
+        maxSpeed=40.0,
+        maxAccelerationRate=2.0,
+        maxDecelerationRate=5.0,
+    )
+    ahead = b.add("Approach", ego, target=lead, timeGap=1.5, displacement="leading")
+    b.chain(b.root, follow, ahead, b.end)
+    save(b.scenario, out, "p000-distance-keeping-clean.xmi")
+
+
 @case("p007-negative-stand-still", "SCEML-P007")
 def negative_stand_still(out: Path) -> None:
     b, ego = scenario()

@@ -197,6 +197,22 @@ def test_settings_a_version_cannot_say() -> None:
     }
 
 
+def test_a_follows_jerks_and_side_need_the_versions_that_say_them() -> None:
+    # DynamicConstraints' jerks came with OpenSCENARIO 1.2, the displacement with 1.1.
+    b, ego = scenario()
+    lead = b.actor("Car", "lead", start=lane(1, -1, 40.0))
+    follow = b.add("Follow", ego, target=lead, maxDecelerationRate=4.0)
+    b.chain(b.root, follow, b.end)
+    assert codes(b.scenario, osc_version="1.1") == {"SCEML-E008"}
+    assert codes(b.scenario, osc_version="1.2") == set()
+    follow.maxDecelerationRate = None
+    follow.displacement = scm.LongitudinalDisplacement.leading
+    assert codes(b.scenario, osc_version="1.0") == {"SCEML-E008"}
+    assert codes(b.scenario, osc_version="1.1") == set()
+    follow.displacement = scm.LongitudinalDisplacement.trailing
+    assert codes(b.scenario, osc_version="1.0") == set()
+
+
 def test_library_internals_are_reported_in_the_library_file(tmp_path: Path) -> None:
     library = LibraryBuilder("L")
     module = library.module("Loose")

@@ -55,6 +55,7 @@ VIEWS: dict[str, tuple[str, ...]] = {
         "Stop",
         "KeepVelocity",
         "DriveDistance",
+        "DistanceKeeping",
         "Follow",
         "Approach",
         "MatchSpeed",

@@ -19,7 +19,6 @@ from ..model.graph import OwnFlows, reachable
 from ..xosc import meaning
 from ..xosc.support import MAPPED_KINDS, REPEATABLE_KINDS
 from .context import Action, Context, Event
-from .entities import own_performance
 from .speeds import speed_dynamics
 from .triggers import Condition, Finish, Group, delayed, finished, with_extra
 from .values import number
@@ -164,77 +163,6 @@ def _drive_time(ctx: Context, node: scm.DriveDistance) -> str:
     return f"${{{distance} / {speed}}}"
 
 
-@planner("Follow", "Approach")
-def plan_distance_keeping(ctx: Context, node: scm.ActionNode, groups: list[Group]) -> Plan:
-    """LongitudinalDistanceAction to the target, within the gap-keeping limits of
-    `xosc.meaning`; Follow keeps it (continuous) and finishes when the gap is first reached,
-    Approach ends when the gap is held (the player's own end of a non-continuous action)."""
-    name = ctx.event_names[node]
-    follow = isinstance(node, scm.Follow)
-    limits = meaning.gap_limits(*own_performance(node.referenceActor))
-    data = {
-        "target": ctx.entity(node.targetActor),
-        "distance": ctx.values.text(node, "distance"),
-        "continuous": "true" if follow else "false",
-        # Without limits esmini does not drive to the gap: it moves the actor there in one step.
-        "limits": {
-            "maxAcceleration": number(limits.acceleration),
-            "maxDeceleration": number(limits.deceleration),
-            "maxSpeed": number(limits.max_speed),
-        },
-    }
-    event = Event(
-        name,
-        ctx.entity(node.referenceActor),
-        [Action(ctx.action_name(name), "long_distance", data)],
-        groups,
-    )
-    # A controller closes in on the gap and holds it: "less than the gap" may never hold, so
-    # the gap counts as reached within a slack (Follow: from above; Approach: either side).
-    gap = ctx.values.raw(node, "distance")
-    if follow:
-        bounds = [("lessThan", gap + meaning.follow_slack(gap))]
-    else:
-        slack = meaning.APPROACH_REACHED
-        bounds = [("lessThan", gap + slack), ("greaterThan", max(gap - slack, 0.0))]
-    checks = [
-        Condition(
-            f"{name}_gap_reached",
-            "relative_distance",
-            {
-                "entity": ctx.entity(node.referenceActor),
-                "target": ctx.entity(node.targetActor),
-                "value": number(value),
-                "rule": rule,
-                "type": "longitudinal",
-            },
-        )
-        for rule, value in bounds
-    ]
-    done = _finish_marker(ctx, node, "gap_reached", groups, checks[0])
-    done = replace(done, groups=[[*group, *checks[1:]] for group in done.groups])
-    if _may_be_interrupted(node):
-        # Interrupted, the node has finished (Maneuver.interrupts): the player ends its action
-        # and the event completes, with the gap perhaps never reached. Only then does a
-        # Follow's event complete; an Approach's completes after its gap is held anyway.
-        ended = finished(name, done.name)
-        done = replace(done, groups=[*done.groups, *([*group, ended] for group in groups)])
-    return [event, done], done.name
-
-
-def _may_be_interrupted(node: scm.Maneuver) -> bool:
-    """Whether another maneuver of the node's actor that takes a part of it interrupts."""
-    parts = set(meaning.controls(node.eClass.name))
-    return any(
-        isinstance(other, scm.Maneuver)
-        and other is not node
-        and other.interrupts
-        and other.referenceActor is node.referenceActor
-        and parts & set(meaning.controls(other.eClass.name))
-        for other in node.eContainer().nodes
-    )
-
-
 @planner("LaneChange", one_event=True)
 def plan_lane_change(ctx: Context, node: scm.LaneChange, groups: list[Group]) -> Plan:
     """LaneChangeAction `lanes` lanes to the left (+) or right (-) of the actor's own lane or of
@@ -328,11 +256,13 @@ def plan_trajectory(ctx: Context, node: scm.ActionNode, groups: list[Group]) -> 
     entity = ctx.entity(node.referenceActor)
     points = [node.destination] if isinstance(node, scm.Cross) else list(node.waypoints)
     here = {"kind": "relative_object", "entity": entity, "dx": "0.0", "dy": "0.0"}
+    # An imported trajectory begins at its first waypoint, as it did in the original.
+    start = [] if getattr(node, "fromFirstWaypoint", False) and len(points) > 1 else [here]
     # No vertex carries a heading: the actor then faces along its path. With a heading on any
     # vertex, esmini keeps the actor's own heading at the start, and a path that starts across
     # it (a pedestrian facing along the kerb, crossing) is taken as driven backwards and ends in
     # the step it starts (docs/openscenario-mapping.md, "Trajectories").
-    vertices = [here, *({**ctx.position(point), "h": None} for point in points)]
+    vertices = [*start, *({**ctx.position(point), "h": None} for point in points)]
     # A Cross has no following mode: players put the actor on its straight path.
     mode = "position" if isinstance(node, scm.Cross) else node.followingMode.name
     data = {"trajectory": ctx.names.claim(f"{name}_path"), "vertices": vertices, "mode": mode}
@@ -505,14 +435,16 @@ def plan_ttc(ctx: Context, node: scm.TimeToCollision, groups: list[Group]) -> Pl
     return marker_plan(ctx, node, groups, ctx.entity(node.referenceActor), check)
 
 
-#: What match_speed.py uses to add a finish marker.
+#: What match_speed.py and distance_keeping.py use to add a finish marker.
 finish_marker = _finish_marker
 
 # Registers the planners of sceml import's OpaqueAction, the controller changes, the global
-# kinds, LaneOffset, LightState, MatchSpeed, StandStill and AccelerationCondition.
+# kinds, Follow and Approach, LaneOffset, LightState, MatchSpeed, StandStill and
+# AccelerationCondition.
 from . import (  # noqa: E402, F401
     appearance,
     controller_actions,
+    distance_keeping,
     global_kinds,
     lane_offset,
     match_speed,

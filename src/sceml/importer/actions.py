@@ -1,9 +1,9 @@
 """One OpenSCENARIO action of one actor to one SceML maneuver node, or None (kept opaque).
 
-Speed to Accelerate/Decelerate/Stop, longitudinal distance to Follow/Approach, a lane change by
+Speed to Accelerate/Decelerate/Stop, a lane change by
 one lane to LaneChange, routing to TurnLeft/TurnRight/Cross (`geometry.py`), a polyline
 trajectory to FollowTrajectory (Cross for a SceML export's two-point crossing); controller
-actions in `controllers.py`.
+actions in `controllers.py`, longitudinal distance to Follow/Approach in `distance_keeping.py`.
 """
 
 from __future__ import annotations
@@ -233,19 +233,6 @@ def _within_performance(
     return limit
 
 
-@_maps("PrivateAction/LongitudinalAction/LongitudinalDistanceAction")
-def _distance(
-    build: Build, request: Request, keep: etree._Element, motion: Motion
-) -> scm.ActionNode | str:
-    if keep.get("distance") is None:
-        return "a time gap has no SceML kind (Follow and Approach keep a distance)"
-    target = build.actor(keep.get("entityRef"), keep)
-    kind = "Follow" if keep.get("continuous") == "true" else "Approach"
-    node = _add(build, request, kind, distance=number(keep, "distance"))
-    node.targetActor = target
-    return node
-
-
 #: OpenSCENARIO's dynamicsShape values, SceML's LaneChangeShape literals of the same names.
 SHAPES = ("sinusoidal", "linear", "cubic", "step")
 
@@ -377,7 +364,11 @@ def _trajectory(
             "FollowTrajectory is followed at the actor's speed"
         )
     vertices = polyline.findall("Vertex")
-    if vertices and _is_self(vertices[0], request.actor):
+    # SceML's exports start at the actor itself; any other trajectory begins at its first
+    # vertex, where players put the actor when the action starts (`pedestrian_traj_synch`: a
+    # path from the actor drove 0.5 m apart, its start 0.5 m behind the actor by then).
+    from_first = not (vertices and _is_self(vertices[0], request.actor))
+    if not from_first:
         vertices = vertices[1:]
     points = [place(build, vertex, initial=False) for vertex in vertices]
     if not points or any(point is None for point in points):
@@ -393,7 +384,7 @@ def _trajectory(
         node = _add(build, request, "Cross")
         node.destination = points[0]
         return node
-    node = _add(build, request, "FollowTrajectory")
+    node = _add(build, request, "FollowTrajectory", fromFirstWaypoint=from_first or None)
     node.waypoints.extend(points)
     if steered:
         # Players steer towards the path then (esmini: a little behind it on bends).
@@ -451,4 +442,4 @@ maps = _maps
 add_node = _add
 
 # Register their actions' mappers.
-from . import controllers, global_kinds, lights  # noqa: E402, F401
+from . import controllers, distance_keeping, global_kinds, lights  # noqa: E402, F401

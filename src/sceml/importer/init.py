@@ -240,6 +240,7 @@ def _starts_on_trajectory(
         return True
     if isinstance(made, scm.FollowTrajectory) and len(made.waypoints) > 1:
         made.waypoints.remove(made.waypoints[0])  # the start itself
+        made.fromFirstWaypoint = False  # it begins where the actor starts: that point
     build.flow(build.root, made)
     return True
 

@@ -58,6 +58,7 @@ def start_on_first_trajectory(build: Build) -> None:
             continue
         first = follow.waypoints[0]
         follow.waypoints.remove(first)
+        follow.fromFirstWaypoint = False  # it begins where the actor starts: that point
         actor.startPosition = first
         build.report.add(
             "mapped",

@@ -134,6 +134,10 @@ def _gap_reached(node: EObject, at: Moment) -> str | None:
     trace, lead = at.trace(node.referenceActor), at.trace(node.targetActor)
     if trace is None or lead is None:
         return None
+    if node.freespace or node.timeGap is not None or node.displacement.name == "leading":
+        # The traces hold reference points only, not the boxes (nor, for a time gap, the
+        # target's speed at the finish as the marker read it): that goal is not checked here.
+        return None
     gap, distance = _gap(trace, lead, at.finish), concrete(node, "distance")
     slack = at.reach(trace)
     if node.eClass.name == "Follow":

@@ -202,8 +202,9 @@ _QUIET_DEFAULTS: dict[str, object] = {
 }
 #: Attributes shown only when they differ from their feature's own default, which differs by
 #: kind: a LaneChange is sinusoidal unless it says otherwise, a speed change linear (release
-#: 1.4), a trajectory followed by position.
-_QUIET_AT_OWN_DEFAULT = ("shape", "followingMode")
+#: 1.4), a trajectory followed by position, a gap kept behind the target, a trajectory from
+#: where the actor is (release 1.5).
+_QUIET_AT_OWN_DEFAULT = ("shape", "followingMode", "displacement", "fromFirstWaypoint")
 
 
 def _quiet(node: EObject, name: str, held: object) -> bool:
@@ -261,6 +262,8 @@ def parameter_items(node: EObject, scope: Scope) -> Iterator[tuple[str, str]]:
             elif held is not None and name != "description":
                 yield name, str(held)
         elif isinstance(feature, EReference) and feature.containment:
+            if name == "distance" and getattr(node, "timeGap", None) is not None:
+                continue  # a time gap is kept instead (Follow, Approach)
             if units.get(name) == "m/s" and _backwards(_resolve(held, scope)):
                 yield name, _reverse_text(node, held, scope)
                 continue

@@ -249,6 +249,10 @@ def _parameter_rows(node: scm.ActionNode, scope: labels.Scope) -> Iterator[Param
             yield ParameterRow(name, "—", labels.unit_text(spec.unit), "missing")
         elif spec.per_actor_default:
             yield ParameterRow(name, "actor's size", labels.unit_text(spec.unit), "default")
+        elif spec.default is None:
+            # An optional parameter whose absence has its own meaning (a Follow's limits: the
+            # actor's own; MatchSpeed's rate: a step): nothing to show as a number.
+            yield ParameterRow(name, "unset", labels.unit_text(spec.unit), "default")
         else:
             unit = labels.unit_text(spec.unit)
             yield ParameterRow(name, f"{spec.default:g} {unit}".strip(), unit, "default")

@@ -12,7 +12,14 @@ from dataclasses import dataclass
 from typing import Protocol
 
 from ..model import speed_shapes
-from ..xosc.meaning import GapLimits, gap_acceleration, standing_after
+from ..xosc.meaning import (
+    GapLimits,
+    free_gap,
+    gap_acceleration,
+    jerk_limited,
+    requested_gap,
+    standing_after,
+)
 from .paths import Path
 
 
@@ -121,27 +128,49 @@ class ShapedRamp:
 
 
 @dataclass(frozen=True)
-class GapKeeping:
-    """Drive towards a gap of `distance` m (centre to centre, along the actor's heading) to
-    the `target` actor, by the players' law (`xosc.meaning.gap_acceleration`)."""
+class GapSpec:
+    """What gap a distance keeping drives to: `value` m (or s at the target's speed, with
+    `time_gap`), between the boxes with `freespace`, ahead of the target with `leading`."""
 
-    target: str
-    distance: float
-    limits: GapLimits
-    #: Stop driving (hold the speed) once the gap is within this much; None: keep it (Follow).
-    hold_within: float | None = None
+    value: float
+    time_gap: bool = False
+    freespace: bool = False
+    leading: bool = False
+
+    def wanted(self, lead: Actor) -> float:
+        """The signed gap wanted now (positive: the target ahead)."""
+        return requested_gap(self.value, self.time_gap, lead.speed, self.leading)
+
+    def measured(self, actor: Actor, lead: Actor) -> float:
+        """The signed gap now, measured as the action measures it."""
+        if not self.freespace:
+            return actor.gap_to(lead)
+        return free_gap(actor.box_gap_ahead(lead), actor.length, lead.length)
+
+
+class GapKeeping:
+    """Drive towards the gap `spec` says to the `target` actor, by the players' law
+    (`xosc.meaning.gap_acceleration`), within `limits` and their jerks."""
+
+    def __init__(
+        self, target: str, spec: GapSpec, limits: GapLimits, hold_within: float | None = None
+    ) -> None:
+        self.target, self.spec, self.limits = target, spec, limits
+        #: Stop driving (hold the speed) once the gap is within this much; None: keep it.
+        self.hold_within = hold_within
+        #: The acceleration of the last step, which the jerk limits change from.
+        self.acceleration = 0.0
 
     def next_speed(self, actor: Actor, others: Mapping[str, Actor], dt: float) -> float:
         lead = others[self.target]
-        if self.hold_within is not None and abs(actor.gap_to(lead) - self.distance) < (
-            self.hold_within
-        ):
+        gap, wanted = self.spec.measured(actor, lead), self.spec.wanted(lead)
+        if self.hold_within is not None and abs(gap - wanted) < self.hold_within:
             actor.control = Hold()
             return actor.speed
-        acceleration = gap_acceleration(
-            actor.gap_to(lead), self.distance, actor.speed - lead.speed, self.limits
-        )
-        return min(actor.speed + acceleration * dt, self.limits.max_speed)
+        asked = gap_acceleration(gap, wanted, actor.speed - lead.speed, self.limits)
+        self.acceleration = jerk_limited(asked, self.acceleration, self.limits, dt)
+        speed = actor.speed + self.acceleration * dt
+        return max(-self.limits.max_speed, min(speed, self.limits.max_speed))
 
 
 class Actor:
@@ -242,3 +271,10 @@ class Actor:
         return (other.x - self.x) * math.cos(self.heading) + (other.y - self.y) * math.sin(
             self.heading
         )
+
+    def box_gap_ahead(self, other: Actor) -> float:
+        """How far `other`'s box centre is ahead of this actor's, along this actor's heading
+        (the boxes' centres lie `box_ahead` ahead of the reference points)."""
+        ahead = self.gap_to(other) - self.box_ahead
+        turn = other.heading - self.heading
+        return ahead + other.box_ahead * math.cos(turn)

@@ -25,7 +25,7 @@ from ..model import speed_shapes
 from ..model.params import concrete
 from ..xosc import meaning
 from . import lanes
-from .actors import Actor, GapKeeping, Hold, Ramp, ShapedRamp, Shift, SpeedMatching
+from .actors import Actor, GapKeeping, GapSpec, Hold, Ramp, ShapedRamp, Shift, SpeedMatching
 from .paths import LaneSpot, Path, joined, straight
 from .world import World
 
@@ -136,28 +136,59 @@ class DriveDistance(Behaviour):
 
 @kind("Follow", "Approach")
 class GapManeuver(Behaviour):
-    """Close up to `distance` m behind the target; Follow keeps the gap afterwards, Approach
-    holds its speed once the gap is held (`xosc.meaning`)."""
+    """Close up to the gap behind (or ahead of) the target; Follow keeps the gap afterwards,
+    Approach holds its speed once the gap is held (`xosc.meaning`)."""
 
     def start(self, world: World) -> None:
-        self.lead = world.actor(self.node.targetActor, self.name)
-        self.distance = concrete(self.node, "distance")
-        # The limits the export writes to the LongitudinalDistanceAction: the actor's own.
-        own = self.actor.own_limits
-        kind = performance_of(self.actor.kind)
-        stated = (own.max_speed, own.max_acceleration, own.max_deceleration)
-        limits = meaning.gap_limits(
-            *(mine if mine is not None else d for mine, d in zip(stated, kind, strict=True))
+        node = self.node
+        self.lead = world.actor(node.targetActor, self.name)
+        timed = node.timeGap is not None
+        self.spec = GapSpec(
+            concrete(node, "timeGap" if timed else "distance"),
+            time_gap=timed,
+            freespace=bool(node.freespace),
+            leading=node.displacement.name == "leading",
         )
-        self.follow = isinstance(self.node, scm.Follow)
+        self.follow = isinstance(node, scm.Follow)
         hold = None if self.follow else meaning.APPROACH_HOLD
-        self.actor.control = GapKeeping(self.lead.name, self.distance, limits, hold)
+        limits = _gap_limits(node, self.actor)
+        self.actor.control = GapKeeping(self.lead.name, self.spec, limits, hold)
 
     def done(self, world: World) -> bool:
-        gap = self.actor.gap_to(self.lead)
+        # The export's finish marker: the gap's size, or the headway for a time gap.
+        gap = abs(self.spec.measured(self.actor, self.lead))
+        if self.spec.time_gap:
+            gap = math.inf if self.actor.speed <= 0 else gap / self.actor.speed
+            if self.follow:
+                return gap < self.spec.value + meaning.follow_time_slack(self.spec.value)
+            return abs(gap - self.spec.value) < meaning.APPROACH_REACHED_TIME
         if self.follow:
-            return meaning.follow_reached(gap, self.distance)
-        return meaning.approach_reached(gap, self.distance)
+            return meaning.follow_reached(gap, self.spec.value)
+        return meaning.approach_reached(gap, self.spec.value)
+
+
+def _gap_limits(node: EObject, actor: Actor) -> meaning.GapLimits:
+    """The limits the export writes to the LongitudinalDistanceAction (the node's, else the
+    actor's within the gap-keeping limits), held to the actor's performance as players hold
+    DynamicConstraints to the Vehicle's."""
+    own = actor.own_limits
+    stated = (own.max_speed, own.max_acceleration, own.max_deceleration)
+    performance = tuple(
+        mine if mine is not None else d
+        for mine, d in zip(stated, performance_of(actor.kind), strict=True)
+    )
+    fallback = meaning.gap_limits(*performance)
+
+    def limit(feature: str, default: float, ceiling: float = math.inf) -> float:
+        return default if node.eGet(feature) is None else min(concrete(node, feature), ceiling)
+
+    return meaning.GapLimits(
+        limit("maxAcceleration", fallback.acceleration, performance[1]),
+        limit("maxDeceleration", fallback.deceleration, performance[2]),
+        limit("maxSpeed", fallback.max_speed, performance[0]),
+        limit("maxAccelerationRate", math.inf),
+        limit("maxDecelerationRate", math.inf),
+    )
 
 
 # --- lateral --------------------------------------------------------------------------------
@@ -319,10 +350,14 @@ class Arrival(Behaviour):
     def done(self, world: World) -> bool:
         return self.actor.distance_to(*self.goal) <= self.tolerance + 1e-9
 
-    def go_straight(self, world: World, points: list[tuple[float, float]]) -> None:
-        """Head straight through `points` from where the actor is; past the last, on along the
-        lane there (as players go on after a trajectory), or straight on off the lanes."""
-        route = [(self.actor.x, self.actor.y), *points]
+    def go_straight(
+        self, world: World, points: list[tuple[float, float]], from_here: bool = True
+    ) -> None:
+        """Head straight through `points` from where the actor is (or, not `from_here`, from
+        the first point, where the actor is put); past the last, on along the lane there (as
+        players go on after a trajectory), or straight on off the lanes."""
+        here = [(self.actor.x, self.actor.y)] if from_here or len(points) < 2 else []
+        route = [*here, *points]
         (ax, ay), (bx, by) = route[-2], route[-1]
         heading = math.atan2(by - ay, bx - ax)
         onward = lanes.onward(world.road_map, bx, by, heading) if world.road_map else None
@@ -378,7 +413,8 @@ class FollowTrajectory(Arrival):
             points = [(self.actor.x, self.actor.y)]
         self.goal = points[-1]
         self.tolerance = concrete(self.node, "tolerance")
-        self.go_straight(world, points)
+        # An imported trajectory begins at its first waypoint: the actor is put there.
+        self.go_straight(world, points, from_here=not self.node.fromFirstWaypoint)
 
 
 @kind("Overtake")

@@ -148,13 +148,16 @@ def kinds_exportable(scenario: scm.Scenario, context: Context) -> Iterator[Findi
         "ActivateController",
         "AssignController",
         "AccelerationCondition",
+        "Follow",
+        "Approach",
         "Actor",
     ),
     "with a target OpenSCENARIO version or export profile given, every node's and actor's "
     "settings can be said in it (1.0 has no coordinateSystem, no relativeDistanceType but "
     "a RelativeDistanceCondition's, no greaterOrEqual or lessOrEqual rule, no "
-    "assignment that activates; before 1.2 no lighting or animation domain, no controllerType, "
-    "no acceleration direction; before 1.3 no trailer)",
+    "assignment that activates, no gap kept but behind the target; before 1.2 no lighting or "
+    "animation domain, no controllerType, no acceleration direction, no jerk limits of a Follow "
+    "or Approach; before 1.3 no trailer)",
     # The node's own measure or controller settings, or the actor's controller, against the
     # target version.
     reads=Reads(SELF),

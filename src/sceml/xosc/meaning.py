@@ -155,11 +155,13 @@ APPROACH_REACHED = 0.5
 
 @dataclass(frozen=True)
 class GapLimits:
-    """The limits gap keeping drives within (m/s2, m/s2, m/s)."""
+    """The limits gap keeping drives within (m/s2, m/s2, m/s; the jerks m/s3, infinite: none)."""
 
     acceleration: float
     deceleration: float
     max_speed: float
+    acceleration_rate: float = math.inf
+    deceleration_rate: float = math.inf
 
 
 def gap_limits(max_speed: float, max_acceleration: float, max_deceleration: float) -> GapLimits:
@@ -184,10 +186,47 @@ def gap_acceleration(
     return min(max(wanted, -limits.deceleration), limits.acceleration)
 
 
+def jerk_limited(wanted: float, before: float, limits: GapLimits, dt: float) -> float:
+    """The acceleration gap keeping applies, `wanted` changed from `before` by at most the
+    jerk limits over a step, as esmini's LongitudinalDistanceAction does: growing braking by
+    the deceleration rate, growing acceleration by the acceleration rate (easing off is free)."""
+    if wanted < 0.0 and wanted < before:
+        return max(before - limits.deceleration_rate * dt, wanted)
+    if wanted >= 0.0 and wanted > before:
+        return min(before + limits.acceleration_rate * dt, wanted)
+    return wanted
+
+
+def requested_gap(distance: float, time_gap: bool, target_speed: float, leading: bool) -> float:
+    """The signed gap a distance keeping drives to (positive: the target ahead): `distance` m,
+    or `distance` s at the target's speed, on the side the displacement names."""
+    gap = abs(target_speed) * distance if time_gap else distance
+    return -gap if leading else gap
+
+
+def free_gap(ahead: float, length: float, target_length: float) -> float:
+    """The signed gap between two boxes along the actor's heading (`ahead`: centre to centre,
+    positive with the target ahead), 0 while they overlap, as esmini's freespace measures it."""
+    reach = (length + target_length) / 2.0
+    if ahead >= 0.0:
+        return max(0.0, ahead - reach)
+    return min(0.0, ahead + reach)
+
+
 def follow_slack(distance: float) -> float:
     """Follow has reached its gap once the gap is below distance + this slack: a controller
     closes in from above and then holds the gap, so "closer than the distance" may never hold."""
     return max(1.0, distance / 10.0)
+
+
+def follow_time_slack(time_gap: float) -> float:
+    """Follow of a time gap has reached it once the headway is below time_gap + this slack,
+    for the same reason as `follow_slack`."""
+    return max(0.1, time_gap / 10.0)
+
+
+#: Approach of a time gap has finished once the headway is within this much of it (s).
+APPROACH_REACHED_TIME = 0.1
 
 
 def follow_reached(gap: float, distance: float) -> bool:

@@ -163,6 +163,7 @@ def unsupported_setting(node: object, version: str) -> str | None:
         _trailer_setting(node, _minor(version))
         or _controller_setting(node, _minor(version))
         or _direction_setting(node, version)
+        or _distance_setting(node, _minor(version))
     )
     if reason is not None or version != "1.0":
         return reason
@@ -202,6 +203,27 @@ def _direction_setting(node: object, version: str) -> str | None:
     )
     if direction is not None and direction.name != "total" and _minor(version) < 2:
         return f"an acceleration's direction ({direction.name}) needs OpenSCENARIO 1.2 or later"
+    return None
+
+
+#: DynamicConstraints' jerks, which OpenSCENARIO 1.2 added.
+_JERKS = ("maxAccelerationRate", "maxDecelerationRate")
+
+
+def _distance_setting(node: object, minor: int) -> str | None:
+    """What of a Follow's or Approach's gap a version cannot say: 1.0 has no displacement
+    (it keeps the actor behind a positive distance), 1.1 no jerk limits."""
+    if _kind_name(node) not in ("Follow", "Approach"):
+        return None
+    side = getattr(node, "displacement", None)
+    if minor < 1 and side is not None and side.name != "trailing":
+        return (
+            f"a gap kept on the {side.name} side needs OpenSCENARIO 1.1 or later "
+            "(1.0 has no displacement)"
+        )
+    for jerk in _JERKS:
+        if minor < 2 and getattr(node, jerk, None) is not None:
+            return f"{jerk} needs OpenSCENARIO 1.2 or later (DynamicConstraints has no jerk before)"
     return None
 
 
