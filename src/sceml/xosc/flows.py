@@ -23,10 +23,12 @@ is evaluated again at every step, so it may only stand where "holds now" and "ha
   predecessor ends the run (or it has only this one); into each of them when there are
   several (an imported event with several actions): each starts at the first instant it
   holds; likewise through a TimeElapsed whose successors are such (an original's condition
-  with a delay: the wait is the condition's delay in their triggers). A maneuver with a finish marker (`__arrived`,
-  `__gap_reached`, ...) ANDs its activation with its goal, another condition ANDs it with its
-  own test, a join combines it with other branches: there "held once" and "holds now" differ,
-  so the condition keeps its marker event.
+  with a delay: the wait is the condition's delay in their triggers). An arrival's finish
+  marker (`__arrived`) waits for the arrival's event to have started, so it too uses the
+  activation once. Another maneuver with a finish marker (`__gap_reached`, `__driven`, ...)
+  ANDs its activation with its goal, another condition ANDs it with its own test, a join
+  combines it with other branches: there "held once" and "holds now" differ, so the condition
+  keeps its marker event.
 """
 
 from __future__ import annotations
@@ -41,10 +43,14 @@ from .support import REPEATABLE_KINDS
 
 #: Kinds whose export uses the activation exactly once, unchanged, as one event's StartTrigger:
 #: those written as one event (`support.REPEATABLE_KINDS`: speed changes, lane changes and
-#: offsets, controller changes, parameter, variable and traffic signal actions) and Overtake,
-#: whose first event starts on it. (Before, a traffic signal state after a condition kept the
-#: condition's marker event: `traffic_lights`' signals changed a step late, every one.)
-_USES_ACTIVATION_ONCE = REPEATABLE_KINDS | {"Overtake"}
+#: offsets, controller changes, parameter, variable and traffic signal actions), Overtake,
+#: whose first event starts on it, and the arrivals, whose finish marker waits for their event
+#: to have started, not for the activation again (`export.actions._arrival_marker`). (Before,
+#: a traffic signal state after a condition kept the condition's marker event:
+#: `traffic_lights`' signals changed a step late, every one; its walkers, a FollowTrajectory
+#: each, two steps late.)
+_ARRIVAL_KINDS = frozenset({"TurnLeft", "TurnRight", "Cross", "FollowTrajectory"})
+_USES_ACTIVATION_ONCE = REPEATABLE_KINDS | {"Overtake"} | _ARRIVAL_KINDS
 #: Kinds that only pass activation on (a marker with the activation as its trigger).
 _PASSING = (scm.JoinAllFinished, scm.JoinOneFinished, scm.InPort, scm.OutPort)
 
