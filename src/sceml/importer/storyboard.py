@@ -169,6 +169,7 @@ class Storyboard:
             actor,
             "KeepVelocity" if kind == "KeepVelocity" and marker else "TimeElapsed",
             clock_start(self.acts[info.act].find("StartTrigger")),
+            info.name if int(info.element.get("maximumExecutionCount", "1")) > 1 else None,
         )
         start = info.element.find("StartTrigger")
         if marker:
