@@ -56,10 +56,7 @@ def has_started(event: str, by: str, profile: str) -> list[Group]:
     What a node's finish marker waits for instead of repeating the node's activation: a
     condition before the node may then stand in the node's StartTrigger as it holds now
     (`xosc.flows`), and need not hold again when the node arrives."""
-    if profile == "carla":
-        states = ["startTransition"]
-    else:
-        states = ["runningState", COMPLETE]
+    states = ["startTransition"] if profile == "carla" else ["runningState", COMPLETE]
     return [
         [
             Condition(
