@@ -272,3 +272,35 @@ def test_a_condition_before_an_arrival_costs_no_step() -> None:
         for c in carla.iterfind(".//Event[@name='Walk__arrived']//StoryboardElementStateCondition")
     }
     assert states == {("Walk", "startTransition")}
+
+
+def test_conditions_of_a_join_one_go_into_the_trigger_as_groups() -> None:
+    # root -> Fast (speed above 12) and root -> Near (the lead within 20 m), both -> AnyOf
+    # (join-one) -> Brake -> End: an original's trigger of two ConditionGroups. Brake starts
+    # at the first instant either holds, so each goes into Brake's trigger as a group of its
+    # own, and neither costs a step (they were marker events, Brake a step after them). A
+    # successor that runs twice would need the join-one's finish to repeat, which players do
+    # not see in a trigger: there the conditions keep their markers.
+    b = ScenarioBuilder("anyof", map="map.xodr", level="concrete", max_duration=30.0)
+    ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0, h=0.0), speed=10.0, **SIZE)
+    lead = b.actor("Car", "lead", start=world(40.0, 0.0, h=0.0), speed=8.0, **SIZE)
+    fast = b.add("SpeedCondition", ego, speed=12.0, rule="greaterThan")
+    near = b.add("InVehicleRadius", ego, target=lead, radius=20.0)
+    brake = b.add("Decelerate", ego, targetSpeed=6.0, rate=3.0)
+    fast.name, near.name, brake.name = "Fast", "Near", "Brake"
+    b.chain(b.root, fast)
+    b.chain(b.root, near)
+    any_of = b.join_one(fast, near)
+    any_of.name = "AnyOf"
+    b.chain(any_of, brake, b.end)
+    inline = inlined(b.scenario.nodes)
+    assert {str(node.name) for node in inline} == {"Fast", "Near", "AnyOf"}
+    assert (flow_steps(fast, inline), flow_steps(near, inline)) == (0, 0)
+    document = build_xosc(b.scenario, version="1.3").tree.getroot()
+    assert document.find(".//Event[@name='Fast']") is None
+    assert trigger(document, ".//Event[@name='Brake']/StartTrigger") == [
+        [("RelativeDistanceCondition", "20.0", "0.0"), ("SimulationTimeCondition", "0.0", "0.0")],
+        [("SimulationTimeCondition", "0.0", "0.0"), ("SpeedCondition", "12.0", "0.0")],
+    ]
+    brake.maxRuns = 2
+    assert {str(node.name) for node in inlined(b.scenario.nodes)} == {"AnyOf"}

@@ -23,7 +23,9 @@ is evaluated again at every step, so it may only stand where "holds now" and "ha
   predecessor ends the run (or it has only this one); into each of them when there are
   several (an imported event with several actions): each starts at the first instant it
   holds; likewise through a TimeElapsed whose successors are such (an original's condition
-  with a delay: the wait is the condition's delay in their triggers). An arrival's finish
+  with a delay: the wait is the condition's delay in their triggers), and through a join-one
+  whose successors are such and run once (an original's trigger of several ConditionGroups:
+  one group each). An arrival's finish
   marker (`__arrived`) waits for the arrival's event to have started, so it too uses the
   activation once. Another maneuver with a finish marker (`__gap_reached`, `__driven`, ...)
   ANDs its activation with its goal, another condition ANDs it with its own test, a join
@@ -101,9 +103,23 @@ def _holds_now_for(node: scm.GraphElement, successor: scm.GraphElement) -> bool:
         return (
             len(graph.predecessors(successor)) == 1
             and bool(after)
-            and all(_starts_on(s) for s in after)
+            and all(_starts_on_first(s) for s in after)
         )
-    return _starts_on(successor)
+    return _starts_on_first(successor)
+
+
+def _starts_on_first(successor: scm.GraphElement) -> bool:
+    """`_starts_on`, or a join-one whose successors each start once on it (`_starts_on`, one
+    run): a join-one finishes with its first input, so each input may stand as it holds now
+    in a ConditionGroup of its own (OR) of their triggers. An original's event with several
+    ConditionGroups of conditions started a step late on their marker events."""
+    if not isinstance(successor, scm.JoinOneFinished):
+        return _starts_on(successor)
+    after = graph.successors(successor)
+    return bool(after) and all(
+        _starts_on(s) and int(getattr(s, "maxRuns", 1)) == 1 and not isinstance(s, scm.EndNode)
+        for s in after
+    )
 
 
 def _absorbed_by_end(node: scm.GraphElement, successor: scm.GraphElement) -> bool:
