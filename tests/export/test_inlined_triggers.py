@@ -213,3 +213,94 @@ def test_a_condition_keeps_its_marker_before_an_end_that_waits_for_all() -> None
     assert "Near" not in {str(node.name) for node in inlined(b.scenario.nodes)}
     document = build_xosc(b.scenario, version="1.3").tree.getroot()
     assert document.find(".//Event[@name='Near']") is not None
+
+
+def test_a_condition_before_an_arrival_costs_no_step() -> None:
+    # root -> Near (the ego within 20 m of the lead) -> Pause (0.5 s) -> Walk (a
+    # FollowTrajectory of the lead) -> End. Walk's arrival marker waits for Walk's own event
+    # to have started (running or complete), not for its activation again, so Near and the
+    # pause go into Walk's trigger: Walk starts 0.5 s after Near first holds, no step later
+    # (`traffic_lights`' walkers were two steps late on their marker). A Follow's marker
+    # still ANDs its activation with its gap: the condition before it keeps its marker event,
+    # and its successor one step.
+    b = ScenarioBuilder("arrival", map="map.xodr", level="concrete", max_duration=30.0)
+    ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0, h=0.0), speed=10.0, **SIZE)
+    lead = b.actor("Car", "lead", start=world(40.0, 0.0, h=0.0), speed=8.0, **SIZE)
+    near = b.add("InVehicleRadius", ego, target=lead, radius=20.0)
+    pause = b.add("TimeElapsed", ego, duration=0.5)
+    walk = b.add("FollowTrajectory", lead, waypoints=[world(60.0, 0.0), world(80.0, 0.0)])
+    close = b.add("InVehicleRadius", lead, target=ego, radius=10.0)
+    follow = b.add("Follow", lead, target=ego, distance=15.0)
+    for node, name in ((near, "Near"), (pause, "Pause"), (walk, "Walk"), (close, "Close")):
+        node.name = name
+    follow.name = "Keep"
+    b.chain(b.root, near, pause, walk, b.end)
+    b.chain(b.root, close, follow, b.end)
+    inline = inlined(b.scenario.nodes)
+    assert {str(node.name) for node in inline} == {"Near", "Pause"}
+    assert (flow_steps(near, inline), flow_steps(pause, inline)) == (0, 0)
+    assert flow_steps(close, inline) == 1
+    document = build_xosc(b.scenario, version="1.3").tree.getroot()
+    assert document.find(".//Event[@name='Near']") is None
+    assert trigger(document, ".//Event[@name='Walk']/StartTrigger") == [
+        [("RelativeDistanceCondition", "20.0", "0.5"), ("SimulationTimeCondition", "0.0", "0.5")]
+    ]
+    arrived = trigger(document, ".//Event[@name='Walk__arrived']/StartTrigger")
+    assert [[kind for kind, _, _ in group] for group in arrived] == [
+        ["DistanceCondition", "StoryboardElementStateCondition"]
+    ] * 2
+    states = {
+        (c.get("storyboardElementRef"), c.get("state"))
+        for c in document.iterfind(
+            ".//Event[@name='Walk__arrived']//StoryboardElementStateCondition"
+        )
+    }
+    assert states == {("Walk", "runningState"), ("Walk", "completeState")}
+    # scenario_runner keeps a startTransition once seen and reads no runningState (and has no
+    # TimeElapsed: its delays count from the act's start).
+    b = ScenarioBuilder("arrival", map="Town01", level="concrete", max_duration=30.0)
+    ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0, h=0.0), speed=10.0, **SIZE)
+    lead = b.actor("Car", "lead", start=world(40.0, 0.0, h=0.0), speed=8.0, **SIZE)
+    near = b.add("InVehicleRadius", ego, target=lead, radius=20.0)
+    walk = b.add("FollowTrajectory", lead, waypoints=[world(60.0, 0.0), world(80.0, 0.0)])
+    near.name, walk.name = "Near", "Walk"
+    b.chain(b.root, near, walk, b.end)
+    carla = build_xosc(b.scenario, version="1.0", profile="carla").tree.getroot()
+    assert carla.find(".//Event[@name='Near']") is None
+    states = {
+        (c.get("storyboardElementRef"), c.get("state"))
+        for c in carla.iterfind(".//Event[@name='Walk__arrived']//StoryboardElementStateCondition")
+    }
+    assert states == {("Walk", "startTransition")}
+
+
+def test_conditions_of_a_join_one_go_into_the_trigger_as_groups() -> None:
+    # root -> Fast (speed above 12) and root -> Near (the lead within 20 m), both -> AnyOf
+    # (join-one) -> Brake -> End: an original's trigger of two ConditionGroups. Brake starts
+    # at the first instant either holds, so each goes into Brake's trigger as a group of its
+    # own, and neither costs a step (they were marker events, Brake a step after them). A
+    # successor that runs twice would need the join-one's finish to repeat, which players do
+    # not see in a trigger: there the conditions keep their markers.
+    b = ScenarioBuilder("anyof", map="map.xodr", level="concrete", max_duration=30.0)
+    ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0, h=0.0), speed=10.0, **SIZE)
+    lead = b.actor("Car", "lead", start=world(40.0, 0.0, h=0.0), speed=8.0, **SIZE)
+    fast = b.add("SpeedCondition", ego, speed=12.0, rule="greaterThan")
+    near = b.add("InVehicleRadius", ego, target=lead, radius=20.0)
+    brake = b.add("Decelerate", ego, targetSpeed=6.0, rate=3.0)
+    fast.name, near.name, brake.name = "Fast", "Near", "Brake"
+    b.chain(b.root, fast)
+    b.chain(b.root, near)
+    any_of = b.join_one(fast, near)
+    any_of.name = "AnyOf"
+    b.chain(any_of, brake, b.end)
+    inline = inlined(b.scenario.nodes)
+    assert {str(node.name) for node in inline} == {"Fast", "Near", "AnyOf"}
+    assert (flow_steps(fast, inline), flow_steps(near, inline)) == (0, 0)
+    document = build_xosc(b.scenario, version="1.3").tree.getroot()
+    assert document.find(".//Event[@name='Fast']") is None
+    assert trigger(document, ".//Event[@name='Brake']/StartTrigger") == [
+        [("RelativeDistanceCondition", "20.0", "0.0"), ("SimulationTimeCondition", "0.0", "0.0")],
+        [("SimulationTimeCondition", "0.0", "0.0"), ("SpeedCondition", "12.0", "0.0")],
+    ]
+    brake.maxRuns = 2
+    assert {str(node.name) for node in inlined(b.scenario.nodes)} == {"AnyOf"}

@@ -146,7 +146,7 @@ def test_every_event_starts_after_its_nodes_predecessors_finished(
     (join-all, ordinary nodes) or of one (join-one, one group each), or an earlier event of the
     same node; a predecessor written into the trigger (`xosc.flows.inlined`) stands there as
     what it waits for and its own condition. completeState stays true, which is what makes
-    that exact."""
+    that exact; an arrival's marker waits for its own event's start instead."""
     flat, document, events_of = exported(name, version, profile)
     inline = inlined(flat.nodes)
     node_of = {finish: sanitize(node) for node, (_, finish) in events_of.items()}
@@ -168,7 +168,17 @@ def test_every_event_starts_after_its_nodes_predecessors_finished(
             )
             if read:  # else it waits for an earlier event of its node (Overtake's way back)
                 assert read == expected, event.get("name")
-        for condition in document.iter("StoryboardElementStateCondition"):
+            for condition in event.iter("StoryboardElementStateCondition"):
+                # An arrival's marker waits for its own event to have started (running or
+                # complete; scenario_runner: its start, which it keeps); the rest, completeState.
+                state = condition.get("state")
+                if condition.get("storyboardElementRef") in own - {event.get("name")}:
+                    allowed = {"startTransition"} if profile == "carla" else {"runningState"}
+                    assert state in allowed | {"completeState"}, event.get("name")
+                else:
+                    assert state == "completeState", event.get("name")
+    for stop in document.iter("StopTrigger"):
+        for condition in stop.iter("StoryboardElementStateCondition"):
             assert condition.get("state") == "completeState"
 
 

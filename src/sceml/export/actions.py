@@ -20,7 +20,7 @@ from ..xosc import meaning
 from ..xosc.support import MAPPED_KINDS, REPEATABLE_KINDS
 from .context import Action, Context, Event
 from .speeds import speed_dynamics
-from .triggers import Condition, Finish, Group, delayed, finished, with_extra
+from .triggers import Condition, Finish, Group, delayed, finished, has_started, with_extra
 from .values import number
 
 #: A node's events, and its finish: the event its successors wait for, or (for a node written
@@ -90,6 +90,22 @@ def _finish_marker(
         ctx.entity(node.referenceActor),
         [ctx.marker_action(name, name)],
         with_extra(groups, extra),
+    )
+
+
+def _arrival_marker(ctx: Context, node: scm.ActionNode, event: str, extra: Condition) -> Event:
+    """The finish marker of a node written as `event` and an arrival: it fires once `event`
+    has started and `extra` holds. Not "activated and `extra`": a condition before the node,
+    written into `event`'s trigger as it holds now (`xosc.flows`), need not hold again on
+    arrival (`traffic_lights`' walkers waited for their green light's marker event, a step
+    late, two with its delay)."""
+    name = ctx.extra_event(node, "arrived")
+    started = has_started(event, name, ctx.profile)
+    return Event(
+        name,
+        ctx.entity(node.referenceActor),
+        [ctx.marker_action(name, name)],
+        with_extra(started, extra),
     )
 
 
@@ -228,7 +244,7 @@ def plan_turn(ctx: Context, node: scm.RoutedManeuver, groups: list[Group]) -> Pl
         route = Action(ctx.action_name(name), "route", data)
     event = Event(name, ctx.entity(node.referenceActor), [route], groups)
     here = arrived(ctx, node, f"{name}_arrived", destination, ctx.values.text(node, "tolerance"))
-    done = _finish_marker(ctx, node, "arrived", groups, here)
+    done = _arrival_marker(ctx, node, name, here)
     return [event, done], done.name
 
 
@@ -268,7 +284,7 @@ def plan_trajectory(ctx: Context, node: scm.ActionNode, groups: list[Group]) -> 
     data = {"trajectory": ctx.names.claim(f"{name}_path"), "vertices": vertices, "mode": mode}
     event = Event(name, entity, [Action(ctx.action_name(name), "trajectory", data)], groups)
     end = arrived(ctx, node, f"{name}_arrived", vertices[-1], ctx.values.text(node, "tolerance"))
-    done = _finish_marker(ctx, node, "arrived", groups, end)
+    done = _arrival_marker(ctx, node, name, end)
     return [event, done], done.name
 
 

@@ -49,6 +49,27 @@ def finished(event: str, by: str) -> Condition:
     )
 
 
+def has_started(event: str, by: str, profile: str) -> list[Group]:
+    """Groups that hold from the step `event` starts on, and stay true: esmini's runningState
+    or completeState (its startTransition holds for one step only); scenario_runner keeps a
+    startTransition once seen and reads no runningState, so the carla profile writes that.
+    What a node's finish marker waits for instead of repeating the node's activation: a
+    condition before the node may then stand in the node's StartTrigger as it holds now
+    (`xosc.flows`), and need not hold again when the node arrives."""
+    states = ["startTransition"] if profile == "carla" else ["runningState", COMPLETE]
+    return [
+        [
+            Condition(
+                f"{by}_{state.removesuffix('State')}_{event}",
+                "state",
+                {"type": "event", "state": state},
+                ref=event,
+            )
+        ]
+        for state in states
+    ]
+
+
 def simulation_started(by: str) -> Condition:
     """The simulation has begun: what "the root node has finished" means. It holds at t = 0
     itself (`SimulationTime >= 0`; 1.0, which has no `greaterOrEqual`, `> -1`: the

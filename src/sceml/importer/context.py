@@ -44,6 +44,9 @@ class Build:
     #: (activating node, the condition's content) -> its node: one node for the same condition
     #: after the same node in several triggers (`triggers.Trigger.condition`).
     conditions: dict[tuple[int, bytes], scm.GraphElement] = field(default_factory=dict)
+    #: Node id -> the place of the event it performs in the storyboard (document order), for
+    #: ordering an actor's maneuvers (`overlaps.separate`).
+    event_order: dict[int, int] = field(default_factory=dict)
     #: (tower, the entity its TrailerRef names, the Trailer element): linked once every
     #: entity is read (`entities.py`).
     trailer_refs: list[tuple[scm.Actor, str, etree._Element]] = field(default_factory=list)

@@ -49,7 +49,7 @@ def _order_turns(build: Build) -> None:
     it, it follows all of them, so each needs at most one new join: the whole pass is near
     linear in the number of events, where comparing every pair was cubic (issue 26).
     """
-    order = _topological(build.scenario.nodes)
+    order = _topological(build.scenario.nodes, build.event_order)
     lines: dict[tuple[int, str], list[scm.Maneuver]] = {}
     for node in sorted(
         (n for n in build.scenario.nodes if isinstance(n, scm.Maneuver)),
@@ -85,13 +85,17 @@ def _axes(node: scm.Maneuver) -> frozenset[str]:
     return maneuver_axes(node)
 
 
-def _topological(nodes: list[scm.GraphElement]) -> dict[int, float]:
+def _topological(nodes: list[scm.GraphElement], events: dict[int, int]) -> dict[int, float]:
     """Node id -> its place in a topological order of the flows: of the nodes ready, always
-    the one made first (the import makes them in document order). Not breadth first: that
-    put an event behind every event that waits through fewer nodes (`keep_lateral_distance`:
-    its first lane change, on a distance and a delay, waited for the lane change at 8 s and
-    the one after it, and started at 15.05 s instead of 2.75 s)."""
-    made = {id(n): index for index, n in enumerate(nodes)}
+    the one that leads to the event first in the file (`_first_event`), then the one made
+    first. Not breadth first: that put an event behind every event that waits through fewer
+    nodes (`keep_lateral_distance`: its first lane change, on a distance and a delay, waited
+    for the lane change at 8 s and the one after it, and started at 15.05 s instead of
+    2.75 s). Not the order made alone: an event a trigger refers to is made before the
+    events between (`parking_demo`: Target5's slow-down, made for a light event's trigger,
+    went before the unparking above it in the file, which then waited for it forever)."""
+    first = _first_event(nodes, events)
+    made = {id(n): (first[id(n)], index) for index, n in enumerate(nodes)}
     waiting = {id(n): sum(1 for f in n.incoming if f.source is not None) for n in nodes}
     ready = [(made[id(n)], n) for n in nodes if waiting[id(n)] == 0]
     heapq.heapify(ready)
@@ -109,6 +113,32 @@ def _topological(nodes: list[scm.GraphElement]) -> dict[int, float]:
     for node in nodes:  # a cycle (refused earlier) would leave some: after the rest
         order.setdefault(id(node), float(len(order)))
     return order
+
+
+def _first_event(nodes: list[scm.GraphElement], events: dict[int, int]) -> dict[int, float]:
+    """Node id -> the least document place (`events`) of the events it leads to (itself
+    included); infinite where it leads to none."""
+    first: dict[int, float] = {}
+
+    def visit(node: scm.GraphElement) -> float:
+        # Iterative: a chain of thousands of events (issue 26) is deeper than Python's stack.
+        stack = [(node, False)]
+        while stack:
+            current, expanded = stack.pop()
+            if id(current) in first:
+                continue
+            after = [f.target for f in current.outgoing if f.target is not None]
+            if not expanded:
+                stack.append((current, True))
+                stack.extend((t, False) for t in after if id(t) not in first)
+                continue
+            own = float(events.get(id(current), math.inf))
+            first[id(current)] = min([own, *(first.get(id(t), math.inf) for t in after)])
+        return first[id(node)]
+
+    for node in nodes:
+        visit(node)
+    return first
 
 
 def _reaches(start: scm.GraphElement, goal: scm.GraphElement, order: dict[int, float]) -> bool:

@@ -57,6 +57,9 @@ class Storyboard:
 
     def collect(self) -> None:
         """Index every story element by name; each actor starts at its initial speed."""
+        for node in self.build.scenario.nodes:  # Init's, made before any event: first
+            if isinstance(node, scm.ActionNode):
+                self.build.event_order.setdefault(id(node), -1)
         for actor in self.build.actors.values():
             name = str(actor.name)
             self.motion.speed[name] = self.build.init_speeds.get(
@@ -169,6 +172,7 @@ class Storyboard:
             actor,
             "KeepVelocity" if kind == "KeepVelocity" and marker else "TimeElapsed",
             clock_start(self.acts[info.act].find("StartTrigger")),
+            info.name if int(info.element.get("maximumExecutionCount", "1")) > 1 else None,
         )
         start = info.element.find("StartTrigger")
         if marker:
@@ -201,6 +205,9 @@ class Storyboard:
                 if _is_step_speed(action):
                     after[str(each.name)] = made
         self._runs(info, nodes)
+        place = list(self.events).index(info.name)
+        for made in nodes:
+            self.build.event_order[id(made)] = place
         if len(nodes) == 1:
             return nodes[0]
         join = self.build.add(scm.JoinAllFinished(), f"{info.name}_done")

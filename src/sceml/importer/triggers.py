@@ -59,6 +59,9 @@ class Trigger:
     #: When what it waits for has surely finished, from the run's start, if a clock alone
     #: says so (`clock_start`); None when that depends on the run.
     started_at: float | None = None
+    #: The name of a repeated event (maximumExecutionCount above 1) whose trigger this is: its
+    #: conditions are its own nodes, not shared with other triggers (see `condition`).
+    repeated: str | None = None
 
     @property
     def start(self) -> scm.GraphElement:
@@ -216,8 +219,16 @@ class Trigger:
         """The node of a condition activated by `before`; the same one for the same condition
         after the same node in another trigger (an event with several actions, or a SceML
         export that wrote one condition node into each of its successors' triggers): each
-        waiting event starts at the first instant it holds, so one node means the same."""
-        key = (id(before), _content(condition))
+        waiting event starts at the first instant it holds, so one node means the same.
+
+        Not for a repeated event: a player evaluates each event's trigger anew after each
+        run, and SceML checks a repeated node's condition again after each run, so a shared
+        condition would restart (or hold) for the other events too; and an event that waits
+        for more than the condition (another actor's maneuver before it, `importer.overlaps`)
+        would make the shared condition a marker event whose completion lasts, and the
+        repeated event run all its runs at once (`lane_change_simple`'s teleport, three runs
+        at 35.7 s, beside a speed change on the same end-of-road condition)."""
+        key = (id(before), _content(condition) + (self.repeated or "").encode())
         found = self.build.conditions.get(key)
         if found is None:
             found = condition_after(self.build, condition, before, wanted)

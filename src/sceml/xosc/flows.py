@@ -23,10 +23,14 @@ is evaluated again at every step, so it may only stand where "holds now" and "ha
   predecessor ends the run (or it has only this one); into each of them when there are
   several (an imported event with several actions): each starts at the first instant it
   holds; likewise through a TimeElapsed whose successors are such (an original's condition
-  with a delay: the wait is the condition's delay in their triggers). A maneuver with a finish marker (`__arrived`,
-  `__gap_reached`, ...) ANDs its activation with its goal, another condition ANDs it with its
-  own test, a join combines it with other branches: there "held once" and "holds now" differ,
-  so the condition keeps its marker event.
+  with a delay: the wait is the condition's delay in their triggers), and through a join-one
+  whose successors are such and run once (an original's trigger of several ConditionGroups:
+  one group each). An arrival's finish
+  marker (`__arrived`) waits for the arrival's event to have started, so it too uses the
+  activation once. Another maneuver with a finish marker (`__gap_reached`, `__driven`, ...)
+  ANDs its activation with its goal, another condition ANDs it with its own test, a join
+  combines it with other branches: there "held once" and "holds now" differ, so the condition
+  keeps its marker event.
 """
 
 from __future__ import annotations
@@ -41,10 +45,14 @@ from .support import REPEATABLE_KINDS
 
 #: Kinds whose export uses the activation exactly once, unchanged, as one event's StartTrigger:
 #: those written as one event (`support.REPEATABLE_KINDS`: speed changes, lane changes and
-#: offsets, controller changes, parameter, variable and traffic signal actions) and Overtake,
-#: whose first event starts on it. (Before, a traffic signal state after a condition kept the
-#: condition's marker event: `traffic_lights`' signals changed a step late, every one.)
-_USES_ACTIVATION_ONCE = REPEATABLE_KINDS | {"Overtake"}
+#: offsets, controller changes, parameter, variable and traffic signal actions), Overtake,
+#: whose first event starts on it, and the arrivals, whose finish marker waits for their event
+#: to have started, not for the activation again (`export.actions._arrival_marker`). (Before,
+#: a traffic signal state after a condition kept the condition's marker event:
+#: `traffic_lights`' signals changed a step late, every one; its walkers, a FollowTrajectory
+#: each, two steps late.)
+_ARRIVAL_KINDS = frozenset({"TurnLeft", "TurnRight", "Cross", "FollowTrajectory"})
+_USES_ACTIVATION_ONCE = REPEATABLE_KINDS | {"Overtake"} | _ARRIVAL_KINDS
 #: Kinds that only pass activation on (a marker with the activation as its trigger).
 _PASSING = (scm.JoinAllFinished, scm.JoinOneFinished, scm.InPort, scm.OutPort)
 
@@ -95,9 +103,23 @@ def _holds_now_for(node: scm.GraphElement, successor: scm.GraphElement) -> bool:
         return (
             len(graph.predecessors(successor)) == 1
             and bool(after)
-            and all(_starts_on(s) for s in after)
+            and all(_starts_on_first(s) for s in after)
         )
-    return _starts_on(successor)
+    return _starts_on_first(successor)
+
+
+def _starts_on_first(successor: scm.GraphElement) -> bool:
+    """`_starts_on`, or a join-one whose successors each start once on it (`_starts_on`, one
+    run): a join-one finishes with its first input, so each input may stand as it holds now
+    in a ConditionGroup of its own (OR) of their triggers. An original's event with several
+    ConditionGroups of conditions started a step late on their marker events."""
+    if not isinstance(successor, scm.JoinOneFinished):
+        return _starts_on(successor)
+    after = graph.successors(successor)
+    return bool(after) and all(
+        _starts_on(s) and int(getattr(s, "maxRuns", 1)) == 1 and not isinstance(s, scm.EndNode)
+        for s in after
+    )
 
 
 def _absorbed_by_end(node: scm.GraphElement, successor: scm.GraphElement) -> bool:
