@@ -61,7 +61,9 @@ def cli() -> None:
 def main() -> None:
     """Console-script entry point: run the command, then end the process without teardown."""
     from ..model.collector import ending_with_command
+    from .deferred import defer_unused_imports
 
+    defer_unused_imports()
     ending_with_command()
     try:
         cli()
