@@ -7,7 +7,8 @@ console script), bytecode caches written by one warm-up run. The anchors, measur
 rounds and interleaved with the subjects: `python -c pass` (the interpreter alone) and
 `python -c "import lxml.etree"` (the interpreter and the XML library any reader of these files
 needs). Also measured: the import of click, of pyecore, of the generated classes (with
-pyecore) and of numpy alone: what `sceml` cannot start without, and what reading a map needs.
+pyecore) and of numpy alone (with OpenBLAS's default threads, and with the one thread `sceml`
+asks for): what `sceml` cannot start without, and what reading a map needs.
 
 Two figures per command, medians of the rounds (process_cpu.py): CPU seconds (user + system,
 as GNU time reports them: the process's own work, which a busy machine does not stretch much)
@@ -42,6 +43,7 @@ SUBJECTS = {
     'python -c "import pyecore.ecore"': [PYTHON, "-c", "import pyecore.ecore"],
     'python -c "import scemlmodel"': [PYTHON, "-c", "import scemlmodel"],
     'python -c "import numpy"': [PYTHON, "-c", "import numpy"],
+    'python -c "import numpy", 1 BLAS thread': [PYTHON, "-c", "import numpy"],
     "sceml --help": [SCEML, "--help"],
     "sceml info UIS1": [SCEML, "info", str(UIS1)],
     "sceml validate UIS1": [SCEML, "validate", str(UIS1)],
@@ -64,9 +66,11 @@ def main() -> None:
         if not options.only or any(part in name for part in options.only)
     }
     env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
+    # What `sceml` asks of OpenBLAS (sceml.cli.blas_threads), for numpy's import alone.
+    one_thread = {'python -c "import numpy", 1 BLAS thread': {**env, "OPENBLAS_NUM_THREADS": "1"}}
     load = load_average()
     try:
-        runs = interleaved({**ANCHORS, **subjects}, options.rounds, env)
+        runs = interleaved({**ANCHORS, **subjects}, options.rounds, env, one_thread)
     finally:
         PAGE.unlink(missing_ok=True)
     bare_cpu, bare_wall = median_cpu(runs["python -c pass"]), median_wall(runs["python -c pass"])
