@@ -109,14 +109,14 @@ def test_the_files_do_not_depend_on_the_chunks_or_their_order(
 
 
 def test_lost_samples_are_named_and_have_no_files(tmp_path: Path, monkeypatch) -> None:  # type: ignore[no-untyped-def]
-    real = batch.produce_chunk
+    real = batch.produced_samples
 
-    def lose_the_chunk_with_seven(state: batch.WorkerState, chunk: batch.Chunk) -> list:  # type: ignore[type-arg]
+    def lose_the_chunk_with_seven(state: batch.WorkerState, chunk: batch.Chunk) -> Iterator:  # type: ignore[type-arg]
         if 7 in chunk[0]:
             raise MemoryError("worker ran out of memory")
-        return real(state, chunk)
+        yield from real(state, chunk)
 
-    monkeypatch.setattr(batch, "produce_chunk", lose_the_chunk_with_seven)
+    monkeypatch.setattr(batch, "produced_samples", lose_the_chunk_with_seven)
     space, indices, rows = _uis2_rows(20)
     with open_executor("local") as executor:
         result = run_batch(
@@ -131,13 +131,48 @@ def test_lost_samples_are_named_and_have_no_files(tmp_path: Path, monkeypatch) -
     assert set(_files(tmp_path)) == written and len(written) == 15
 
 
+def test_a_sample_is_written_before_the_next_is_made_and_a_lost_chunk_leaves_none(
+    tmp_path: Path, monkeypatch
+) -> None:  # type: ignore[no-untyped-def]
+    # Worker processes write each sample as it is produced, so the run's first file does not
+    # wait for its chunk; a chunk lost part-way has its files removed. (UIS2's random samples
+    # with seed 3: 5 and 6 are written, none skipped.)
+    real = batch.produced_samples
+    space, indices, rows = _uis2_rows(20)
+    config = _config(tmp_path, space.paths)
+    seen_before: dict[int, bool] = {}
+
+    def lose_seven_after_writing_five_and_six(
+        state: batch.WorkerState, chunk: batch.Chunk
+    ) -> Iterator:  # type: ignore[type-arg]
+        for index, produced in zip(chunk[0], real(state, chunk), strict=True):
+            if index in (6, 7):
+                seen_before[int(index)] = (tmp_path / config.file_name(index - 1, "xosc")).exists()
+            if index == 7:
+                seen = ", ".join(f"{i} {found}" for i, found in seen_before.items())
+                (tmp_path / "seen").write_text(seen)
+                raise MemoryError("worker ran out of memory")
+            yield produced
+
+    monkeypatch.setattr(batch, "produced_samples", lose_seven_after_writing_five_and_six)
+    with open_executor("processes", workers=2) as executor:  # forked: they have the patch
+        result = run_batch(config, indices, rows, executor=executor, chunk_size=5)
+    # What the worker saw: the file of 5 before 6 was made, that of 6 before 7 was.
+    assert (tmp_path / "seen").read_text() == "6 True, 7 True"
+    failed = sorted(r.index for r in result.records if r.status == "failed")
+    assert failed == [5, 6, 7, 8, 9]
+    written = {name for r in result.records for name in r.files}
+    assert set(_files(tmp_path)) - {"seen"} == written and len(written) == 15
+
+
 def test_the_cli_names_lost_samples_and_keeps_them_in_the_manifest(
     tmp_path: Path, monkeypatch
 ) -> None:  # type: ignore[no-untyped-def]
-    def lose_all(state: batch.WorkerState, chunk: batch.Chunk) -> list:  # type: ignore[type-arg]
+    def lose_all(state: batch.WorkerState, chunk: batch.Chunk) -> Iterator:  # type: ignore[type-arg]
         raise OSError("disk of the worker is full")
+        yield
 
-    monkeypatch.setattr(batch, "produce_chunk", lose_all)
+    monkeypatch.setattr(batch, "produced_samples", lose_all)
     arguments = [str(UIS2), "--strategy", "random", "--n", "3", "-o", str(tmp_path)]
     result = CliRunner().invoke(sample, [*arguments, "--executor", "local"])
     assert result.exit_code == 1

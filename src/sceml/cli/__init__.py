@@ -61,7 +61,11 @@ def cli() -> None:
 def main() -> None:
     """Console-script entry point: run the command, then end the process without teardown."""
     from ..model.collector import ending_with_command
+    from .blas_threads import one_blas_thread
+    from .deferred import defer_unused_imports
 
+    defer_unused_imports()
+    one_blas_thread()
     ending_with_command()
     try:
         cli()

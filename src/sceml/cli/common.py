@@ -1,4 +1,9 @@
-"""What every subcommand shares: turning SceML errors into clean messages and exit codes."""
+"""What every subcommand shares: turning SceML errors into clean messages and exit codes.
+
+`sceml --help` imports this module and nothing of the model: what a command needs of pyecore,
+the generated classes or lxml is imported by the command's own module or inside the helper that
+uses it, so listing the commands costs click and this file only.
+"""
 
 from __future__ import annotations
 
@@ -8,15 +13,15 @@ from collections.abc import Callable, Iterable, Iterator
 from contextlib import contextmanager
 from dataclasses import replace
 from pathlib import Path
-from typing import Any, TypeVar
+from typing import TYPE_CHECKING, Any, TypeVar
 
 import click
 
-from ..diagnostics import Diagnostic
 from ..errors import ArgumentError, SceMLError
-from ..files.writing import write_atomically
-from ..model.documents import Document
-from ..model.xmiresource import migration_notices
+
+if TYPE_CHECKING:
+    from ..diagnostics import Diagnostic
+    from ..model.documents import Document
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -53,6 +58,8 @@ class SceMLCommand(click.Command):
     notes_migrations = True
 
     def invoke(self, ctx: click.Context) -> Any:
+        from ..model.xmiresource import migration_notices  # the model, only once a command runs
+
         notice = _note_migration if self.notes_migrations else _ignore
         try:
             with migration_notices(notice):
@@ -306,6 +313,8 @@ def report_options(json_help: str) -> Callable[[F], F]:
 def emit_report(text: str, output: Path | None) -> None:
     """Write a report to `output` atomically, or to standard output."""
     if output is not None:
+        from ..files.writing import write_atomically
+
         write_atomically(output, text.encode("utf-8"))
     else:
         click.echo(text, nl=False)

@@ -34,9 +34,10 @@ from .common import (
     written_version_option,
 )
 
-# A run leaves a large heap (scipy, imported to draw from normal distributions, and the model),
-# which the interpreter's last garbage collections walked for 0.1-0.2 s after the manifest was
-# written. Frozen at exit, it is not walked; the memory goes back with the process.
+# A run leaves a large heap (numpy, the exporter, the model), which the interpreter's last
+# garbage collections walked for 0.1-0.2 s after the manifest was written, when the process
+# ends the ordinary way (`sceml.cli.end_now` skips that unless a thread or child is still
+# running). Frozen at exit, it is not walked; the memory goes back with the process.
 atexit.register(gc.freeze)
 
 

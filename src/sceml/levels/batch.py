@@ -312,8 +312,14 @@ Chunk = tuple[NDArray[np.int64], NDArray[np.float64]]
 
 def produce_chunk(state: WorkerState, chunk: Chunk) -> list[Produced]:
     """The files of every sample of a chunk."""
+    return list(produced_samples(state, chunk))
+
+
+def produced_samples(state: WorkerState, chunk: Chunk) -> Iterator[Produced]:
+    """The files of each sample of a chunk, one sample at a time."""
     indices, rows = chunk
-    return [state.worker.produce(int(i), row) for i, row in zip(indices, rows, strict=True)]
+    for index, row in zip(indices, rows, strict=True):
+        yield state.worker.produce(int(index), row)
 
 
 @dataclass(frozen=True)
@@ -326,11 +332,16 @@ class Written:
 
 
 def write_chunk(state: WorkerState, chunk: Chunk) -> Written:
-    """Produce every sample of a chunk and write its files into the caller's output folder."""
+    """Produce every sample of a chunk and write its files into the caller's output folder.
+
+    Each sample is written as soon as it is produced, not after the whole chunk (125 samples
+    for 2,000 on two workers): the run's first file comes one sample after the workers start.
+    If the chunk fails part-way, the caller removes the files of its samples (`_collect`).
+    """
     assert state.payload is not None and state.payload.staging is not None
     folder, staging = state.payload.config.out_dir, state.payload.staging
     records = []
-    for produced in produce_chunk(state, chunk):
+    for produced in produced_samples(state, chunk):
         try:
             records.append(write_sample(folder, produced, staging))
         except SaveError as error:  # sent back as data: the caller reports it as its own
