@@ -490,10 +490,12 @@ def plan_ttc(ctx: Context, node: scm.TimeToCollision, groups: list[Group]) -> Pl
 finish_marker = _finish_marker
 
 # Registers the planners of sceml import's OpaqueAction, the controller changes, the global
-# kinds, LaneOffset, LightState, MatchSpeed, StandStill and AccelerationCondition.
+# kinds, LaneOffset, LightState, MatchSpeed, StandStill, AccelerationCondition and the trailer
+# couplings.
 from . import (  # noqa: E402, F401
     appearance,
     controller_actions,
+    coupling,
     global_kinds,
     lane_offset,
     match_speed,
