@@ -23,9 +23,7 @@ def _fast_bike(examples: Path) -> Path:
     text = source.read_text(encoding="utf-8")
     bike_speed = '<initialSpeed xsi:type="scemlmodel:Value" value="0.0"/>'
     assert text.count(bike_speed) == 1
-    source.write_text(
-        text.replace(bike_speed, bike_speed.replace("0.0", "30.0")), encoding="utf-8"
-    )
+    source.write_text(text.replace(bike_speed, bike_speed.replace("0.0", "30.0")), encoding="utf-8")
     return source
 
 
@@ -63,5 +61,7 @@ def test_other_errors_still_refuse_with_the_flag(examples_copy: Path, tmp_path: 
     )
     result = sceml("export", source, "-o", tmp_path / "a.xosc", "--allow-implausible")
     assert result.exit_code == 1
-    assert "error[SCEML-E004]" in result.output and "--allow-implausible writes" not in result.output
+    assert (
+        "error[SCEML-E004]" in result.output and "--allow-implausible writes" not in result.output
+    )
     assert not (tmp_path / "a.xosc").exists()

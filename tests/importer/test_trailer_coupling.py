@@ -61,10 +61,14 @@ def test_they_export_at_1_3_as_they_were_read(tmp_path: Path, same) -> None:
     exported = tmp_path / "coupling.xosc"
     export_to_file(first.scenario, exported, version="1.3", source_path=SOURCE)
     assert schema.validate_file(exported, "1.3") == []
-    assert _trailer_actions(exported) == _trailer_actions(SOURCE) == [
-        ("ConnectTrailerAction", {"trailerRef": "Trailer"}),
-        ("DisconnectTrailerAction", {}),
-    ]
+    assert (
+        _trailer_actions(exported)
+        == _trailer_actions(SOURCE)
+        == [
+            ("ConnectTrailerAction", {"trailerRef": "Trailer"}),
+            ("DisconnectTrailerAction", {}),
+        ]
+    )
     again = import_file(exported, allow=[FILES])
     for scenario in (first.scenario, again.scenario):
         graph.root_node(scenario).environment = None  # the export writes the default one

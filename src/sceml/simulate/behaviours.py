@@ -23,8 +23,8 @@ from ..export.entities import performance_of
 from ..maps import RoadMap
 from ..model import speed_shapes
 from ..model.params import concrete
-from ..xosc import meaning
 from ..model.towing import Coupling
+from ..xosc import meaning
 from . import lanes, trailers
 from .actors import Actor, GapKeeping, Hold, Ramp, ShapedRamp, Shift, SpeedMatching
 from .paths import LaneSpot, Path, joined, straight
