@@ -226,3 +226,18 @@ def test_the_palette_offers_trailer_couplings_in_their_own_group() -> None:
         "DisconnectTrailer",
     ]
     assert groups["coupling"]["label"] == "Trailer couplings"
+
+
+def test_the_editor_offers_a_connect_its_trailer_and_a_disconnect_none() -> None:
+    from sceml.editor.fields import node_fields
+    from sceml.model.build import node_named
+
+    b = ScenarioBuilder("fields", level="concrete")
+    ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0), speed=0.0)
+    trailer = b.actor("Truck", "trailer", start=world(-4.45, 0.0), speed=0.0)
+    b.add("ConnectTrailer", ego, target=trailer, name="couple")
+    b.add("DisconnectTrailer", ego, name="uncouple")
+    couple = {f["name"]: f.get("value") for f in node_fields(node_named(b.scenario, "couple"))}
+    assert couple["targetActor"] == "trailer" and couple["referenceActor"] == "ego"
+    uncouple = [f["name"] for f in node_fields(node_named(b.scenario, "uncouple"))]
+    assert "targetActor" not in uncouple
