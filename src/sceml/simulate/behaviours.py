@@ -507,7 +507,7 @@ class ConnectTrailer(Behaviour):
             concrete(self.node.referenceActor, "hitchX"),
             concrete(self.node.targetActor, "couplerX"),
         )
-        trailers.connect(world.actors, world.couplings, link)
+        trailers.connect(world.actors, world.couplings, link, rolls_on=world.road_map is not None)
         world.towed_by[trailer.name] = self.actor.name
 
 

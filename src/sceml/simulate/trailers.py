@@ -46,12 +46,14 @@ def drag(actors: Mapping[str, Actor], links: Iterable[Coupling]) -> None:
         _put(trailer, hx, hy, heading, link.coupler, tower.speed)
 
 
-def connect(actors: Mapping[str, Actor], links: list[Coupling], link: Coupling) -> None:
+def connect(
+    actors: Mapping[str, Actor], links: list[Coupling], link: Coupling, rolls_on: bool
+) -> None:
     """Couple `link.trailer` to its tower where it stands; a trailer the tower already tows is
-    uncoupled first, as esmini 3.6's ConnectTrailerAction does."""
+    uncoupled first (as `disconnect`), as esmini 3.6's ConnectTrailerAction does."""
     if any(old == link for old in links):
         return
-    disconnect(actors, links, link.tower, rolls_on=False)
+    disconnect(actors, links, link.tower, rolls_on)
     links[:] = [each for each in links if each.trailer != link.trailer]  # one tower at a time
     links.append(link)
     # A tower that is itself towed is dragged first: keep every tower before its trailer.
