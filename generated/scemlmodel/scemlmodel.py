@@ -1876,7 +1876,7 @@ class ConnectTrailer(CouplingManeuver):
 
 
 class DisconnectTrailer(CouplingManeuver):
-    """Uncouples whatever the reference actor tows (OpenSCENARIO 1.3's DisconnectTrailerAction): the trailer stops where it stands; nothing when the actor tows nothing."""
+    """Uncouples whatever the reference actor tows (OpenSCENARIO 1.3's DisconnectTrailerAction): the trailer keeps the speed it had and rolls on along its road, or stops where there is no road, as esmini 3.6 moves it; nothing when the actor tows nothing."""
 
     def __init__(self, **kwargs):
 
