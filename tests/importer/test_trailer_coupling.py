@@ -129,3 +129,25 @@ def test_an_uncoupled_trailer_without_roads_stops_where_it_stands(tmp_path: Path
     trailer = run.states[run.actor_index("Trailer")]
     assert np.allclose(trailer[run.times >= 4.2, 3], 0.0)
     assert _x(run, "Trailer", 8.0) == pytest.approx(49.55, abs=1e-6)
+
+
+def test_an_init_coupling_acts_right_after_the_root(tmp_path: Path) -> None:
+    # esmini couples in Init at the start: a ConnectTrailer right after the root, as an Init
+    # light is a LightState there.
+    tree = etree.parse(str(SOURCE))
+    init_car = next(p for p in tree.iter("Private") if p.get("entityRef") == "Car")
+    coupling = etree.SubElement(etree.SubElement(init_car, "PrivateAction"), "TrailerAction")
+    etree.SubElement(coupling, "ConnectTrailerAction", trailerRef="Trailer")
+    moved = tmp_path / "init.xosc"
+    tree.write(str(moved))
+    shutil.copy(FILES / "highway.xodr", tmp_path)
+    imported = import_file(moved)
+    assert imported.report.counts()["opaque"] == 0
+    root = graph.root_node(imported.scenario)
+    first = [
+        n
+        for n in imported.scenario.nodes
+        if isinstance(n, scm.ConnectTrailer) and n.name != "Couple"
+    ]
+    assert len(first) == 1 and [f.source for f in first[0].incoming] == [root]
+    assert first[0].targetActor.name == "Trailer"
