@@ -5,7 +5,9 @@
 
 Every `.xosc` scenario below the DIRs (catalogs and ParameterValueDistributions are skipped) is
 imported (`sceml import`, with the DIRs allowed), validated, and exported back at its own
-version, in-process, each stage in a work folder. With `--esmini` the original and the
+version, in-process, each stage in a work folder; a model whose only errors are the original's
+own is exported as a user told so would export it, with `--allow-implausible` (which writes
+plausibility limits the file states, and nothing else). With `--esmini` the original and the
 re-export are played headless at 0.05 s steps and compared:
 
 - every event of the original starts within one step of the re-export's event of that name (or,
@@ -357,7 +359,16 @@ def measure(path: Path, work: Path, options: argparse.Namespace) -> Row:
         from sceml.export import export_to_file
 
         version = imported.report.needs_version or imported.report.version
-        export_to_file(document.root, again, version=version, source_path=model)
+        # As a user would: told by `sceml import` that the original breaks these limits too
+        # (and nothing else), they export with --allow-implausible; never otherwise.
+        implausible = not caused and bool(deserved)
+        export_to_file(
+            document.root,
+            again,
+            version=version,
+            source_path=model,
+            allow_implausible=implausible,
+        )
     except SceMLError as error:
         row.why = row.why or f"export: {error}"
         return row

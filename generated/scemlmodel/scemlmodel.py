@@ -1517,6 +1517,15 @@ class AccelerationCondition(Condition):
             self.acceleration = acceleration
 
 
+@abstract
+class CouplingManeuver(Maneuver):
+    """A change of what the reference actor tows during the run (release 1.5). It completes at once, as players complete trailer actions; while coupled, the trailer is dragged behind its tower and drives on its own no more."""
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
 class Accelerate(LongitudinalManeuver):
 
     shape = EAttribute(eType=SpeedShape, unique=True, derived=False,
@@ -1889,6 +1898,22 @@ class MatchSpeed(LongitudinalManeuver):
 
         if rate is not None:
             self.rate = rate
+
+
+class ConnectTrailer(CouplingManeuver):
+    """Couples the target actor to the reference actor's hitch, wherever it stands (OpenSCENARIO 1.3's ConnectTrailerAction): from then on it is towed as Actor.trailer tows, until a DisconnectTrailer."""
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
+
+
+class DisconnectTrailer(CouplingManeuver):
+    """Uncouples whatever the reference actor tows (OpenSCENARIO 1.3's DisconnectTrailerAction): the trailer keeps the speed it had and rolls on along its road, or stops where there is no road, as esmini 3.6 moves it; nothing when the actor tows nothing."""
+
+    def __init__(self, **kwargs):
+
+        super().__init__(**kwargs)
 
 
 class Follow(DistanceKeeping):

@@ -141,7 +141,7 @@ def test_spec_concepts_exist(package) -> None:
 def test_every_action_kind_has_category_complexity_and_typed_parameters() -> None:
     # OpaqueAction (what `sceml import` keeps verbatim) is no paper kind: category "opaque".
     kinds = [k for k in catalog.action_node_kinds() if k.__name__ != "OpaqueAction"]
-    assert len(kinds) == 34
+    assert len(kinds) == 36
     assert catalog.category("OpaqueAction") == "opaque"
     for kind in kinds:
         assert catalog.category(kind) in catalog.CATEGORIES, kind
@@ -174,6 +174,8 @@ def test_categories_follow_the_paper() -> None:
     assert catalog.category("InVehicleRadius") == "condition"
     assert catalog.category("ActivateController") == "controller"
     assert catalog.category("OverrideController") == "controller"
+    assert catalog.category("ConnectTrailer") == "coupling"
+    assert catalog.category("DisconnectTrailer") == "coupling"
     assert catalog.category("JoinAllFinished") is None
 
 
@@ -187,6 +189,7 @@ def test_target_actor_kinds() -> None:
         "InVehicleRadius",
         "TimeToCollision",
         "TimeHeadway",
+        "ConnectTrailer",
     }
 
 

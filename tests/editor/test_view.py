@@ -82,31 +82,33 @@ def test_a_problem_in_a_module_use_marks_the_use(uis2: EditorSession) -> None:
 def test_palette_groups_and_libraries(uis2: EditorSession) -> None:
     palette = uis2.view()["palette"]
     groups = [g["group"] for g in palette]
-    assert groups[:8] == [
+    assert groups[:9] == [
         "longitudinal",
         "lateral",
         "composite",
         "controller",
         "appearance",
+        "coupling",
         "condition",
         "global",
         "join",
     ]
-    assert groups[8] == "library:library/sceml-library.xmi"
-    assert [g["label"] for g in palette[:7]] == [
+    assert groups[9] == "library:library/sceml-library.xmi"
+    assert [g["label"] for g in palette[:8]] == [
         "Longitudinal maneuvers",
         "Lateral maneuvers",
         "Composite maneuvers",
         "Controller changes",
         "Appearance (lights)",
+        "Trailer couplings",
         "Conditions",
         "Global (no actor)",
     ]
     longitudinal = [i["kind"] for i in palette[0]["items"]]
     assert "Accelerate" in longitudinal and "TurnLeft" not in longitudinal
-    modules = [i["module"] for i in palette[8]["items"]]
-    assert "CrossingManeuver" in modules and palette[8]["items"][0]["kind"] == "ModuleUse"
-    crossing = next(i for i in palette[8]["items"] if i["module"] == "CrossingManeuver")
+    modules = [i["module"] for i in palette[9]["items"]]
+    assert "CrossingManeuver" in modules and palette[9]["items"][0]["kind"] == "ModuleUse"
+    crossing = next(i for i in palette[9]["items"] if i["module"] == "CrossingManeuver")
     # UIS2's actors: ego and car are Cars (FourWheelers), pedestrian a Pedestrian.
     assert crossing["roles"] == [
         {"role": "crosser", "allowedKinds": ["TwoWheeler", "Pedestrian"], "actors": ["pedestrian"]},

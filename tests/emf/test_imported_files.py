@@ -223,6 +223,23 @@ def test_emf_reads_and_writes_trailers_and_reverse_speeds(emf: Harness, tmp_path
     assert reverse.targetSpeed.value == -3.0
 
 
+def test_emf_reads_and_writes_trailer_couplings(emf: Harness, tmp_path: Path) -> None:
+    """Release 1.5: ConnectTrailer (its trailer the target actor) and DisconnectTrailer."""
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    import_to_file(FILES / "trailer-connect.xosc", source / "coupling.xmi")
+    written = (source / "coupling.xmi").read_text()
+    for kind in ("ConnectTrailer", "DisconnectTrailer"):
+        assert f'xsi:type="scemlmodel:{kind}"' in written
+    result = emf.run("roundtrip", ECORE, source, out, Path("coupling.xmi"))
+    assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+    original, from_emf = load(source / "coupling.xmi"), load(out / "coupling.xmi")
+    assert differences(original.root, from_emf.root) == []
+    couple = next(n for n in from_emf.root.nodes if n.name == "Couple")
+    assert (couple.referenceActor.name, couple.targetActor.name) == ("Car", "Trailer")
+
+
 def test_emf_reads_and_writes_imported_lights_and_motion_conditions(
     emf: Harness, tmp_path: Path
 ) -> None:

@@ -127,8 +127,15 @@ def test_export_checks_are_the_registrys_rules() -> None:
 def test_every_kind_maps_in_every_version_of_the_generic_profile() -> None:
     from sceml.model import catalog
 
-    # Variables came with OpenSCENARIO 1.2; a LightStateAction the 1.2 schema accepts with 1.3.
-    since = {"VariableCondition": "1.2", "SetVariable": "1.2", "LightState": "1.3"}
+    # Variables came with OpenSCENARIO 1.2; a LightStateAction the 1.2 schema accepts with 1.3;
+    # TrailerAction with 1.3.
+    since = {
+        "VariableCondition": "1.2",
+        "SetVariable": "1.2",
+        "LightState": "1.3",
+        "ConnectTrailer": "1.3",
+        "DisconnectTrailer": "1.3",
+    }
     for cls in catalog.action_node_kinds():
         for version in ("1.0", "1.1", "1.2", "1.3"):
             if (cls.__name__, version) == ("OverrideController", "1.0"):

@@ -202,3 +202,42 @@ def test_a_speed_change_shows_its_shape_only_when_it_is_not_linear() -> None:
     assert "shape: cubic" in action_lines(cubic, Scope())
     lane_change = b.add("LaneChange", ego, direction="left", shape="linear")
     assert "shape: linear" in action_lines(lane_change, Scope())
+
+
+def test_trailer_coupling_boxes_say_what_they_tow() -> None:
+    # Release 1.5: the trailer is the target actor, but the box reads as what the node does.
+    b = ScenarioBuilder("labels", level="concrete")
+    ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0), speed=0.0)
+    trailer = b.actor("Truck", "trailer", start=world(-4.45, 0.0), speed=0.0)
+    connect = b.add("ConnectTrailer", ego, target=trailer)
+    assert action_lines(connect, Scope()) == ["ego", "tows: trailer"]
+    assert action_lines(b.add("DisconnectTrailer", ego), Scope()) == [
+        "ego",
+        "uncouples its trailer",
+    ]
+
+
+def test_the_palette_offers_trailer_couplings_in_their_own_group() -> None:
+    from sceml.editor.palette import node_groups
+
+    groups = {g["group"]: g for g in node_groups()}
+    assert [i["kind"] for i in groups["coupling"]["items"]] == [
+        "ConnectTrailer",
+        "DisconnectTrailer",
+    ]
+    assert groups["coupling"]["label"] == "Trailer couplings"
+
+
+def test_the_editor_offers_a_connect_its_trailer_and_a_disconnect_none() -> None:
+    from sceml.editor.fields import node_fields
+    from sceml.model.build import node_named
+
+    b = ScenarioBuilder("fields", level="concrete")
+    ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0), speed=0.0)
+    trailer = b.actor("Truck", "trailer", start=world(-4.45, 0.0), speed=0.0)
+    b.add("ConnectTrailer", ego, target=trailer, name="couple")
+    b.add("DisconnectTrailer", ego, name="uncouple")
+    couple = {f["name"]: f.get("value") for f in node_fields(node_named(b.scenario, "couple"))}
+    assert couple["targetActor"] == "trailer" and couple["referenceActor"] == "ego"
+    uncouple = [f["name"] for f in node_fields(node_named(b.scenario, "uncouple"))]
+    assert "targetActor" not in uncouple

@@ -71,3 +71,28 @@ def test_reversing_pushes_the_trailer_back_in_line() -> None:
     assert tower.x == pytest.approx(46.0)
     assert (trailer.x, trailer.y, trailer.heading) == pytest.approx((46.0 - 4.45, 0.0, 0.0))
     assert trailer.speed == -2.0
+
+
+def test_connecting_another_trailer_uncouples_the_first() -> None:
+    # Release 1.5's ConnectTrailer, as esmini 3.6's ConnectTrailerAction: one trailer per hitch.
+    from sceml.simulate.trailers import connect, disconnect
+
+    tower = _actor("Tractor", heading_path(10.0, 0.0, 0.0), 8.0)
+    first = _actor("First", heading_path(0.0, 0.0, 0.0), 0.0)
+    second = _actor("Second", heading_path(3.0, 4.0, 0.0), 0.0)
+    actors = {a.name: a for a in (tower, first, second)}
+    links: list[Coupling] = []
+    connect(actors, links, Coupling("Tractor", "First", hitch=-1.0, coupler=2.0), rolls_on=True)
+    drag(actors, links)
+    assert (first.x, first.y, first.speed) == pytest.approx((7.0, 0.0, 8.0))
+    connect(actors, links, Coupling("Tractor", "Second", hitch=-1.0, coupler=2.0), rolls_on=True)
+    assert [link.trailer for link in links] == ["Second"] and not first.towed and second.towed
+    drag(actors, links)
+    # Second, 4 m beside and 6 m behind the hitch at (9, 0), turns to face it: 2 m along the
+    # line from (3, 4) to (9, 0), whose length is sqrt(52).
+    along = 2.0 / math.sqrt(52.0)
+    assert (second.x, second.y) == pytest.approx((9.0 - 6.0 * along, 4.0 * along))
+    assert first.speed == 8.0  # uncoupled on a road, it rolls on
+    assert disconnect(actors, links, "Tractor", rolls_on=False) == "Second"
+    assert second.speed == 0.0 and links == []
+    assert disconnect(actors, links, "Tractor", rolls_on=False) is None

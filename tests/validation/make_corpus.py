@@ -1071,6 +1071,30 @@ on_map("a009-tows-itself", "SCEML-A009")(_towing("itself"))
 on_map("a009-towing-loop", "SCEML-A009")(_towing("loop"))
 
 
+def _coupling(trailer_kind: str) -> Callable[[ScenarioBuilder, scm.Actor], None]:
+    """Release 1.5: ego reverses to a standing `trailer`, couples it, drives off and uncouples
+    it (a Truck: clean; a Pedestrian coupled: SCEML-A010)."""
+
+    def add(b: ScenarioBuilder, ego: scm.Actor) -> None:
+        trailer = b.actor(trailer_kind, "trailer", start=lane(1, -1, 4.0))
+        ego.hitchX = scm.Value(value=-1.2)
+        connect = b.add("ConnectTrailer", ego, target=trailer)
+        b.chain(
+            b.root,
+            b.add("TimeElapsed", ego, duration=1.0),
+            connect,
+            b.add("DriveDistance", ego, distance=10.0, speed=5.0),
+            b.add("DisconnectTrailer", ego),
+            b.end,
+        )
+
+    return add
+
+
+on_map("a010-coupling-clean", "")(_coupling("Truck"))
+on_map("a010-pedestrian-coupled", "SCEML-A010")(_coupling("Pedestrian"))
+
+
 def _reverse(speed: float) -> Callable[[ScenarioBuilder, scm.Actor], None]:
     """Release 1.4: ego slows to a negative target speed, reversing (clean within its limit)."""
 

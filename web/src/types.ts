@@ -65,6 +65,7 @@ export type Look =
   | "composite"
   | "controller"
   | "appearance"
+  | "coupling"
   | "condition"
   | "root"
   | "end"

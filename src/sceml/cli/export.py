@@ -7,9 +7,11 @@ from pathlib import Path
 import click
 
 from ..errors import SceMLError
-from ..export import ExportError, export_to_file
+from ..export import ExportError, build_xosc
+from ..export.checks import split_implausible
 from ..export.versions import VERSIONS
 from ..export.writer import header_date
+from ..files.writing import write_atomically
 from ..model.loading import load_scenario
 from ..xosc.profiles import PROFILES, default_version
 from .common import Parsed, SceMLCommand, allow_option, echo_diagnostics, input_file, output_file
@@ -48,6 +50,14 @@ from .common import Parsed, SceMLCommand, allow_option, echo_diagnostics, input_
     type=click.Path(dir_okay=False, path_type=Path),
     help="OpenDRIVE file to refer to instead of the model's map (written relative to OUTPUT).",
 )
+@click.option(
+    "--allow-implausible",
+    is_flag=True,
+    help="Write the scenario even when its only errors are plausibility limits (SCEML-L001 to "
+    "L005: a speed or rate above what its actor kind can reach, e.g. a pedestrian at 8 m/s), "
+    "each printed as a warning. For a model that states such values on purpose, as an imported "
+    "file that has them does; players run them as stated. Other errors still refuse.",
+)
 @allow_option
 def export(
     file: Path,
@@ -57,6 +67,7 @@ def export(
     date: str | None,
     town: str | None,
     map_path: Path | None,
+    allow_implausible: bool,
     allow: tuple[Path, ...],
 ) -> None:
     """Export the concrete scenario FILE to OpenSCENARIO.
@@ -68,15 +79,16 @@ def export(
     osc_version = osc_version or default_version(profile)
     document = load_scenario(file, allow=allow)
     try:
-        export_to_file(
+        written = build_xosc(
             document.root,
-            output,
             version=osc_version,
             profile=profile,
             date=date,
             source_path=file,
             map_path=map_path,
+            output_path=output,
             town=town,
+            allow_implausible=allow_implausible,
         )
     except ExportError as error:
         if not error.diagnostics:
@@ -84,7 +96,12 @@ def export(
         # Each problem once, located; then only the verdict, which would otherwise repeat one.
         echo_diagnostics(error.diagnostics, document, file)
         count = len(error.diagnostics)
+        refusing, _ = split_implausible(error.diagnostics)
+        # Only limits the model states itself: say how to write it anyway.
+        hint = "" if refusing else " (plausibility limits only: --allow-implausible writes it)"
         raise SceMLError(
-            f"not exported: {count} problem{'s' if count != 1 else ''}", file=file
+            f"not exported: {count} problem{'s' if count != 1 else ''}{hint}", file=file
         ) from None
+    write_atomically(output, written.data)
+    echo_diagnostics(written.allowed, document, file)
     click.echo(f"{output}: OpenSCENARIO {osc_version} ({profile})")

@@ -78,6 +78,9 @@ VIEWS: dict[str, tuple[str, ...]] = {
         "AccelerationCondition",
         "AppearanceManeuver",
         "LightState",
+        "CouplingManeuver",
+        "ConnectTrailer",
+        "DisconnectTrailer",
         "ControllerManeuver",
         "ActivateController",
         "AssignController",
@@ -150,6 +153,7 @@ CATEGORY_FILL = {
     "composite": "#9ee6a0",
     "controller": "#8e7cc3",
     "appearance": "#80cbc4",
+    "coupling": "#bcaaa4",
     "condition": "#9ec9ff",
     "global": "#ffb74d",
 }

@@ -455,11 +455,12 @@ def plan_ttc(ctx: Context, node: scm.TimeToCollision, groups: list[Group]) -> Pl
 finish_marker = _finish_marker
 
 # Registers the planners of sceml import's OpaqueAction, the controller changes, the global
-# kinds, Follow and Approach, LaneOffset, LightState, MatchSpeed, StandStill and
-# AccelerationCondition.
+# kinds, Follow and Approach, LaneOffset, LightState, MatchSpeed, StandStill,
+# AccelerationCondition and the trailer couplings.
 from . import (  # noqa: E402, F401
     appearance,
     controller_actions,
+    coupling,
     distance_keeping,
     global_kinds,
     lane_offset,

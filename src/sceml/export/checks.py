@@ -76,6 +76,24 @@ def model_problems(scenario: scm.Scenario) -> list[Diagnostic]:
     return [d for d in validate(scenario) if d.severity == Severity.ERROR]
 
 
+#: The plausibility rules' codes (paper rule 5, `sceml.validation.plausibility`): a speed or rate
+#: above what its actor kind can plausibly reach. The values are the model's own statement.
+PLAUSIBILITY_PREFIX = "SCEML-L"
+
+
+def split_implausible(problems: Iterable[Diagnostic]) -> tuple[list[Diagnostic], list[Diagnostic]]:
+    """The problems that still refuse an export allowed to be implausible, and the plausibility
+    limits it writes anyway, each turned into a warning that says so."""
+    refusing, allowed = [], []
+    for problem in problems:
+        if problem.code.startswith(PLAUSIBILITY_PREFIX):
+            note = f"{problem.message} (written anyway: --allow-implausible)"
+            allowed.append(replace(problem, severity=Severity.WARNING, message=note))
+        else:
+            refusing.append(problem)
+    return refusing, allowed
+
+
 def expressibility_problems(flat: scm.Scenario, version: str, profile: str) -> list[Diagnostic]:
     """What the mapping needs of a (flattened) scenario: the registry's export rules, run with the
     chosen version and profile (see `export_rules`)."""

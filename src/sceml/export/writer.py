@@ -55,6 +55,9 @@ class XoscDocument:
     tree: etree._ElementTree
     #: SceML node name -> (its first event, its finish event).
     events_of: dict[str, tuple[str, str]]
+    #: The plausibility limits the model breaks and the export wrote anyway (allow_implausible),
+    #: as warnings; empty otherwise.
+    allowed: tuple[Diagnostic, ...] = ()
 
 
 def build_xosc(
@@ -69,11 +72,15 @@ def build_xosc(
     parameters: ParameterHook | None = None,
     town: str | None = None,
     check_model: bool = True,
+    allow_implausible: bool = False,
 ) -> XoscDocument:
     """Map a concrete scenario to OpenSCENARIO bytes and tree, validated against the XSD.
 
     Raises ExportError (with diagnostics) for anything that cannot be exported and
     InvalidOutputError if the result fails the schema (a bug in the mapping).
+    `allow_implausible` writes a model whose plausibility limits (SCEML-L) are its only errors:
+    a speed or rate above its actor kind's is what the scenario states, which players run as
+    stated; they come back as the document's `allowed` warnings.
     """
     request = unsupported_reason("RootNode", version, profile)
     if request is not None:
@@ -83,8 +90,12 @@ def build_xosc(
         expand(scenario) if any(isinstance(n, scm.ModuleUse) for n in scenario.nodes) else None
     )
     flat = flattened.scenario if flattened is not None else scenario
+    allowed: list[Diagnostic] = []
     if check_model:
-        _refuse(checks.model_problems(scenario), source_path)
+        problems = checks.model_problems(scenario)
+        if allow_implausible:
+            problems, allowed = checks.split_implausible(problems)
+        _refuse(problems, source_path)
     problems = checks.expressibility_problems(flat, version, profile)
     _refuse(checks.traced(problems, flattened), source_path)
     root = graph.root_node(flat)
@@ -108,7 +119,7 @@ def build_xosc(
         raise InvalidOutputError(
             f"internal error: the OpenSCENARIO {version} output fails its XSD: {details}"
         )
-    return XoscDocument(serialise(tree), tree, view.events_of)
+    return XoscDocument(serialise(tree), tree, view.events_of, tuple(allowed))
 
 
 def export(scenario: scm.Scenario, **options: object) -> etree._ElementTree:

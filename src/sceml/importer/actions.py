@@ -437,9 +437,10 @@ def _lane_offset(
     return node
 
 
-#: What other modules use to register and add their own kinds (global_kinds.py, lights.py).
+#: What other modules use to register and add their own kinds (global_kinds.py, lights.py,
+#: trailers.py).
 maps = _maps
 add_node = _add
 
 # Register their actions' mappers.
-from . import controllers, distance_keeping, global_kinds, lights  # noqa: E402, F401
+from . import controllers, distance_keeping, global_kinds, lights, trailers  # noqa: E402, F401

@@ -104,6 +104,7 @@ def _private(build: Build, actor: scm.Actor, private: etree._Element) -> bool:
     if (
         private.find("LateralAction/LaneOffsetAction") is not None
         or private.find("AppearanceAction/LightStateAction") is not None
+        or private.find("TrailerAction") is not None  # release 1.5's couplings
     ):
         return _from_the_start(build, actor, private)
     speed = private.find("LongitudinalAction/SpeedAction")

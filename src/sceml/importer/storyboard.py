@@ -189,7 +189,7 @@ class Storyboard:
             for each in info.actors:
                 made = self._action(info, action, each, kind)
                 before = activation
-                if not _beside_speed(made):
+                if not _beside_speed(made, action):
                     before = after.pop(str(each.name), activation)
                 if before is not activation:
                     nodes.remove(before)
@@ -359,7 +359,15 @@ def _is_step_speed(action: etree._Element) -> bool:
     return dynamics is not None and dynamics.get("dynamicsShape") == "step"
 
 
-def _beside_speed(node: scm.GraphElement) -> bool:
+def _beside_speed(node: scm.GraphElement, action: etree._Element) -> bool:
     """A maneuver that leaves the speed alone (a lane change, a FollowTrajectory: `model.axes`)
-    runs beside a step speed change of its event, as players run them, not after it."""
+    runs beside a step speed change of its event, as players run them, not after it; so does
+    an opaque trajectory followed without timing (a clothoid: `trailer_connect`'s reverse
+    started a step after its speed, and esmini then left the car standing)."""
+    if isinstance(node, scm.OpaqueAction):
+        return action.find(_UNTIMED_TRAJECTORY) is not None
     return isinstance(node, scm.Maneuver) and "longitudinal" not in maneuver_axes(node)
+
+
+#: A FollowTrajectoryAction followed at the actor's speed: players leave the speed alone.
+_UNTIMED_TRAJECTORY = "PrivateAction/RoutingAction/FollowTrajectoryAction/TimeReference/None"

@@ -36,6 +36,7 @@ CATEGORIES = (
     "composite",
     "controller",
     "appearance",
+    "coupling",
     "condition",
     "global",
 )
@@ -201,8 +202,8 @@ def class_name(kind: EObject | EClass | type | str) -> str:
 
 
 def category(kind: EObject | EClass | type | str) -> str | None:
-    """`longitudinal`, `lateral`, `composite`, `controller`, `appearance`, `condition` or `global` for action
-    nodes (`opaque` for an OpaqueAction), else None."""
+    """`longitudinal`, `lateral`, `composite`, `controller`, `appearance`, `coupling`,
+    `condition` or `global` for action nodes (`opaque` for an OpaqueAction), else None."""
     return _node_details(class_name(kind)).get("category")
 
 

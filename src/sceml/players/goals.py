@@ -249,9 +249,16 @@ def _speed_rule(node: EObject, at: Moment) -> str | None:
     return None if held else f"the speed was {speed:.2f} m/s, not {rule} {threshold:g} m/s"
 
 
-@goal("ActivateController", "AssignController", "OverrideController")
+@goal(
+    "ActivateController",
+    "AssignController",
+    "OverrideController",
+    "ConnectTrailer",
+    "DisconnectTrailer",
+)
 def _at_once(node: EObject, at: Moment) -> str | None:
-    """A controller change completes in the step it starts (`meaning.completes_at_once`)."""
+    """A controller change or a trailer coupling completes in the step it starts
+    (`meaning.completes_at_once`, esmini's TrailerAction)."""
     took = at.finish - at.start
     if took > at.run.step + 1e-6:
         return f"it took {took:.2f} s after its start; a controller change completes at once"

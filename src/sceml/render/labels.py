@@ -316,7 +316,16 @@ def action_lines(node: scm.ActionNode, scope: Scope) -> list[str]:
         return global_lines(node)
     if isinstance(node, scm.ControllerManeuver):
         return [actor_line(node, scope), *controller_lines(node)]
+    if isinstance(node, scm.CouplingManeuver):
+        return [participant_text(node.referenceActor, scope), coupling_line(node, scope)]
     return [actor_line(node, scope), *(f"{k}: {v}" for k, v in parameter_items(node, scope))]
+
+
+def coupling_line(node: scm.CouplingManeuver, scope: Scope) -> str:
+    """What a trailer coupling does: `tows: trailer` (its target), or `uncouples its trailer`."""
+    if isinstance(node, scm.ConnectTrailer):
+        return f"tows: {participant_text(node.targetActor, scope)}"
+    return "uncouples its trailer"
 
 
 #: How a global node reads: a rule or change as its operator.

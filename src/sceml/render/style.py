@@ -56,6 +56,8 @@ CATEGORY_LOOKS = {
     "controller": Look("sceml-controller", "Controller change", _box("#8e7cc3", "#4b3b8a")),
     # Teal: a change of the actor's lights, apart from every maneuver colour and the condition blue.
     "appearance": Look("sceml-appearance", "Appearance (lights)", _box("#80cbc4", "#00695c")),
+    # Brown: a trailer coupled or uncoupled, apart from every maneuver colour and the opaque grey.
+    "coupling": Look("sceml-coupling", "Trailer coupling", _box("#bcaaa4", "#5d4037")),
     "condition": Look("sceml-condition", "Condition", _box("#8ab4f8", "#1a56b0", rounded=True)),
     # Performed by no actor (a parameter, a variable, a traffic signal): orange, apart from the
     # controller's violet and the longitudinal yellow.

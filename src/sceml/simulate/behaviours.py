@@ -23,8 +23,9 @@ from ..export.entities import performance_of
 from ..maps import RoadMap
 from ..model import speed_shapes
 from ..model.params import concrete
+from ..model.towing import Coupling
 from ..xosc import meaning
-from . import lanes
+from . import lanes, trailers
 from .actors import Actor, GapKeeping, GapSpec, Hold, Ramp, ShapedRamp, Shift, SpeedMatching
 from .paths import LaneSpot, Path, joined, straight
 from .world import World
@@ -527,3 +528,31 @@ class MatchSpeed(Behaviour):
         if not self.node.continuous:
             self.actor.control = Hold()
         return True
+
+
+@kind("ConnectTrailer")
+class ConnectTrailer(Behaviour):
+    """Couple the target actor to the actor's hitch (release 1.5): from the next drag on it is
+    towed (`trailers.connect`); finished at once, as players complete the action."""
+
+    def start(self, world: World) -> None:
+        trailer = world.actor(self.node.targetActor, self.name)
+        link = Coupling(
+            self.actor.name,
+            trailer.name,
+            concrete(self.node.referenceActor, "hitchX"),
+            concrete(self.node.targetActor, "couplerX"),
+        )
+        trailers.connect(world.actors, world.couplings, link, rolls_on=world.road_map is not None)
+        world.towed_by[trailer.name] = self.actor.name
+
+
+@kind("DisconnectTrailer")
+class DisconnectTrailer(Behaviour):
+    """Uncouple what the actor tows (release 1.5): the trailer rolls on straight at its speed
+    on a map with roads and stops without one (`trailers.disconnect`); finished at once."""
+
+    def start(self, world: World) -> None:
+        rolls_on = world.road_map is not None
+        if trailers.disconnect(world.actors, world.couplings, self.actor.name, rolls_on) is None:
+            world.note(f"{self.name}: {self.actor.name} tows nothing; nothing to uncouple")

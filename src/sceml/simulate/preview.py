@@ -108,7 +108,7 @@ def _simulate(
     states = np.array(rows, dtype=float).reshape(len(rows), len(names), 4).transpose(1, 0, 2)
     states[:, :, 2] = np.unwrap(states[:, :, 2], axis=1)
     time_array = np.array(times)
-    towers = {link.trailer: link.tower for link in world.couplings}
+    towers = {**world.towed_by, **{link.trailer: link.tower for link in world.couplings}}
     infos = tuple(
         ActorInfo(a.name, a.kind, a.ego, a.length, a.width, a.box_ahead, towers.get(a.name, ""))
         for a in world.actors.values()

@@ -38,6 +38,9 @@ class World:
     values: dict[tuple[bool, str], str] = field(default_factory=dict)
     #: Who tows whom, towers first (`model.towing.couplings`); dragged after every step.
     couplings: list[Coupling] = field(default_factory=list)
+    #: Every trailer coupled during the run (ConnectTrailer, release 1.5) and its last tower:
+    #: a pair coupled at any time gets no gap or collision metrics.
+    towed_by: dict[str, str] = field(default_factory=dict)
 
     def actor(self, participant: EObject | None, node: str) -> Actor:
         """The actor a node's reference or target names."""

@@ -87,7 +87,8 @@ def actors_declared_here(node: scm.ActionNode, context: Context) -> Iterator[Fin
     ERROR,
     "ActionNode",
     "kinds that act relative to another actor (Follow, Approach, MatchSpeed, Overtake, "
-    "InVehicleRadius, TimeToCollision, TimeHeadway) have a target actor",
+    "InVehicleRadius, TimeToCollision, TimeHeadway; ConnectTrailer its trailer) have a target "
+    "actor",
     reads=Reads(SELF),
     export=True,
 )
@@ -196,6 +197,25 @@ def trailers_form_chains(root: scm.RootNode, context: Context) -> Iterator[Findi
             names = ", ".join(label(a) for a in by)
             yield towed, f"actor {label(towed)} is towed by {len(by)} actors ({names}); at most one"
     yield from _towing_loops(actors)
+
+
+@constraint(
+    "SCEML-A010",
+    ERROR,
+    ("ConnectTrailer", "DisconnectTrailer"),
+    "a trailer coupling's actors are vehicles: pedestrians neither tow nor are towed (release "
+    "1.5's ConnectTrailer and DisconnectTrailer, as for Actor.trailer)",
+    # the reference's and target's kinds
+    reads=Reads(SELF | ACTORS),
+)
+def couplings_join_vehicles(node: scm.CouplingManeuver, context: Context) -> Iterator[Finding]:
+    for role, participant in (("tower", node.referenceActor), ("trailer", node.targetActor)):
+        if isinstance(participant, scm.Pedestrian):
+            yield (
+                node,
+                f"{node.eClass.name} {node.name!r}: its {role} {label(participant)} is a "
+                "pedestrian; pedestrians neither tow nor are towed",
+            )
 
 
 def _towing_loops(actors: list[scm.Actor]) -> Iterator[Finding]:

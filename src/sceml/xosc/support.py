@@ -25,8 +25,10 @@ MAPPED_KINDS = frozenset(
         "ActivateController",
         "Approach",
         "AssignController",
+        "ConnectTrailer",
         "Cross",
         "Decelerate",
+        "DisconnectTrailer",
         "DriveDistance",
         "Follow",
         "FollowTrajectory",
@@ -70,7 +72,9 @@ REPEATABLE_KINDS = frozenset(
         "Accelerate",
         "ActivateController",
         "AssignController",
+        "ConnectTrailer",
         "Decelerate",
+        "DisconnectTrailer",
         "LaneChange",
         "LaneOffset",
         "LightState",
@@ -107,6 +111,8 @@ SINCE: dict[str, tuple[str, str | None]] = {
     # VehicleLight (its LightType is a sequence; 1.3 made it a choice), so an XSD-valid 1.2
     # file cannot switch a vehicle light.
     "LightState": ("1.3", "1.2's schema asks for a user-defined light beside each vehicle light"),
+    "ConnectTrailer": ("1.3", "TrailerAction came with 1.3"),
+    "DisconnectTrailer": ("1.3", "TrailerAction came with 1.3"),
 }
 
 
