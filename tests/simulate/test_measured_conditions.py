@@ -149,3 +149,24 @@ def test_in_vehicle_radius_beyond_the_radius_with_greater_than() -> None:
     far = b.add("InVehicleRadius", ego, target=lead, radius=25.0, rule="greaterThan")
     b.chain(b.root, far, b.end)
     assert simulate(b.scenario).node(str(far.name)).finished == pytest.approx(1.55)
+
+
+def test_the_gap_between_the_boxes_is_found_only_where_it_is_measured(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # Finding the gap between two boxes was 60-70 % of a preview of UIS2, whose radius checks
+    # measure between the reference points (issue 31): it is only worked out for freespace.
+    from sceml.simulate import conditions
+
+    calls: list[int] = []
+    found = conditions.free_distance_now
+
+    def counted(a: conditions.Actor, b: conditions.Actor) -> float:
+        calls.append(1)
+        return found(a, b)
+
+    monkeypatch.setattr(conditions, "free_distance_now", counted)
+    assert ttc_run(0.0, freespace=False)[0] == pytest.approx(2.05)
+    assert calls == []
+    assert ttc_run(0.0)[0] == pytest.approx(1.65)
+    assert calls

@@ -93,7 +93,9 @@ def in_vehicle_radius(node: EObject, world: World) -> Test:
     previous: list[float | None] = [None]
 
     def holds(w: World) -> bool:
-        distance = meaning.measured_distance(separation(actor, other), freespace, measure)
+        distance = meaning.measured_distance(
+            separation(actor, other, freespace), freespace, measure
+        )
         if rule in ("lessThan", "lessOrEqual"):
             # Within the radius counts its edge, as InVehicleRadius always has.
             result = distance <= radius + 1e-9
@@ -137,8 +139,9 @@ def traveled_distance(node: EObject, world: World) -> Test:
 _MEASURED_FRAMES = ("entity",)
 
 
-def separation(actor: Actor, other: Actor) -> meaning.Separation:
-    """Where `other` is from `actor`, in the actor's frame."""
+def separation(actor: Actor, other: Actor, freespace: bool) -> meaning.Separation:
+    """Where `other` is from `actor`, in the actor's frame; the gap between their boxes only
+    where the measure is taken between them (`freespace`): it costs far more than the rest."""
     dx, dy = other.x - actor.x, other.y - actor.y
     cos, sin = math.cos(actor.heading), math.sin(actor.heading)
     centres = None
@@ -155,7 +158,7 @@ def separation(actor: Actor, other: Actor) -> meaning.Separation:
         width=actor.width,
         target_length=other.length,
         target_width=other.width,
-        box_gap=free_distance_now(actor, other),
+        box_gap=free_distance_now(actor, other) if freespace else None,
         centres=centres,
     )
 
@@ -178,7 +181,9 @@ def time_headway(node: EObject, world: World) -> Test:
     _frame_note(node, world)
 
     def holds(w: World) -> bool:
-        headway = meaning.time_headway(separation(actor, other), freespace, measure, actor.speed)
+        headway = meaning.time_headway(
+            separation(actor, other, freespace), freespace, measure, actor.speed
+        )
         # Undefined (target behind, standing): players hold no rule then.
         return headway is not None and _compare(node.rule, headway, threshold, None)
 
@@ -195,7 +200,7 @@ def time_to_collision(node: EObject, world: World) -> Test:
 
     def holds(w: World) -> bool:
         ttc = meaning.time_to_collision(
-            meaning.measured_distance(separation(actor, other), freespace, measure),
+            meaning.measured_distance(separation(actor, other, freespace), freespace, measure),
             actor.velocity(),
             actor.speed,
             other.velocity(),

@@ -259,8 +259,9 @@ class Separation:
     width: float
     target_length: float
     target_width: float
-    #: The least distance between the two boxes' outlines (0 while they overlap).
-    box_gap: float
+    #: The least distance between the two boxes' outlines (0 while they overlap); None where
+    #: the measure is not taken between the boxes (finding it is most of a preview step's cost).
+    box_gap: float | None
     #: Where the target's box centre is from the actor's (ahead, left), where a box is not
     #: centred on its reference point (Actor.boxCenterX); None: the same as (ahead, left).
     centres: tuple[float, float] | None = None
@@ -278,7 +279,11 @@ def measured_distance(at: Separation, freespace: bool, kind: str) -> float:
     if kind == "lateral":
         reach = (at.width + at.target_width) / 2 if freespace else 0.0
         return max(0.0, abs(left) - reach)
-    return at.box_gap if freespace else math.hypot(at.ahead, at.left)
+    if not freespace:
+        return math.hypot(at.ahead, at.left)
+    if at.box_gap is None:
+        raise ValueError("a distance between the boxes needs the separation's box_gap")
+    return at.box_gap
 
 
 #: TraveledDistance counts the actor's odometer from the start of the simulation, every metre
