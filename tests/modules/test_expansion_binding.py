@@ -9,6 +9,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from core.model_state import difference, model_state
 from pyecore.ecore import EObject
 
 import scemlmodel as scm
@@ -16,8 +17,6 @@ from sceml.errors import LoadError
 from sceml.model.loading import load
 from sceml.modules import expansion as expansion_module
 from sceml.modules.errors import FlattenError
-
-from core.model_state import difference, model_state
 
 REPO = Path(__file__).resolve().parents[2]
 FILES = sorted(

@@ -67,9 +67,7 @@ def test_the_shared_adjacency_answers_as_the_flow_walks(seed: int) -> None:
     rng = random.Random(seed)
     for backwards in (False, True):
         starts = rng.sample(nodes, rng.randint(1, min(3, len(nodes))))
-        assert reached(adjacency, starts, backwards=backwards) == _walk(
-            scenario, starts, backwards
-        )
+        assert reached(adjacency, starts, backwards=backwards) == _walk(scenario, starts, backwards)
     assert left_by_kahn(adjacency) == topological_order(scenario)[1]
 
 

@@ -174,7 +174,7 @@ def replace_child(parent: EObject, slot: Slot, child: EObject | None) -> bool:
         previous._container = None
         previous._containment_feature = None
     # The link to the container, recorded as pyecore records a reference without an opposite.
-    if hasattr(child, "_inverse_rels"):
+    if child is not None and hasattr(child, "_inverse_rels"):
         if hasattr(previous, "_inverse_rels"):
             previous._inverse_rels.remove(couple)
         child._inverse_rels.add(couple)

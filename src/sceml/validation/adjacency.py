@@ -41,12 +41,12 @@ class OwnAdjacency:
     def successors(self, node: EObject) -> list[EObject]:
         """Nodes `node` has a flow to (a node of another graph is read from its flows)."""
         found = self._successors.get(node)
-        return found if found is not None else successors(node)  # type: ignore[arg-type]
+        return found if found is not None else successors(node)
 
     def predecessors(self, node: EObject) -> list[EObject]:
         """Nodes with a flow into `node` (a node of another graph is read from its flows)."""
         found = self._predecessors.get(node)
-        return found if found is not None else predecessors(node)  # type: ignore[arg-type]
+        return found if found is not None else predecessors(node)
 
 
 def _ends(node: EObject, flows: str, end: str) -> list[EObject]:
