@@ -36,9 +36,11 @@ PEAK = (
 )
 PROGRAMS = {
     "python + lxml import": PEAK.format(body="import lxml.etree"),
-    "python + sceml.io import": PEAK.format(body="from sceml import io"),
+    "python + sceml loading import": PEAK.format(body="from sceml.model.loading import load"),
     "lxml parse (anchor)": PEAK.format(body="from lxml import etree; etree.parse(sys.argv[1])"),
-    "sceml.model.loading.load (ours)": PEAK.format(body="from sceml import io; load(sys.argv[1])"),
+    "sceml.model.loading.load (ours)": PEAK.format(
+        body="from sceml.model.loading import load; load(sys.argv[1])"
+    ),
 }
 
 
@@ -62,7 +64,7 @@ def main(argv: list[str] | None = None) -> None:
         peaks = {name: peak_megabytes(program, path) for name, program in PROGRAMS.items()}
         for name, megabytes in peaks.items():
             print(f"  peak RSS {name:<24} {megabytes:8.1f} MB")
-        ours = peaks["sceml.model.loading.load (ours)"] - peaks["python + sceml.io import"]
+        ours = peaks["sceml.model.loading.load (ours)"] - peaks["python + sceml loading import"]
         anchor = peaks["lxml parse (anchor)"] - peaks["python + lxml import"]
         print(
             f"  above the imports: ours {ours:.1f} MB, lxml {anchor:.1f} MB, {ours / anchor:.2f}x"

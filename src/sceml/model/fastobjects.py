@@ -146,6 +146,43 @@ def add_child(parent: EObject, slot: Slot, child: EObject) -> None:
     child_state["_inverse_rels"].add((parent, feature))
 
 
+def replace_child(parent: EObject, slot: Slot, child: EObject | None) -> bool:
+    """`parent.<feature> = child` for a single-valued containment that holds a value already,
+    where `child` is new (no container, no resource): what pyecore's setter leaves, the old
+    value let go. Returns False, having done nothing, for any other case (the caller then uses
+    pyecore's setter).
+
+    Module expansion replaces every parameter reference of a use's copies by a copy of its
+    chosen value this way: thousands per large scenario, each a notification walk through
+    pyecore's setter.
+    """
+    holder = parent.__dict__.get(slot.name)
+    if type(holder) is not EValue or not slot.is_cont or slot.many or slot.opposite is not None:
+        return False
+    if child is not None and (child._container is not None or child._eresource is not None):
+        return False
+    holder.check(child)  # pyecore's type check, with its error
+    previous = holder._value
+    holder._value = child
+    feature = slot.feature
+    parent._isset[feature] = None
+    couple = (parent, feature)
+    if child:
+        child._container = parent
+        child._containment_feature = feature
+    if previous:
+        previous._container = None
+        previous._containment_feature = None
+    # The link to the container, recorded as pyecore records a reference without an opposite.
+    if child is not None and hasattr(child, "_inverse_rels"):
+        if hasattr(previous, "_inverse_rels"):
+            previous._inverse_rels.remove(couple)
+        child._inverse_rels.add(couple)
+    elif child is None and hasattr(previous, "_inverse_rels"):
+        previous._inverse_rels.remove(couple)
+    return True
+
+
 def set_reference(obj: EObject, slot: Slot, target: EObject) -> None:
     """`obj.<feature> = target` for a single-valued cross reference not set before, and the
     opposite end: `target.<opposite>` gains `obj`."""

@@ -22,6 +22,7 @@ import scemlmodel as scm
 
 from ..model.collector import collector_paused
 from ..model.copying import Copier
+from ..model.fastobjects import replace_child, slot
 from ..model.locating import model_path
 from ..model.traversal import (
     all_contents,
@@ -454,9 +455,10 @@ def _bind_parameters(
         if chosen is None:
             chosen = parameter.default
         # An unset value means the language default, as everywhere else in a scenario.
-        ref.eContainer().eSet(
-            ref.eContainmentFeature(), _copy(chosen, copiers) if chosen is not None else None
-        )
+        value = _copy(chosen, copiers) if chosen is not None else None
+        holder, feature = ref.eContainer(), ref.eContainmentFeature()
+        if not replace_child(holder, slot(feature), value):
+            holder.eSet(feature, value)
     return copiers
 
 

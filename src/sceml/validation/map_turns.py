@@ -23,7 +23,8 @@ from ..maps import (
 from ..maps.positions import Located, centre
 from ..maps.routes import Route, routes_from, way_to
 from ..model.departure import latest_placing, place_after
-from ..model.graph import Flows, OwnFlows, reachable
+from ..model.graph import Flows, reachable
+from .adjacency import own_adjacency
 from .context import Context, is_kind
 from .map_rules import (
     HEADING_LIMIT,
@@ -50,7 +51,7 @@ def _flows_of(node: EObject, context: Context) -> Flows:
         flat = context.flat()
         if flat is not None and flat.holds(node):
             return flat
-    return context.memo(("own flows", graph), lambda: OwnFlows(graph))
+    return own_adjacency(graph, context)
 
 
 def _ancestors(node: EObject, flows: Flows, context: Context) -> set[EObject]:

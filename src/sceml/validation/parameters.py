@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
+from functools import cache
 
-from pyecore.ecore import EObject
+from pyecore.ecore import EClass, EObject
 
 import scemlmodel as scm
 
@@ -110,17 +111,26 @@ def no_spread_when_concrete(value: EObject, context: Context) -> Iterator[Findin
         )
 
 
+@cache
+def _required_positions(eclass: EClass) -> tuple[tuple[str, bool, int], ...]:
+    """REQUIRED_POSITIONS that apply to a metaclass, with whether each feature is many-valued:
+    worked out once per class, not once per node."""
+    return tuple(
+        (feature, bool(eclass.findEStructuralFeature(feature).many), minimum)
+        for kind, feature, minimum in REQUIRED_POSITIONS
+        if is_kind(eclass.name, kind)
+    )
+
+
 def _missing_parameters(owner: EObject) -> Iterator[str]:
     for spec in catalog.parameters(owner.eClass.name):
         if spec.required and single_value(owner, spec.name) is None:
             yield spec.name
-    for kind, feature, minimum in REQUIRED_POSITIONS:
-        if is_kind(owner.eClass.name, kind):
-            held = owner.eGet(feature)
-            many = owner.eClass.findEStructuralFeature(feature).many
-            count = len(held) if many else int(held is not None)
-            if count < minimum:
-                yield feature if minimum == 1 else f"{feature} (at least {minimum})"
+    for feature, many, minimum in _required_positions(owner.eClass):
+        held = owner.eGet(feature)
+        count = len(held) if many else int(held is not None)
+        if count < minimum:
+            yield feature if minimum == 1 else f"{feature} (at least {minimum})"
     if isinstance(owner, scm.LanePosition | scm.RoadPosition) and not owner.roadId:
         yield "roadId"
 

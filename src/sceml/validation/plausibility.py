@@ -70,7 +70,14 @@ def actor_limit(actor: EObject, context: Context, key: str) -> tuple[float | Non
     """The limit `key` above which an actor's values are implausible (L001..L003), and whose
     it is: its kind's, unless the actor states a higher one itself (esmini's catalog bus is good
     for 70 m/s, and plays so). An own limit below the kind's does not make a value beyond it
-    implausible: the players hold the actor to it, which SCEML-L005 says."""
+    implausible: the players hold the actor to it, which SCEML-L005 says.
+
+    Once per run, actor and key: each of an actor's nodes asks for each of its limits.
+    """
+    return context.memo(("actor limit", actor, key), lambda: _actor_limit(actor, context, key))
+
+
+def _actor_limit(actor: EObject, context: Context, key: str) -> tuple[float | None, str]:
     kind = context.limits.limit(actor.eClass.name, key)
     own = own_limit(actor, key)
     if own is not None and (kind is None or own > kind):

@@ -2,14 +2,16 @@
 
 from __future__ import annotations
 
-from collections import Counter, deque
+from collections import Counter
 from collections.abc import Iterator
 
 import scemlmodel as scm
 
 from ..diagnostics import Severity
-from ..model.graph import nodes_of, topological_order
+from ..model.graph import nodes_of
 from ..model.traversal import single_value
+from .adjacency import left_by_kahn, own_adjacency
+from .adjacency import reached as reached_from
 from .context import Context
 from .reads import SELF, SHAPE, Reads
 from .registry import Finding, constraint
@@ -104,24 +106,6 @@ def _starts_and_ends(
     return nodes_of(graph, scm.RootNode), nodes_of(graph, scm.EndNode)
 
 
-def _reached(
-    graph: scm.Graph, starts: list[scm.GraphElement], *, backwards: bool
-) -> set[scm.GraphElement]:
-    """Nodes of `graph` reachable from `starts`; flows leaving the graph are not followed."""
-    members = set(graph.nodes)
-    seen = set(starts)
-    queue = deque(starts)
-    while queue:
-        node = queue.popleft()
-        flows = node.incoming if backwards else node.outgoing
-        for flow in flows:
-            neighbour = flow.source if backwards else flow.target
-            if neighbour is not None and neighbour in members and neighbour not in seen:
-                seen.add(neighbour)
-                queue.append(neighbour)
-    return seen
-
-
 @constraint(
     "SCEML-S006",
     ERROR,
@@ -134,7 +118,7 @@ def nodes_reachable_from_start(graph: scm.Graph, context: Context) -> Iterator[F
     starts, _ = _starts_and_ends(graph)
     if not starts:
         return  # S001 or M007 says so
-    reached = _reached(graph, starts, backwards=False)
+    reached = reached_from(own_adjacency(graph, context), starts, backwards=False)
     start = "the in-port" if isinstance(graph, scm.ModuleDefinition) else "the root node"
     for node in graph.nodes:
         if node not in reached and node not in starts:
@@ -153,7 +137,7 @@ def nodes_reach_the_end(graph: scm.Graph, context: Context) -> Iterator[Finding]
     _, ends = _starts_and_ends(graph)
     if not ends:
         return
-    reached = _reached(graph, ends, backwards=True)
+    reached = reached_from(own_adjacency(graph, context), ends, backwards=True)
     end = "the out-port" if isinstance(graph, scm.ModuleDefinition) else "the end node"
     for node in graph.nodes:
         if node not in reached and node not in ends:
@@ -168,7 +152,7 @@ def nodes_reach_the_end(graph: scm.Graph, context: Context) -> Iterator[Finding]
     reads=Reads(aspects=SHAPE),
 )
 def no_cycles(graph: scm.Graph, context: Context) -> Iterator[Finding]:
-    _, left = topological_order(graph)
+    left = left_by_kahn(own_adjacency(graph, context))
     if not left:
         return
     # Kahn's leftovers include nodes merely downstream of a cycle; peeling those whose
