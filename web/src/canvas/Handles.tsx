@@ -1,19 +1,16 @@
 // The in (target) and out (source) handle of a node, on the sides the layout direction gives.
 // Both are keyboard controls too: Enter on an out-handle starts a connection, Enter on another
-// node's in-handle ends it (as do C on a selected node and C on the target). Zoomed out below
-// FAR_ZOOM they are not drawn (a handle is a few pixels there, and 1,000 of them at 500 nodes
-// cost a first paint a quarter of React's work): edges end where `handlesOf` says, and
-// C connects the selected nodes.
+// node's in-handle ends it (as do C on a selected node and C on the target). They are drawn at
+// any zoom: React Flow measures a node's handles in the page when it draws the node, and a node
+// drawn without them (tried zoomed out, where they are a few pixels) lost its edges.
 
 import { Handle, Position, useNodeId } from "@xyflow/react";
 import type { KeyboardEvent } from "react";
 import { useDiagram } from "./context";
-import { useFar } from "./zoom";
 
 export function Handles({ connectable, name }: { connectable: boolean; name?: string }) {
   const { direction, connectFrom, keyConnect } = useDiagram();
   const id = useNodeId();
-  const far = useFar();
   const across = direction === "RIGHT";
   const keyboard = connectable && id !== null && name !== undefined;
   const onKey = (end: "source" | "target") => (event: KeyboardEvent) => {
@@ -22,7 +19,6 @@ export function Handles({ connectable, name }: { connectable: boolean; name?: st
     event.stopPropagation();
     keyConnect(id, end);
   };
-  if (far) return null;
   const into = connectFrom !== null && connectFrom.id !== id ? `Connect ${connectFrom.name} to ${name}` : `Connect into ${name}`;
   return (
     <>
