@@ -6,7 +6,8 @@ Starts `sceml edit` on UIS2 (examples/uis2-concrete.xmi) and on a valid 500-node
 real map (benchmarks/scale_scenarios.py: every node kind, module uses) and drives Debian's Chromium
 (/usr/bin/chromium) with Playwright, as a user would:
 
-- first paint: from navigation start to the frame in which every top-level node is drawn, for
+- first paint: from navigation start to the frame in which every top-level node is drawn
+  inside the canvas (the whole diagram in view, fitted), for
   the file as given (no saved places: ELK lays it out; a large graph is drawn first in the
   page's quick layout, then where ELK puts it: "ELK done" says when, from navigation start) in a
   browser that has never shown it; then reloaded (the browser keeps the layout ELK made, so
@@ -63,6 +64,21 @@ GOALS = {"first paint": 1000.0, "edit to canvas": 100.0, "drop to drawn": 100.0}
 
 DRAWN = "document.querySelectorAll('.react-flow__node').length"
 
+#: Every top-level node drawn and inside the canvas: the whole diagram in view. (Counting the
+#: nodes alone was met, until the fourth pass of 26 Nov, by React Flow drawing every node once
+#: at zoom 1, most of them outside the canvas, before the first fit.)
+IN_VIEW = """n => {
+  const nodes = document.querySelectorAll('.react-flow__node');
+  if (nodes.length < n) return false;
+  const pane = document.querySelector('.react-flow').getBoundingClientRect();
+  for (const node of nodes) {
+    const r = node.getBoundingClientRect();
+    if (r.left < pane.left - 1 || r.right > pane.right + 1
+        || r.top < pane.top - 1 || r.bottom > pane.bottom + 1) return false;
+  }
+  return performance.now();
+}"""
+
 
 def start_server(
     path: Path, log: Path, source: Path | None = None
@@ -98,8 +114,9 @@ FORGET = "() => { try { localStorage.clear(); } catch (error) { return String(er
 
 
 def first_paint(page: Any, url: str, top_level: int, *, fresh: bool) -> tuple[float, float]:
-    """Ms from navigation start to the frame that shows `top_level` nodes, and to the end of
-    ELK's layout (0 when ELK did not run); `fresh`: as in a browser that never showed the file.
+    """Ms from navigation start to the frame that shows `top_level` nodes, all in view, and to
+    the end of ELK's layout (0 when ELK did not run); `fresh`: as in a browser that never
+    showed the file.
 
     A large graph without places is drawn first in the page's quick layout, then where ELK puts
     it (ELK runs in a worker once the page is idle): the second figure says when that was."""
@@ -107,7 +124,7 @@ def first_paint(page: Any, url: str, top_level: int, *, fresh: bool) -> tuple[fl
         page.evaluate(FORGET)
     page.goto(url)
     handle = page.wait_for_function(
-        f"n => {DRAWN} >= n ? performance.now() : false",
+        IN_VIEW,
         arg=top_level,
         polling="raf",
         timeout=60_000,
