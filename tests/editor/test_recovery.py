@@ -104,3 +104,25 @@ def test_the_journal_writes_after_each_change_and_folds_a_burst() -> None:
     assert writes[-1] == 20, "the last write covers the last change"
     assert len(writes) < 20, "changes that arrived during a write were folded into one"
     journal.stop()
+
+
+def test_the_journal_waits_for_the_changes_to_pause_and_a_stop_writes_at_once() -> None:
+    writes: list[float] = []
+    journal = Journal(lambda: writes.append(time.monotonic()), quiet=30.0, patience=60.0)
+    journal.changed()
+    journal.changed()
+    assert not journal.flush(timeout=0.3), "written before the changes paused"
+    assert writes == []
+    journal.stop()
+    assert len(writes) == 1, "the stop wrote both changes at once, in one write"
+
+
+def test_the_journal_writes_within_its_patience_while_changes_keep_coming() -> None:
+    writes: list[float] = []
+    journal = Journal(lambda: writes.append(time.monotonic()), quiet=30.0, patience=0.2)
+    deadline = time.monotonic() + 20
+    while not writes:
+        assert time.monotonic() < deadline, "a steady stream of changes was never written"
+        journal.changed()  # never a pause of 30 s: only the patience can start the write
+        time.sleep(0.02)
+    journal.stop()

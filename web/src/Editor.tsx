@@ -251,12 +251,12 @@ export function Editor() {
       // whole model, most of a drop's time at 500 nodes) replaces it with the node.
       const look = view?.palette.find((group) => group.items.includes(item))?.look ?? "longitudinal";
       const pending = `${PENDING_PREFIX}${++pendingCount.current}`;
-      diagram.showPending(pendingNode(pending, item.kind, item.label, look, position));
+      diagram.showPending(pendingNode(pending, item.kind, item.label, look, position, direction));
       // Refused (or failed), the box goes; added, the next drawing has the node instead.
       const refused = () => diagram.dropPending(pending);
       void edit([{ op: "add_node", kind: item.kind, position }], `Add ${item.label}`).then((next) => next ?? refused(), refused);
     },
-    [editable, centre, edit, flow, view, diagram],
+    [editable, centre, edit, flow, view, diagram, direction],
   );
 
   const addFromPalette = useStable((item: PaletteItem) => addItem(item));

@@ -1,6 +1,8 @@
 // The in (target) and out (source) handle of a node, on the sides the layout direction gives.
 // Both are keyboard controls too: Enter on an out-handle starts a connection, Enter on another
-// node's in-handle ends it (as do C on a selected node and C on the target).
+// node's in-handle ends it (as do C on a selected node and C on the target). They are drawn at
+// any zoom: React Flow measures a node's handles in the page when it draws the node, and a node
+// drawn without them (tried zoomed out, where they are a few pixels) lost its edges.
 
 import { Handle, Position, useNodeId } from "@xyflow/react";
 import type { KeyboardEvent } from "react";

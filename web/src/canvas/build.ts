@@ -1,9 +1,9 @@
 // From the shown graph and its layout to React Flow's nodes and edges.
 
-import { MarkerType } from "@xyflow/react";
+import { MarkerType, Position, type NodeHandle } from "@xyflow/react";
 import type { Shown } from "../lib/graph";
 import { childrenOf } from "../lib/graph";
-import type { Layout, Measures } from "../lib/layout";
+import type { Direction, Layout, Measures } from "../lib/layout";
 import { componentOf } from "../lib/looks";
 import { frameHeaderHeight, LINE_PX, measureText, nodeSize, TITLE_PX, type Size } from "../lib/sizes";
 import type { ViewNode } from "../types";
@@ -30,6 +30,28 @@ export const measures: Measures = {
   },
 };
 
+/** A drawn handle's size (editor.css: 14 px and a 2 px border), centred on the box's border. */
+const HANDLE_PX = 18;
+
+/** Where a node's in and out handles are before React Flow has measured them in the page.
+ * Without them React Flow draws every node once, visible or not, only to measure its handles:
+ * at 500 nodes that drew 528 boxes with their text before the first fit and took them away
+ * again, most of a first paint. Once a node is drawn its measured handles replace these. */
+export function handlesOf(width: number, height: number, direction: Direction): NodeHandle[] {
+  const half = HANDLE_PX / 2;
+  const box = { width: HANDLE_PX, height: HANDLE_PX };
+  if (direction === "RIGHT") {
+    return [
+      { type: "target", position: Position.Left, x: -half, y: height / 2 - half, ...box },
+      { type: "source", position: Position.Right, x: width - half, y: height / 2 - half, ...box },
+    ];
+  }
+  return [
+    { type: "target", position: Position.Top, x: width / 2 - half, y: -half, ...box },
+    { type: "source", position: Position.Bottom, x: width / 2 - half, y: height - half, ...box },
+  ];
+}
+
 /** React Flow nodes, parents first; `selected` keeps the user's selection across views. */
 export function flowNodes(
   shown: Shown,
@@ -37,6 +59,7 @@ export function flowNodes(
   allNodes: ViewNode[],
   selected: Set<string>,
   readOnly: boolean,
+  direction: Direction,
 ): DiagramNode[] {
   const children = childrenOf(allNodes);
   return shown.nodes.map((node) => {
@@ -53,6 +76,10 @@ export function flowNodes(
       data: { node, width: size.width, height: size.height, expanded, canExpand },
       width: size.width,
       height: size.height,
+      // Known, not measured: "Fit view" fits the nodes React Flow knows the size of, and with
+      // only the visible nodes drawn (onlyRenderVisibleElements) it would measure no others.
+      measured: { width: size.width, height: size.height },
+      handles: handlesOf(size.width, size.height, direction),
       ...(inner ? { parentId: node.parent ?? undefined, extent: "parent" as const } : {}),
       draggable: !locked,
       connectable: !locked,
@@ -92,7 +119,14 @@ export const PENDING_PREFIX = "pending:";
 /** A box for a node being added, drawn at once where it was dropped while the server adds it
  * and validates the model: its answer replaces the box with the real node (or, refused, takes
  * it away). Greyed, and nothing can be done with it. */
-export function pendingNode(id: string, kind: string, title: string, look: string, position: { x: number; y: number }): DiagramNode {
+export function pendingNode(
+  id: string,
+  kind: string,
+  title: string,
+  look: string,
+  position: { x: number; y: number },
+  direction: Direction,
+): DiagramNode {
   const node: ViewNode = { id, kind, look, name: "", title, lines: [], position, parent: null, readOnly: true, severity: null, problems: 0, fields: [] };
   const size = measures.size(node);
   return {
@@ -102,6 +136,8 @@ export function pendingNode(id: string, kind: string, title: string, look: strin
     data: { node, width: size.width, height: size.height, expanded: false, canExpand: false },
     width: size.width,
     height: size.height,
+    measured: { width: size.width, height: size.height },
+    handles: handlesOf(size.width, size.height, direction),
     draggable: false,
     connectable: false,
     deletable: false,

@@ -7,6 +7,7 @@ import { useDiagram } from "./context";
 import { Handles } from "./Handles";
 import { ProblemBadge } from "./ProblemBadge";
 import type { DiagramNode } from "./types";
+import { useFar } from "./zoom";
 
 type Props = NodeProps<DiagramNode>;
 
@@ -22,6 +23,7 @@ function TextLines({ lines }: { lines: string[] }) {
 
 export function ActionNode({ data, selected }: Props) {
   const { style, readOnly } = useDiagram();
+  const far = useFar();
   const look = resolveLook(style, data.node.look);
   return (
     <div
@@ -35,8 +37,8 @@ export function ActionNode({ data, selected }: Props) {
       }}
     >
       <Handles connectable={!readOnly && !data.node.readOnly} name={data.node.name} />
-      <div className="node-title">{data.node.title}</div>
-      <TextLines lines={nameAndLines(data.node)} />
+      {!far && <div className="node-title">{data.node.title}</div>}
+      {!far && <TextLines lines={nameAndLines(data.node)} />}
       <ProblemBadge node={data.node} />
     </div>
   );
@@ -44,6 +46,7 @@ export function ActionNode({ data, selected }: Props) {
 
 export function RootNode({ data, selected }: Props) {
   const { style, readOnly } = useDiagram();
+  const far = useFar();
   const look = resolveLook(style, data.node.look);
   return (
     <div
@@ -51,8 +54,8 @@ export function RootNode({ data, selected }: Props) {
       style={{ background: look.fill, borderColor: look.border, color: look.text, borderRadius: 14 }}
     >
       <Handles connectable={!readOnly && !data.node.readOnly} name={data.node.name} />
-      <div className="node-title">{data.node.title}</div>
-      <TextLines lines={data.node.lines} />
+      {!far && <div className="node-title">{data.node.title}</div>}
+      {!far && <TextLines lines={data.node.lines} />}
       <ProblemBadge node={data.node} />
     </div>
   );
@@ -127,6 +130,7 @@ function ExpandToggle({ id, expanded }: { id: string; expanded: boolean }) {
 
 export function ModuleNode({ data, selected }: Props) {
   const { style, readOnly } = useDiagram();
+  const far = useFar();
   const look = resolveLook(style, data.node.look);
   const broken = data.node.look === "brokenModule";
   return (
@@ -136,9 +140,13 @@ export function ModuleNode({ data, selected }: Props) {
     >
       <Handles connectable={!readOnly && !data.node.readOnly} name={data.node.name} />
       <div className="module-inner" style={{ borderColor: look.border }}>
-        <div className="node-title">{data.node.title}</div>
-        <div className="node-subtitle">module</div>
-        <TextLines lines={nameAndLines(data.node)} />
+        {!far && (
+          <>
+            <div className="node-title">{data.node.title}</div>
+            <div className="node-subtitle">module</div>
+            <TextLines lines={nameAndLines(data.node)} />
+          </>
+        )}
       </div>
       {data.canExpand && <ExpandToggle id={data.node.id} expanded={false} />}
       <ProblemBadge node={data.node} />

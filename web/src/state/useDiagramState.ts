@@ -68,6 +68,7 @@ function sameNode(old: DiagramNode, next: DiagramNode): boolean {
     old.draggable === next.draggable &&
     old.className === next.className &&
     old.zIndex === next.zIndex &&
+    old.handles?.[0]?.position === next.handles?.[0]?.position &&
     old.data.expanded === next.data.expanded &&
     old.data.canExpand === next.data.canExpand &&
     // Patches keep an unchanged node's object: the comparison of its content is the rare case.
@@ -131,7 +132,7 @@ export function useDiagramState(
       const selectedNodes = chosen ?? selection.current.nodes;
       const selectedEdges = chosen ? new Set<string>() : selection.current.edges;
       // Unchanged nodes and edges keep their objects, so React Flow redraws only what changed.
-      const nextNodes = reuse(flowNodes(shown, layout, view.nodes, selectedNodes, view.readOnly), drawn.current.nodes, sameNode);
+      const nextNodes = reuse(flowNodes(shown, layout, view.nodes, selectedNodes, view.readOnly, direction), drawn.current.nodes, sameNode);
       const nextEdges = reuse(flowEdges(shown, selectedEdges, view.readOnly, view.style.edge.color), drawn.current.edges, sameEdge);
       // The same list keeps its array: React Flow runs every node's and edge's selector on
       // each update of its store, so an update that changes nothing is worth skipping.
