@@ -231,6 +231,8 @@ def _parameters(draw: st.DrawFn, kind: str, actor_kind: str) -> dict[str, object
         chosen["waypoints"] = [
             _position(draw, actor_kind, prefer_lane=False) for _ in range(draw(st.integers(2, 3)))
         ]
+    if kind == "LaneChange" and "duration" in chosen:
+        chosen.pop("distance", None)  # given in time or by distance, not both (SCEML-P010)
     if kind in ("LaneChange", "Overtake"):
         chosen["direction" if kind == "LaneChange" else "side"] = draw(
             st.sampled_from(("left", "right"))

@@ -41,6 +41,7 @@ DistanceKeeping.timeGap.eType = ParameterValue
 Follow.distance.eType = ParameterValue
 Approach.distance.eType = ParameterValue
 LaneChange.distance.eType = ParameterValue
+LaneChange.duration.eType = ParameterValue
 LaneChange.targetOffset.eType = ParameterValue
 RoutedManeuver.destination.eType = Position
 RoutedManeuver.tolerance.eType = ParameterValue

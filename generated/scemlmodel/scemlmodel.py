@@ -1665,9 +1665,10 @@ class LaneChange(LateralManeuver):
     shape = EAttribute(eType=LaneChangeShape, unique=True, derived=False,
                        changeable=True, default_value=LaneChangeShape.sinusoidal)
     distance = EReference(ordered=True, unique=True, containment=True, derived=False)
+    duration = EReference(ordered=True, unique=True, containment=True, derived=False)
     targetOffset = EReference(ordered=True, unique=True, containment=True, derived=False)
 
-    def __init__(self, *, direction=None, distance=None, lanes=None, targetLane=None, targetOffset=None, shape=None, **kwargs):
+    def __init__(self, *, direction=None, distance=None, duration=None, lanes=None, targetLane=None, targetOffset=None, shape=None, **kwargs):
 
         super().__init__(**kwargs)
 
@@ -1685,6 +1686,9 @@ class LaneChange(LateralManeuver):
 
         if distance is not None:
             self.distance = distance
+
+        if duration is not None:
+            self.duration = duration
 
         if targetOffset is not None:
             self.targetOffset = targetOffset

@@ -629,7 +629,7 @@ def test_an_opaque_conditions_delay_is_waited_for_once(tmp_path: Path) -> None:
     assert waits == ["4.0"]
 
 
-def test_a_story_relative_target_speed_gives_the_speed_of_a_later_lane_change(
+def test_a_story_relative_target_speed_is_worked_out_and_a_later_timed_change_kept(
     tmp_path: Path,
 ) -> None:
     relative = (
@@ -669,18 +669,19 @@ def test_a_story_relative_target_speed_gives_the_speed_of_a_later_lane_change(
     )
     imported = import_file(path)
     lane_change = next(n for n in imported.scenario.nodes if isinstance(n, scm.LaneChange))
-    # Lead drives 20 m/s, Ego 1.5 times that: 3 s of lane change at 30 m/s, counted from the
-    # step after it starts as a change over a distance is, are 2.95 * 30 = 88.5 m.
-    assert lane_change.distance.value == pytest.approx(88.5)
+    # Lead drives 20 m/s, Ego 1.5 times that: the speed is still worked out (a change given
+    # as a rate needs it), but a change given in time keeps its 3 s (release 1.5), whatever
+    # the speed then.
+    assert (lane_change.distance, lane_change.duration.value) == (None, 3.0)
     assert guessed(imported, "relative target speed taken as 30 m/s")
 
 
-def test_a_continuous_init_relative_speed_gives_the_speed_of_a_later_lane_change(
+def test_a_lane_change_in_time_after_a_continuous_init_relative_speed_keeps_its_time(
     tmp_path: Path,
 ) -> None:
     # As `lane_change_crest`: the Ego's Init speed is 1.3 times the Lead's, continuously (kept
-    # as an Init action: SceML has no field for it), and its 2 s lane change is measured at
-    # that speed, not left at LaneChange's default 30 m.
+    # as an Init action: SceML has no field for it); its 2 s lane change stays 2 s, neither
+    # metres at that speed nor LaneChange's default 30 m.
     lead = (
         '<Private entityRef="Lead"><PrivateAction><TeleportAction><Position>'
         '<LanePosition roadId="1" laneId="-1" s="80" offset="0"/></Position></TeleportAction>'
@@ -715,7 +716,6 @@ def test_a_continuous_init_relative_speed_gives_the_speed_of_a_later_lane_change
     )
     imported = import_file(path)
     lane_change = next(n for n in imported.scenario.nodes if isinstance(n, scm.LaneChange))
-    # 1.3 * 15 = 19.5 m/s over 2 s less the step a change over a distance starts later:
-    # 19.5 * 1.95 = 38.025 m.
-    assert lane_change.distance.value == pytest.approx(38.025)
-    assert guessed(imported, "the lane change's time taken at 19.5 m/s")
+    # Kept as the 2 s it was given in (release 1.5), not as metres at 1.3 * 15 = 19.5 m/s.
+    assert (lane_change.distance, lane_change.duration.value) == (None, 2.0)
+    assert not guessed(imported, "the lane change's time taken at")

@@ -479,6 +479,22 @@ def undeclared_parameter(out: Path) -> None:
     save(b.scenario, out, "p009-undeclared-parameter.xmi")
 
 
+@case("p010-lane-change-distance-and-duration", "SCEML-P010")
+def lane_change_distance_and_duration(out: Path) -> None:
+    b, ego = scenario()
+    change = b.add("LaneChange", ego, distance=40.0, duration=3.0)
+    b.chain(b.root, change, b.end)
+    save(b.scenario, out, "p010-lane-change-distance-and-duration.xmi")
+
+
+@case("p000-lane-change-duration-clean", "")
+def lane_change_duration(out: Path) -> None:
+    b, ego = scenario()
+    change = b.add("LaneChange", ego, direction="right", duration=3.0)
+    b.chain(b.root, change, b.end)
+    save(b.scenario, out, "p000-lane-change-duration-clean.xmi")
+
+
 # Simultaneity --------------------------------------------------------------------------------
 
 

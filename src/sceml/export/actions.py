@@ -196,6 +196,10 @@ def plan_lane_change(ctx: Context, node: scm.LaneChange, groups: list[Group]) ->
         data["shape"] = node.shape.name
     if ctx.values.raw(node, "targetOffset") != 0:
         data["offset"] = ctx.values.text(node, "targetOffset")
+    if node.duration is not None:
+        # Release 1.5: a change given in time stays a time; players stretch it over the speed
+        # the actor drives at then (CARLA's parser reads a distance only: SCEML-E008).
+        data["dimension"], data["value"] = "time", ctx.values.text(node, "duration")
     return _single(ctx, node, groups, replace(action, data=data))
 
 

@@ -238,8 +238,8 @@ SHAPES = ("sinusoidal", "linear", "cubic", "step")
 
 
 def _lane_change_time(seconds: float) -> float:
-    """How long a lane change of `seconds` (dynamicsDimension time) is driven over, for its
-    length: esmini counts a timed change from the step it starts in and a change over a
+    """How long a lane change of `seconds` (a dynamicsDimension rate, as a time) is driven
+    over, for its length: esmini counts a timed change from the step it starts in and a change over a
     distance from the step after, so the same change in metres is one step
     (`xosc.PLAYER_STEP`) shorter than speed times duration (`follow_reference`: 2 s
     at 13.9 m/s plays the same as 27.1 m, not 27.8 m)."""
@@ -258,15 +258,19 @@ def _lane_change(
         return f"a lane change shaped {shape} has no SceML form"
     if relative is None and absolute is None:
         return "a lane change without a target lane has no SceML form"
-    distance = None
+    distance = duration = None
     if dynamics is not None and dynamics.get("dynamicsDimension") == "distance":
         distance = number(dynamics, "value")
+    elif dynamics is not None and dynamics.get("dynamicsDimension") == "time":
+        # Kept as a time (release 1.5): players stretch it over whatever speed the actor
+        # then drives at, which an import cannot always know (`cut-in_sloppy`'s random driver).
+        duration = number(dynamics, "value")
     elif dynamics is not None:
         speed = motion.speed.get(str(request.actor.name))
-        value = number(dynamics, "value")
-        timed = dynamics.get("dynamicsDimension") == "time"
+        value, timed = number(dynamics, "value"), False
         if dynamics.get("dynamicsDimension") == "rate":
-            # A peak lateral speed: as long as players take for it (`lane_rate`).
+            # A peak lateral speed: as long as players take for it (`lane_rate`), as a
+            # distance still: that plays the same as the original (ALKS 4.4.x and 4.5.x).
             seconds = rate_seconds(build, request.actor, shape, value)
             value, timed = (value, False) if seconds is None else (seconds, True)
         if speed:
@@ -277,7 +281,9 @@ def _lane_change(
                 f"the lane change's {dynamics.get('dynamicsDimension')} taken at {speed} m/s as {distance:g} m",
             )
     offset = number(change, "targetLaneOffset") if change.get("targetLaneOffset") else None
-    node = _add(build, request, "LaneChange", distance=distance, targetOffset=offset)
+    node = _add(
+        build, request, "LaneChange", distance=distance, duration=duration, targetOffset=offset
+    )
     node.shape = scm.LaneChangeShape.getEEnumLiteral(shape)
     if absolute is not None:
         node.targetLane = lane_id(absolute, "value")

@@ -313,10 +313,16 @@ class LaneShift:
 
 @kind("LaneChange")
 class LaneChange(Behaviour):
-    """Move into the lane beside, along half a cosine over `distance` m."""
+    """Move into the lane beside, along half a cosine over `distance` m, or over what the
+    actor drives in `duration` s at the speed it starts with (release 1.5)."""
 
     def start(self, world: World) -> None:
         node = self.node
+        length = concrete(node, "distance")
+        if node.duration is not None:
+            # The path's shape is kept in metres (the actor's shift follows its travel), so a
+            # speed change during the lane change stretches it: a preview, not a player.
+            length = abs(self.actor.speed) * concrete(node, "duration")
         side = str(node.direction.name if node.direction is not None else "left")
         toward = None
         if node.targetActor is not None and node.targetLane is None:
@@ -327,7 +333,7 @@ class LaneChange(Behaviour):
             world,
             self.actor,
             side,
-            concrete(node, "distance"),
+            length,
             self.name,
             count=int(node.lanes),
             toward=toward,

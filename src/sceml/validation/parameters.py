@@ -298,3 +298,22 @@ def global_value_declared(node: scm.ActionNode, context: Context) -> Iterator[Fi
     if not any(d.name == name and bool(d.variable) == variable for d in root.declarations):
         what = "variable" if variable else "parameter"
         yield node, f"{node.name!r} names the {what} {name!r}, which the root does not declare"
+
+
+@constraint(
+    "SCEML-P010",
+    ERROR,
+    "LaneChange",
+    "a lane change is given by a distance or by a duration (release 1.5), not by both",
+    paper_rule="2",
+    through_modules=True,
+    # the node's own distance and duration
+    reads=Reads(SELF),
+)
+def lane_change_one_dimension(node: scm.LaneChange, context: Context) -> Iterator[Finding]:
+    if node.distance is not None and node.duration is not None:
+        yield (
+            node,
+            f"{node.name!r} gives both a distance and a duration; players take a lane change "
+            "over one of them: unset the other",
+        )

@@ -19,7 +19,12 @@ import scemlmodel as scm
 
 from ..diagnostics import Severity
 from ..model.towing import is_towed
-from ..xosc.support import default_version, unsupported_reason, unsupported_setting
+from ..xosc.support import (
+    default_version,
+    unsupported_profile_setting,
+    unsupported_reason,
+    unsupported_setting,
+)
 from .context import Context
 from .reads import EXPANSION, LEVEL, SELF, Aspect, Reads
 from .registry import Finding, constraint
@@ -151,9 +156,11 @@ def kinds_exportable(scenario: scm.Scenario, context: Context) -> Iterator[Findi
         "Follow",
         "Approach",
         "Actor",
+        "LaneChange",
     ),
     "with a target OpenSCENARIO version or export profile given, every node's and actor's "
-    "settings can be said in it (1.0 has no coordinateSystem, no relativeDistanceType but "
+    "settings can be said in it (the carla profile has no lane change given in time; "
+    "1.0 has no coordinateSystem, no relativeDistanceType but "
     "a RelativeDistanceCondition's, no greaterOrEqual or lessOrEqual rule, no "
     "assignment that activates, no gap kept but behind the target; before 1.2 no lighting or "
     "animation domain, no controllerType, no acceleration direction, no jerk limits of a Follow "
@@ -166,7 +173,11 @@ def kinds_exportable(scenario: scm.Scenario, context: Context) -> Iterator[Findi
 def settings_exportable(node: EObject, context: Context) -> Iterator[Finding]:
     if context.osc_version is None and context.osc_profile is None:
         return
-    version = context.osc_version or default_version(context.osc_profile or "generic")
+    profile = context.osc_profile or "generic"
+    version = context.osc_version or default_version(profile)
     reason = unsupported_setting(node, version)
     if reason:
         yield node, f"{node.name!r} cannot be exported to OpenSCENARIO {version}: {reason}"
+    reason = unsupported_profile_setting(node, profile)
+    if reason:
+        yield node, f"{node.name!r} cannot be exported with the {profile} profile: {reason}"

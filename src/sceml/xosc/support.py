@@ -189,6 +189,14 @@ def unsupported_setting(node: object, version: str) -> str | None:
     return None
 
 
+def unsupported_profile_setting(node: object, profile: str) -> str | None:
+    """Why a node's settings cannot be said to a profile's player; None when they can."""
+    timed = _kind_name(node) == "LaneChange" and getattr(node, "duration", None) is not None
+    if profile == "carla" and timed:
+        return "a lane change given in time (CARLA's parser reads a distance only)"
+    return None
+
+
 def supported_kinds(version: str, profile: str = "generic") -> tuple[str, ...]:
     """The action, join and port kinds that map for a version and profile."""
     return tuple(k for k in sorted(MAPPED_KINDS) if unsupported_reason(k, version, profile) is None)
