@@ -74,7 +74,7 @@ def entity(ctx: Context, actor: scm.Actor) -> dict[str, Any]:
         else 0.6
     )
     track = 0.0 if category in ("bicycle", "motorbike") else round(width * 0.85, 6)
-    return {
+    written = {
         "name": name,
         "object": "vehicle",
         "controller": object_controller(ctx, actor),
@@ -88,6 +88,23 @@ def entity(ctx: Context, actor: scm.Actor) -> dict[str, Any]:
         **_coupling(ctx, actor),
         "properties": properties,
     }
+    written["reference"] = _reference(ctx, actor, written)
+    return written
+
+
+def _reference(ctx: Context, actor: scm.Actor, written: dict[str, Any]) -> Any:
+    """The CatalogReference that says the actor (release 1.5's catalogEntry), or None: it is
+    written in place. A value the caller's parameter hook names (`$name`) stays in place."""
+    if ctx.vehicle_catalog is None or not actor.catalogEntry:
+        return None
+    entry = ctx.vehicle_catalog.entry(actor.catalogEntry)
+    hooked = any(str(v).startswith("$") for v in [*written["bbox"].values(), *written["performance"].values()])
+    if entry is None or hooked:
+        return None
+    from .catalog_refs import compare  # catalog_refs reads this module's tables
+
+    reference, _ = compare(actor, entry)
+    return reference
 
 
 def _coupling(ctx: Context, actor: scm.Actor) -> dict[str, Any]:
