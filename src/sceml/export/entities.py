@@ -64,6 +64,7 @@ def entity(ctx: Context, actor: scm.Actor) -> dict[str, Any]:
             "mass": PEDESTRIAN_MASS,
             "bbox": bbox,
             "properties": properties,
+            "reference": None,  # a pedestrian catalog is not kept (release 1.5: vehicles)
         }
     category = VEHICLE_CATEGORIES[kind]
     wheel = (
