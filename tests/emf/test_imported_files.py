@@ -354,9 +354,7 @@ def test_emf_reads_and_writes_a_trajectory_that_begins_at_its_first_waypoint(
     assert walk.fromFirstWaypoint is True
 
 
-def test_emf_keeps_the_vehicle_catalog_and_each_actors_entry(
-    emf: Harness, tmp_path: Path
-) -> None:
+def test_emf_keeps_the_vehicle_catalog_and_each_actors_entry(emf: Harness, tmp_path: Path) -> None:
     # Release 1.5: RootNode.vehicleCatalog and Actor.catalogEntry, as the import sets them.
     source, out = tmp_path / "in", tmp_path / "out"
     source.mkdir()
@@ -370,4 +368,9 @@ def test_emf_keeps_the_vehicle_catalog_and_each_actors_entry(
     assert root.vehicleCatalog == original.root.nodes[0].vehicleCatalog
     assert root.vehicleCatalog.endswith("tests/importer/files/catalogs")
     entries = {a.name: a.catalogEntry for a in root.actors}
-    assert entries == {"Ego": "car_white", "Lead": "car_white", "Truck": "truck_yellow", "Bike": None}
+    assert entries == {
+        "Ego": "car_white",
+        "Lead": "car_white",
+        "Truck": "truck_yellow",
+        "Bike": None,
+    }

@@ -63,7 +63,12 @@ def test_the_import_keeps_the_folder_and_each_actors_entry() -> None:
     scenario = import_file(SOURCE).scenario
     assert graph.root_node(scenario).vehicleCatalog == "catalogs"
     entries = {name: actor.catalogEntry for name, actor in _actors(scenario).items()}
-    assert entries == {"Ego": "car_white", "Lead": "car_white", "Truck": "truck_yellow", "Bike": None}
+    assert entries == {
+        "Ego": "car_white",
+        "Lead": "car_white",
+        "Truck": "truck_yellow",
+        "Bike": None,
+    }
     # Lead's assignment is its own top speed (its entry's 69 m/s otherwise).
     assert _actors(scenario)["Lead"].maxSpeed.value == 40.0
 
@@ -76,12 +81,16 @@ def test_it_exports_back_as_the_same_references(version: str, tmp_path: Path, sa
     export_to_file(first, exported, version=version, source_path=SOURCE)
     assert schema.validate_file(exported, version) == []
     # The original's entities, as the original writes them (Bike in place).
-    assert _entities(exported) == _entities(SOURCE) == {
-        "Ego": ("VehicleCatalog", "car_white"),
-        "Lead": ("VehicleCatalog", "car_white", "MaxSpeed=40.0"),
-        "Truck": ("VehicleCatalog", "truck_yellow"),
-        "Bike": ("inline",),
-    }
+    assert (
+        _entities(exported)
+        == _entities(SOURCE)
+        == {
+            "Ego": ("VehicleCatalog", "car_white"),
+            "Lead": ("VehicleCatalog", "car_white", "MaxSpeed=40.0"),
+            "Truck": ("VehicleCatalog", "truck_yellow"),
+            "Bike": ("inline",),
+        }
+    )
     # Relative to the output, so that a player finds it from there.
     expected = os.path.relpath(FILES / "catalogs", exported.parent)
     assert _directory(exported) == Path(expected).as_posix()

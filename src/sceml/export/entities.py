@@ -99,7 +99,10 @@ def _reference(ctx: Context, actor: scm.Actor, written: dict[str, Any]) -> Any:
     if ctx.vehicle_catalog is None or not actor.catalogEntry:
         return None
     entry = ctx.vehicle_catalog.entry(actor.catalogEntry)
-    hooked = any(str(v).startswith("$") for v in [*written["bbox"].values(), *written["performance"].values()])
+    hooked = any(
+        str(v).startswith("$")
+        for v in [*written["bbox"].values(), *written["performance"].values()]
+    )
     if entry is None or hooked:
         return None
     from .catalog_refs import compare  # catalog_refs reads this module's tables
