@@ -21,8 +21,9 @@ from ..modules.flatten import expand
 from ..xosc import schema
 from ..xosc.profiles import DEFAULT_VERSION
 from ..xosc.support import unsupported_reason
+from ..xosc.vehicle_catalog import catalog_folder
 from . import checks
-from .catalog_refs import catalog_folder, catalog_location
+from .catalog_refs import catalog_location
 from .render import render_tree, serialise
 from .values import ParameterHook
 from .viewmodel import MappingError, Options, build_view

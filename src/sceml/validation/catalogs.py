@@ -14,8 +14,8 @@ from collections.abc import Iterator
 import scemlmodel as scm
 
 from ..diagnostics import Severity
-from ..export.catalog_refs import catalog_folder, compare
 from ..model.graph import root_node
+from ..xosc.vehicle_catalog import catalog_folder, compare
 from .context import Context
 from .reads import SELF, Aspect, Reads
 from .registry import Finding, constraint

@@ -1,6 +1,11 @@
 """A folder of OpenSCENARIO vehicle catalogs, as the root node's `vehicleCatalog` names it
-(release 1.5): its entries and the values each says, for the export (which writes an actor as a
-CatalogReference where the entry says what the actor is) and for validation.
+(release 1.5): its entries, the values each says, and whether an entry says an actor, for the
+export (which writes an actor as a CatalogReference where it does) and for validation (which
+warns where it does not, SCEML-A011).
+
+A reference says the actor when the entry's category and each value the export would write in
+place (box centre and dimensions, performance) equal the actor's, or differ in an attribute
+that is a plain `$parameter` of the entry (then assigned).
 
 Files are read only inside the allowed folders (the reading rule of the import: `--allow`),
 regular files only, each parsed safely (`schema.parse_file`). An entry's values are its own
@@ -15,8 +20,14 @@ from pathlib import Path
 
 from lxml import etree
 
-from ..importer.expressions import ExpressionError, evaluate
+import scemlmodel as scm
+
+from ..files.safefiles import reading_roots
+from ..model import params
+from ..model.documents import allowed_roots_of
+from ..model.kind_performance import VEHICLE_CATEGORIES, own_performance
 from . import schema
+from .expressions import ExpressionError, evaluate
 
 #: The attributes of a Vehicle entry that an actor's values are compared with, by the name the
 #: export's entity uses for them.
@@ -150,3 +161,81 @@ def _value(element: etree._Element | None, attribute: str, defaults: dict[str, s
         return EntryValue(float(_text(text, defaults)), parameter)
     except (ExpressionError, KeyError, ValueError):
         return EntryValue(None, parameter)
+
+
+#: Two values are the same when they differ by less than this (m, m/s, m/s2): the entry's text
+#: and the model's double may round differently.
+TOLERANCE = 1e-6
+
+
+@dataclass(frozen=True)
+class Reference:
+    """A CatalogReference: the catalog's name, the entry, and its ParameterAssignments."""
+
+    catalog: str
+    entry: str
+    assignments: tuple[tuple[str, str], ...]
+
+
+def actor_values(actor: scm.Actor) -> dict[str, float]:
+    """The values the export writes in place for a vehicle, by the names the entry's are kept
+    under (`vehicle_catalog.ENTRY_NUMBERS`)."""
+    max_speed, max_acceleration, max_deceleration = own_performance(actor)
+    return {
+        "x": params.concrete(actor, "boxCenterX"),
+        "length": params.concrete(actor, "length"),
+        "width": params.concrete(actor, "width"),
+        "height": params.concrete(actor, "height"),
+        "maxSpeed": max_speed,
+        "maxAcceleration": max_acceleration,
+        "maxDeceleration": max_deceleration,
+    }
+
+
+def compare(actor: scm.Actor, entry: CatalogEntry) -> tuple[Reference | None, list[str]]:
+    """The reference that says the actor, or None and what a reference cannot say."""
+    unsaid: list[str] = []
+    category = VEHICLE_CATEGORIES.get(actor.eClass.name)
+    if category != entry.category:
+        unsaid.append(f"vehicleCategory {entry.category} (the actor is a {actor.eClass.name})")
+    if actor.trailer is not None or entry.tows:
+        unsaid.append("a trailer (written in place with its tower)")
+    assignments: list[tuple[str, str]] = []
+    for key, value in actor_values(actor).items():
+        said = entry.values[key]
+        if said.number is not None and abs(said.number - value) <= TOLERANCE:
+            continue
+        if said.parameter is not None:
+            assignments.append((said.parameter, _number(value)))
+        else:
+            stated = "nothing" if said.number is None else _number(said.number)
+            unsaid.append(f"{key} {_number(value)} (the entry says {stated})")
+    if unsaid:
+        return None, unsaid
+    return Reference(entry.catalog, str(actor.catalogEntry), tuple(assignments)), []
+
+
+def catalog_folder(
+    root: scm.RootNode, source_path: str | Path | None, *, roots: list[Path] | None = None
+) -> VehicleCatalogFolder | None:
+    """The root node's vehicle catalog folder (relative to the model file, as `map` is), read
+    only inside the folders the model may read from; None when it names none, or is relative
+    and the model has no file."""
+    text = (root.vehicleCatalog or "").strip()
+    if not text:
+        return None
+    folder = Path(text)
+    if not folder.is_absolute():
+        if source_path is None:
+            return None
+        folder = Path(source_path).resolve().parent / folder
+    if roots is None:
+        roots = allowed_roots_of(root)
+    if roots is None and source_path is not None:
+        roots = reading_roots(source_path)
+    return VehicleCatalogFolder(folder, roots)
+
+
+def _number(value: float) -> str:
+    """A number as OpenSCENARIO text, as the export writes it (`export.values.number`)."""
+    return repr(float(value))
