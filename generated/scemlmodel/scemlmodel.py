@@ -768,6 +768,7 @@ class RootNode(GraphElement):
     author = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
     date = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
     map = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    vehicleCatalog = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
     level = EAttribute(eType=AbstractionLevel, unique=True, derived=False,
                        changeable=True, default_value=AbstractionLevel.functional)
     maxDuration = EReference(ordered=True, unique=True, containment=True, derived=False)
@@ -775,7 +776,7 @@ class RootNode(GraphElement):
     actors = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
     declarations = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
 
-    def __init__(self, *, scenarioName=None, description=None, author=None, date=None, map=None, level=None, maxDuration=None, environment=None, actors=None, declarations=None, **kwargs):
+    def __init__(self, *, scenarioName=None, description=None, author=None, date=None, map=None, vehicleCatalog=None, level=None, maxDuration=None, environment=None, actors=None, declarations=None, **kwargs):
 
         super().__init__(**kwargs)
 
@@ -793,6 +794,9 @@ class RootNode(GraphElement):
 
         if map is not None:
             self.map = map
+
+        if vehicleCatalog is not None:
+            self.vehicleCatalog = vehicleCatalog
 
         if level is not None:
             self.level = level
@@ -885,6 +889,7 @@ class Actor(Participant):
     isEgo = EAttribute(eType=EBoolean, unique=True, derived=False,
                        changeable=True, default_value=False)
     model = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    catalogEntry = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
     startPosition = EReference(ordered=True, unique=True, containment=True, derived=False)
     initialSpeed = EReference(ordered=True, unique=True, containment=True, derived=False)
     length = EReference(ordered=True, unique=True, containment=True, derived=False)
@@ -900,7 +905,7 @@ class Actor(Participant):
     controller = EReference(ordered=True, unique=True, containment=True, derived=False)
     controllerActivation = EReference(ordered=True, unique=True, containment=True, derived=False)
 
-    def __init__(self, *, isEgo=None, model=None, startPosition=None, initialSpeed=None, length=None, width=None, height=None, boxCenterX=None, trailer=None, hitchX=None, couplerX=None, maxSpeed=None, maxAcceleration=None, maxDeceleration=None, controller=None, controllerActivation=None, **kwargs):
+    def __init__(self, *, isEgo=None, model=None, catalogEntry=None, startPosition=None, initialSpeed=None, length=None, width=None, height=None, boxCenterX=None, trailer=None, hitchX=None, couplerX=None, maxSpeed=None, maxAcceleration=None, maxDeceleration=None, controller=None, controllerActivation=None, **kwargs):
 
         super().__init__(**kwargs)
 
@@ -909,6 +914,9 @@ class Actor(Participant):
 
         if model is not None:
             self.model = model
+
+        if catalogEntry is not None:
+            self.catalogEntry = catalogEntry
 
         if startPosition is not None:
             self.startPosition = startPosition

@@ -95,6 +95,9 @@ TEXTS = {
     "date": ["2026-01-01T12:00:00", "yesterday", None],
     "environment.timeOfDay": ["12:00:00", "25:00:00", None],
     "model": ["vehicle.audi.a2", None],
+    # Release 1.5 (SCEML-A011): a catalog folder beside the examples, one that is not there.
+    "vehicleCatalog": ["catalogs", "missing", None],
+    "catalogEntry": ["car_white", "truck_yellow", "car_blue", None],
 }
 
 
@@ -127,6 +130,7 @@ def copied_examples() -> Iterator[Path]:
         target = Path(folder) / "examples"
         shutil.copytree(REPO / "examples", target, ignore=shutil.ignore_patterns("*.py"))
         shutil.copytree(REPO / "maps", Path(folder) / "maps", ignore=shutil.ignore_patterns("*.py"))
+        shutil.copytree(REPO / "tests" / "importer" / "files" / "catalogs", target / "catalogs")
         yield target
 
 

@@ -301,6 +301,7 @@ def test_actor_operations(uis1: EditorSession) -> None:
             {"op": "set_actor", "actor": truck, "field": "name", "value": "lorry"},
             {"op": "set_actor", "actor": truck, "field": "isEgo", "value": False},
             {"op": "set_actor", "actor": truck, "field": "model", "value": "vehicle.t"},
+            {"op": "set_actor", "actor": truck, "field": "catalogEntry", "value": "truck_yellow"},
             {
                 "op": "set_actor_parameter",
                 "actor": truck,
@@ -322,6 +323,7 @@ def test_actor_operations(uis1: EditorSession) -> None:
     )
     lorry = next(a for a in after["actors"] if a["id"] == truck)
     assert lorry["name"] == "lorry"
+    assert field(lorry, "catalogEntry")["value"] == "truck_yellow"  # release 1.5, a text field
     assert field(lorry, "initialSpeed")["value"] == {"type": "value", "value": 3.0}
     assert field(lorry, "length")["default"] > 5  # a truck's bounding box
     with pytest.raises(OperationError, match="already named"):

@@ -352,3 +352,25 @@ def test_emf_reads_and_writes_a_trajectory_that_begins_at_its_first_waypoint(
     assert differences(original.root, from_emf.root) == []
     (walk,) = [n for n in from_emf.root.nodes if n.eClass.name == "FollowTrajectory"]
     assert walk.fromFirstWaypoint is True
+
+
+def test_emf_keeps_the_vehicle_catalog_and_each_actors_entry(emf: Harness, tmp_path: Path) -> None:
+    # Release 1.5: RootNode.vehicleCatalog and Actor.catalogEntry, as the import sets them.
+    source, out = tmp_path / "in", tmp_path / "out"
+    source.mkdir()
+    out.mkdir()
+    import_to_file(FILES / "catalog-references.xosc", source / "catalogs.xmi")
+    result = emf.run("roundtrip", ECORE, source, out, Path("catalogs.xmi"))
+    assert "DIAGNOSTIC" not in result.stdout and "ERROR" not in result.stdout
+    original, from_emf = load(source / "catalogs.xmi"), load(out / "catalogs.xmi")
+    assert differences(original.root, from_emf.root) == []
+    root = from_emf.root.nodes[0]
+    assert root.vehicleCatalog == original.root.nodes[0].vehicleCatalog
+    assert root.vehicleCatalog.endswith("tests/importer/files/catalogs")
+    entries = {a.name: a.catalogEntry for a in root.actors}
+    assert entries == {
+        "Ego": "car_white",
+        "Lead": "car_white",
+        "Truck": "truck_yellow",
+        "Bike": None,
+    }

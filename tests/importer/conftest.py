@@ -25,11 +25,12 @@ from sceml.export.names import sanitize
 from sceml.levels.space import dimension
 from sceml.model import catalog, graph, params
 
-#: Not behaviour: where the file is (map), what the header says (date, description, author),
+#: Not behaviour: where the file is (map, vehicleCatalog: paths relative to it), what the header says (date, description, author),
 #: how the editor draws it (diagramPosition), the name.
 SKIPPED = {
     "name",
     "map",
+    "vehicleCatalog",
     "date",
     "description",
     "author",

@@ -24,8 +24,9 @@ def test_import_writes_the_scenario_and_prints_the_report(tmp_path: Path) -> Non
     assert result.exit_code == 0, result.output
     # The change into the ego's lane is exact now (LaneChange's target actor), not a guess,
     # and so is its 3 s (release 1.5's duration, no longer metres at a guessed speed).
-    # 12 mapped: the wait of a step a `SimulationTime > 0` stands for is one of them.
-    assert "OpenSCENARIO 1.1; 12 mapped, 1 opaque, 1 guessed, 0 not represented" in result.output
+    # 14 mapped: the wait of a step a `SimulationTime > 0` stands for is one of them, and so
+    # are the vehicle catalog entries Ego and OverTaker were read from (release 1.5).
+    assert "OpenSCENARIO 1.1; 14 mapped, 1 opaque, 1 guessed, 0 not represented" in result.output
     assert (
         "line 99: CutInStartCondition: <Condition TimeHeadwayCondition entityRef=Target "
         "value=0.4 freespace=false alongRoute=true rule=greaterThan> kept verbatim" in result.output

@@ -5,8 +5,8 @@ from __future__ import annotations
 import pytest
 
 import scemlmodel as scm
-from sceml.importer.expressions import ExpressionError, evaluate, text_of
 from sceml.validation import validate
+from sceml.xosc.expressions import ExpressionError, evaluate, text_of
 
 VALUES = {"a": "2", "b": "3.5", "name": "car"}
 

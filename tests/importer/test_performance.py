@@ -41,10 +41,21 @@ def _own(scenario: scm.Scenario) -> dict[str, tuple[float | None, ...]]:
     }
 
 
-def _written(path: Path) -> dict[str, tuple[str, str, str]]:
-    """Each ScenarioObject's Performance as written (the catalog entries resolved)."""
-    found = {}
+def _written(path: Path) -> dict[str, tuple[str, ...]]:
+    """Each ScenarioObject's Performance as written in place, or its CatalogReference: the
+    entry and its parameter assignments (release 1.5)."""
+    found: dict[str, tuple[str, ...]] = {}
     for item in etree.parse(str(path)).iter("ScenarioObject"):
+        reference = item.find("CatalogReference")
+        if reference is not None:
+            found[str(item.get("name"))] = (
+                str(reference.get("entryName")),
+                *(
+                    f"{a.get('parameterRef')}={float(str(a.get('value')))}"
+                    for a in reference.iter("ParameterAssignment")
+                ),
+            )
+            continue
         performance = item.find("Vehicle/Performance")
         assert performance is not None, item.get("name")
         found[str(item.get("name"))] = tuple(str(float(str(performance.get(f)))) for f in FEATURES)
@@ -83,12 +94,16 @@ def test_it_exports_back_as_it_was_read(version: str, tmp_path: Path, same) -> N
     exported = tmp_path / "performance.xosc"
     export_to_file(first, exported, version=version, source_path=SOURCE)
     assert schema.validate_file(exported, version) == []
+    # Lead and Truck were read from catalog entries (release 1.5): written as references again,
+    # Lead with its top speed assigned to the entry's $MaxSpeed (69 in the catalog), Truck's
+    # 30 m/s, 3 and 8 m/s2 the entry's own.
     assert _written(exported) == {
         "Ego": ("25.0", "4.0", "10.0"),
-        "Lead": ("50.0", "10.0", "10.0"),
-        "Truck": ("30.0", "3.0", "8.0"),
+        "Lead": ("car_white", "MaxSpeed=50.0"),
+        "Truck": ("truck_yellow",),
     }
-    again = import_file(exported).scenario
+    # The re-export refers to the catalogs beside SOURCE: read again where they may be read.
+    again = import_file(exported, allow=[SOURCE.parent]).scenario
     graph.root_node(first).environment = None  # the export writes the default one
     graph.root_node(again).environment = None
     same(first, again)
@@ -103,8 +118,11 @@ def test_an_actor_without_its_own_limits_is_written_its_kinds(tmp_path: Path) ->
     exported = tmp_path / "usual.xosc"
     export_to_file(scenario, exported, version="1.2", source_path=SOURCE)
     # SceML's table: a car 69.444 m/s, 10 and 10 m/s2; a truck 33.333 m/s, 3 and 8 m/s2.
+    # Truck's entry says 30 m/s, not as a parameter: Truck is written in place (SCEML-A011);
+    # Lead's entry has $MaxSpeed (69), assigned the car's 69.444.
     assert _written(exported)["Ego"] == ("69.444", "10.0", "10.0")
     assert _written(exported)["Truck"] == ("33.333", "3.0", "8.0")
+    assert _written(exported)["Lead"] == ("car_white", "MaxSpeed=69.444")
 
 
 def test_the_preview_holds_ego_to_its_own_rate_and_top_speed() -> None:
@@ -138,4 +156,4 @@ def test_the_root_box_names_the_own_limits() -> None:
     scenario = import_file(SOURCE).scenario
     lines = root_lines(graph.root_node(scenario), scenario)
     assert "  Ego: Car, ego, top speed 25 m/s, max acceleration 4 m/s2" in lines
-    assert "  Truck: Truck, top speed 30 m/s" in lines
+    assert "  Truck: Truck, top speed 30 m/s, catalog entry truck_yellow" in lines

@@ -1111,6 +1111,31 @@ on_map("a010-coupling-clean", "")(_coupling("Truck"))
 on_map("a010-pedestrian-coupled", "SCEML-A010")(_coupling("Pedestrian"))
 
 
+#: The import tests' vehicle catalogs, from the corpus folder (release 1.5's vehicleCatalog).
+VEHICLE_CATALOG = "../../importer/files/catalogs"
+
+
+def _catalog_entry(entry: str) -> Callable[[ScenarioBuilder, scm.Actor], None]:
+    """Release 1.5: ego read from catalog entry `entry`. car_white says ego's box when it is
+    5.04 x 2.0 x 1.5 m with its centre 1.4 m ahead (clean; its $MaxSpeed is assigned);
+    truck_yellow is a truck, and car_blue is no entry (SCEML-A011)."""
+
+    def add(b: ScenarioBuilder, ego: scm.Actor) -> None:
+        b.root.vehicleCatalog = VEHICLE_CATALOG
+        ego.catalogEntry = entry
+        for feature, value in (("length", 5.04), ("width", 2.0), ("height", 1.5)):
+            ego.eSet(feature, scm.Value(value=value))
+        ego.boxCenterX = scm.Value(value=1.4)
+        b.chain(b.root, b.add("Accelerate", ego, targetSpeed=8.0), b.end)
+
+    return add
+
+
+on_map("a011-catalog-entry-clean", "")(_catalog_entry("car_white"))
+on_map("a011-catalog-entry-unknown", "SCEML-A011")(_catalog_entry("car_blue"))
+on_map("a011-catalog-entry-unsaid", "SCEML-A011")(_catalog_entry("truck_yellow"))
+
+
 def _reverse(speed: float) -> Callable[[ScenarioBuilder, scm.Actor], None]:
     """Release 1.4: ego slows to a negative target speed, reversing (clean within its limit)."""
 

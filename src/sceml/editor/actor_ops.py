@@ -19,7 +19,7 @@ from .fields import actor_kind_names
 from .node_ops import adopt, attribute_value, nested_holder, place, set_attribute
 from .values import position_from_json, value_from_json
 
-_ACTOR_TEXT_FIELDS = ("name", "isEgo", "model")
+_ACTOR_TEXT_FIELDS = ("name", "isEgo", "model", "catalogEntry")
 _ACTOR_PARAMETERS = (
     "initialSpeed",
     "length",
@@ -69,8 +69,9 @@ def remove_actor(ctx: EditContext, op: dict[str, Any]) -> None:
 
 
 def set_actor(ctx: EditContext, op: dict[str, Any]) -> None:
-    """Set an actor's name, kind, ego flag, simulator model, or a field of its controller or of
-    the domains switched at the start (`controller.name`, `controllerActivation.lateral`)."""
+    """Set an actor's name, kind, ego flag, simulator model, catalog entry (release 1.5), or a
+    field of its controller or of the domains switched at the start (`controller.name`,
+    `controllerActivation.lateral`)."""
     actor = ctx.actor(argument(op, "actor"))
     field, value = argument(op, "field"), op.get("value")
     if field == "kind":

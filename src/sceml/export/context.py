@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from pyecore.ecore import EObject
 
@@ -14,6 +14,9 @@ from .names import SEPARATOR, NameTable, sanitize
 from .triggers import Group
 from .values import Values
 from .versions import Traits
+
+if TYPE_CHECKING:
+    from ..xosc.vehicle_catalog import VehicleCatalogFolder
 
 
 @dataclass(frozen=True)
@@ -51,6 +54,8 @@ class Context:
     event_names: dict[EObject, str] = field(default_factory=dict)
     #: Nodes written into their successor's trigger, with no event (`xosc.flows.inlined`).
     inline: set[EObject] = field(default_factory=set)
+    #: The root node's vehicle catalog (release 1.5): actors read from it are referred to.
+    vehicle_catalog: VehicleCatalogFolder | None = None
 
     def entity(self, actor: scm.Participant | None) -> str:
         """The ScenarioObject name of an actor."""

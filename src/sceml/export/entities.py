@@ -7,35 +7,19 @@ from typing import Any
 
 import scemlmodel as scm
 
-from ..model import params
+from ..model.kind_performance import PERFORMANCE_FEATURES, VEHICLE_CATEGORIES
+
+# The kinds' tables moved below the export (release 1.5: validation compares catalog entries
+# with them); named here too for the modules that read them as the export's.
+from ..model.kind_performance import own_performance as own_performance
+from ..model.kind_performance import performance_of as performance_of
 from ..model.towing import is_towed
+from .catalog_refs import reference_for
 from .context import Context
 from .controllers import init_activation, object_controller
 from .values import number
 
-#: OpenSCENARIO vehicleCategory of each SceML vehicle kind.
-VEHICLE_CATEGORIES = {
-    "Car": "car",
-    "Van": "van",
-    "Truck": "truck",
-    "Bus": "bus",
-    "Motorcycle": "motorbike",
-    "Bicycle": "bicycle",
-}
-#: Performance (maxSpeed m/s, maxAcceleration m/s2, maxDeceleration m/s2) per category.
-PERFORMANCE = {
-    "car": (69.444, 10.0, 10.0),
-    "van": (50.0, 6.0, 9.0),
-    "truck": (33.333, 3.0, 8.0),
-    "bus": (27.778, 3.0, 8.0),
-    "motorbike": (55.556, 8.0, 10.0),
-    "bicycle": (11.111, 2.0, 5.0),
-}
-#: A Pedestrian has no Performance element; its limits for actions that need some (walking pace).
-PEDESTRIAN_PERFORMANCE = (3.0, 1.5, 3.0)
 PEDESTRIAN_MASS = "80.0"
-#: The Actor features (release 1.4) that hold an actor's own Performance, in table order.
-PERFORMANCE_FEATURES = ("maxSpeed", "maxAcceleration", "maxDeceleration")
 
 
 def entity(ctx: Context, actor: scm.Actor) -> dict[str, Any]:
@@ -64,6 +48,7 @@ def entity(ctx: Context, actor: scm.Actor) -> dict[str, Any]:
             "mass": PEDESTRIAN_MASS,
             "bbox": bbox,
             "properties": properties,
+            "reference": None,  # a pedestrian catalog is not kept (release 1.5: vehicles)
         }
     category = VEHICLE_CATEGORIES[kind]
     wheel = (
@@ -74,7 +59,7 @@ def entity(ctx: Context, actor: scm.Actor) -> dict[str, Any]:
         else 0.6
     )
     track = 0.0 if category in ("bicycle", "motorbike") else round(width * 0.85, 6)
-    return {
+    written = {
         "name": name,
         "object": "vehicle",
         "controller": object_controller(ctx, actor),
@@ -88,6 +73,8 @@ def entity(ctx: Context, actor: scm.Actor) -> dict[str, Any]:
         **_coupling(ctx, actor),
         "properties": properties,
     }
+    written["reference"] = reference_for(ctx, actor, written)
+    return written
 
 
 def _coupling(ctx: Context, actor: scm.Actor) -> dict[str, Any]:
@@ -139,26 +126,6 @@ def written_in_place(actor: scm.Actor) -> bool:
     """Whether an actor is written inside its tower's Trailer, not as a ScenarioObject of its
     own: it is towed and has no start (it starts at the hitch), so it has no Init either."""
     return actor.startPosition is None and is_towed(actor)
-
-
-def performance_of(kind: str) -> tuple[float, float, float]:
-    """(maxSpeed, maxAcceleration, maxDeceleration) of an actor kind (a metaclass name)."""
-    limits = PERFORMANCE[VEHICLE_CATEGORIES[kind]] if kind in VEHICLE_CATEGORIES else None
-    return limits or PEDESTRIAN_PERFORMANCE
-
-
-def own_performance(actor: scm.Participant) -> tuple[float, float, float]:
-    """(maxSpeed, maxAcceleration, maxDeceleration) of an actor: its own limits where it states
-    them (release 1.4, from an imported Vehicle's Performance), its kind's otherwise."""
-    defaults = performance_of(actor.eClass.name)
-    if not isinstance(actor, scm.Actor):
-        return defaults
-    own = (
-        params.concrete(actor, feature) if actor.eGet(feature) is not None else default
-        for feature, default in zip(PERFORMANCE_FEATURES, defaults, strict=True)
-    )
-    max_speed, max_acceleration, max_deceleration = own
-    return max_speed, max_acceleration, max_deceleration
 
 
 def performance(ctx: Context, actor: scm.Actor) -> dict[str, str]:

@@ -8,7 +8,7 @@ version differences (via `versions.Traits`) and profile differences.
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import scemlmodel as scm
 
@@ -27,6 +27,9 @@ from .triggers import Finish, Group, activation, simulation_started, simulation_
 from .values import ParameterHook, Values
 from .versions import traits
 
+if TYPE_CHECKING:
+    from ..xosc.vehicle_catalog import VehicleCatalogFolder
+
 
 class MappingError(SceMLError):
     """A node cannot be written in the chosen version and profile."""
@@ -41,6 +44,10 @@ class Options:
     date: str = "1970-01-01T00:00:00"
     logic_file: str = ""
     parameters: ParameterHook | None = None
+    #: The root node's vehicle catalog (release 1.5), where actors read from it are referred
+    #: to, and its CatalogLocations Directory relative to the output.
+    vehicle_catalog: VehicleCatalogFolder | None = None
+    catalog_location: str = ""
 
 
 @dataclass
@@ -56,6 +63,8 @@ class View:
     #: LogicFile (OpenDRIVE or a simulator town).
     road_network: str
     entities: list[dict[str, Any]]
+    #: CatalogLocations' VehicleCatalog Directory; empty when no entity is a catalog reference.
+    vehicle_catalog: str
     environment: dict[str, Any]
     privates: list[dict[str, Any]]
     story: str
@@ -84,6 +93,7 @@ def build_view(scenario: scm.Scenario, options: Options) -> View:
         names=names,
         ego="",
         marker="",
+        vehicle_catalog=options.vehicle_catalog,
     )
     for actor in actors:
         ctx.entity_names[actor] = names.claim(sanitize(actor.name, "actor"))
@@ -122,6 +132,9 @@ def build_view(scenario: scm.Scenario, options: Options) -> View:
         logic_file=options.logic_file,
         road_network="SceneGraphFile" if is_scenery_file(options.logic_file) else "LogicFile",
         entities=entities,
+        vehicle_catalog=(
+            options.catalog_location if any(e.get("reference") for e in entities) else ""
+        ),
         environment=env,
         privates=privates,
         story=story,

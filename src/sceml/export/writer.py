@@ -16,11 +16,14 @@ from ..errors import ArgumentError, SceMLError
 from ..files.writing import write_atomically
 from ..maps.reference import is_town_name
 from ..model import graph
+from ..model.documents import allowed_roots_of
 from ..modules.flatten import expand
 from ..xosc import schema
 from ..xosc.profiles import DEFAULT_VERSION
 from ..xosc.support import unsupported_reason
+from ..xosc.vehicle_catalog import catalog_folder
 from . import checks
+from .catalog_refs import catalog_location
 from .render import render_tree, serialise
 from .values import ParameterHook
 from .viewmodel import MappingError, Options, build_view
@@ -100,12 +103,15 @@ def build_xosc(
     _refuse(checks.traced(problems, flattened), source_path)
     root = graph.root_node(flat)
     assert root is not None  # level_problems refused scenarios without one
+    catalog = catalog_folder(root, source_path, roots=allowed_roots_of(scenario))
     options = Options(
         version=version,
         profile=profile,
         date=_file_header_date(date, root, source_path),
         logic_file=logic_file(root.map, source_path, map_path, output_path, town),
         parameters=parameters,
+        vehicle_catalog=catalog,
+        catalog_location="" if catalog is None else catalog_location(catalog, output_path),
     )
     try:
         view = build_view(flat, options)

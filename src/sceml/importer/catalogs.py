@@ -25,7 +25,7 @@ from lxml import etree
 from ..files.safefiles import reading_roots
 from ..xosc import schema
 from .parameters import declared_name, value_of, values_at
-from .reading import ORIGIN, Source
+from .reading import CATALOG_ENTRY, ORIGIN, Source
 from .report import ImportReport
 
 #: Rounds of resolution: an entry may refer to another catalog's entry this deep.
@@ -73,6 +73,9 @@ def resolve(
             entry.set(ORIGIN, str(path))
             parent = reference.getparent()
             assert parent is not None
+            if parent.tag == "ScenarioObject":
+                # An entity: its actor keeps the entry, for a re-export that refers to it.
+                entry.set(CATALOG_ENTRY, entry_name)
             parent.replace(reference, entry)
             used.append(f"{catalog_name}/{entry_name}")
             for message, where in catalogs.guesses:

@@ -12,7 +12,7 @@ import scemlmodel as scm
 
 from ..files.safexml import hardened_parser
 from ..model.build import GraphBuilder
-from .reading import ORIGIN, Source
+from .reading import CATALOG_ENTRY, ORIGIN, Source
 from .report import ImportReport
 from .traced import TRACE
 
@@ -107,7 +107,7 @@ def _last(reference: str) -> str:
 def kept_xml(element: etree._Element) -> str:
     """An element as the text an OpaqueAction keeps: resolved values, no import bookkeeping."""
     copy = etree.fromstring(etree.tostring(element, with_tail=False), hardened_parser())
-    etree.strip_attributes(copy, ORIGIN, TRACE)
+    etree.strip_attributes(copy, ORIGIN, CATALOG_ENTRY, TRACE)
     for child in copy.iter():
         if child.tail is not None:
             child.tail = None

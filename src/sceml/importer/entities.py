@@ -10,6 +10,7 @@ import scemlmodel as scm
 
 from ..model import catalog
 from . import traced
+from .catalog_entries import keep_catalog_entry
 from .context import Build
 from .controllers import object_controller
 from .performance import keep_performance, read_performance
@@ -185,6 +186,7 @@ def _actor(build: Build, item: etree._Element, name: str) -> scm.Actor | None:
     _dimensions(actor, body)
     if body.tag == "Vehicle":
         keep_performance(build, actor, body)
+        keep_catalog_entry(build, actor, body)
     if _is_marked_ego(body):
         actor.isEgo = True
     build.report.add("mapped", f"entity {name!r} -> {actor.eClass.name}", build.where(item))

@@ -21,8 +21,8 @@ from dataclasses import dataclass, field
 
 from lxml import etree
 
+from ..xosc.expressions import ExpressionError, evaluate, text_of
 from . import traced as tracing
-from .expressions import ExpressionError, evaluate, text_of
 from .reading import Source
 
 _REFERENCE = re.compile(r"\$([A-Za-z_][A-Za-z0-9_]*)")

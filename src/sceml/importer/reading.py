@@ -17,6 +17,9 @@ from .errors import XoscImportError
 #: Attribute set on elements copied from a catalog: the file they came from (namespaced, so it
 #: can never clash with OpenSCENARIO's own attributes; removed before any XML is kept).
 ORIGIN = "{urn:sceml:import}origin"
+#: Attribute set on an entity copied from a catalog into a ScenarioObject: the entry's name, so
+#: that the actor keeps which entry it was read from (`Actor.catalogEntry`, release 1.5).
+CATALOG_ENTRY = "{urn:sceml:import}catalog-entry"
 
 
 @dataclass

@@ -50,30 +50,38 @@ def save(root: EObject, path: str | Path, *, origin: str | Path | None = None) -
         raise SaveError(f"cannot serialise the model: {error}", file=path) from None
     finally:
         resource.uri = original_uri
-        for node, original in moved_maps:
-            node.map = original
+        for node, feature, original in moved_maps:
+            node.eSet(feature, original)
     write_atomically(path, buffer.data.getvalue())
     return path
 
 
 def _rebase_map_paths(
     root: EObject, old_folder: Path, new_folder: Path
-) -> list[tuple[scm.RootNode, str]]:
-    """Point relative OpenDRIVE map paths at the same file from the new folder, for this save.
+) -> list[tuple[scm.RootNode, str, str]]:
+    """Point relative map and vehicle catalog paths at the same place from the new folder, for
+    this save.
 
-    The model in memory keeps its own paths: the changed values are returned to be restored. A
-    map that is a simulator town name (no `.xodr`) or an absolute path is left as it is.
+    The model in memory keeps its own paths: (node, feature, old value) are returned to be
+    restored. A map that is a simulator town name (no `.xodr`) or an absolute path is left as
+    it is, and so is an absolute catalog folder.
     """
     if old_folder.resolve() == new_folder.resolve() or not isinstance(root, scm.Scenario):
         return []
     changed = []
     for node in root.nodes:
-        mapped = node.map if isinstance(node, scm.RootNode) else None
-        if not mapped or not mapped.lower().endswith(".xodr") or Path(mapped).is_absolute():
+        if not isinstance(node, scm.RootNode):
             continue
-        target = (old_folder / mapped).resolve()
-        node.map = Path(os.path.relpath(target, new_folder.resolve())).as_posix()
-        changed.append((node, mapped))
+        for feature in ("map", "vehicleCatalog"):
+            text = node.eGet(feature)
+            if not text or Path(text).is_absolute():
+                continue
+            if feature == "map" and not text.lower().endswith(".xodr"):
+                continue
+            target = (old_folder / text).resolve()
+            moved = Path(os.path.relpath(target, new_folder.resolve())).as_posix()
+            node.eSet(feature, moved)
+            changed.append((node, feature, text))
     return changed
 
 

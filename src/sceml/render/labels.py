@@ -401,6 +401,8 @@ def root_lines(root: scm.RootNode | None, scenario: scm.Scenario) -> list[str]:
         return ["(no root node)"]
     lines = [f"level: {root_level(root)}"]
     lines.append(f"map: {root.map or '(none)'}")
+    if root.vehicleCatalog:
+        lines.append(f"vehicle catalog: {root.vehicleCatalog}")
     if root.maxDuration is not None:
         lines.append(f"max duration: {params.describe(root.maxDuration, 's')}")
     lines.append("actors:")
@@ -409,7 +411,8 @@ def root_lines(root: scm.RootNode | None, scenario: scm.Scenario) -> list[str]:
         driven = f", {describe_controller(actor.controller)}" if actor.controller else ""
         tows = f", tows {actor.trailer.name}" if actor.trailer is not None else ""
         limits = _own_limits(actor)
-        lines.append(f"  {actor.name}: {actor.eClass.name}{ego}{driven}{tows}{limits}")
+        entry = f", catalog entry {actor.catalogEntry}" if actor.catalogEntry else ""
+        lines.append(f"  {actor.name}: {actor.eClass.name}{ego}{driven}{tows}{limits}{entry}")
     return lines
 
 

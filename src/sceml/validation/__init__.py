@@ -10,6 +10,7 @@ Importing this package registers every rule of SPEC §6 (one module per area) in
 
 from . import (
     actors,
+    catalogs,
     controllers,
     map_rules,
     map_turns,
@@ -45,6 +46,7 @@ __all__ = [
 # The rule modules register themselves on import; naming them keeps linters from dropping them.
 _RULE_MODULES = (
     actors,
+    catalogs,
     controllers,
     map_rules,
     map_turns,

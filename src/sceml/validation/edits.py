@@ -95,6 +95,8 @@ _FEATURES: dict[str, Aspect] = {
     "kind": Aspect.CAST | Aspect.MODULES,
     "level": Aspect.SETTINGS,
     "map": Aspect.SETTINGS,
+    # The folder actors' catalog entries are looked up in (SCEML-A011).
+    "vehicleCatalog": Aspect.SETTINGS,
     "definition": Aspect.STRUCTURE | Aspect.MODULES,
     "bindings": Aspect.MODULES,
     "overrides": Aspect.MODULES,
