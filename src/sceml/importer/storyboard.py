@@ -189,6 +189,12 @@ class Storyboard:
             for each in info.actors:
                 if stands_at_start(self.build, start, each):
                     self.motion.speed[str(each.name)] = 0.0
+                    self.build.report.add(
+                        "guessed",
+                        f"{info.name}: {each.name}'s speed before taken as 0 m/s "
+                        "(its trigger holds while it stands)",
+                        self.build.where(info.element),
+                    )
         nodes: list[scm.GraphElement] = []
         #: Per actor, the node a step speed change leaves for the next action to follow.
         after: dict[str, scm.GraphElement] = {}
@@ -232,6 +238,12 @@ class Storyboard:
             unread = [e for e in same if e is not info.element and not self._read(e)]
             if same and not unread and left_standing(same):
                 self.motion.speed[str(each.name)] = 0.0
+                self.build.report.add(
+                    "guessed",
+                    f"{each.name} stands at the end of its road after {info.name}'s last run "
+                    "(an event on the same trigger with no speed change runs more often)",
+                    self.build.where(info.element),
+                )
 
     def _read(self, element: etree._Element) -> bool:
         return any(e.element is element and n in self.finish for n, e in self.events.items())
