@@ -232,6 +232,8 @@ class Storyboard:
     def _left_standing(self, info: Event) -> None:
         """Once the last event on a standing trigger has been read, the actors it leaves
         standing (`standing.left_standing`) have 0 m/s before their next speed change."""
+        if info.element.find("StartTrigger//EndOfRoadCondition") is None:
+            return  # the common case, without a look at every other event
         everything = [(e.element, e.actors) for e in self.events.values()]
         for each in info.actors:
             same = on_same_trigger(self.build, everything, info.element, each)
