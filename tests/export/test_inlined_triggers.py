@@ -47,10 +47,10 @@ def built() -> tuple[ScenarioBuilder, dict[str, scm.GraphElement]]:
 def test_only_what_keeps_its_meaning_is_inlined() -> None:
     b, n = built()
     found = {str(node.name) for node in inlined(b.scenario.nodes)}
-    # Fast: its successor waits for it alone and starts one event on it. Near: Follow ANDs its
-    # activation with its gap in a finish marker, so "held once" and "holds now" would differ.
+    # Fast and Near: their successor waits for them alone and starts one event on them (Follow's
+    # finish marker waits for Follow's event to have started, not for its activation again).
     # The waits and the join-one stay true once true.
-    assert found == {"Fast", "Wait1", "Wait2", "Short", "Long", "AnyOf"}
+    assert found == {"Fast", "Near", "Wait1", "Wait2", "Short", "Long", "AnyOf"}
 
 
 def trigger(document: etree._Element, path: str) -> list[list[tuple[str, str, str]]]:
@@ -72,8 +72,7 @@ def test_the_triggers_hold_the_inlined_conditions() -> None:
     b, _ = built()
     document = build_xosc(b.scenario, version="1.3").tree.getroot()
     names = {str(e.get("name")) for e in document.iter("Event")}
-    assert {"Fast", "Wait1", "Wait2", "Short", "Long", "AnyOf"}.isdisjoint(names)
-    assert "Near" in names  # a marker event: Follow waits for its completion
+    assert {"Fast", "Near", "Wait1", "Wait2", "Short", "Long", "AnyOf"}.isdisjoint(names)
     # SpeedUp: the start AND the speed condition, in the step it holds.
     assert trigger(document, ".//Event[@name='SpeedUp']/StartTrigger") == [
         [("SimulationTimeCondition", "0.0", "0.0"), ("SpeedCondition", "9.0", "0.0")]
@@ -82,9 +81,23 @@ def test_the_triggers_hold_the_inlined_conditions() -> None:
     assert trigger(document, ".//Event[@name='Brake']/StartTrigger") == [
         [("StoryboardElementStateCondition", "SpeedUp", "2.0")]
     ]
+    # Follow: the start AND lead within 20 m of ego, in the step it holds.
     assert trigger(document, ".//Event[@name='Follow']/StartTrigger") == [
-        [("StoryboardElementStateCondition", "Near", "0.0")]
+        [("RelativeDistanceCondition", "20.0", "0.0"), ("SimulationTimeCondition", "0.0", "0.0")]
     ]
+    # Its gap: Follow's event running (or complete) AND the gap under 15 m + 10 % slack, the
+    # radius not asked again.
+    marker = ".//Event[@name='Follow__gap_reached']/StartTrigger"
+    assert trigger(document, marker) == 2 * [
+        [
+            ("RelativeDistanceCondition", "16.5", "0.0"),
+            ("StoryboardElementStateCondition", "Follow", "0.0"),
+        ]
+    ]
+    states = [
+        e.get("state") for e in document.iterfind(f"{marker}//StoryboardElementStateCondition")
+    ]
+    assert states == ["runningState", "completeState"]
     # The end: Brake and Follow's gap and (the join-one of the two waits, each a delay of the
     # start) in one group each of the join-one's alternatives, or the maximum duration.
     follow_done = "Follow__gap_reached"
@@ -220,8 +233,8 @@ def test_a_condition_before_an_arrival_costs_no_step() -> None:
     # FollowTrajectory of the lead) -> End. Walk's arrival marker waits for Walk's own event
     # to have started (running or complete), not for its activation again, so Near and the
     # pause go into Walk's trigger: Walk starts 0.5 s after Near first holds, no step later
-    # (`traffic_lights`' walkers were two steps late on their marker). A Follow's marker
-    # still ANDs its activation with its gap: the condition before it keeps its marker event,
+    # (`traffic_lights`' walkers were two steps late on their marker). A DriveDistance's marker
+    # still ANDs its activation with its time: the condition before it keeps its marker event,
     # and its successor one step.
     b = ScenarioBuilder("arrival", map="map.xodr", level="concrete", max_duration=30.0)
     ego = b.actor("Car", "ego", ego=True, start=world(0.0, 0.0, h=0.0), speed=10.0, **SIZE)
@@ -230,12 +243,12 @@ def test_a_condition_before_an_arrival_costs_no_step() -> None:
     pause = b.add("TimeElapsed", ego, duration=0.5)
     walk = b.add("FollowTrajectory", lead, waypoints=[world(60.0, 0.0), world(80.0, 0.0)])
     close = b.add("InVehicleRadius", lead, target=ego, radius=10.0)
-    follow = b.add("Follow", lead, target=ego, distance=15.0)
+    drive = b.add("DriveDistance", lead, speed=8.0, distance=40.0)
     for node, name in ((near, "Near"), (pause, "Pause"), (walk, "Walk"), (close, "Close")):
         node.name = name
-    follow.name = "Keep"
+    drive.name = "Drive"
     b.chain(b.root, near, pause, walk, b.end)
-    b.chain(b.root, close, follow, b.end)
+    b.chain(b.root, close, drive, b.end)
     inline = inlined(b.scenario.nodes)
     assert {str(node.name) for node in inline} == {"Near", "Pause"}
     assert (flow_steps(near, inline), flow_steps(pause, inline)) == (0, 0)
@@ -304,3 +317,38 @@ def test_conditions_of_a_join_one_go_into_the_trigger_as_groups() -> None:
     ]
     brake.maxRuns = 2
     assert {str(node.name) for node in inlined(b.scenario.nodes)} == {"AnyOf"}
+
+
+def test_a_condition_before_a_follow_costs_no_step() -> None:
+    # root -> Close (lead within 30 m of ego) -> Keep (lead follows ego at 15 m) -> End, as
+    # `long_dist_action_with_jerk` has it: Close goes into Keep's trigger and costs no step;
+    # the gap marker waits for Keep's event to have started (carla: its startTransition).
+    for profile, version, started in (
+        ("generic", "1.3", {"runningState", "completeState"}),
+        ("carla", "1.0", {"startTransition"}),
+    ):
+        road = "Town01" if profile == "carla" else "map.xodr"
+        b = ScenarioBuilder("follow", map=road, level="concrete", max_duration=30.0)
+        ego = b.actor("Car", "ego", ego=True, start=world(40.0, 0.0, h=0.0), speed=8.0, **SIZE)
+        lead = b.actor("Car", "lead", start=world(0.0, 0.0, h=0.0), speed=10.0, **SIZE)
+        close = b.add("InVehicleRadius", lead, target=ego, radius=30.0)
+        keep = b.add("Follow", lead, target=ego, distance=15.0)
+        close.name, keep.name = "Close", "Keep"
+        b.chain(b.root, close, keep, b.end)
+        inline = inlined(b.scenario.nodes)
+        assert {str(node.name) for node in inline} == {"Close"}
+        assert flow_steps(close, inline) == 0
+        document = build_xosc(b.scenario, version=version, profile=profile).tree.getroot()
+        assert document.find(".//Event[@name='Close']") is None
+        kinds = trigger(document, ".//Event[@name='Keep']/StartTrigger")
+        assert [[kind for kind, _, _ in group] for group in kinds] == [
+            ["RelativeDistanceCondition", "SimulationTimeCondition"]
+        ]
+        marker = ".//Event[@name='Keep__gap_reached']/StartTrigger"
+        states = {
+            (c.get("storyboardElementRef"), c.get("state"))
+            for c in document.iterfind(f"{marker}//StoryboardElementStateCondition")
+        }
+        assert states == {("Keep", state) for state in started}
+        values = {c.get("value") for c in document.iterfind(f"{marker}//RelativeDistanceCondition")}
+        assert values == {"16.5"}  # the gap (15 m) and 1.5 m slack, not Close's 30 m again

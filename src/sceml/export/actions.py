@@ -99,7 +99,15 @@ def _arrival_marker(ctx: Context, node: scm.ActionNode, event: str, extra: Condi
     written into `event`'s trigger as it holds now (`xosc.flows`), need not hold again on
     arrival (`traffic_lights`' walkers waited for their green light's marker event, a step
     late, two with its delay)."""
-    name = ctx.extra_event(node, "arrived")
+    return started_marker(ctx, node, "arrived", event, extra)
+
+
+def started_marker(
+    ctx: Context, node: scm.ActionNode, suffix: str, event: str, extra: Condition
+) -> Event:
+    """A finish marker of the node written as `event` that fires once `event` has started
+    and `extra` holds, so that the node uses its activation once (`xosc.flows`)."""
+    name = ctx.extra_event(node, suffix)
     started = has_started(event, name, ctx.profile)
     return Event(
         name,

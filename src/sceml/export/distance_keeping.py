@@ -14,7 +14,7 @@ from dataclasses import replace
 import scemlmodel as scm
 
 from ..xosc import meaning
-from .actions import Plan, finish_marker, planner
+from .actions import Plan, planner, started_marker
 from .context import Action, Context, Event
 from .entities import own_performance
 from .triggers import Condition, Group, finished
@@ -52,14 +52,17 @@ def plan_distance_keeping(ctx: Context, node: scm.DistanceKeeping, groups: list[
         groups,
     )
     checks = _gap_reached(ctx, node, name, follow)
-    done = finish_marker(ctx, node, "gap_reached", groups, checks[0])
+    # The marker waits for the node's own event to have started, not for its activation again:
+    # a condition before the node then stands in the event's StartTrigger as it holds now
+    # (`xosc.flows`) and need not hold again when the gap is reached (the condition kept a
+    # marker event of its own, a step earlier: `long_dist_action_with_jerk`'s events at 1.05 s).
+    done = started_marker(ctx, node, "gap_reached", name, checks[0])
     done = replace(done, groups=[[*group, *checks[1:]] for group in done.groups])
     if _may_be_interrupted(node):
         # Interrupted, the node has finished (Maneuver.interrupts): the player ends its action
         # and the event completes, with the gap perhaps never reached. Only then does a
         # Follow's event complete; an Approach's completes after its gap is held anyway.
-        ended = finished(name, done.name)
-        done = replace(done, groups=[*done.groups, *([*group, ended] for group in groups)])
+        done = replace(done, groups=[*done.groups, [finished(name, done.name)]])
     return [event, done], done.name
 
 

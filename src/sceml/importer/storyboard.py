@@ -20,6 +20,7 @@ from . import markers, traced
 from .actions import Motion, Request, map_action
 from .context import Build, last_name
 from .opaque import opaque_node
+from .standing import left_standing, on_same_trigger, stands_at_start
 from .triggers import Trigger, clock_start
 
 #: States that mean "has finished" and "has started" (the others are read as started).
@@ -182,6 +183,18 @@ class Storyboard:
             return node
         activation = trigger.node(start, None, f"{info.name}_start")
         self.started[info.name] = activation
+        # Only a speed change is read from the speed before; the last speed set stays for the
+        # events read after this one, which need not follow it in time.
+        if info.element.find("Action//SpeedAction") is not None:
+            for each in info.actors:
+                if stands_at_start(self.build, start, each):
+                    self.motion.speed[str(each.name)] = 0.0
+                    self.build.report.add(
+                        "guessed",
+                        f"{info.name}: {each.name}'s speed before taken as 0 m/s "
+                        "(its trigger holds while it stands)",
+                        self.build.where(info.element),
+                    )
         nodes: list[scm.GraphElement] = []
         #: Per actor, the node a step speed change leaves for the next action to follow.
         after: dict[str, scm.GraphElement] = {}
@@ -205,6 +218,7 @@ class Storyboard:
                 if _is_step_speed(action):
                     after[str(each.name)] = made
         self._runs(info, nodes)
+        self._left_standing(info)
         place = list(self.events).index(info.name)
         for made in nodes:
             self.build.event_order[id(made)] = place
@@ -214,6 +228,27 @@ class Storyboard:
         for made in nodes:
             self.build.flow(made, join)
         return join
+
+    def _left_standing(self, info: Event) -> None:
+        """Once the last event on a standing trigger has been read, the actors it leaves
+        standing (`standing.left_standing`) have 0 m/s before their next speed change."""
+        if info.element.find("StartTrigger//EndOfRoadCondition") is None:
+            return  # the common case, without a look at every other event
+        everything = [(e.element, e.actors) for e in self.events.values()]
+        for each in info.actors:
+            same = on_same_trigger(self.build, everything, info.element, each)
+            unread = [e for e in same if e is not info.element and not self._read(e)]
+            if same and not unread and left_standing(same):
+                self.motion.speed[str(each.name)] = 0.0
+                self.build.report.add(
+                    "guessed",
+                    f"{each.name} stands at the end of its road after {info.name}'s last run "
+                    "(an event on the same trigger with no speed change runs more often)",
+                    self.build.where(info.element),
+                )
+
+    def _read(self, element: etree._Element) -> bool:
+        return any(e.element is element and n in self.finish for n, e in self.events.items())
 
     def _runs(self, info: Event, nodes: list[scm.GraphElement]) -> None:
         """The event's maximumExecutionCount as its nodes' maxRuns (one action, or controller

@@ -27,7 +27,8 @@ is evaluated again at every step, so it may only stand where "holds now" and "ha
   whose successors are such and run once (an original's trigger of several ConditionGroups:
   one group each). An arrival's finish
   marker (`__arrived`) waits for the arrival's event to have started, so it too uses the
-  activation once. Another maneuver with a finish marker (`__gap_reached`, `__driven`, ...)
+  activation once; so does a Follow's or an Approach's (`__gap_reached`). Another maneuver
+  with a finish marker (`__driven`, ...)
   ANDs its activation with its goal, another condition ANDs it with its own test, a join
   combines it with other branches: there "held once" and "holds now" differ, so the condition
   keeps its marker event.
@@ -52,7 +53,10 @@ from .support import REPEATABLE_KINDS
 #: `traffic_lights`' signals changed a step late, every one; its walkers, a FollowTrajectory
 #: each, two steps late.)
 _ARRIVAL_KINDS = frozenset({"TurnLeft", "TurnRight", "Cross", "FollowTrajectory"})
-_USES_ACTIVATION_ONCE = REPEATABLE_KINDS | {"Overtake"} | _ARRIVAL_KINDS
+#: Follow and Approach likewise: their `__gap_reached` marker waits for their event to have
+#: started (`export.distance_keeping`).
+_DISTANCE_KINDS = frozenset({"Follow", "Approach"})
+_USES_ACTIVATION_ONCE = REPEATABLE_KINDS | {"Overtake"} | _ARRIVAL_KINDS | _DISTANCE_KINDS
 #: Kinds that only pass activation on (a marker with the activation as its trigger).
 _PASSING = (scm.JoinAllFinished, scm.JoinOneFinished, scm.InPort, scm.OutPort)
 
