@@ -41,6 +41,7 @@ class Journal:
         self._last_change = 0.0  # time.monotonic() of the last change announced
         self._first_pending = 0.0  # of the first change no write covers yet
         self._stopping = False
+        self._urgent = False  # a checkpoint is due at once (`now`)
         self._condition = threading.Condition()
         #: The last write's refusal (a full disk, a read-only folder), for the page to show.
         self.problem: str | None = None
@@ -55,6 +56,14 @@ class Journal:
                 self._first_pending = now
             self._wanted += 1
             self._last_change = now
+            self._condition.notify_all()
+
+    def now(self) -> None:
+        """A change the log cannot replay was made: write the checkpoint without waiting."""
+        with self._condition:
+            self._urgent = True
+            self._wanted += 1
+            self._last_change = time.monotonic()
             self._condition.notify_all()
 
     def flush(self, timeout: float | None = None) -> bool:
@@ -72,7 +81,7 @@ class Journal:
 
     def _due_in(self) -> float:
         """Seconds until the pending changes are to be written (0: now). Under the condition."""
-        if self._stopping:
+        if self._stopping or self._urgent:
             return 0.0
         now = time.monotonic()
         return max(
@@ -90,6 +99,7 @@ class Journal:
                 while (delay := self._due_in()) > 0:
                     self._condition.wait(delay)
                 target = self._taken = self._wanted
+                self._urgent = False
             try:
                 self._write()
                 self.problem = None
