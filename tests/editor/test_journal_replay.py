@@ -170,3 +170,24 @@ def test_a_new_file_killed_before_its_first_save_replays_on_a_new_scenario(
     restored = second.resolve_recovery(True)
     assert "Stop_1" in names(restored) and restored["replay"]["stopped"] is None
     assert restored["dirty"] is True
+
+
+def test_a_crash_between_the_checkpoint_and_emptying_the_log_replays_nothing_twice(
+    examples_copy: Path,
+) -> None:
+    target = examples_copy / "uis1-concrete.xmi"
+    first = reopen(target)
+    request(first, "/api/ops", add("Stop"))
+    request(first, "/api/ops", add("Decelerate"))
+    before_checkpoint = log_path(target).read_bytes()
+    assert first.recover() is not None
+    log_path(target).write_bytes(before_checkpoint)  # the crash hit before the log was emptied
+    with log_path(target).open("ab") as stream:  # and one more change was logged after it
+        stream.write(b'{"seq":3,"route":"/api/ops","body":' + b'{"ops":[{"op":"add_node",')
+        stream.write(b'"kind":"TurnLeft"}]},"tab":"A"}\n')
+    second = reopen(target)
+    restored = second.resolve_recovery(True)
+    assert restored["replay"] == {"replayed": 1, "stopped": None, "kept": None}
+    found = names(restored)
+    assert found.count("Stop_1") == 1 and "Stop_2" not in found and "Decelerate_2" not in found
+    assert "TurnLeft_1" in found
