@@ -1,15 +1,15 @@
-"""The recovery copy kept up to date after the changes, off the request path.
+"""The checkpoint of the recovery copy, written off the request path once the edits pause.
 
-After a change the session's unsaved model is written to `.NAME.recovered.xmi` beside the file
-(or the copy is removed once everything is saved), by one background thread, so the answer to
-the edit does not wait for the disk. The write holds the session's lock (it reads the model) and
-takes a third of a second at 500 nodes on a quiet machine: started at once after every change,
-it made the next edit wait for it (edit after edit, most of the server's time in the browser).
-So it starts once the changes pause for `quiet` seconds, and at the latest `patience` seconds
-after the first change it covers, however busy the user is. Changes that arrive while a write
-runs are folded into the next write. A SIGKILL loses the changes of the last `quiet` seconds
-(the last edit, at a person's pace) and those made while the copy was being written. The write
-itself is atomic (`sceml.files.writing.write_atomically`), so the copy is never torn.
+Every change is first logged in `.NAME.journal` before its answer (`EditorSession.record`,
+changelog.py); this thread writes the checkpoint, the whole unsaved model as
+`.NAME.recovered.xmi` (or removes both once everything is saved), after which the log starts
+again. The write holds the session's lock (it reads the model), a large fraction of a second at
+500 nodes under load: started after every change, it made the next edit wait for it. So it
+starts once the changes pause for `quiet` seconds, and at the latest `patience` seconds after
+the first change it covers; at once (`now`) after a change the log cannot replay. Changes that
+arrive while a write runs are folded into the next write. A SIGKILL loses nothing that was
+answered: what the checkpoint does not hold yet is in the log. The write itself is atomic
+(`sceml.files.writing.write_atomically`), so the copy is never torn.
 """
 
 from __future__ import annotations
