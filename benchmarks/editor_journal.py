@@ -13,7 +13,8 @@ a round of either kind and the figures compare the logging alone.
 
 Prints the median and the slowest answer of each kind, their difference, the median time of
 one log append (`EditorSession.record`) measured inside the app, and of one checkpoint (what
-the log spares a burst of edits from waiting for).
+the log spares a burst of edits from waiting for), and how long opening the file and restoring
+it with every logged change replayed takes (as after a SIGKILL at the end of the rounds).
 """
 
 from __future__ import annotations
@@ -98,6 +99,15 @@ def main(argv: list[str] | None = None) -> None:
             results[kind] += _round(client, node, number)
         session.record = record  # type: ignore[method-assign]
         logged = session.journal_path.stat().st_size  # before the stop checkpoints and empties it
+        # As after a SIGKILL now: a new session restores the file plus every logged change.
+        start = time.perf_counter()
+        again = EditorSession(SessionOptions())
+        again.open(path)
+        offer = again.recovery_offer
+        assert offer is not None
+        report = again.resolve_recovery(True)["replay"]
+        restored = (time.perf_counter() - start) * 1000
+        assert report["stopped"] is None, report
         api.journal.stop()
         checkpoints = []
         for _ in range(3):
@@ -124,6 +134,7 @@ def main(argv: list[str] | None = None) -> None:
             f"  one checkpoint (the whole model as XMI), median of 3: "
             f"{statistics.median(checkpoints):.1f} ms"
         )
+        print(f"  open and restore with {report['replayed']} changes replayed: {restored:.0f} ms")
         print(f"  the log after {len(appends) + EDITS} entries: {logged} bytes")
     finally:
         shutil.rmtree(folder, ignore_errors=True)
