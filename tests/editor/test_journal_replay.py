@@ -191,3 +191,25 @@ def test_a_crash_between_the_checkpoint_and_emptying_the_log_replays_nothing_twi
     found = names(restored)
     assert found.count("Stop_1") == 1 and "Stop_2" not in found and "Decelerate_2" not in found
     assert "TurnLeft_1" in found
+
+
+def test_an_extract_is_not_written_again_by_a_replay(examples_copy: Path) -> None:
+    target = examples_copy / "uis1-concrete.xmi"
+    first = reopen(target)
+    chosen = [node_id(first.view(), n) for n in ("Accelerate_2", "Cross_1")]
+    extract = {"ops": [{"op": "extract_module", "nodes": chosen, "name": "BikeGo",
+                        "library": "library/mine.xmi"}]}  # fmt: skip
+    first.will_change("/api/ops")
+    first.apply(extract["ops"], None, "A")
+    assert first.record("/api/ops", extract, "A", 0), "an extract has the checkpoint due at once"
+    library = examples_copy / "library" / "mine.xmi"
+    written = library.read_bytes()
+    library.write_bytes(written + b"\n")  # edited since, by hand: a replay must leave it be
+    # Killed before the checkpoint was written: the replay meets the extract and stops there.
+    second = reopen(target)
+    restored = second.resolve_recovery(True)
+    assert restored["replay"]["replayed"] == 0
+    assert restored["replay"]["stopped"].startswith("the edit extract_module (change 1, tab A)")
+    assert "it wrote another file (a library)" in restored["replay"]["stopped"]
+    assert library.read_bytes() == written + b"\n"
+    assert {"Accelerate_2", "Cross_1"} <= set(names(restored))
