@@ -3,15 +3,17 @@ at what it cannot apply and keeps the rest; a save empties the log."""
 
 from __future__ import annotations
 
+import errno
 import signal
 from pathlib import Path
 from typing import Any
 
+import pytest
 from editor.helpers import node_id
 from editor.servers import Server, start
 
 from sceml.editor import EditorSession, SessionOptions
-from sceml.editor.changelog import log_path, read_log
+from sceml.editor.changelog import ChangeLog, log_path, read_log
 
 
 def names(view: dict[str, Any]) -> list[str]:
@@ -213,3 +215,29 @@ def test_an_extract_is_not_written_again_by_a_replay(examples_copy: Path) -> Non
     assert "it wrote another file (a library)" in restored["replay"]["stopped"]
     assert library.read_bytes() == written + b"\n"
     assert {"Accelerate_2", "Cross_1"} <= set(names(restored))
+
+
+def test_a_log_that_cannot_be_written_asks_for_the_checkpoint_and_starts_again_after_it(
+    examples_copy: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    target = examples_copy / "uis1-concrete.xmi"
+    session = reopen(target)
+    request(session, "/api/ops", add("Stop"))
+
+    def full_disk(self: ChangeLog, entry: object) -> None:
+        raise OSError(errno.ENOSPC, "No space left on device")
+
+    with monkeypatch.context() as patched:
+        patched.setattr(ChangeLog, "append", full_disk)
+        session.will_change("/api/ops")
+        session.apply(add("Decelerate")["ops"], None, "A")
+        assert session.record("/api/ops", add("Decelerate"), "A", 0), "the checkpoint is due"
+    # Not a new log on the file, which would miss Decelerate_1: nothing until the checkpoint.
+    request(session, "/api/ops", add("TurnLeft"))
+    found = read_log(log_path(target))
+    assert found is not None and [e.body for e in found.entries] == [add("Stop")]
+    assert session.recover() is not None
+    request(session, "/api/ops", add("TurnRight"))
+    restored = reopen(target).resolve_recovery(True)
+    assert {"Stop_1", "Decelerate_1", "TurnLeft_1"} <= set(names(restored))
+    assert "TurnRight_2" in names(restored) and restored["replay"]["replayed"] == 1

@@ -95,7 +95,9 @@ class ChangeLog:
     def append(self, entry: Entry) -> None:
         """Append one entry with a single write (whole, or torn only by a crash inside it)."""
         assert self._fd is not None, "the log is not started"
-        os.write(self._fd, _line(entry.record()))
+        data = _line(entry.record())
+        while data:  # a regular file takes it whole but on a full disk; then the rest, or OSError
+            data = data[os.write(self._fd, data) :]
 
     def close(self) -> None:
         if self._fd is not None:

@@ -83,6 +83,9 @@ class EditorSession:
         self._since_base: set[Step] = set()
         self._copied_since_base = False
         self._moved: Step | None = None
+        # The log could not be written (a full disk): no log until the next checkpoint, since
+        # a log started on the file now would miss the change that was not logged.
+        self._log_failed = False
         #: The SHA-256 of the file as opened or last saved (None: not written yet).
         self.base_digest: str | None = None
         #: While the user compares with the saved file: marks and changes in every view.
@@ -479,17 +482,28 @@ class EditorSession:
         if route in ("/api/undo", "/api/redo") and self.version == before:
             return False  # nothing to undo or redo: nothing changed
         refused = self._why_not_replayable(route, body)
-        assert self._log is not None, "will_change was not called before the change"
         self.seq += 1
-        self._log.append(Entry(self.seq, route, body, tab, refused))
+        if self._log is None or not self._log.started:
+            return True  # the log could not be started: the checkpoint is the only copy
+        try:
+            self._log.append(Entry(self.seq, route, body, tab, refused))
+        except OSError:
+            # A full disk: the change is made all the same; the checkpoint tries at once.
+            self._log.close()
+            self._log, self._log_failed = None, True
+            return True
         return refused is not None
 
     def will_change(self, route: str) -> None:
         """Before a change request: start the log if none is, on the model as it still is (the
         log's header names the objects' ids by their places in the file)."""
         idle = self._log is None and self.document is not None and not self.options.read_only
-        if route in LOGGED_ROUTES and idle:
-            self._start_journal()
+        if route in LOGGED_ROUTES and idle and not self._log_failed:
+            try:
+                self._start_journal()
+            except (SceMLError, OSError):
+                # A folder that cannot be written: the edit goes on; the checkpoint tries next.
+                self._log, self._log_failed = None, True
 
     def _why_not_replayable(self, route: str, body: dict[str, Any]) -> str | None:
         step = self._moved
@@ -535,6 +549,7 @@ class EditorSession:
         if self._log is not None:
             self._log.close()
         self._log, self.journal_id, self.seq = None, None, 0
+        self._log_failed = False
         self._since_base, self._copied_since_base = set(), False
 
     def _drop_journal_files(self) -> None:
@@ -580,6 +595,7 @@ class EditorSession:
         if self._log is None:
             self._log = ChangeLog(self.journal_path)
         self._log.start({"id": self.journal_id, "base": "checkpoint", "module": self.module})
+        self._log_failed = False
         self._since_base, self._copied_since_base = set(), False
         return target
 
