@@ -241,3 +241,22 @@ def test_a_log_that_cannot_be_written_asks_for_the_checkpoint_and_starts_again_a
     restored = reopen(target).resolve_recovery(True)
     assert {"Stop_1", "Decelerate_1", "TurnLeft_1"} <= set(names(restored))
     assert "TurnRight_2" in names(restored) and restored["replay"]["replayed"] == 1
+
+
+def test_a_copy_while_an_offer_waits_keeps_the_offer(examples_copy: Path) -> None:
+    target = examples_copy / "uis1-concrete.xmi"
+    request(reopen(target), "/api/ops", add("Stop"))
+    second = reopen(target)
+    assert second.recovery_offer is not None
+    stop_log = log_path(target).read_bytes()
+    chosen = [node_id(second.view(), "Cross_1")]
+    second.will_change("/api/copy")
+    second.copy(chosen, "A")
+    assert not second.record("/api/copy", {"nodes": chosen}, "A", second.version)
+    assert second.recovery_offer is not None and log_path(target).read_bytes() == stop_log
+    # The paste after an edit replaced the offer: what was copied before is not in the log.
+    request(second, "/api/ops", add("TurnLeft"))
+    assert second.recovery_offer is None
+    second.will_change("/api/ops")
+    second.apply([{"op": "paste"}], None, "A")
+    assert second.record("/api/ops", {"ops": [{"op": "paste"}]}, "A", 0)

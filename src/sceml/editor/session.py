@@ -481,6 +481,8 @@ class EditorSession:
             return False
         if route in ("/api/undo", "/api/redo") and self.version == before:
             return False  # nothing to undo or redo: nothing changed
+        if route == "/api/copy" and self._log is None and not self._log_failed:
+            return False  # copied while an offer waits: a later paste has the checkpoint due
         refused = self._why_not_replayable(route, body)
         self.seq += 1
         if self._log is None or not self._log.started:
@@ -498,6 +500,8 @@ class EditorSession:
         """Before a change request: start the log if none is, on the model as it still is (the
         log's header names the objects' ids by their places in the file)."""
         idle = self._log is None and self.document is not None and not self.options.read_only
+        if self.recovery_offer is not None and route != "/api/ops":
+            return  # only an edit replaces an earlier run's offer (a Copy changes nothing)
         if route in LOGGED_ROUTES and idle and not self._log_failed:
             try:
                 self._start_journal()
