@@ -42,9 +42,9 @@ def test_after_a_kill_the_next_run_offers_the_journal(
     recovered = examples_copy / ".uis1-concrete.recovered.xmi"
     server = start(servers, target)
     server.post("/api/ops", {"ops": [{"op": "add_node", "kind": "Stop"}]})
-    server.post("/api/ops", {"ops": [{"op": "add_node", "kind": "Accelerate"}]})
+    server.post("/api/ops", {"ops": [{"op": "add_node", "kind": "Decelerate"}]})
     deadline = time.monotonic() + 20
-    while not (recovered.exists() and "Accelerate_1" in node_names(recovered)):
+    while not (recovered.exists() and "Decelerate_1" in node_names(recovered)):
         assert time.monotonic() < deadline, "the journal did not write the second edit"
         time.sleep(0.05)
     assert server.stop(signal.SIGKILL) == -signal.SIGKILL
@@ -55,11 +55,11 @@ def test_after_a_kill_the_next_run_offers_the_journal(
     assert isinstance(offer, dict) and offer["path"] == str(recovered)
     assert "Stop_1" not in {n["name"] for n in again.view()["nodes"]}  # type: ignore[union-attr]
     restored = again.post("/api/recovery", {"restore": True})
-    assert {"Stop_1", "Accelerate_1"} <= {n["name"] for n in restored["nodes"]}  # type: ignore[union-attr]
+    assert {"Stop_1", "Decelerate_1"} <= {n["name"] for n in restored["nodes"]}  # type: ignore[union-attr]
     assert restored["dirty"] is True and restored["recovery"] is None
     assert restored["document"]["path"] == str(target)  # type: ignore[index]
     again.post("/api/save", {})
-    assert {"Stop_1", "Accelerate_1"} <= node_names(target)
+    assert {"Stop_1", "Decelerate_1"} <= node_names(target)
     assert again.stop(signal.SIGTERM) == 0
     assert not recovered.exists(), "everything was saved: no copy is left"
 
@@ -73,6 +73,7 @@ def test_dropping_the_offer_deletes_the_copy(examples_copy: Path) -> None:
     second = EditorSession(SessionOptions())
     view = second.open(examples_copy / "uis1-concrete.xmi")
     assert view["recovery"]["path"] == str(copy)
+    assert view["recovery"]["changes"] == 0, "the copy holds the change: nothing to replay"
     assert second.recover() is None and copy.exists(), "an offered copy is kept until answered"
     assert second.resolve_recovery(False)["recovery"] is None
     assert not copy.exists()

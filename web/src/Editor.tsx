@@ -56,6 +56,8 @@ export function Editor() {
   const canvas = useRef<HTMLDivElement>(null);
   // The recovery offer the user put off with Escape (it stays on the server until answered).
   const [recoveryLater, setRecoveryLater] = useState<string | null>(null);
+  // A restore whose replay stopped at a change it could not apply: what, and where the rest is.
+  const [replayStopped, setReplayStopped] = useState<string | null>(null);
 
   const editable = view !== null && !view.readOnly;
   const selectedNodes = useMemo(() => diagram.nodes.filter((node) => node.selected), [diagram.nodes]);
@@ -445,6 +447,14 @@ export function Editor() {
           </button>
         </div>
       )}
+      {replayStopped && (
+        <div className="banner" role="alert" aria-label="Restore stopped">
+          <span>{replayStopped}</span>
+          <button type="button" onClick={() => setReplayStopped(null)} aria-label="Dismiss">
+            ×
+          </button>
+        </div>
+      )}
       {view?.document.olderRelease && editable && (
         <div className="banner release" role="status">
           <span>
@@ -479,7 +489,14 @@ export function Editor() {
         <RecoveryDialog
           recovery={view.recovery}
           documentName={view.document.name}
-          onAnswer={(restore) => void server.run(() => api.recovery(restore))}
+          onAnswer={(restore) =>
+            void server.run(() => api.recovery(restore)).then((answer) => {
+              const replay = answer?.replay;
+              if (replay?.stopped) {
+                setReplayStopped(`Restored ${replay.replayed} logged changes; ${replay.stopped}. It and the changes after it are kept in ${replay.kept}.`);
+              }
+            })
+          }
           onLater={() => setRecoveryLater(view.recovery?.path ?? null)}
         />
       )}

@@ -214,8 +214,12 @@ export interface View {
   palette: PaletteGroup[];
   style: Style;
   choices: Record<string, string[]>;
-  /** A recovery copy an earlier run left (after a crash or kill), offered until answered. */
-  recovery: { path: string; written: string } | null;
+  /** A recovery copy an earlier run left (after a crash or kill), offered until answered, and
+   * how many logged changes a restore replays on it. */
+  recovery: { path: string; written: string; changes?: number } | null;
+  /** Only in the answer to a restore: how many logged changes were replayed, and the one that
+   * could not be (with where it and the later ones were kept). */
+  replay?: { replayed: number; stopped: string | null; kept: string | null };
 }
 
 /** The entries of a list that changed or were added, the ids removed, and the whole order of

@@ -62,10 +62,11 @@ def edit(
 ) -> None:
     """Edit FILE, a scenario (.xmi), in the browser; a missing FILE starts a new scenario.
 
-    The server runs on 127.0.0.1 until Ctrl-C, `kill` or a closed terminal. Unsaved changes
-    are kept in a recovery copy beside the file (.NAME.recovered.xmi) after every edit and
-    when the server stops; its path is printed. If the server was killed, the next `sceml edit FILE`
-    offers to restore that copy.
+    The server runs on 127.0.0.1 until Ctrl-C, `kill` or a closed terminal. Every edit is
+    logged beside the file (.NAME.journal) before it is answered, and the whole unsaved model
+    is copied there (.NAME.recovered.xmi) when the edits pause and when the server stops; its
+    path is printed. If the server was killed, the next `sceml edit FILE` offers to restore the
+    copy with the logged edits replayed.
 
     Files are opened, saved and exported only inside FILE's folder, its project root and the
     --allow folders.
@@ -85,12 +86,16 @@ def edit(
     )
     session = EditorSession(options)
     session.open(target, module=module)
-    if session.recovery_offer is not None:
+    offer = session.recovery_offer
+    if offer is not None:
+        logged = f" and {len(offer.entries)} logged changes" if offer.entries else ""
         click.echo(
-            f"unsaved changes of an earlier run are in {session.recovery_offer}; "
+            f"unsaved changes of an earlier run are in {offer.shown}{logged}; "
             "the page offers to restore them",
             err=True,
         )
+        if offer.problem is not None:
+            click.echo(f"the change log cannot be used: {offer.problem}", err=True)
     result = serve(
         session,
         port=port,

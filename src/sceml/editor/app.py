@@ -128,7 +128,9 @@ class Api:
                 body = parse_object(raw)
             if request.url.path in VIEW_ROUTES:
                 action = self._patched(action, known)
-            result, event = await run_in_threadpool(self._locked, action, body, tab)
+            result, event = await run_in_threadpool(
+                self._locked, action, body, tab, request.url.path
+            )
         except ExportRefused as error:
             return _error(error.message, error.status, diagnostics=error.diagnostics)
         except EditorError as error:
@@ -152,11 +154,22 @@ class Api:
 
         return patched
 
-    def _locked(self, action: Action, body: dict[str, Any], tab: str) -> tuple[Any, dict[str, Any]]:
+    def _locked(
+        self, action: Action, body: dict[str, Any], tab: str, route: str = ""
+    ) -> tuple[Any, dict[str, Any]]:
         """`action`'s result and the change event other pages get if it changed something
-        (made under the lock, so that it is this request's revision)."""
+        (made under the lock, so that it is this request's revision).
+
+        A change is logged (`EditorSession.record`) under the same lock, before the answer: the
+        log holds the changes in the order they were applied, and a SIGKILL after the answer
+        cannot lose it. One a replay could not apply has the checkpoint written at once.
+        """
         with self.lock:
+            before = self.session.version
+            self.session.will_change(route)
             result = action(body, tab)
+            if self.session.record(route, body, tab, before):
+                self.journal.now()
             return result, {**self.history.event(tab), "version": self.session.version}
 
     async def events(self, request: Request) -> Response:

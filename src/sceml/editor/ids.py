@@ -52,3 +52,30 @@ class Ids:
     def known(self, obj: EObject) -> str | None:
         """The id of `obj` if it has one already."""
         return self._ids.get(obj)
+
+    @property
+    def counter(self) -> int:
+        """How many ids were handed out (the next one is one more)."""
+        return self._counter
+
+    def in_resource(self, resource: object) -> dict[str, str]:
+        """Each id of an object stored in `resource`, with the object's place in it (its URI
+        fragment), so that a later run can give the same objects the same ids."""
+        found: dict[str, str] = {}
+        for identifier in self._objects:
+            current = self.find(identifier)
+            if current is not None and current.eResource is resource:
+                found[identifier] = current.eURIFragment()
+        return found
+
+    def restore(self, places: dict[str, str], resource: object, counter: int) -> None:
+        """Give the objects at `places` in `resource` the ids an earlier run gave them."""
+        for identifier, fragment in places.items():
+            try:
+                obj = resource.resolve_object(fragment)  # type: ignore[attr-defined]
+            except (ValueError, IndexError, AttributeError):
+                continue  # not in this base: the replay names what then cannot be found
+            if obj is not None and obj not in self._ids:
+                self._ids[obj] = identifier
+                self._objects[identifier] = obj
+        self._counter = max(self._counter, counter)

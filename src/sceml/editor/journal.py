@@ -1,15 +1,15 @@
-"""The recovery copy kept up to date after the changes, off the request path.
+"""The checkpoint of the recovery copy, written off the request path once the edits pause.
 
-After a change the session's unsaved model is written to `.NAME.recovered.xmi` beside the file
-(or the copy is removed once everything is saved), by one background thread, so the answer to
-the edit does not wait for the disk. The write holds the session's lock (it reads the model) and
-takes a third of a second at 500 nodes on a quiet machine: started at once after every change,
-it made the next edit wait for it (edit after edit, most of the server's time in the browser).
-So it starts once the changes pause for `quiet` seconds, and at the latest `patience` seconds
-after the first change it covers, however busy the user is. Changes that arrive while a write
-runs are folded into the next write. A SIGKILL loses the changes of the last `quiet` seconds
-(the last edit, at a person's pace) and those made while the copy was being written. The write
-itself is atomic (`sceml.files.writing.write_atomically`), so the copy is never torn.
+Every change is first logged in `.NAME.journal` before its answer (`EditorSession.record`,
+changelog.py); this thread writes the checkpoint, the whole unsaved model as
+`.NAME.recovered.xmi` (or removes both once everything is saved), after which the log starts
+again. The write holds the session's lock (it reads the model), a large fraction of a second at
+500 nodes under load: started after every change, it made the next edit wait for it. So it
+starts once the changes pause for `quiet` seconds, and at the latest `patience` seconds after
+the first change it covers; at once (`now`) after a change the log cannot replay. Changes that
+arrive while a write runs are folded into the next write. A SIGKILL loses nothing that was
+answered: what the checkpoint does not hold yet is in the log. The write itself is atomic
+(`sceml.files.writing.write_atomically`), so the copy is never torn.
 """
 
 from __future__ import annotations
@@ -41,6 +41,7 @@ class Journal:
         self._last_change = 0.0  # time.monotonic() of the last change announced
         self._first_pending = 0.0  # of the first change no write covers yet
         self._stopping = False
+        self._urgent = False  # a checkpoint is due at once (`now`)
         self._condition = threading.Condition()
         #: The last write's refusal (a full disk, a read-only folder), for the page to show.
         self.problem: str | None = None
@@ -55,6 +56,14 @@ class Journal:
                 self._first_pending = now
             self._wanted += 1
             self._last_change = now
+            self._condition.notify_all()
+
+    def now(self) -> None:
+        """A change the log cannot replay was made: write the checkpoint without waiting."""
+        with self._condition:
+            self._urgent = True
+            self._wanted += 1
+            self._last_change = time.monotonic()
             self._condition.notify_all()
 
     def flush(self, timeout: float | None = None) -> bool:
@@ -72,7 +81,7 @@ class Journal:
 
     def _due_in(self) -> float:
         """Seconds until the pending changes are to be written (0: now). Under the condition."""
-        if self._stopping:
+        if self._stopping or self._urgent:
             return 0.0
         now = time.monotonic()
         return max(
@@ -90,6 +99,7 @@ class Journal:
                 while (delay := self._due_in()) > 0:
                     self._condition.wait(delay)
                 target = self._taken = self._wanted
+                self._urgent = False
             try:
                 self._write()
                 self.problem = None

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import json
+import secrets
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from datetime import datetime
@@ -27,14 +29,16 @@ from ..render.style import style_data
 from ..validation.incremental import IncrementalValidator
 from ..xosc.profiles import default_version
 from . import operations, palette, view
+from .changelog import LOGGED_ROUTES, ChangeLog, Entry, log_path
 from .changes import Recorder
 from .clipboard import copy_nodes
 from .commands import ANY_TAB, CommandStack, Step
 from .comparing import SavedComparison
 from .context import Clipboard, EditContext
-from .errors import ConflictError, ExportRefused, OperationError, ReadOnlyError
+from .errors import ConflictError, EditorError, ExportRefused, OperationError, ReadOnlyError
 from .ids import Ids
 from .paths import inside_allowed, path_text
+from .recovery import NOTE_PREFIX, Offer, checkpoint_path, file_digest, find_offer
 
 
 @dataclass
@@ -66,8 +70,24 @@ class EditorSession:
         #: The folders files may be opened from and written to, fixed by the first file opened
         #: (the one named when the server started), so no request can widen them.
         self.roots: list[Path] | None = None
-        #: A recovery copy left by an earlier run, offered until the user restores or drops it.
-        self.recovery_offer: Path | None = None
+        #: Unsaved changes an earlier run left, offered until the user restores or drops them.
+        self.recovery_offer: Offer | None = None
+        #: What the last restore replayed, and where it stopped (for the page).
+        self.replay_report: dict[str, Any] | None = None
+        # The journal (docs/editor.md, "Nothing is lost"): the change log since the base (the
+        # file as opened or saved, or the last checkpoint), the sequence number of the last
+        # change logged, and the steps and clipboard a replay from the base would also have.
+        self._log: ChangeLog | None = None
+        self.journal_id: str | None = None
+        self.seq = 0
+        self._since_base: set[Step] = set()
+        self._copied_since_base = False
+        self._moved: Step | None = None
+        # The log could not be written (a full disk): no log until the next checkpoint, since
+        # a log started on the file now would miss the change that was not logged.
+        self._log_failed = False
+        #: The SHA-256 of the file as opened or last saved (None: not written yet).
+        self.base_digest: str | None = None
         #: While the user compares with the saved file: marks and changes in every view.
         self.comparison: SavedComparison | None = None
 
@@ -98,6 +118,7 @@ class EditorSession:
             load(path, allowed_roots=self.roots) if path.exists() else self._new_scenario(path)
         )
         self._adopt(document, module)
+        self.base_digest = file_digest(path)
         self.recovery_offer = self._earlier_recovery()
         return self.view()
 
@@ -108,6 +129,7 @@ class EditorSession:
             graph = self._definition(document.root, module)
             module = str(graph.name)
         self.document, self.graph, self.module = document, graph, module
+        self._end_journal()
         self.comparison = None
         self.stack, self.ids, self._listing = CommandStack(), Ids(), view.Listing()
         self._cache = view.NodeCache()
@@ -334,8 +356,12 @@ class EditorSession:
             for op in ops:
                 operations.apply(ctx, op)
 
+        steps = len(self.stack.done)
+        self._moved = None
         try:
             self.stack.run(label or operations.label_of(ops), edit, tab)
+            if len(self.stack.done) > steps:
+                self._moved = self.stack.done[-1]
         finally:
             # A refused request was rolled back: what it touched is noted all the same.
             self._changed(recorders, ops)
@@ -362,7 +388,7 @@ class EditorSession:
 
     def _history(self, move: Callable[[str], Step | None], tab: str) -> dict[str, Any]:
         self._writable()
-        step = move(tab)
+        step = self._moved = move(tab)
         if step is not None:
             assert self.validator is not None
             self.validator.note(step.recorder.changes())
@@ -389,6 +415,10 @@ class EditorSession:
         assert self.document is not None
         target = self.path if path is None else self.allowed(path, "'path'")
         io_save(self.document.root, target)
+        self.base_digest = file_digest(target)
+        self._end_journal()
+        if self.recovery_offer is None:
+            self._drop_journal_files()  # the file holds everything: nothing to replay
         self.document.resource.sceml_migration = None  # the file is of the current release now
         # Saving may rewrite references and the file's path: validate the whole model again.
         assert self.validator is not None
@@ -431,44 +461,173 @@ class EditorSession:
 
     @property
     def recovery_path(self) -> Path:
-        """Where unsaved changes are kept: `.NAME.recovered.xmi` beside the file."""
-        return self.path.with_name(f".{self.path.stem}.recovered{self.path.suffix or '.xmi'}")
+        """Where unsaved changes are checkpointed: `.NAME.recovered.xmi` beside the file."""
+        return checkpoint_path(self.path)
+
+    @property
+    def journal_path(self) -> Path:
+        """Where the changes since the checkpoint are logged: `.NAME.journal` beside the file."""
+        return log_path(self.path)
+
+    def record(self, route: str, body: dict[str, Any], tab: str, before: int) -> bool:
+        """Log a change request that succeeded (`before`: the version it started from).
+
+        Called under the server's lock right after the request, before its answer, so the log
+        holds every change in the order applied. Answers True when the request cannot be
+        replayed from the base (it wrote another file, undid a step the base already holds, or
+        pasted what was copied before it): a checkpoint is then due at once.
+        """
+        if route not in LOGGED_ROUTES or self.document is None or self.options.read_only:
+            return False
+        if route in ("/api/undo", "/api/redo") and self.version == before:
+            return False  # nothing to undo or redo: nothing changed
+        if route == "/api/copy" and self._log is None and not self._log_failed:
+            return False  # copied while an offer waits: a later paste has the checkpoint due
+        refused = self._why_not_replayable(route, body)
+        self.seq += 1
+        if self._log is None or not self._log.started:
+            return True  # the log could not be started: the checkpoint is the only copy
+        try:
+            self._log.append(Entry(self.seq, route, body, tab, refused))
+        except OSError:
+            # A full disk: the change is made all the same; the checkpoint tries at once.
+            self._log.close()
+            self._log, self._log_failed = None, True
+            return True
+        return refused is not None
+
+    def will_change(self, route: str) -> None:
+        """Before a change request: start the log if none is, on the model as it still is (the
+        log's header names the objects' ids by their places in the file)."""
+        idle = self._log is None and self.document is not None and not self.options.read_only
+        if self.recovery_offer is not None and route != "/api/ops":
+            return  # only an edit replaces an earlier run's offer (a Copy changes nothing)
+        if route in LOGGED_ROUTES and idle and not self._log_failed:
+            try:
+                self._start_journal()
+            except (SceMLError, OSError):
+                # A folder that cannot be written: the edit goes on; the checkpoint tries next.
+                self._log, self._log_failed = None, True
+
+    def _why_not_replayable(self, route: str, body: dict[str, Any]) -> str | None:
+        step = self._moved
+        if route == "/api/copy":
+            self._copied_since_base = True
+            return None
+        if route == "/api/ops":
+            ops = body.get("ops") or []
+            names = {op.get("op") for op in ops if isinstance(op, dict)}
+            if step is not None:
+                self._since_base.add(step)
+            if names & operations.OUTSIDE:
+                return "it wrote another file (a library)"
+            if "paste" in names and not self._copied_since_base:
+                return "it pasted what was copied before the recovery copy was written"
+            return None
+        if step is not None and step not in self._since_base:
+            return "it undid or redid a change the recovery copy already holds"
+        if step is not None and step.recorder.reaches_outside:
+            return "it changed another file (a library)"
+        return None
+
+    def _start_journal(self) -> None:
+        """Start the log on the file as opened or saved: an earlier run's offer is replaced."""
+        assert self.document is not None
+        self.recovery_offer = None  # the user went on editing: the old copy is replaced
+        self.journal_id = secrets.token_hex(8)
+        self._log = ChangeLog(self.journal_path)
+        self._log.start(
+            {
+                "id": self.journal_id,
+                "base": "file",
+                "digest": self.base_digest,
+                "module": self.module,
+                "ids": self.ids.in_resource(self.document.resource),
+                "counter": self.ids.counter,
+            }
+        )
+        self.recovery_path.unlink(missing_ok=True)
+
+    def _end_journal(self) -> None:
+        """Forget the log's state (the files stay): a new base begins."""
+        if self._log is not None:
+            self._log.close()
+        self._log, self.journal_id, self.seq = None, None, 0
+        self._log_failed = False
+        self._since_base, self._copied_since_base = set(), False
+
+    def _drop_journal_files(self) -> None:
+        self.journal_path.unlink(missing_ok=True)
+        self.recovery_path.unlink(missing_ok=True)
 
     def recover(self) -> Path | None:
-        """Bring the recovery copy up to date: the unsaved model, or none when all is saved.
+        """Write the checkpoint: the unsaved model, or none when all is saved; then the log
+        starts again after it.
 
-        Answers the copy's path when it holds unsaved changes. Called after every change (the
-        journal, so a crash loses at most the change being written) and when the server stops.
-        A copy from an earlier run stays untouched until the user restores or drops it.
+        Answers the checkpoint's path when it holds unsaved changes. Called when the edits
+        pause (the journal thread), at once after a change a replay could not apply, and when
+        the server stops. Unsaved changes an earlier run left stay untouched until the user
+        restores or drops them, or edits on.
         """
         if self.document is None or self.options.read_only:
             return None
         if not self.stack.dirty:
             if self.recovery_offer is None:
-                self.recovery_path.unlink(missing_ok=True)
+                self._end_journal()
+                self._drop_journal_files()
             return None
+        if self.recovery_offer is not None:
+            return None  # nothing changed since the offer (a change would have replaced it)
+        if self.journal_id is None:
+            self.journal_id = secrets.token_hex(8)
+        note = {
+            "id": self.journal_id,
+            "seq": self.seq,
+            "module": self.module,
+            "ids": self.ids.in_resource(self.document.resource),
+            "counter": self.ids.counter,
+        }
         target = self.recovery_path
-        io_save(self.document.root, target)
-        if self.recovery_offer == target:
-            self.recovery_offer = None  # the user went on editing: the old copy is replaced
+        io_save(
+            self.document.root,
+            target,
+            origin=self.path,
+            note=NOTE_PREFIX + json.dumps(note, separators=(",", ":")),
+        )
+        # A crash here leaves the old log beside the new checkpoint: its entries up to `seq`
+        # are skipped on replay, as the checkpoint names the same journal.
+        if self._log is None:
+            self._log = ChangeLog(self.journal_path)
+        self._log.start({"id": self.journal_id, "base": "checkpoint", "module": self.module})
+        self._log_failed = False
+        self._since_base, self._copied_since_base = set(), False
         return target
 
-    def _earlier_recovery(self) -> Path | None:
-        copy = self.recovery_path
-        if self.options.read_only or not copy.is_file():
+    def _earlier_recovery(self) -> Offer | None:
+        if self.options.read_only:
             return None
-        if self.path.is_file() and copy.stat().st_mtime < self.path.stat().st_mtime:
-            return None  # the file was saved after the copy was written: the copy is stale
-        return copy
+        return find_offer(self.path, self.module)
 
     def _recovery_info(self) -> dict[str, Any] | None:
-        if self.recovery_offer is None:
+        offer = self.recovery_offer
+        if offer is None:
             return None
-        written = datetime.fromtimestamp(self.recovery_offer.stat().st_mtime)
-        return {"path": str(self.recovery_offer), "written": written.isoformat(timespec="seconds")}
+        stamps = [p.stat().st_mtime for p in (offer.checkpoint, offer.log) if p and p.is_file()]
+        written = datetime.fromtimestamp(max(stamps, default=0.0))
+        return {
+            "path": str(offer.shown),
+            "written": written.isoformat(timespec="seconds"),
+            "changes": len(offer.entries),
+        }
 
     def resolve_recovery(self, restore: object) -> dict[str, Any]:
-        """Restore the offered recovery copy (`restore` true) or delete it (false)."""
+        """Restore the offered unsaved changes (`restore` true) or delete them (false).
+
+        Restoring loads the base (the checkpoint, or the file) and replays the logged changes
+        through the methods that made them, with their tabs, so each tab can undo its own. A
+        change that cannot be replayed stops the replay: it is named in `replay_report`, and it
+        and the changes after it are kept in `.NAME.unreplayed.journal` for the user.
+        """
         self._writable()
         if not isinstance(restore, bool):
             raise OperationError("'restore' must be true or false")
@@ -477,18 +636,81 @@ class EditorSession:
             raise OperationError("there is no recovery copy to restore or drop")
         self.recovery_offer = None
         if not restore:
-            offer.unlink(missing_ok=True)
+            self._drop_journal_files()
             self.version += 1
             return self.view()
         assert self.document is not None
         original, module = self.path, self.module
-        document = load(offer, allowed_roots=self.roots)
+        base = offer.checkpoint or original
+        # A log on a new file replays on the new scenario the first run started from.
+        exists = base.exists()
+        document = load(base, allowed_roots=self.roots) if exists else self._new_scenario(base)
         # The copy lies beside the file, so its relative references mean the same there.
         document.path = original
         document.resource.uri = URI(str(original))
         self._adopt(document, module)
-        self.stack.mark_unsaved()
-        return self.view()
+        self.ids.restore(offer.ids, document.resource, offer.counter)
+        if offer.checkpoint is not None:
+            self.stack.mark_unsaved()
+        self.replay_report = self._replay(offer)
+        self.version += 1
+        return {**self.view(), "replay": self.replay_report}
+
+    def _replay(self, offer: Offer) -> dict[str, Any]:
+        applied = 0
+        stopped: str | None = None
+        for index, entry in enumerate(offer.entries):
+            try:
+                self._replay_one(entry)
+            except (EditorError, SceMLError) as error:
+                stopped = f"{entry.describe()} could not be replayed: {error}"
+                rest = offer.entries[index:]
+                kept = self.path.with_name(f".{self.path.stem}.unreplayed.journal")
+                ChangeLog(kept).start({"id": offer.journal, "base": "unreplayed"}, rest)
+                # The model now holds the base and the changes before `entry`: checkpoint it
+                # under a new journal, so the next crash does not replay the refused change.
+                self._end_journal()
+                self.recover()
+                return {"replayed": applied, "stopped": stopped, "kept": str(kept)}
+            applied += 1
+        # The model is the base plus the whole log: go on with the same journal.
+        self.journal_id = offer.journal
+        self.seq = offer.entries[-1].seq if offer.entries else offer.seq
+        self._log = ChangeLog(self.journal_path)
+        header: dict[str, Any] = {"id": offer.journal, "module": self.module}
+        if offer.checkpoint is not None:
+            header["base"] = "checkpoint"
+        else:
+            header.update(
+                base="file", digest=self.base_digest, ids=offer.ids, counter=offer.counter
+            )
+        if offer.journal is None:
+            self._end_journal()
+            self.recover()  # an old copy without a journal: checkpoint it under a new one
+        else:
+            # Rewritten whole: a torn last line would otherwise sit before the next entry.
+            self._log.start(header, offer.entries)
+            self._since_base = set(self.stack.done) | {
+                step for steps in self.stack.undone.values() for step in steps
+            }
+        return {"replayed": applied, "stopped": None, "kept": None}
+
+    def _replay_one(self, entry: Entry) -> None:
+        if entry.refused is not None:
+            raise OperationError(entry.refused)
+        before = self.version
+        if entry.route == "/api/ops":
+            self.apply(entry.body.get("ops"), entry.body.get("label"), entry.tab)
+        elif entry.route in ("/api/undo", "/api/redo"):
+            move = self.undo if entry.route == "/api/undo" else self.redo
+            move(entry.tab)
+            if self.version == before:
+                raise OperationError("there was nothing to undo or redo in its tab")
+        elif entry.route == "/api/copy":
+            self.copy(entry.body.get("nodes"), entry.tab)
+            self._copied_since_base = True
+        else:
+            raise OperationError(f"the request {entry.route} is not one a replay knows")
 
 
 def _check_choice(value: object, what: str) -> None:

@@ -21,13 +21,16 @@ from .locating import model_path
 from .xmiresource import FLOAT_TYPES, INT_RANGE, INT_TYPES
 
 
-def save(root: EObject, path: str | Path, *, origin: str | Path | None = None) -> Path:
+def save(
+    root: EObject, path: str | Path, *, origin: str | Path | None = None, note: str | None = None
+) -> Path:
     """Write a model atomically: to a temporary file beside `path`, then renamed over it.
 
     Cross-file references are written relative to `path`, and so is a relative map path: it is
     read relative to `origin`, the file the model (or the model it was derived from, for a
     flattened or sampled copy) was loaded from; by default the model's own file. On any failure
-    the previous file, if any, is left as it was.
+    the previous file, if any, is left as it was. `note` is written as an XML comment after
+    the declaration (the editor's recovery copy names the journal position it covers there).
     """
     path = Path(path)
     resource = root.eResource
@@ -52,7 +55,12 @@ def save(root: EObject, path: str | Path, *, origin: str | Path | None = None) -
         resource.uri = original_uri
         for node, feature, original in moved_maps:
             node.eSet(feature, original)
-    write_atomically(path, buffer.data.getvalue())
+    data = buffer.data.getvalue()
+    if note is not None:
+        declaration_end = data.index(b"?>") + 2
+        comment = f"\n<!-- {note.replace('--', '- -')} -->".encode()
+        data = data[:declaration_end] + comment + data[declaration_end:]
+    write_atomically(path, data)
     return path
 
 

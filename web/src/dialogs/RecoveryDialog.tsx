@@ -26,7 +26,8 @@ export function RecoveryDialog({ recovery, documentName, onAnswer, onLater }: Pr
         <h2>Restore unsaved changes</h2>
         <p>
           The editor of <strong>{documentName}</strong> stopped on {written} with changes that were not saved. They were
-          kept in <code>{recovery.path}</code>.
+          kept in <code>{recovery.path}</code>
+          {recovery.changes ? `, with ${recovery.changes} later changes logged beside it` : ""}.
         </p>
         <p className="hint">Restore opens them as unsaved changes of the file; Discard deletes the copy.</p>
         <div className="dialog-buttons">
