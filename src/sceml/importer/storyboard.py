@@ -188,12 +188,11 @@ class Storyboard:
         if info.element.find("Action//SpeedAction") is not None:
             for each in info.actors:
                 if stands_at_start(self.build, start, each):
-                    self.motion.speed[str(each.name)] = 0.0
-                    self.build.report.add(
-                        "guessed",
+                    self._standing(
+                        each,
                         f"{info.name}: {each.name}'s speed before taken as 0 m/s "
                         "(its trigger holds while it stands)",
-                        self.build.where(info.element),
+                        info.element,
                     )
         nodes: list[scm.GraphElement] = []
         #: Per actor, the node a step speed change leaves for the next action to follow.
@@ -239,13 +238,17 @@ class Storyboard:
             same = on_same_trigger(self.build, everything, info.element, each)
             unread = [e for e in same if e is not info.element and not self._read(e)]
             if same and not unread and left_standing(same):
-                self.motion.speed[str(each.name)] = 0.0
-                self.build.report.add(
-                    "guessed",
+                self._standing(
+                    each,
                     f"{each.name} stands at the end of its road after {info.name}'s last run "
                     "(an event on the same trigger with no speed change runs more often)",
-                    self.build.where(info.element),
+                    info.element,
                 )
+
+    def _standing(self, actor: scm.Actor, why: str, element: etree._Element) -> None:
+        """`actor` has 0 m/s before its next speed change: a guess, reported with `why`."""
+        self.motion.speed[str(actor.name)] = 0.0
+        self.build.report.add("guessed", why, self.build.where(element))
 
     def _read(self, element: etree._Element) -> bool:
         return any(e.element is element and n in self.finish for n, e in self.events.items())
