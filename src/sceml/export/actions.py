@@ -59,6 +59,15 @@ def _single(ctx: Context, node: scm.GraphElement, groups: list[Group], action: A
     return [Event(name, ctx.entity(node.referenceActor), [action], groups)], name
 
 
+def action_plan(
+    ctx: Context, node: scm.ActionNode, groups: list[Group], kind: str, data: dict[str, Any]
+) -> Plan:
+    """The node's event: one action of `kind` (a template macro) with `data`, by its actor, the
+    node done when the event is."""
+    name = ctx.event_names[node]
+    return _single(ctx, node, groups, Action(ctx.action_name(name), kind, data))
+
+
 def marker_plan(
     ctx: Context,
     node: scm.GraphElement,

@@ -9,8 +9,8 @@ from __future__ import annotations
 
 import scemlmodel as scm
 
-from .actions import Plan, planner
-from .context import Action, Context, Event
+from .actions import Plan, action_plan, planner
+from .context import Context
 from .triggers import Group
 
 #: The LightState's optional numbers, written only when set: (feature, template key).
@@ -25,7 +25,6 @@ _OPTIONAL = (
 def plan_light_state(ctx: Context, node: scm.LightState, groups: list[Group]) -> Plan:
     """A LightStateAction of the node's vehicle light (versions before 1.3 refused by
     `xosc.support.SINCE`)."""
-    name = ctx.event_names[node]
     data: dict[str, str | None] = {
         "light": node.lightType.name,
         "mode": node.mode.name,
@@ -33,5 +32,4 @@ def plan_light_state(ctx: Context, node: scm.LightState, groups: list[Group]) ->
     }
     for feature, key in _OPTIONAL:
         data[key] = None if node.eGet(feature) is None else ctx.values.text(node, feature)
-    action = Action(ctx.action_name(name), "light_state", data)
-    return [Event(name, ctx.entity(node.referenceActor), [action], groups)], name
+    return action_plan(ctx, node, groups, "light_state", data)

@@ -6,13 +6,11 @@ Players complete controller actions in the step they start them
 
 from __future__ import annotations
 
-from typing import Any
-
 import scemlmodel as scm
 
 from ..xosc.meaning import OVERRIDE_ELEMENTS
-from .actions import Plan, planner
-from .context import Action, Context, Event
+from .actions import Plan, action_plan, planner
+from .context import Context
 from .controllers import activation, controller, override, released
 from .triggers import Group
 
@@ -21,7 +19,7 @@ from .triggers import Group
 def plan_activate(ctx: Context, node: scm.ActivateController, groups: list[Group]) -> Plan:
     """An ActivateControllerAction switching the domains the node sets."""
     data = {"domains": activation(node), "wrapped": ctx.traits.controller_action}
-    return _instant(ctx, node, groups, "controller_activate", data)
+    return action_plan(ctx, node, groups, "controller_activate", data)
 
 
 @planner("AssignController", one_event=True)
@@ -34,7 +32,7 @@ def plan_assign(ctx: Context, node: scm.AssignController, groups: list[Group]) -
         "activate": {f"activate{d[0].upper()}{d[1:]}": text for d, text in domains.items()},
         "released": [] if ctx.traits.controller_action else released(),
     }
-    return _instant(ctx, node, groups, "controller_assign", data)
+    return action_plan(ctx, node, groups, "controller_assign", data)
 
 
 @planner("OverrideController", one_event=True)
@@ -48,12 +46,4 @@ def planoverride(ctx: Context, node: scm.OverrideController, groups: list[Group]
             for o in chosen
         ]
     }
-    return _instant(ctx, node, groups, "controller_override", data)
-
-
-def _instant(
-    ctx: Context, node: scm.ActionNode, groups: list[Group], kind: str, data: dict[str, Any]
-) -> Plan:
-    name = ctx.event_names[node]
-    action = Action(ctx.action_name(name), kind, data)
-    return [Event(name, ctx.entity(node.referenceActor), [action], groups)], name
+    return action_plan(ctx, node, groups, "controller_override", data)

@@ -8,26 +8,20 @@ from __future__ import annotations
 
 import scemlmodel as scm
 
-from .actions import Plan, planner
-from .context import Action, Context, Event
+from .actions import Plan, action_plan, planner
+from .context import Context
 from .triggers import Group
 
 
 @planner("ConnectTrailer", one_event=True)
 def plan_connect(ctx: Context, node: scm.ConnectTrailer, groups: list[Group]) -> Plan:
     """A ConnectTrailerAction naming the target actor as the trailer."""
-    return _instant(ctx, node, groups, "connect_trailer", {"trailer": ctx.entity(node.targetActor)})
+    return action_plan(
+        ctx, node, groups, "connect_trailer", {"trailer": ctx.entity(node.targetActor)}
+    )
 
 
 @planner("DisconnectTrailer", one_event=True)
 def plan_disconnect(ctx: Context, node: scm.DisconnectTrailer, groups: list[Group]) -> Plan:
     """A DisconnectTrailerAction of whatever the reference actor tows."""
-    return _instant(ctx, node, groups, "disconnect_trailer", {})
-
-
-def _instant(
-    ctx: Context, node: scm.ActionNode, groups: list[Group], kind: str, data: dict[str, str]
-) -> Plan:
-    name = ctx.event_names[node]
-    action = Action(ctx.action_name(name), kind, data)
-    return [Event(name, ctx.entity(node.referenceActor), [action], groups)], name
+    return action_plan(ctx, node, groups, "disconnect_trailer", {})

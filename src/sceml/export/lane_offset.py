@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import scemlmodel as scm
 
-from .actions import Plan, planner
-from .context import Action, Context, Event
+from .actions import Plan, action_plan, planner
+from .context import Context
 from .triggers import Group
 
 
@@ -13,7 +13,6 @@ from .triggers import Group
 def plan_lane_offset(ctx: Context, node: scm.LaneOffset, groups: list[Group]) -> Plan:
     """The action (every version and profile); the event completes when the offset is reached,
     which esmini 3.6 also does for a continuous one (`xosc.meaning.lane_offset_duration`)."""
-    name = ctx.event_names[node]
     data = {
         "continuous": "true" if node.continuous else "false",
         "shape": node.shape.name,
@@ -21,5 +20,4 @@ def plan_lane_offset(ctx: Context, node: scm.LaneOffset, groups: list[Group]) ->
         "value": ctx.values.text(node, "offset"),
         "entity": None if node.targetActor is None else ctx.entity(node.targetActor),
     }
-    action = Action(ctx.action_name(name), "lane_offset", data)
-    return [Event(name, ctx.entity(node.referenceActor), [action], groups)], name
+    return action_plan(ctx, node, groups, "lane_offset", data)
