@@ -39,14 +39,8 @@ def _node(scenario: scm.Scenario, name: str) -> scm.GraphElement:
 
 
 def _upstream(node: scm.GraphElement) -> set[str]:
-    seen: set[str] = set()
-    todo = graph.predecessors(node)
-    while todo:
-        before = todo.pop()
-        if str(before.name) not in seen:
-            seen.add(str(before.name))
-            todo.extend(graph.predecessors(before))
-    return seen
+    """The names of every node `node` waits for, directly or through others."""
+    return {str(n.name) for n in graph.reachable(graph.predecessors(node), backwards=True)}
 
 
 def test_the_brake_interrupts_the_speed_up_instead_of_waiting_for_it(

@@ -32,14 +32,7 @@ def _node(scenario: scm.Scenario, name: str) -> scm.GraphElement:
 
 def _upstream(node: scm.GraphElement) -> set[str]:
     """The names of every node `node` waits for, directly or through others."""
-    seen: set[str] = set()
-    todo = graph.predecessors(node)
-    while todo:
-        before = todo.pop()
-        if str(before.name) not in seen:
-            seen.add(str(before.name))
-            todo.extend(graph.predecessors(before))
-    return seen
+    return {str(n.name) for n in graph.reachable(graph.predecessors(node), backwards=True)}
 
 
 def test_the_timed_lane_change_interrupts_the_one_listed_first(imported: scm.Scenario) -> None:
