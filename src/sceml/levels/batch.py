@@ -1,8 +1,11 @@
 """The fast batch path: sample a logical scenario into many concrete files on any executor.
 
-The caller computes every sample's values (cheap arrays; seeds never leave it, so LHS designs
-stay whole and no result depends on which worker finishes first), cuts them into chunks and
-hands them to an executor (`sceml.executors`: in-process, a process pool or a Dask cluster).
+The caller cuts the samples into chunks and hands them to an executor (`sceml.executors`:
+in-process, a process pool or a Dask cluster). A chunk carries its samples' values, computed
+by the caller (a Latin hypercube is one joint design), or only their indices when each sample's
+values come from its index alone (grid, random: `sampling.IndexDraw`); the worker then draws
+them, so no worker waits for the whole run's values. Either way no value depends on which
+worker makes the sample or when.
 
 Workers need not share the caller's file system. Each one receives a `BatchPayload`: the run's
 configuration and the bytes of every file the logical scenario reads (itself and its module
@@ -58,6 +61,7 @@ from .apply import FlatTemplate, copy_scenario, set_level
 from .checks import SampleChecker
 from .manifest import SampleRecord
 from .paths import place_value, resolve, slots
+from .sampling import IndexDraw
 from .space import parameter_space
 from .xosc import SampleXosc, XoscWriter, prepare_export
 
@@ -229,12 +233,15 @@ class BatchPayload:
 
     Paths in `config` are absolute, as the caller resolved them; `inputs` maps each such path
     of a file the logical scenario reads to its contents. `staging` is set when the workers
-    write the files themselves: the folder inside `config.out_dir` they stage them in.
+    write the files themselves: the folder inside `config.out_dir` they stage them in. `draw`
+    is set when each chunk carries indices only, and a worker draws their values.
     """
 
     config: BatchConfig
     inputs: tuple[tuple[str, bytes], ...]
     staging: Path | None = None
+    #: Set when the workers draw their samples' values from the indices (chunks carry none).
+    draw: IndexDraw | None = None
 
 
 def make_payload(config: BatchConfig) -> BatchPayload:
@@ -307,7 +314,17 @@ def setup_worker(payload: BatchPayload) -> WorkerState:
         raise
 
 
-Chunk = tuple[NDArray[np.int64], NDArray[np.float64]]
+#: The indices of some samples and their values, or None when the worker draws them.
+Chunk = tuple[NDArray[np.int64], NDArray[np.float64] | None]
+
+
+def chunk_rows(payload: BatchPayload | None, chunk: Chunk) -> NDArray[np.float64]:
+    """The values of a chunk's samples: those it carries, or drawn from its indices."""
+    indices, rows = chunk
+    if rows is not None:
+        return rows
+    assert payload is not None and payload.draw is not None  # set whenever chunks carry none
+    return payload.draw.rows(indices)
 
 
 def produce_chunk(state: WorkerState, chunk: Chunk) -> list[Produced]:
@@ -317,7 +334,7 @@ def produce_chunk(state: WorkerState, chunk: Chunk) -> list[Produced]:
 
 def produced_samples(state: WorkerState, chunk: Chunk) -> Iterator[Produced]:
     """The files of each sample of a chunk, one sample at a time."""
-    indices, rows = chunk
+    indices, rows = chunk[0], chunk_rows(state.payload, chunk)
     for index, row in zip(indices, rows, strict=True):
         yield state.worker.produce(int(index), row)
 
@@ -361,9 +378,10 @@ class BatchResult:
 Progress = Callable[[int], None]
 
 
-#: The sample values, one row per index, or a function that computes them: the workers then
-#: start (and set up) while the caller computes them.
-Rows = NDArray[np.float64] | Callable[[], NDArray[np.float64]]
+#: The sample values, one row per index; or a function that computes them: the workers then
+#: start (and set up) while the caller computes them; or how each worker draws the values of
+#: its own samples (chunks then carry indices only).
+Rows = NDArray[np.float64] | Callable[[], NDArray[np.float64]] | IndexDraw
 
 
 def run_batch(
@@ -389,6 +407,8 @@ def run_batch(
     created = make_folder(config.out_dir)
     try:
         payload = make_payload(config)
+        if isinstance(rows, IndexDraw):
+            payload = replace(payload, draw=rows)
         if executor is not None:
             return _run(payload, indices, rows, executor, chunk_size, progress)
         with open_executor("processes", workers=workers) as own:
@@ -439,7 +459,8 @@ def _collect(
     chunks: list[Chunk] = []
 
     def make() -> list[Chunk]:
-        chunks.extend(_chunks(indices, rows() if callable(rows) else rows, size))
+        values = None if isinstance(rows, IndexDraw) else rows() if callable(rows) else rows
+        chunks.extend(_chunks(indices, values, size))
         return chunks
 
     result = BatchResult([])
@@ -454,7 +475,8 @@ def _collect(
         for outcome in outcomes:
             done = outcome.result
             if outcome.error is not None or done is None:
-                result.records.extend(_failed(chunks[outcome.item], outcome.error or "no result"))
+                lost = chunks[outcome.item]
+                result.records.extend(_failed(lost, payload, outcome.error or "no result"))
             elif isinstance(done, Written):
                 result.records.extend(done.records)
                 if done.error is not None:
@@ -512,12 +534,15 @@ def _chunk_size(count: int, executor: Executor) -> int:
     return max(1, min(executor.max_chunk, count // (executor.parallelism * 8) or 1))
 
 
-def _chunks(indices: NDArray[np.int64], rows: NDArray[np.float64], size: int) -> list[Chunk]:
-    return [(indices[i : i + size], rows[i : i + size]) for i in range(0, len(indices), size)]
+def _chunks(indices: NDArray[np.int64], rows: NDArray[np.float64] | None, size: int) -> list[Chunk]:
+    return [
+        (indices[i : i + size], None if rows is None else rows[i : i + size])
+        for i in range(0, len(indices), size)
+    ]
 
 
-def _failed(chunk: Chunk, error: str) -> list[SampleRecord]:
-    indices, rows = chunk
+def _failed(chunk: Chunk, payload: BatchPayload, error: str) -> list[SampleRecord]:
+    indices, rows = chunk[0], chunk_rows(payload, chunk)
     return [
         SampleRecord(int(i), tuple(float(v) for v in row), status="failed", reason=f"lost: {error}")
         for i, row in zip(indices, rows, strict=True)
