@@ -130,7 +130,7 @@ class Worker:
         files = []
         if self.xosc is not None:
             name = self.config.file_name(index, "xosc")
-            data, problem = self._xosc_bytes(flat, row, self.config.out_dir / name)
+            data, problem = self._xosc_bytes(flat, row, name)
             if data is None:
                 return Produced(SampleRecord(index, row, status="skipped", reason=problem))
             files.append((name, data))
@@ -147,7 +147,7 @@ class Worker:
         return write_sample(self.config.out_dir, produced)
 
     def _xosc_bytes(
-        self, flat: scm.Scenario, row: Sequence[float], target: Path
+        self, flat: scm.Scenario, row: Sequence[float], name: str
     ) -> tuple[bytes | None, str]:
         assert self.xosc is not None
         if self.fast is not None and not self.verified:
@@ -159,8 +159,8 @@ class Worker:
             texts = self.fast.texts(row)
             problem = self.fast.schema_problem(row, texts)
             return (None, problem) if problem else (self.fast.render(row, texts), "")
-        try:
-            return self.xosc.document(flat, target).data, ""
+        try:  # the full export, which needs the file's path (for paths relative to it)
+            return self.xosc.document(flat, self.config.out_dir / name).data, ""
         except SceMLError as error:  # ExportError, or InvalidOutputError for an XSD failure
             return None, f"export: {error.message}"
 
@@ -181,11 +181,12 @@ def write_sample(folder: Path, produced: Produced, staging: Path | None = None) 
     written: list[Path] = []
     try:
         for name, data in produced.files:
+            path = folder / name
             if staging is None:
-                write_atomically(folder / name, data)
+                write_atomically(path, data)
             else:
-                write_staged(folder / name, data, staging)
-            written.append(folder / name)
+                write_staged(path, data, staging)
+            written.append(path)
     except BaseException:
         for path in written:
             path.unlink(missing_ok=True)
