@@ -1,6 +1,7 @@
 """Batch export benchmark (issues 6 and 17): `sceml sample` against scenariogeneration and the floor.
 
     .venv/bin/python benchmarks/batch_export.py [--n 5000] [--workers W] [--rounds R] [--keep DIR]
+        [--before SRC]
 
 Four figures, all on this machine in one run, each the median of R rounds (default 3) taken in
 turn (the order rotates every round), because this machine is shared and its disk is noisy:
@@ -32,7 +33,13 @@ system, as GNU time counts them): on a machine shared with other jobs the wall t
 mostly waiting for a core, and files per CPU second is the figure that load stretches least
 (it does not credit ours for using two cores, only for the work each file costs).
 
-Targets (issue 17): ours at least 5x scenariogeneration in files/s, and within 2x of the floor.
+With `--before SRC` (e.g. `/tmp/before/src:/tmp/before/generated`, from `git archive <commit>
+src generated`), a fifth run in the same rounds is ours from that tree (PYTHONPATH=SRC), so that
+a change is measured against its starting point beside the same anchors. The load average is
+printed with every round: this machine is shared.
+
+Targets (issue 17): ours at least 5x scenariogeneration in files/s, and within 2x of the floor;
+(issue 31) the first file within 0.3 s.
 """
 
 from __future__ import annotations
@@ -227,8 +234,9 @@ def _children_cpu() -> float:
     return times.children_user + times.children_system
 
 
-def run_sceml(n: int, workers: int, out: Path) -> Run:
-    """The whole `sceml sample` command, as a user runs it."""
+def run_sceml(n: int, workers: int, out: Path, pythonpath: str | None = None) -> Run:
+    """The whole `sceml sample` command, as a user runs it (from the tree at `pythonpath`, if
+    given, instead of this checkout)."""
     command = [
         sys.executable,
         "-c",
@@ -248,8 +256,9 @@ def run_sceml(n: int, workers: int, out: Path) -> Run:
         "-o",
         str(out),
     ]
+    env = dict(os.environ) if pythonpath is None else {**os.environ, "PYTHONPATH": pythonpath}
     wall, started, cpu = time.time(), time.perf_counter(), _children_cpu()
-    done = subprocess.run(command, capture_output=True, text=True, check=True)
+    done = subprocess.run(command, capture_output=True, text=True, check=True, env=env)
     elapsed = time.perf_counter() - started
     print("    sceml says:", done.stdout.strip().splitlines()[-1])
     return _run_of(wall, elapsed, sorted(out.glob("*.xosc")), _children_cpu() - cpu)
@@ -319,10 +328,12 @@ def main() -> None:
     parser.add_argument("--workers", type=int, default=os.cpu_count() or 1)
     parser.add_argument("--rounds", type=int, default=3, help="rounds of the three (default 3)")
     parser.add_argument("--keep", type=Path, help="keep the outputs in this folder")
+    parser.add_argument("--before", help="PYTHONPATH of another tree: ours from it too")
     args = parser.parse_args()
     base = args.keep or Path(tempfile.mkdtemp(prefix="sceml-bench-"))
     base.mkdir(parents=True, exist_ok=True)
     print(f"N = {args.n}, workers = {args.workers}, rounds = {args.rounds}, output under {base}")
+    print(f"load average {_load()} at the start")
 
     # The floor writes the documents of an untimed sceml run, so that it makes the same files.
     source = base / "documents"
@@ -336,6 +347,8 @@ def main() -> None:
         ),
         "floor": lambda out: run_floor(source, args.workers, out),
     }
+    if args.before:
+        runs["ours before"] = lambda out: run_sceml(args.n, args.workers, out, args.before)
     done: dict[str, list[Run]] = {name: [] for name in runs}
     names = list(runs)
     for number in range(args.rounds):
@@ -348,7 +361,7 @@ def main() -> None:
             print(
                 f"  round {number + 1}, {name}: {run.files} files in {run.seconds:.2f} s "
                 f"({run.before_first:.2f} s to the first file, {run.first_to_last:.2f} s from "
-                f"the first to the last; {run.cpu:.2f} CPU s)"
+                f"the first to the last; {run.cpu:.2f} CPU s; load {_load()})"
             )
     # Nothing is deleted before the end: on ext4 without a journal (this VM's disk), making a
     # file skips the inodes deleted in the last minute or more, one buffer lookup each, so a
@@ -363,6 +376,7 @@ def main() -> None:
         f"{args.workers}, whole process",
         "floor": f"floor (start, parse, lxml serialise + XSD validate + plain write, {args.workers}"
         " processes), whole process",
+        "ours before": f"ours from {args.before}, whole process",
     }
     rate = {name: statistics.median(r.rate for r in done[name]) for name in names}
     per_cpu = {name: statistics.median(r.files / r.cpu for r in done[name]) for name in names}
@@ -379,6 +393,17 @@ def main() -> None:
     best_cpu = max(per_cpu["scenariogeneration"], per_cpu["scenariogeneration parallel"])
     print(f"  ... in files per CPU second: {per_cpu['ours'] / best_cpu:.2f}x")
     print(f"floor / ours: {rate['floor'] / rate['ours']:.2f}x slower than the floor (target <= 2)")
+    if args.before:
+        print(
+            f"before / scenariogeneration's faster mode: {rate['ours before'] / best:.2f}x; "
+            f"ours / before: {rate['ours'] / rate['ours before']:.2f}x"
+        )
+    print(f"load average {_load()} at the end")
+
+
+def _load() -> str:
+    """The 1, 5 and 15-minute load averages."""
+    return " ".join(f"{value:.1f}" for value in os.getloadavg())
 
 
 if __name__ == "__main__":

@@ -1,8 +1,11 @@
 """The fast batch path: sample a logical scenario into many concrete files on any executor.
 
-The caller computes every sample's values (cheap arrays; seeds never leave it, so LHS designs
-stay whole and no result depends on which worker finishes first), cuts them into chunks and
-hands them to an executor (`sceml.executors`: in-process, a process pool or a Dask cluster).
+The caller cuts the samples into chunks and hands them to an executor (`sceml.executors`:
+in-process, a process pool or a Dask cluster). A chunk carries its samples' values, computed
+by the caller (a Latin hypercube is one joint design), or only their indices when each sample's
+values come from its index alone (grid, random: `sampling.IndexDraw`); the worker then draws
+them, so no worker waits for the whole run's values. Either way no value depends on which
+worker makes the sample or when.
 
 Workers need not share the caller's file system. Each one receives a `BatchPayload`: the run's
 configuration and the bytes of every file the logical scenario reads (itself and its module
@@ -58,6 +61,7 @@ from .apply import FlatTemplate, copy_scenario, set_level
 from .checks import SampleChecker
 from .manifest import SampleRecord
 from .paths import place_value, resolve, slots
+from .sampling import IndexDraw
 from .space import parameter_space
 from .xosc import SampleXosc, XoscWriter, prepare_export
 
@@ -126,7 +130,7 @@ class Worker:
         files = []
         if self.xosc is not None:
             name = self.config.file_name(index, "xosc")
-            data, problem = self._xosc_bytes(flat, row, self.config.out_dir / name)
+            data, problem = self._xosc_bytes(flat, row, name)
             if data is None:
                 return Produced(SampleRecord(index, row, status="skipped", reason=problem))
             files.append((name, data))
@@ -143,7 +147,7 @@ class Worker:
         return write_sample(self.config.out_dir, produced)
 
     def _xosc_bytes(
-        self, flat: scm.Scenario, row: Sequence[float], target: Path
+        self, flat: scm.Scenario, row: Sequence[float], name: str
     ) -> tuple[bytes | None, str]:
         assert self.xosc is not None
         if self.fast is not None and not self.verified:
@@ -155,8 +159,8 @@ class Worker:
             texts = self.fast.texts(row)
             problem = self.fast.schema_problem(row, texts)
             return (None, problem) if problem else (self.fast.render(row, texts), "")
-        try:
-            return self.xosc.document(flat, target).data, ""
+        try:  # the full export, which needs the file's path (for paths relative to it)
+            return self.xosc.document(flat, self.config.out_dir / name).data, ""
         except SceMLError as error:  # ExportError, or InvalidOutputError for an XSD failure
             return None, f"export: {error.message}"
 
@@ -177,11 +181,12 @@ def write_sample(folder: Path, produced: Produced, staging: Path | None = None) 
     written: list[Path] = []
     try:
         for name, data in produced.files:
+            path = folder / name
             if staging is None:
-                write_atomically(folder / name, data)
+                write_atomically(path, data)
             else:
-                write_staged(folder / name, data, staging)
-            written.append(folder / name)
+                write_staged(path, data, staging)
+            written.append(path)
     except BaseException:
         for path in written:
             path.unlink(missing_ok=True)
@@ -229,12 +234,15 @@ class BatchPayload:
 
     Paths in `config` are absolute, as the caller resolved them; `inputs` maps each such path
     of a file the logical scenario reads to its contents. `staging` is set when the workers
-    write the files themselves: the folder inside `config.out_dir` they stage them in.
+    write the files themselves: the folder inside `config.out_dir` they stage them in. `draw`
+    is set when each chunk carries indices only, and a worker draws their values.
     """
 
     config: BatchConfig
     inputs: tuple[tuple[str, bytes], ...]
     staging: Path | None = None
+    #: Set when the workers draw their samples' values from the indices (chunks carry none).
+    draw: IndexDraw | None = None
 
 
 def make_payload(config: BatchConfig) -> BatchPayload:
@@ -307,7 +315,17 @@ def setup_worker(payload: BatchPayload) -> WorkerState:
         raise
 
 
-Chunk = tuple[NDArray[np.int64], NDArray[np.float64]]
+#: The indices of some samples and their values, or None when the worker draws them.
+Chunk = tuple[NDArray[np.int64], NDArray[np.float64] | None]
+
+
+def chunk_rows(payload: BatchPayload | None, chunk: Chunk) -> NDArray[np.float64]:
+    """The values of a chunk's samples: those it carries, or drawn from its indices."""
+    indices, rows = chunk
+    if rows is not None:
+        return rows
+    assert payload is not None and payload.draw is not None  # set whenever chunks carry none
+    return payload.draw.rows(indices)
 
 
 def produce_chunk(state: WorkerState, chunk: Chunk) -> list[Produced]:
@@ -317,7 +335,7 @@ def produce_chunk(state: WorkerState, chunk: Chunk) -> list[Produced]:
 
 def produced_samples(state: WorkerState, chunk: Chunk) -> Iterator[Produced]:
     """The files of each sample of a chunk, one sample at a time."""
-    indices, rows = chunk
+    indices, rows = chunk[0], chunk_rows(state.payload, chunk)
     for index, row in zip(indices, rows, strict=True):
         yield state.worker.produce(int(index), row)
 
@@ -361,9 +379,10 @@ class BatchResult:
 Progress = Callable[[int], None]
 
 
-#: The sample values, one row per index, or a function that computes them: the workers then
-#: start (and set up) while the caller computes them.
-Rows = NDArray[np.float64] | Callable[[], NDArray[np.float64]]
+#: The sample values, one row per index; or a function that computes them: the workers then
+#: start (and set up) while the caller computes them; or how each worker draws the values of
+#: its own samples (chunks then carry indices only).
+Rows = NDArray[np.float64] | Callable[[], NDArray[np.float64]] | IndexDraw
 
 
 def run_batch(
@@ -389,6 +408,8 @@ def run_batch(
     created = make_folder(config.out_dir)
     try:
         payload = make_payload(config)
+        if isinstance(rows, IndexDraw):
+            payload = replace(payload, draw=rows)
         if executor is not None:
             return _run(payload, indices, rows, executor, chunk_size, progress)
         with open_executor("processes", workers=workers) as own:
@@ -439,7 +460,8 @@ def _collect(
     chunks: list[Chunk] = []
 
     def make() -> list[Chunk]:
-        chunks.extend(_chunks(indices, rows() if callable(rows) else rows, size))
+        values = None if isinstance(rows, IndexDraw) else rows() if callable(rows) else rows
+        chunks.extend(_chunks(indices, values, size))
         return chunks
 
     result = BatchResult([])
@@ -454,7 +476,8 @@ def _collect(
         for outcome in outcomes:
             done = outcome.result
             if outcome.error is not None or done is None:
-                result.records.extend(_failed(chunks[outcome.item], outcome.error or "no result"))
+                lost = chunks[outcome.item]
+                result.records.extend(_failed(lost, payload, outcome.error or "no result"))
             elif isinstance(done, Written):
                 result.records.extend(done.records)
                 if done.error is not None:
@@ -512,12 +535,15 @@ def _chunk_size(count: int, executor: Executor) -> int:
     return max(1, min(executor.max_chunk, count // (executor.parallelism * 8) or 1))
 
 
-def _chunks(indices: NDArray[np.int64], rows: NDArray[np.float64], size: int) -> list[Chunk]:
-    return [(indices[i : i + size], rows[i : i + size]) for i in range(0, len(indices), size)]
+def _chunks(indices: NDArray[np.int64], rows: NDArray[np.float64] | None, size: int) -> list[Chunk]:
+    return [
+        (indices[i : i + size], None if rows is None else rows[i : i + size])
+        for i in range(0, len(indices), size)
+    ]
 
 
-def _failed(chunk: Chunk, error: str) -> list[SampleRecord]:
-    indices, rows = chunk
+def _failed(chunk: Chunk, payload: BatchPayload, error: str) -> list[SampleRecord]:
+    indices, rows = chunk[0], chunk_rows(payload, chunk)
     return [
         SampleRecord(int(i), tuple(float(v) for v in row), status="failed", reason=f"lost: {error}")
         for i, row in zip(indices, rows, strict=True)

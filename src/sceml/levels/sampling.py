@@ -55,6 +55,33 @@ def plan_for(space: ParameterSpace, strategy: Strategy, n: int | None, seed: int
     return Plan(strategy, n, seed)
 
 
+@dataclass(frozen=True)
+class IndexDraw:
+    """The values of a plan whose samples each come from their index alone (grid, random).
+
+    A batch hands this to its workers instead of the drawn values: each worker draws the
+    values of the samples it makes, in parallel with the others, and its first sample need
+    not wait for the whole run's values (2,000 random samples took the caller 40 ms before
+    any worker could start). The values are those `values_at` gives for any set of indices.
+    """
+
+    space: ParameterSpace
+    plan: Plan
+
+    def __post_init__(self) -> None:
+        if self.plan.strategy == "lhs":
+            raise LevelError("a Latin hypercube is drawn as a whole, not sample by sample")
+
+    def rows(self, indices: NDArray[np.int64]) -> NDArray[np.float64]:
+        """The values of the samples at `indices`, one row per index."""
+        return values_at(self.space, self.plan, indices)
+
+
+def index_draw(space: ParameterSpace, plan: Plan) -> IndexDraw | None:
+    """How workers draw the plan's values themselves; None for lhs (a joint design)."""
+    return None if plan.strategy == "lhs" else IndexDraw(space, plan)
+
+
 def design(space: ParameterSpace, plan: Plan) -> NDArray[np.float64]:
     """The values of all samples: an array of shape (n, number of dimensions)."""
     return values_at(space, plan, np.arange(plan.n))

@@ -35,7 +35,7 @@ from .batch import BatchConfig, BatchResult, Rows, run_batch
 from .counts import SAMPLE_MEMORY_BYTES, check_count
 from .manifest import SampleRecord, write_manifest
 from .paths import LevelError
-from .sampling import Plan, plan_for, values_at
+from .sampling import Plan, index_draw, plan_for, values_at
 from .space import ParameterSpace, parameter_space
 
 #: What each `--format` writes.
@@ -72,7 +72,7 @@ class PlannedSampling:
     space: ParameterSpace
     plan: Plan
     indices: NDArray[np.int64]
-    #: The samples' values, or how to draw them (drawn while the workers start).
+    #: The samples' values, or how to draw them (by the workers, or while they start).
     rows: Rows
     config: BatchConfig
 
@@ -143,11 +143,13 @@ def plan_sampling(document: Document, request: SampleRequest) -> PlannedSampling
                 hint="one sample of it is reproduced by drawing them all; ask for fewer with --n",
             )
         indices = np.arange(plan.n) if request.index is None else np.array([request.index])
-        # A whole run's values are drawn while the workers start: drawing takes a while (scipy,
-        # for a normal distribution, takes half a second to import), and so does their setup.
-        rows: Rows = partial(values_at, space, plan, indices)
+        rows: Rows
         if request.index is not None:
             rows = values_at(space, plan, indices)  # refuses an index out of range, here
+        else:
+            # Each worker draws its own samples' values (grid, random), or, for a Latin
+            # hypercube, the caller draws the design while the workers start.
+            rows = index_draw(space, plan) or partial(values_at, space, plan, indices)
     config = BatchConfig(
         logical=logical,
         out_dir=request.out_dir,
@@ -192,7 +194,7 @@ def sample_to_folder(
             run["interrupted"] = True
         write_manifest(request.out_dir, planned.space.paths, result.records, run)
     else:
-        assert not callable(planned.rows)  # one sample's values are drawn when planning
+        assert isinstance(planned.rows, np.ndarray)  # one sample's values are drawn when planning
         row = planned.rows[0]
         outcome.values = {
             path: float(value) for path, value in zip(planned.space.paths, row, strict=True)
