@@ -121,14 +121,15 @@ def set_value(obj: EObject, slot: Slot, value: object) -> None:
     holder.generic_type = None
     holder._value = value
     state = obj.__dict__
+    state["_isset"][feature] = None  # first: a read-only object refuses here, unchanged
     state[slot.name] = holder
-    state["_isset"][feature] = None
 
 
 def add_child(parent: EObject, slot: Slot, child: EObject) -> None:
     """Put a new `child` into `parent`'s containment (appended if it is many-valued)."""
     state = parent.__dict__
     feature = slot.feature
+    state["_isset"][feature] = None  # first: a read-only object refuses here, unchanged
     if slot.many:
         held = state.get(slot.name)
         if held is None:
@@ -138,7 +139,6 @@ def add_child(parent: EObject, slot: Slot, child: EObject) -> None:
         items.append(child)
     else:
         state[slot.name] = _value_holder(parent, slot, child)
-    state["_isset"][feature] = None
     child_state = child.__dict__
     child_state["_container"] = parent
     child_state["_containment_feature"] = feature
@@ -194,8 +194,8 @@ def set_reference(obj: EObject, slot: Slot, target: EObject) -> None:
     holder.generic_type = None
     holder._value = target
     state = obj.__dict__
+    state["_isset"][feature] = None  # first: a read-only object refuses here, unchanged
     state[slot.name] = holder
-    state["_isset"][feature] = None
     opposite = slot.opposite
     if opposite is None:
         # Through the attribute, which an EProxy answers from itself without resolving.

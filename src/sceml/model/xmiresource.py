@@ -92,7 +92,8 @@ class SafeXMIResource(XMIResource):  # type: ignore[misc]  # pyecore is untyped
     enum literals), duplicate ids, more than one root, and cross-file containment.
 
     Files are decoded by `sceml.model.xmi_reader`, which builds the objects directly; what it declines
-    goes through pyecore's decoder (`fast_decoding = False` makes every file take that path).
+    goes through pyecore's decoder (`fast_decoding = False` makes every file take that path). In
+    a resource set made `read_only`, the reader makes `sceml.model.lightobjects`' objects.
     """
 
     fast_decoding = True
@@ -167,7 +168,8 @@ class SafeXMIResource(XMIResource):  # type: ignore[misc]  # pyecore is untyped
         self.xmiid = f"{{{xmi}}}id"
         self.schema_tag = f"{{{xsi}}}schemaLocation"
         self.schema_locations: dict[str, object] = {}
-        if self.fast_decoding and xmi_reader.decode(self, xmlroot, _check_literal):
+        read_only = getattr(self.resource_set, "sceml_read_only", False)
+        if self.fast_decoding and xmi_reader.decode(self, xmlroot, _check_literal, read_only):
             return
         self._decode_with_pyecore(xmlroot, xmi)
 
