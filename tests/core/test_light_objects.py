@@ -2,8 +2,9 @@
 
 Every `.xmi` file of the repository (examples, the validation corpus, the hostile corpus, the
 players' scenarios) is validated after a full load and after a read-only one, and the reports
-must be the same; the models must read the same feature by feature; and code that tries to
-change a read-only object must fail at once.
+must be the same; the models must read the same feature by feature; every file SceML writes is
+read while it is parsed (sceml.model.xmi_stream), the others the whole-tree way; and code that
+tries to change a read-only object must fail at once.
 """
 
 from __future__ import annotations
@@ -17,7 +18,7 @@ from pyecore.ecore import EAttribute, EObject, EProxy
 
 import scemlmodel as scm
 from sceml.errors import LoadError
-from sceml.model import fastobjects
+from sceml.model import fastobjects, xmi_stream
 from sceml.model.lightobjects import ReadOnlyModelError, is_read_only
 from sceml.model.loading import load
 from sceml.model.traversal import all_contents, features, single_value
@@ -64,8 +65,22 @@ def test_the_corpus_is_all_there() -> None:
     assert len(FILES) > 150
 
 
+@pytest.fixture
+def streamed(monkeypatch: pytest.MonkeyPatch) -> list[bool]:
+    """What `xmi_stream.decode` answered, file by file, during the test."""
+    answers: list[bool] = []
+    original = xmi_stream.decode
+
+    def spy(*args: Any) -> bool:
+        answers.append(original(*args))
+        return answers[-1]
+
+    monkeypatch.setattr(xmi_stream, "decode", spy)
+    return answers
+
+
 @pytest.mark.parametrize("path", WRITTEN_BY_SCEML, ids=_ids(WRITTEN_BY_SCEML))
-def test_read_only_objects_read_like_full_ones(path: Path) -> None:
+def test_read_only_objects_read_like_full_ones(path: Path, streamed: list[bool]) -> None:
     try:
         full = load(path)
     except LoadError:
@@ -73,6 +88,7 @@ def test_read_only_objects_read_like_full_ones(path: Path) -> None:
             load(path, read_only=True)
         return
     light = load(path, read_only=True)
+    assert streamed[:1] == [True], "a file SceML wrote was not read while parsed"
     assert is_read_only(light.root) and not is_read_only(full.root)
     full_objects = [full.root, *all_contents(full.root)]
     light_objects = [light.root, *all_contents(light.root)]
@@ -183,3 +199,40 @@ def test_features_of_values_are_plain_attributes() -> None:
     assert isinstance(scm.Value.value, EAttribute)
     assert value.value == 60.0 and value.eGet("value") == 60.0
     assert value.__dict__["value"]._get() == 60.0
+
+
+HOSTILE = sorted((REPO / "tests" / "hostile" / "corpus").glob("*.xmi"))
+
+
+@pytest.mark.parametrize("path", HOSTILE, ids=_ids(HOSTILE))
+def test_files_the_stream_declines_give_the_whole_tree_errors(
+    path: Path, streamed: list[bool]
+) -> None:
+    # Each hostile file is refused or decoded the whole-tree way, with the same error and line.
+    def outcome(read_only: bool) -> str:
+        try:
+            load(path, read_only=read_only)
+        except LoadError as error:
+            return re.sub(r"0x[0-9a-f]+", "0x...", f"{error} (line {error.line})")
+        return "loaded"
+
+    assert outcome(True) == outcome(False)
+
+
+def test_streaming_frees_the_tree_as_it_goes(monkeypatch: pytest.MonkeyPatch) -> None:
+    # Each top-level element is cleared once read and dropped once the next one is: at the end
+    # the parsed tree is the root element and one empty child.
+    parses: list[Any] = []
+    original = xmi_stream.hardened_iterparse
+
+    def kept(*args: Any, **kwargs: Any) -> Any:
+        parses.append(original(*args, **kwargs))
+        return parses[-1]
+
+    monkeypatch.setattr(xmi_stream, "hardened_iterparse", kept)
+    document = load(UIS1, read_only=True)
+    assert len(parses) == 1
+    left = parses[0].root
+    assert len(left) == 1 and len(left[0]) == 0 and not left[0].attrib
+    assert len(document.root.nodes) > 5 and len(document.root.flows) > 5
+    assert document.line_of(document.root.flows[-1]) is not None

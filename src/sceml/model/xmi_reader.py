@@ -18,7 +18,7 @@ problem with its usual message and line.
 from __future__ import annotations
 
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from typing import Any
 
 from lxml import etree
@@ -150,6 +150,13 @@ class _Reader:
 
     def read(self, xmlroot: etree._Element) -> EObject:
         """Decode the whole tree and resolve its same-file references; returns the root object."""
+        root, plan = self.start(xmlroot)
+        self._walk(xmlroot, root, plan)
+        self._resolve_all(root)
+        return root
+
+    def start(self, xmlroot: etree._Element) -> tuple[EObject, _Plan]:
+        """The root object, with the root element's attributes; then `walk` its children."""
         if not isinstance(xmlroot.tag, str):
             raise _Declined
         # An xmi:XMI wrapper is declined here too: its namespace names no metamodel.
@@ -165,9 +172,15 @@ class _Reader:
                 self.uuids[text] = root
             elif key[0] != "{":
                 self._root_attribute(root, plan, key, text, xmlroot)
-        self._walk(xmlroot, root, plan)
+        return root, plan
+
+    def walk(self, elements: Iterable[etree._Element], root: EObject, plan: _Plan) -> None:
+        """Decode `elements`, children of the root element (in document order, once each)."""
+        self._walk(elements, root, plan)
+
+    def finish(self, root: EObject) -> None:
+        """Resolve the same-file references, once every element was walked."""
         self._resolve_all(root)
-        return root
 
     def _root_attribute(
         self, root: EObject, plan: _Plan, key: str, text: str, element: etree._Element
@@ -186,7 +199,7 @@ class _Reader:
             raise _Declined  # a feature of a shape pyecore decodes its own way
         # pyecore ignores root attributes that name no feature.
 
-    def _walk(self, element: etree._Element, parent: EObject, parent_plan: _Plan) -> None:
+    def _walk(self, element: Iterable[etree._Element], parent: EObject, parent_plan: _Plan) -> None:
         # Depth is bounded: libxml2 refuses documents nested deeper than 256 levels.
         children = parent_plan.children
         plans = self.plans
@@ -383,8 +396,9 @@ class _Reader:
 
     # -- the outcome ------------------------------------------------------------------------
 
-    def commit(self, root: EObject, xmlroot: etree._Element) -> None:
-        """Hand the model to the resource, as pyecore's decoder leaves it."""
+    def commit(self, root: EObject, xmlroot: etree._Element | None) -> None:
+        """Hand the model to the resource, as pyecore's decoder leaves it (without the tree
+        when it was read while parsed: its elements are gone)."""
         resource = self.resource
         root._eresource = resource
         resource.use_uuid = self.use_uuid
@@ -392,6 +406,8 @@ class _Reader:
         resource.uuid_dict.update(self.uuids)
         resource._sceml_ids.update(self.ids)
         resource.sceml_lines = dict(zip(self.created, self.lines, strict=True))
+        if xmlroot is None:
+            return
         last = xmlroot
         while len(last):
             last = last[-1]
