@@ -104,6 +104,8 @@ def test_read_only_objects_read_like_full_ones(path: Path, streamed: list[bool])
             expected.get(id(one.eContainer())) if one.eContainer() else None
         )
         assert other.eContainmentFeature() is one.eContainmentFeature()
+        assert list(other._isset) == list(one._isset)
+        assert len(other._isset) == len(one._isset)
         for feature in features(one.eClass):
             assert other.eIsSet(feature) == one.eIsSet(feature), feature.name
             assert _readable(other.eGet(feature), position) == _readable(

@@ -16,11 +16,12 @@ what only an edit would use:
   references in them and removes them again), one shared empty stand-in for the rest; the link
   of a child to its container, which pyecore also records there, is not recorded (only
   `EObject.delete` reads it, an edit);
-- single-valued features held by `Held`, one field, instead of `EValue`.
+- single-valued features held by `Held`, one field, instead of `EValue`;
+- `_isset` read off the holders (`SetFeatures`) instead of a dict per object.
 
 Writing into such an object fails loudly instead of going unnoticed: every pyecore change
 notifies the object's listeners, which refuse to be gone through here; every pyecore setter and
-`sceml.model.fastobjects` write marks the feature in `_isset`, a `ReadOnlyFlags` here; `Held` has
+`sceml.model.fastobjects` write marks the feature in `_isset`, a `SetFeatures` here; `Held` has
 no setter; the shared stand-in for `_inverse_rels` refuses to record anything. tests/core/test_light_objects.py
 runs the validation corpus through both loads and compares the diagnostics, so a write that a
 validation path attempts shows up there.
@@ -33,6 +34,7 @@ from functools import cache
 from typing import Any, NoReturn, TypeVar
 
 from pyecore.ecore import EObject, EReference
+from pyecore.valuecontainer import EOrderedSet
 
 import scemlmodel as scm
 
@@ -91,14 +93,40 @@ class _Unlinked:
 _NO_LINKS = _Unlinked()
 
 
-class ReadOnlyFlags(dict[Any, None]):
-    """`_isset` of a read-only object: which features the file set, in the order it set them.
+class SetFeatures:
+    """`_isset` of a read-only object: the features the file set, in the order it set them,
+    read off the object's holders instead of kept in a dict of its own (about 150 B an object).
 
-    pyecore's setters all end by marking their feature here, so each of them fails on a
-    read-only object; the reader fills it with `dict.__setitem__`.
+    The reader makes a holder exactly when it sets a feature (a `Held`, or an `EOrderedSet`
+    with the first item); pyecore makes an empty `EValue` or collection when a feature never set
+    is read, which does not count. pyecore's setters and `sceml.model.fastobjects`' writes all
+    mark their feature here, so each of them fails on a read-only object.
     """
 
-    __slots__ = ()
+    __slots__ = ("owner",)
+
+    def __init__(self, owner: EObject) -> None:
+        self.owner = owner
+
+    def __contains__(self, feature: object) -> bool:
+        name = getattr(feature, "_name", None)
+        owner = self.owner
+        if name is None or getattr(type(owner), name, None) is not feature:
+            return False  # not a feature of this object's class (pyecore's keys are features)
+        holder = owner.__dict__.get(name)
+        kind = type(holder)
+        return kind is Held or (kind is EOrderedSet and bool(holder.items))
+
+    def __iter__(self) -> Iterator[Any]:
+        cls = type(self.owner)
+        for name, holder in list(self.owner.__dict__.items()):
+            kind = type(holder)
+            if kind is Held or (kind is EOrderedSet and holder.items):
+                yield getattr(cls, name)
+
+    def __len__(self) -> int:
+        return sum(1 for _ in self)
+
     __setitem__ = __delitem__ = pop = popitem = clear = update = setdefault = _refuse
 
 
@@ -148,7 +176,7 @@ def new(cls: type[T]) -> T:
     obj = _object_new(cls)
     # The attributes EObject.__new__ sets, in its order (objects of a class then share keys).
     obj._internal_id = None
-    obj._isset = ReadOnlyFlags()
+    obj._isset = SetFeatures(obj)
     obj._container = None
     obj._containment_feature = None
     obj._eresource = None
@@ -160,14 +188,10 @@ def new(cls: type[T]) -> T:
     return obj
 
 
-_mark = dict.__setitem__
-
-
 def set_value(obj: EObject, slot: Slot, value: object) -> None:
     """As `fastobjects.set_value`, into a read-only object."""
     state = obj.__dict__
     state[slot.name] = Held(value)
-    _mark(state["_isset"], slot.feature, None)
 
 
 def add_child(parent: EObject, slot: Slot, child: EObject) -> None:
@@ -183,7 +207,6 @@ def add_child(parent: EObject, slot: Slot, child: EObject) -> None:
         items.append(child)
     else:
         state[slot.name] = Held(child)
-    _mark(state["_isset"], feature, None)
     child_state = child.__dict__
     child_state["_container"] = parent
     child_state["_containment_feature"] = feature
@@ -193,11 +216,9 @@ def set_reference(obj: EObject, slot: Slot, target: EObject) -> None:
     """As `fastobjects.set_reference`, into read-only objects."""
     state = obj.__dict__
     state[slot.name] = Held(target)
-    feature = slot.feature
-    _mark(state["_isset"], feature, None)
     opposite = slot.opposite
     if opposite is None:
-        target._inverse_rels.add((obj, feature))  # a participant, parameter or definition
+        target._inverse_rels.add((obj, slot.feature))  # a participant, parameter or definition
         return
     target_state = target.__dict__
     held = target_state.get(slot.reverse)
@@ -208,17 +229,16 @@ def set_reference(obj: EObject, slot: Slot, target: EObject) -> None:
         items = held.items
         index[obj] = len(items)
         items.append(obj)
-    _mark(target_state["_isset"], opposite, None)
 
 
 def is_read_only(obj: EObject) -> bool:
     """Whether `obj` was made by a read-only load."""
-    return type(obj.__dict__.get("_isset")) is ReadOnlyFlags
+    return type(obj.__dict__.get("_isset")) is SetFeatures
 
 
 __all__ = [
     "Held",
-    "ReadOnlyFlags",
+    "SetFeatures",
     "ReadOnlyModelError",
     "add_child",
     "is_read_only",
