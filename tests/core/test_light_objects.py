@@ -238,3 +238,55 @@ def test_streaming_frees_the_tree_as_it_goes(monkeypatch: pytest.MonkeyPatch) ->
     assert len(left) == 1 and len(left[0]) == 0 and not left[0].attrib
     assert len(document.root.nodes) > 5 and len(document.root.flows) > 5
     assert document.line_of(document.root.flows[-1]) is not None
+
+
+_FLOW = '<flows xsi:type="scemlmodel:Flow" source="//@nodes.0" target="//@nodes.2"/>'
+# UIS1 changed so that the stream declines it at some point; (text replaced, its replacement,
+# whether the whole-tree path still reads it).
+VARIANTS = {
+    "prefix declared below the root": (
+        _FLOW,
+        _FLOW.replace("<flows ", '<flows xmlns:other="urn:other" '),
+        True,
+    ),
+    "unknown element between two flows": (_FLOW, _FLOW + "<unknown/>", False),
+    "unknown element at the end": (
+        "</scemlmodel:Scenario>",
+        "<unknown/></scemlmodel:Scenario>",
+        False,
+    ),
+    "repeated xmi:id in two top-level elements": (
+        _FLOW,
+        _FLOW.replace("<flows ", '<flows xmi:id="a" ')
+        + _FLOW.replace("<flows ", '<flows xmi:id="a" '),
+        False,
+    ),
+    "wrong xsi:type deep in the last node": (
+        '<flows xsi:type="scemlmodel:Flow" source="//@nodes.8"',
+        '<flows xsi:type="scemlmodel:Nothing" source="//@nodes.8"',
+        False,
+    ),
+    "malformed XML after the first nodes": (_FLOW, _FLOW + "<flows", False),
+    "a dangling reference": ('source="//@nodes.0"', 'source="//@nodes.99"', False),
+}
+
+
+@pytest.mark.parametrize("variant", list(VARIANTS), ids=list(VARIANTS))
+def test_a_declined_stream_reads_the_whole_tree_way(
+    variant: str, tmp_path: Path, streamed: list[bool]
+) -> None:
+    old, new, readable = VARIANTS[variant]
+    text = UIS1.read_text(encoding="utf-8")
+    assert old in text
+    path = tmp_path / "variant.xmi"  # its map is not there: both ways report that too
+    path.write_text(text.replace(old, new, 1), encoding="utf-8")
+
+    def outcome(read_only: bool) -> list[str]:
+        report = validate_file(path, Limits(), None, read_only=read_only)
+        return report_text(report)
+
+    full = outcome(False)
+    streamed.clear()
+    assert outcome(True) == full
+    assert streamed == [False]
+    assert (full[0] == "unreadable: None") == readable, full[0]
