@@ -162,12 +162,11 @@ def _share_keys(cls: type) -> None:
     # keys, but a key written through `__dict__` (as the holders are) joins that table only
     # while one instance uses it; otherwise the instance's dict becomes a table of its own,
     # about 650 B more (a flow: 1,150 B instead of 500 B when thousands are read before their
-    # references). One object with every feature's key, made before the others, fills it.
-    from .traversal import features  # traversal reads Held: imported here, not at the top
-
+    # references). One object with every feature's key, made before the others, fills it
+    # (transient ones too: the opposite ends `incoming` and `outgoing` are).
     first: Any = new_object(cls)
     state = first.__dict__
-    for feature in features(cls.eClass):  # type: ignore[attr-defined]
+    for feature in cls.eClass.eAllStructuralFeatures():  # type: ignore[attr-defined]
         state.setdefault(feature.name, None)
     state.clear()  # no cycle through dyn_inst or _isset: freed at once
 
