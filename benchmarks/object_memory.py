@@ -84,6 +84,7 @@ def main(argv: list[str] | None = None) -> None:
             )
         # Each load in a process of its own: CPython shares a class's attribute-key tables
         # between instances, so a load's figure depends on what the process made before it.
+        sys.stdout.flush()  # before the children's lines, when stdout is a pipe
         for mode in ("full", "read-only"):
             subprocess.run(
                 [sys.executable, __file__, "--load", mode, "--top", str(arguments.top), str(path)],
