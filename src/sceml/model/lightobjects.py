@@ -17,7 +17,8 @@ what only an edit would use:
   of a child to its container, which pyecore also records there, is not recorded (only
   `EObject.delete` reads it, an edit);
 - single-valued features held by `Held`, one field, instead of `EValue`;
-- `_isset` read off the holders (`SetFeatures`) instead of a dict per object.
+- `_isset` read off the holders (`SetFeatures`) instead of a dict per object;
+- the class's shared attribute-key table filled first, as `fastobjects.new` does.
 
 Writing into such an object fails loudly instead of going unnoticed: every pyecore change
 notifies the object's listeners, which refuse to be gone through here; every pyecore setter and
@@ -38,7 +39,7 @@ from pyecore.valuecontainer import EOrderedSet
 
 import scemlmodel as scm
 
-from .fastobjects import Slot, _set_holder
+from .fastobjects import Slot, _set_holder, share_keys
 
 T = TypeVar("T", bound=EObject)
 
@@ -153,22 +154,8 @@ def _links_kept(cls: type) -> bool:
     kept = _LINKS_KEPT.get(cls)
     if kept is None:
         kept = _LINKS_KEPT[cls] = any(issubclass(cls, kind) for kind in _reference_targets())
-        _share_keys(cls)
+        share_keys(cls, new_object)  # before the first real one: see fastobjects.share_keys
     return kept
-
-
-def _share_keys(cls: type) -> None:
-    # CPython keeps the attribute dicts of a class's instances small by sharing one table of
-    # keys, but a key written through `__dict__` (as the holders are) joins that table only
-    # while one instance uses it; otherwise the instance's dict becomes a table of its own,
-    # about 650 B more (a flow: 1,150 B instead of 500 B when thousands are read before their
-    # references). One object with every feature's key, made before the others, fills it
-    # (transient ones too: the opposite ends `incoming` and `outgoing` are).
-    first: Any = new_object(cls)
-    state = first.__dict__
-    for feature in cls.eClass.eAllStructuralFeatures():  # type: ignore[attr-defined]
-        state.setdefault(feature.name, None)
-    state.clear()  # no cycle through dyn_inst or _isset: freed at once
 
 
 @cache
