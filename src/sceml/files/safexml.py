@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import codecs
 import os
+from typing import Any
 
 from lxml import etree
 
@@ -59,16 +60,30 @@ def hardened_parser(
     cannot decode them); `drop_blank_text` drops whitespace-only text, so that a tree
     pretty-prints with consistent indentation.
     """
-    return etree.XMLParser(
-        resolve_entities=False,
-        no_network=True,
-        load_dtd=False,
-        dtd_validation=False,
-        huge_tree=False,
-        remove_comments=drop_comments,
-        remove_pis=drop_comments,
-        remove_blank_text=drop_blank_text,
+    return etree.XMLParser(**_hardened_options(drop_comments, drop_blank_text))
+
+
+def hardened_iterparse(
+    source: Any, *, events: tuple[str, ...], tag: tuple[str, ...], drop_comments: bool = False
+) -> etree.iterparse:
+    """lxml's `iterparse` over `source` with `hardened_parser`'s options: for a reader that
+    frees each part of a large document once it has read it (`sceml.model.xmi_stream`)."""
+    return etree.iterparse(
+        source, events=events, tag=tag, **_hardened_options(drop_comments, False)
     )
+
+
+def _hardened_options(drop_comments: bool, drop_blank_text: bool) -> dict[str, bool]:
+    return {
+        "resolve_entities": False,
+        "no_network": True,
+        "load_dtd": False,
+        "dtd_validation": False,
+        "huge_tree": False,
+        "remove_comments": drop_comments,
+        "remove_pis": drop_comments,
+        "remove_blank_text": drop_blank_text,
+    }
 
 
 def doctype_line(data: bytes) -> int | None:

@@ -17,12 +17,16 @@ from .xmiresource import SafeXMIResource
 
 
 def new_resource_set(
-    allowed_roots: Iterable[str | Path] | None = None, max_bytes: int | None = None
+    allowed_roots: Iterable[str | Path] | None = None,
+    max_bytes: int | None = None,
+    read_only: bool = False,
 ) -> ResourceSet:
     """A fresh resource set that knows the SceML metamodel and reads files safely.
 
     `allowed_roots`, when given, are the only folders files may be read from, cross-file
     references included. `max_bytes` limits each file's size (default: `max_bytes_limit()`).
+    With `read_only`, the files are read into `sceml.model.lightobjects`' lighter objects, which
+    refuse any change (for commands that only read a model, such as `sceml validate`).
     """
     resource_set = ResourceSet()
     resource_set.metamodel_registry[scm.nsURI] = scm
@@ -32,6 +36,7 @@ def new_resource_set(
         None if allowed_roots is None else [Path(r).resolve() for r in allowed_roots]
     )
     resource_set.sceml_max_bytes = max_bytes
+    resource_set.sceml_read_only = read_only
     return resource_set
 
 

@@ -25,17 +25,19 @@ def load(
     allowed_roots: Iterable[str | Path] | None = None,
     allow: Iterable[str | Path] = (),
     max_bytes: int | None = None,
+    read_only: bool = False,
 ) -> Document:
     """Load a scenario or library XMI file; references to other files load on first use.
 
     Referenced files are read only from `allowed_roots`, by default `reading_roots(path, allow)`
     (the file's folder, its project root and `allow`), and only up to `max_bytes` each (default:
-    $SCEML_MAX_BYTES, else DEFAULT_MAX_BYTES).
+    $SCEML_MAX_BYTES, else DEFAULT_MAX_BYTES). `read_only` (with a new resource set) makes
+    lighter objects that refuse any change: for a caller that only reads the model.
     """
     path = Path(path)
     if resource_set is None:
         roots = allowed_roots if allowed_roots is not None else reading_roots(path, allow)
-        resource_set = new_resource_set(roots, max_bytes)
+        resource_set = new_resource_set(roots, max_bytes, read_only)
     # The file the user names is always read; allowed_roots govern what it refers to.
     named: set[Path] = getattr(resource_set, "sceml_named_files", set())
     named.add(path.resolve())

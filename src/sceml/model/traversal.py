@@ -15,6 +15,8 @@ from typing import Any
 from pyecore.ecore import EAttribute, EClass, EObject, EProxy, EReference, EStructuralFeature
 from pyecore.valuecontainer import EOrderedSet, EValue
 
+from .lightobjects import Held
+
 
 @cache
 def features(eclass: EClass) -> tuple[EStructuralFeature, ...]:
@@ -75,7 +77,8 @@ def single_value(obj: EObject, name: str) -> Any:
         if found is _DEFAULTS:
             found = _DEFAULTS[key] = _default(*key)
         return found
-    if type(holder) is EValue:
+    kind = type(holder)
+    if kind is EValue or kind is Held:
         return holder._value
     return getattr(obj, name)
 
@@ -155,7 +158,7 @@ def children(obj: EObject) -> list[EObject]:
         kind = type(holder)
         if kind is EOrderedSet:
             found.extend(holder.items)
-        elif kind is EValue:
+        elif kind is EValue or kind is Held:
             if holder._value is not None:
                 found.append(holder._value)
         else:

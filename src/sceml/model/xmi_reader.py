@@ -18,7 +18,7 @@ problem with its usual message and line.
 from __future__ import annotations
 
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from typing import Any
 
 from lxml import etree
@@ -27,6 +27,7 @@ from pyecore.valuecontainer import EcoreUtils
 
 import scemlmodel as scm
 
+from . import lightobjects
 from .fastobjects import (
     Slot,
     add_child,
@@ -100,15 +101,18 @@ def _concrete(cls: Any) -> bool:
     return not eclass.abstract
 
 
-def decode(resource: Any, xmlroot: etree._Element, check_literal: CheckLiteral) -> bool:
+def decode(
+    resource: Any, xmlroot: etree._Element, check_literal: CheckLiteral, read_only: bool = False
+) -> bool:
     """Build the model of `xmlroot` into `resource`; False, with nothing changed, if declined.
 
     `resource` is a SafeXMIResource whose prefixes and xsi/xmi keys are set up for this tree
-    (as `_decode_tree` does); `check_literal` refuses attribute text (ValueError).
+    (as `_decode_tree` does); `check_literal` refuses attribute text (ValueError). With
+    `read_only`, the objects are `sceml.model.lightobjects`' (for a load nothing will change).
     """
     if resource.contents or resource.uuid_dict or resource.xsitype != XSI_TYPE:
         return False
-    reader = _Reader(resource, check_literal)
+    reader = _Reader(resource, check_literal, read_only)
     try:
         root = reader.read(xmlroot)
     except Exception:  # _Declined, or a file this reader was not written for
@@ -124,7 +128,12 @@ def decode(resource: Any, xmlroot: etree._Element, check_literal: CheckLiteral) 
 class _Reader:
     """One decoding of one tree; nothing reaches the resource before `commit`."""
 
-    def __init__(self, resource: Any, check_literal: CheckLiteral) -> None:
+    def __init__(self, resource: Any, check_literal: CheckLiteral, read_only: bool) -> None:
+        # The same writes, into pyecore's full objects or into read-only ones.
+        self.new: Callable[[type[EObject]], EObject] = lightobjects.new if read_only else new
+        self.set_value = lightobjects.set_value if read_only else set_value
+        self.add_child = lightobjects.add_child if read_only else add_child
+        self.set_reference = lightobjects.set_reference if read_only else set_reference
         self.resource = resource
         self.check_literal = check_literal
         self.xmiid: str = resource.xmiid
@@ -141,12 +150,19 @@ class _Reader:
 
     def read(self, xmlroot: etree._Element) -> EObject:
         """Decode the whole tree and resolve its same-file references; returns the root object."""
+        root, plan = self.start(xmlroot)
+        self._walk(xmlroot, root, plan)
+        self._resolve_all(root)
+        return root
+
+    def start(self, xmlroot: etree._Element) -> tuple[EObject, _Plan]:
+        """The root object, with the root element's attributes; then `walk` its children."""
         if not isinstance(xmlroot.tag, str):
             raise _Declined
         # An xmi:XMI wrapper is declined here too: its namespace names no metamodel.
         qname = etree.QName(xmlroot)
         plan = self._plan_of(self._metaclass(qname.namespace, qname.localname))
-        root = new(plan.cls)
+        root = self.new(plan.cls)
         self.created.append(root)
         self.lines.append(xmlroot.sourceline)
         self.use_uuid = xmlroot.get(self.xmiid) is not None
@@ -156,9 +172,15 @@ class _Reader:
                 self.uuids[text] = root
             elif key[0] != "{":
                 self._root_attribute(root, plan, key, text, xmlroot)
-        self._walk(xmlroot, root, plan)
+        return root, plan
+
+    def walk(self, elements: Iterable[etree._Element], root: EObject, plan: _Plan) -> None:
+        """Decode `elements`, children of the root element (in document order, once each)."""
+        self._walk(elements, root, plan)
+
+    def finish(self, root: EObject) -> None:
+        """Resolve the same-file references, once every element was walked."""
         self._resolve_all(root)
-        return root
 
     def _root_attribute(
         self, root: EObject, plan: _Plan, key: str, text: str, element: etree._Element
@@ -166,7 +188,8 @@ class _Reader:
         attribute = plan.attributes.get(key)
         if attribute is not None:
             feature, values, is_id = attribute
-            set_value(root, feature, text if values is None else self._value(feature, values, text))
+            value = text if values is None else self._value(feature, values, text)
+            self.set_value(root, feature, value)
             if is_id:
                 self._register_id(root, text, element)
                 self.uuids[text] = root
@@ -176,7 +199,7 @@ class _Reader:
             raise _Declined  # a feature of a shape pyecore decodes its own way
         # pyecore ignores root attributes that name no feature.
 
-    def _walk(self, element: etree._Element, parent: EObject, parent_plan: _Plan) -> None:
+    def _walk(self, element: Iterable[etree._Element], parent: EObject, parent_plan: _Plan) -> None:
         # Depth is bounded: libxml2 refuses documents nested deeper than 256 levels.
         children = parent_plan.children
         plans = self.plans
@@ -186,6 +209,7 @@ class _Reader:
         lines = self.lines
         value_of = self._value
         xmiid = self.xmiid
+        new, set_value, add_child = self.new, self.set_value, self.add_child
         for child in element:
             held_by = children.get(child.tag)
             if held_by is None:
@@ -251,7 +275,7 @@ class _Reader:
             raise _Declined
         if feature.name in parent.__dict__:
             raise _Declined
-        set_value(parent, feature, None)
+        self.set_value(parent, feature, None)
 
     def _href(self, element: etree._Element, parent: EObject, plan: _Plan) -> None:
         # `<definition href="library.xmi#Name" xsi:type="..."/>`: a reference into another file,
@@ -264,7 +288,7 @@ class _Reader:
             raise _Declined
         if any(key != "href" and key != XSI_TYPE for key in element.attrib):
             raise _Declined
-        set_reference(parent, feature, EProxy(path=href, resource=self.resource))
+        self.set_reference(parent, feature, EProxy(path=href, resource=self.resource))
 
     def _value(self, feature: Slot, values: dict[str, object], text: str) -> object:
         # The same text gives the same value: most numbers and enum literals repeat.
@@ -328,6 +352,7 @@ class _Reader:
         # In pyecore's order: holders in document order, each holder's attributes in order.
         found: dict[str, EObject] = {}
         resolve = self._resolve
+        set_reference = self.set_reference
         for holder, feature, text in self.later:
             target = found.get(text)
             if target is None:
@@ -371,8 +396,9 @@ class _Reader:
 
     # -- the outcome ------------------------------------------------------------------------
 
-    def commit(self, root: EObject, xmlroot: etree._Element) -> None:
-        """Hand the model to the resource, as pyecore's decoder leaves it."""
+    def commit(self, root: EObject, xmlroot: etree._Element | None) -> None:
+        """Hand the model to the resource, as pyecore's decoder leaves it (without the tree
+        when it was read while parsed: its elements are gone)."""
         resource = self.resource
         root._eresource = resource
         resource.use_uuid = self.use_uuid
@@ -380,6 +406,8 @@ class _Reader:
         resource.uuid_dict.update(self.uuids)
         resource._sceml_ids.update(self.ids)
         resource.sceml_lines = dict(zip(self.created, self.lines, strict=True))
+        if xmlroot is None:
+            return
         last = xmlroot
         while len(last):
             last = last[-1]

@@ -26,7 +26,7 @@ from ..files.safexml import (
     hardened_parser,
     has_dtd,
 )
-from . import xmi_reader
+from . import xmi_reader, xmi_stream
 from .collector import collector_paused
 from .locating import line_in
 from .traversal import all_contents
@@ -54,6 +54,11 @@ def parse_xml_safely(path: Path, max_bytes: int | None = None) -> etree._Element
     Read by the one reading rule (`sceml.files.safefiles.read_input`): a regular file of at most
     `max_bytes` (default: `max_bytes_limit()`); a larger file is refused before it is read.
     """
+    return _parse(_read_xml(path, max_bytes), path)
+
+
+def _read_xml(path: Path, max_bytes: int | None) -> bytes:
+    """The bytes of an XML file, refused (LoadError) if unreadable or if it declares a DTD."""
     try:
         data = read_input(path, max_bytes=max_bytes)
     except FileNotFoundError:
@@ -63,6 +68,10 @@ def parse_xml_safely(path: Path, max_bytes: int | None = None) -> etree._Element
     line = doctype_line(data)
     if line is not None:
         raise LoadError("DTDs and entity declarations are not accepted", file=path, line=line)
+    return data
+
+
+def _parse(data: bytes, path: Path) -> etree._ElementTree:
     try:
         tree = etree.parse(
             _io.BytesIO(data), parser=hardened_parser(drop_comments=True), base_url=None
@@ -92,7 +101,8 @@ class SafeXMIResource(XMIResource):  # type: ignore[misc]  # pyecore is untyped
     enum literals), duplicate ids, more than one root, and cross-file containment.
 
     Files are decoded by `sceml.model.xmi_reader`, which builds the objects directly; what it declines
-    goes through pyecore's decoder (`fast_decoding = False` makes every file take that path).
+    goes through pyecore's decoder (`fast_decoding = False` makes every file take that path). In
+    a resource set made `read_only`, the reader makes `sceml.model.lightobjects`' objects.
     """
 
     fast_decoding = True
@@ -109,13 +119,17 @@ class SafeXMIResource(XMIResource):  # type: ignore[misc]  # pyecore is untyped
                 f"(--allow {path.parent})",
                 file=path,
             )
-        tree = parse_xml_safely(path, getattr(resource_set, "sceml_max_bytes", None))
-        self.sceml_migration = _migrate_if_older(tree, path)
-        _check_tree(tree, path)
-        self.sceml_tree = tree
+        data = _read_xml(path, getattr(resource_set, "sceml_max_bytes", None))
         # iD attribute values seen so far: EMF fragments name elements by them, so they must be
         # unique per file (ModuleDefinition.name is one).
         self._sceml_ids: dict[tuple[str, str], tuple[EObject, int | None]] = {}
+        if self._streamed(data):
+            return
+        tree = _parse(data, path)
+        del data
+        self.sceml_migration = _migrate_if_older(tree, path)
+        _check_tree(tree, path)
+        self.sceml_tree = tree
         try:
             with collector_paused():
                 self._decode_tree(tree, options)
@@ -139,6 +153,21 @@ class SafeXMIResource(XMIResource):  # type: ignore[misc]  # pyecore is untyped
         finally:
             self._clean_registers()
         self._keep_lines(tree)
+
+    def _streamed(self, data: bytes) -> bool:
+        # A read-only load of a plain current file is read while it is parsed, each part of the
+        # tree freed once read (sceml.model.xmi_stream); anything else is parsed whole below.
+        if not (self.fast_decoding and getattr(self.resource_set, "sceml_read_only", False)):
+            return False
+        try:
+            with collector_paused():
+                streamed = xmi_stream.decode(self, data, _check_literal, _type_problem_of)
+        finally:
+            self._clean_registers()
+        if streamed:
+            self.sceml_migration = None
+            self.sceml_tree = None
+        return streamed
 
     def _keep_lines(self, tree: etree._ElementTree) -> None:
         # Where each object was written is all that is needed of the parse tree later; the tree
@@ -167,7 +196,8 @@ class SafeXMIResource(XMIResource):  # type: ignore[misc]  # pyecore is untyped
         self.xmiid = f"{{{xmi}}}id"
         self.schema_tag = f"{{{xsi}}}schemaLocation"
         self.schema_locations: dict[str, object] = {}
-        if self.fast_decoding and xmi_reader.decode(self, xmlroot, _check_literal):
+        read_only = getattr(self.resource_set, "sceml_read_only", False)
+        if self.fast_decoding and xmi_reader.decode(self, xmlroot, _check_literal, read_only):
             return
         self._decode_with_pyecore(xmlroot, xmi)
 

@@ -24,10 +24,15 @@ def validate_file(
     osc_version: str | None,
     allow: tuple[Path, ...] = (),
     osc_profile: str | None = None,
+    *,
+    read_only: bool = True,
 ) -> FileReport:
-    """Load and validate one file; an unreadable one is reported, not raised."""
+    """Load and validate one file; an unreadable one is reported, not raised.
+
+    Validation only reads the model, so it is loaded `read_only` (lighter objects) unless told.
+    """
     try:
-        document = load(path, allow=allow)
+        document = load(path, allow=allow, read_only=read_only)
     except LoadError as error:
         where = f"line {error.line}: " if error.line else ""
         return FileReport(str(path), unreadable=where + error.message)
