@@ -41,9 +41,12 @@ def _clothoid(piece: Geometry) -> Callable[[float], Pose]:
         k1 = float(piece.params.get("curvEnd", 0.0))
         dk = (k1 - k0) / piece.length if piece.length > 0 else 0.0
     curve = pyclothoids.Clothoid.StandardParams(piece.x, piece.y, piece.hdg, k0, dk, piece.length)
+    # The compiled curve's own methods, taken once: the wrapper finds them by __getattr__ at
+    # every call, and a road is evaluated at every sample.
+    x_at, y_at, heading_at = curve.X, curve.Y, curve.Theta
 
     def pose(ds: float) -> Pose:
-        return float(curve.X(ds)), float(curve.Y(ds)), float(curve.Theta(ds))
+        return float(x_at(ds)), float(y_at(ds)), float(heading_at(ds))
 
     return pose
 
