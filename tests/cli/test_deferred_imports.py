@@ -59,17 +59,6 @@ def test_validate_does_not_run_urllib_request(tmp_path: Path) -> None:
     assert "0 error(s)" in shown
 
 
-def test_validate_reads_the_map_of_uis1_without_numpy(tmp_path: Path) -> None:
-    # UIS1 names maps/intersection.xodr (lines and spirals): its rules ask where positions lie
-    # on the lanes, which the plan view answers in plain floats (tests/maps/test_planview_floats).
-    uis1 = ROOT / "examples" / "uis1-concrete.xmi"
-    shown, imported = _run_main(
-        tmp_path, "validate", str(uis1), watched=("sceml.maps.roadmap", "pyclothoids", "numpy")
-    )
-    assert imported == ["pyclothoids", "sceml.maps.roadmap"]
-    assert "0 error(s)" in shown
-
-
 USE = """
 import sys
 from sceml.cli.deferred import defer_unused_imports
