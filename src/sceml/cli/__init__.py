@@ -62,11 +62,13 @@ def main() -> None:
     """Console-script entry point: run the command, then end the process without teardown."""
     from ..model.collector import ending_with_command
     from .blas_threads import one_blas_thread
+    from .common import freezing_imports_before_the_command
     from .deferred import defer_unused_imports
 
     defer_unused_imports()
     one_blas_thread()
     ending_with_command()
+    freezing_imports_before_the_command()
     try:
         cli()
     except SystemExit as done:
