@@ -1,6 +1,6 @@
 """CPU and wall time of short commands beside the interpreter's own start, in one run.
 
-    python benchmarks/startup.py [--rounds 21] [--only NAME ...]
+    python benchmarks/startup.py [--rounds 21] [--only NAME ...] [--before TREE]
 
 Each command runs as a fresh process, as a user or a CI script runs it (`sceml` is the installed
 console script), bytecode caches written by one warm-up run. The anchors, measured in the same
@@ -15,7 +15,14 @@ as GNU time reports them: the process's own work, which a busy machine does not 
 and wall seconds (what a user waits, which on a shared machine is mostly waiting for a core).
 Each is printed with its ratio to `python -c pass` of the same rounds. Issue 31's goals:
 `sceml validate` of UIS1 and `sceml --help` within 4x the bare interpreter; `sceml simulate`
-of UIS1 and UIS2 (run, preview page written) under 0.35 s.
+of UIS1 and UIS2 (run, preview page written) under 0.35 s. The ratio to the lxml anchor (the
+issue's anchor column) is printed beside the ratio to `python -c pass`.
+
+`--before TREE`: each `sceml` command also runs from another source tree, as "NAME, before",
+interleaved with the rest: TREE holds that tree's `src` and `generated` (`git archive <commit>
+src generated | tar -x -C TREE`), put first on PYTHONPATH. Both trees' commands then run
+through `python -c` and `sceml.cli.main` (the console script's entry point), so that the two
+start the same way.
 """
 
 from __future__ import annotations
@@ -34,6 +41,7 @@ UIS2 = REPO / "examples" / "uis2-concrete.xmi"
 PAGE = Path(tempfile.gettempdir()) / f"sceml-startup-{os.getpid()}-preview.html"
 PYTHON = sys.executable
 SCEML = str(Path(sys.executable).with_name("sceml"))
+MAIN = "import sys; sys.argv[0] = 'sceml'; from sceml.cli import main; main()"
 ANCHORS = {
     "python -c pass": [PYTHON, "-c", "pass"],
     'python -c "import lxml.etree"': [PYTHON, "-c", "import lxml.etree"],
@@ -59,6 +67,13 @@ def main() -> None:
     parser.add_argument(
         "--only", action="append", default=[], metavar="NAME", help="subjects whose name has NAME"
     )
+    parser.add_argument(
+        "--before",
+        type=Path,
+        default=None,
+        metavar="TREE",
+        help="also run each sceml command from TREE/src and TREE/generated",
+    )
     options = parser.parse_args()
     subjects = {
         name: command
@@ -67,21 +82,50 @@ def main() -> None:
     }
     env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
     # What `sceml` asks of OpenBLAS (sceml.cli.blas_threads), for numpy's import alone.
-    one_thread = {'python -c "import numpy", 1 BLAS thread': {**env, "OPENBLAS_NUM_THREADS": "1"}}
+    envs = {'python -c "import numpy", 1 BLAS thread': {**env, "OPENBLAS_NUM_THREADS": "1"}}
+    if options.before is not None:
+        subjects, envs = _with_before(subjects, envs, env, options.before.resolve())
     load = load_average()
     try:
-        runs = interleaved({**ANCHORS, **subjects}, options.rounds, env, one_thread)
+        runs = interleaved({**ANCHORS, **subjects}, options.rounds, env, envs)
     finally:
         PAGE.unlink(missing_ok=True)
     bare_cpu, bare_wall = median_cpu(runs["python -c pass"]), median_wall(runs["python -c pass"])
+    lxml_cpu = median_cpu(runs['python -c "import lxml.etree"'])
     print(f"{options.rounds} rounds, load average {load} at the start, {load_average()} at the end")
-    print(f"{'command':34s} {'CPU ms':>7s} {'x python':>9s} {'wall ms':>8s} {'x python':>9s}")
+    print(
+        f"{'command':38s} {'CPU ms':>7s} {'x python':>9s} {'x lxml':>7s}"
+        f" {'wall ms':>8s} {'x python':>9s}"
+    )
     for name, measured in runs.items():
         cpu, wall = median_cpu(measured), median_wall(measured)
         print(
-            f"{name:34s} {cpu * 1000:7.0f} {cpu / bare_cpu:9.1f} "
-            f"{wall * 1000:8.0f} {wall / bare_wall:9.1f}"
+            f"{name:38s} {cpu * 1000:7.0f} {cpu / bare_cpu:9.1f} {cpu / lxml_cpu:7.1f}"
+            f" {wall * 1000:8.0f} {wall / bare_wall:9.1f}"
         )
+
+
+def _with_before(
+    subjects: dict[str, list[str]],
+    envs: dict[str, dict[str, str]],
+    env: dict[str, str],
+    tree: Path,
+) -> tuple[dict[str, list[str]], dict[str, dict[str, str]]]:
+    """Each sceml subject twice, this checkout's and TREE's, both through `python -c`."""
+    before_env = {
+        **env,
+        "PYTHONPATH": os.pathsep.join([str(tree / "src"), str(tree / "generated")]),
+    }
+    paired: dict[str, list[str]] = {}
+    for name, command in subjects.items():
+        if command[0] != SCEML:
+            paired[name] = command
+            continue
+        through_main = [PYTHON, "-c", MAIN, *command[1:]]
+        paired[name] = through_main
+        paired[f"{name}, before"] = through_main
+        envs = {**envs, f"{name}, before": before_env}
+    return paired, envs
 
 
 if __name__ == "__main__":

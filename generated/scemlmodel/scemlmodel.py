@@ -2,6 +2,7 @@
 from functools import partial
 import pyecore.ecore as Ecore
 from pyecore.ecore import *
+from ._static_features import attribute as _attribute, reference as _reference
 
 
 name = 'scemlmodel'
@@ -69,7 +70,7 @@ SpeedRelation = EEnum('SpeedRelation', literals=['delta', 'factor'])
 @abstract
 class NamedElement(EObject, metaclass=MetaEClass):
 
-    name = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    name = _attribute(eType=EString, unique=True, derived=False, changeable=True)
 
     def __init__(self, *, name=None):
         # if kwargs:
@@ -84,8 +85,8 @@ class NamedElement(EObject, metaclass=MetaEClass):
 @abstract
 class Graph(EObject, metaclass=MetaEClass):
     """A directed acyclic graph of nodes joined by flows: a scenario, or the inside of a module definition."""
-    nodes = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
-    flows = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+    nodes = _reference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+    flows = _reference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
 
     def __init__(self, *, nodes=None, flows=None):
         # if kwargs:
@@ -102,8 +103,8 @@ class Graph(EObject, metaclass=MetaEClass):
 
 class Flow(EObject, metaclass=MetaEClass):
     """A directed edge: the target is activated when the source has finished."""
-    source = EReference(ordered=True, unique=True, containment=False, derived=False)
-    target = EReference(ordered=True, unique=True, containment=False, derived=False)
+    source = _reference(ordered=True, unique=True, containment=False, derived=False)
+    target = _reference(ordered=True, unique=True, containment=False, derived=False)
 
     def __init__(self, *, source=None, target=None):
         # if kwargs:
@@ -120,8 +121,8 @@ class Flow(EObject, metaclass=MetaEClass):
 
 class DiagramPosition(EObject, metaclass=MetaEClass):
     """A node's place in the diagram, kept with the model so that reopening shows the picture the user arranged. Pure notation: it never changes what the scenario means."""
-    x = EAttribute(eType=EDouble, unique=True, derived=False, changeable=True, default_value=0.0)
-    y = EAttribute(eType=EDouble, unique=True, derived=False, changeable=True, default_value=0.0)
+    x = _attribute(eType=EDouble, unique=True, derived=False, changeable=True, default_value=0.0)
+    y = _attribute(eType=EDouble, unique=True, derived=False, changeable=True, default_value=0.0)
 
     def __init__(self, *, x=None, y=None):
         # if kwargs:
@@ -138,8 +139,8 @@ class DiagramPosition(EObject, metaclass=MetaEClass):
 
 class Property(EObject, metaclass=MetaEClass):
     """One name and value pair of a controller, as OpenSCENARIO's Property: text the player reads (e.g. esmini's timeGap or mode)."""
-    name = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    value = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    name = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    value = _attribute(eType=EString, unique=True, derived=False, changeable=True)
 
     def __init__(self, *, name=None, value=None):
         # if kwargs:
@@ -156,10 +157,10 @@ class Property(EObject, metaclass=MetaEClass):
 
 class Controller(EObject, metaclass=MetaEClass):
     """What drives an actor instead of the player's default (OpenSCENARIO's Controller): its name, which players use to pick an implementation (esmini: ACCController, InteractiveController, ...), an optional controllerType (1.2+: movement, lateral, longitudinal, lighting, animation, appearance, all) and its properties. SceML's own preview does not run it."""
-    name = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    controllerType = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    file = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    properties = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+    name = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    controllerType = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    file = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    properties = _reference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
 
     def __init__(self, *, name=None, controllerType=None, properties=None, file=None):
         # if kwargs:
@@ -182,10 +183,10 @@ class Controller(EObject, metaclass=MetaEClass):
 
 class ControllerActivation(EObject, metaclass=MetaEClass):
     """Which domains of an actor's controller are switched on (true) or off (false); unset leaves a domain as the player has it. lighting and animation exist from OpenSCENARIO 1.2."""
-    lateral = EAttribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
-    longitudinal = EAttribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
-    lighting = EAttribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
-    animation = EAttribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
+    lateral = _attribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
+    longitudinal = _attribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
+    lighting = _attribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
+    animation = _attribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
 
     def __init__(self, *, lateral=None, longitudinal=None, lighting=None, animation=None):
         # if kwargs:
@@ -208,11 +209,11 @@ class ControllerActivation(EObject, metaclass=MetaEClass):
 
 class ControllerOverride(EObject, metaclass=MetaEClass):
     """One overridden input: active or released, and its value (pedals 0..1, steering wheel in rad, a manual gear's number)."""
-    kind = EAttribute(eType=ControllerOverrideKind, unique=True, derived=False,
+    kind = _attribute(eType=ControllerOverrideKind, unique=True, derived=False,
                       changeable=True, default_value=ControllerOverrideKind.throttle)
-    active = EAttribute(eType=EBoolean, unique=True, derived=False,
+    active = _attribute(eType=EBoolean, unique=True, derived=False,
                         changeable=True, default_value=True)
-    value = EAttribute(eType=EDouble, unique=True, derived=False,
+    value = _attribute(eType=EDouble, unique=True, derived=False,
                        changeable=True, default_value=0.0)
 
     def __init__(self, *, kind=None, active=None, value=None):
@@ -233,11 +234,11 @@ class ControllerOverride(EObject, metaclass=MetaEClass):
 
 class Declaration(EObject, metaclass=MetaEClass):
     """A parameter or variable the scenario declares for its global nodes to read and change (ParameterCondition, SetParameter, VariableCondition, SetVariable): exported as a ParameterDeclaration or (1.2+) VariableDeclaration with this initial value."""
-    name = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    type = EAttribute(eType=DeclarationType, unique=True, derived=False,
+    name = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    type = _attribute(eType=DeclarationType, unique=True, derived=False,
                       changeable=True, default_value=DeclarationType.double)
-    value = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    variable = EAttribute(eType=EBoolean, unique=True, derived=False,
+    value = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    variable = _attribute(eType=EBoolean, unique=True, derived=False,
                           changeable=True, default_value=False)
 
     def __init__(self, *, name=None, type=None, value=None, variable=None):
@@ -261,8 +262,8 @@ class Declaration(EObject, metaclass=MetaEClass):
 
 class RoleBinding(EObject, metaclass=MetaEClass):
 
-    role = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    actor = EReference(ordered=True, unique=True, containment=False, derived=False)
+    role = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    actor = _reference(ordered=True, unique=True, containment=False, derived=False)
 
     def __init__(self, *, role=None, actor=None):
         # if kwargs:
@@ -279,8 +280,8 @@ class RoleBinding(EObject, metaclass=MetaEClass):
 
 class ParameterOverride(EObject, metaclass=MetaEClass):
 
-    parameter = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    value = EReference(ordered=True, unique=True, containment=True, derived=False)
+    parameter = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    value = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, parameter=None, value=None):
         # if kwargs:
@@ -297,7 +298,7 @@ class ParameterOverride(EObject, metaclass=MetaEClass):
 
 class AllowedKind(EObject, metaclass=MetaEClass):
     """One actor kind a role accepts. An object rather than a many-valued enum attribute, because pyecore writes an empty many-valued attribute as text that no reader accepts."""
-    kind = EAttribute(eType=ActorKind, unique=True, derived=False, changeable=True)
+    kind = _attribute(eType=ActorKind, unique=True, derived=False, changeable=True)
 
     def __init__(self, *, kind=None):
         # if kwargs:
@@ -321,9 +322,9 @@ class Position(EObject, metaclass=MetaEClass):
 
 class RouteWaypoint(EObject, metaclass=MetaEClass):
     """One waypoint of a RoutePosition's route: a position (not relative, not itself on a route) and how the route reaches it from the one before (OpenSCENARIO's Waypoint)."""
-    routeStrategy = EAttribute(eType=RouteStrategy, unique=True, derived=False,
+    routeStrategy = _attribute(eType=RouteStrategy, unique=True, derived=False,
                                changeable=True, default_value=RouteStrategy.shortest)
-    position = EReference(ordered=True, unique=True, containment=True, derived=False)
+    position = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, position=None, routeStrategy=None):
         # if kwargs:
@@ -340,14 +341,14 @@ class RouteWaypoint(EObject, metaclass=MetaEClass):
 
 class Environment(EObject, metaclass=MetaEClass):
 
-    timeOfDay = EAttribute(eType=EString, unique=True, derived=False,
+    timeOfDay = _attribute(eType=EString, unique=True, derived=False,
                            changeable=True, default_value='12:00:00')
-    cloudState = EAttribute(eType=CloudState, unique=True, derived=False,
+    cloudState = _attribute(eType=CloudState, unique=True, derived=False,
                             changeable=True, default_value=CloudState.free)
-    precipitation = EAttribute(eType=PrecipitationType, unique=True,
+    precipitation = _attribute(eType=PrecipitationType, unique=True,
                                derived=False, changeable=True, default_value=PrecipitationType.dry)
-    precipitationIntensity = EReference(ordered=True, unique=True, containment=True, derived=False)
-    fogVisualRange = EReference(ordered=True, unique=True, containment=True, derived=False)
+    precipitationIntensity = _reference(ordered=True, unique=True, containment=True, derived=False)
+    fogVisualRange = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, timeOfDay=None, cloudState=None, precipitation=None, precipitationIntensity=None, fogVisualRange=None):
         # if kwargs:
@@ -384,8 +385,8 @@ class ParameterValue(EObject, metaclass=MetaEClass):
 
 class WeightedValue(EObject, metaclass=MetaEClass):
 
-    value = EAttribute(eType=EDouble, unique=True, derived=False, changeable=True)
-    weight = EAttribute(eType=EDoubleObject, unique=True, derived=False, changeable=True)
+    value = _attribute(eType=EDouble, unique=True, derived=False, changeable=True)
+    weight = _attribute(eType=EDoubleObject, unique=True, derived=False, changeable=True)
 
     def __init__(self, *, value=None, weight=None):
         # if kwargs:
@@ -410,8 +411,8 @@ class Scenario(Graph):
 
 class Library(NamedElement):
     """The document root of a module library file."""
-    description = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    modules = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+    description = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    modules = _reference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
 
     def __init__(self, *, description=None, modules=None, **kwargs):
 
@@ -427,11 +428,11 @@ class Library(NamedElement):
 @abstract
 class GraphElement(NamedElement):
 
-    incoming = EReference(ordered=True, unique=True, containment=False,
+    incoming = _reference(ordered=True, unique=True, containment=False,
                           derived=False, upper=-1, transient=True)
-    outgoing = EReference(ordered=True, unique=True, containment=False,
+    outgoing = _reference(ordered=True, unique=True, containment=False,
                           derived=False, upper=-1, transient=True)
-    diagramPosition = EReference(ordered=True, unique=True, containment=True, derived=False)
+    diagramPosition = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, incoming=None, outgoing=None, diagramPosition=None, **kwargs):
 
@@ -449,10 +450,10 @@ class GraphElement(NamedElement):
 
 class ModuleDefinition(Graph):
     """A reusable sub-scenario stored in a library: actor roles, parameters, and a graph from one InPort to one OutPort. Its name is its ID, so uses in other files refer to it by name."""
-    name = EAttribute(eType=EString, unique=True, derived=False, changeable=True, iD=True)
-    description = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    roles = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
-    parameters = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+    name = _attribute(eType=EString, unique=True, derived=False, changeable=True, iD=True)
+    description = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    roles = _reference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+    parameters = _reference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
 
     def __init__(self, *, name=None, description=None, roles=None, parameters=None, **kwargs):
 
@@ -473,9 +474,9 @@ class ModuleDefinition(Graph):
 
 class ModuleParameter(NamedElement):
 
-    unit = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    description = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    default = EReference(ordered=True, unique=True, containment=True, derived=False)
+    unit = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    description = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    default = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, unit=None, description=None, default=None, **kwargs):
 
@@ -502,10 +503,10 @@ class Participant(NamedElement):
 
 class WorldPosition(Position):
 
-    x = EReference(ordered=True, unique=True, containment=True, derived=False)
-    y = EReference(ordered=True, unique=True, containment=True, derived=False)
-    z = EReference(ordered=True, unique=True, containment=True, derived=False)
-    h = EReference(ordered=True, unique=True, containment=True, derived=False)
+    x = _reference(ordered=True, unique=True, containment=True, derived=False)
+    y = _reference(ordered=True, unique=True, containment=True, derived=False)
+    z = _reference(ordered=True, unique=True, containment=True, derived=False)
+    h = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, x=None, y=None, z=None, h=None, **kwargs):
 
@@ -526,11 +527,11 @@ class WorldPosition(Position):
 
 class LanePosition(Position):
 
-    roadId = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    laneId = EAttribute(eType=EInt, unique=True, derived=False, changeable=True)
-    s = EReference(ordered=True, unique=True, containment=True, derived=False)
-    offset = EReference(ordered=True, unique=True, containment=True, derived=False)
-    h = EReference(ordered=True, unique=True, containment=True, derived=False)
+    roadId = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    laneId = _attribute(eType=EInt, unique=True, derived=False, changeable=True)
+    s = _reference(ordered=True, unique=True, containment=True, derived=False)
+    offset = _reference(ordered=True, unique=True, containment=True, derived=False)
+    h = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, roadId=None, laneId=None, s=None, offset=None, h=None, **kwargs):
 
@@ -554,10 +555,10 @@ class LanePosition(Position):
 
 class RoadPosition(Position):
     """A point in road coordinates: s along the road's reference line, t across it (positive to the left), as OpenSCENARIO's RoadPosition. h, when given, is the heading relative to the road's direction at s."""
-    roadId = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    s = EReference(ordered=True, unique=True, containment=True, derived=False)
-    t = EReference(ordered=True, unique=True, containment=True, derived=False)
-    h = EReference(ordered=True, unique=True, containment=True, derived=False)
+    roadId = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    s = _reference(ordered=True, unique=True, containment=True, derived=False)
+    t = _reference(ordered=True, unique=True, containment=True, derived=False)
+    h = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, roadId=None, s=None, t=None, h=None, **kwargs):
 
@@ -578,10 +579,10 @@ class RoadPosition(Position):
 
 class RelativeLanePosition(Position):
     """dLane lanes across (positive to the left, lane 0 skipped) and ds along the road from the entity's lane, offset from that lane's centre, relative to where the entity is when the position is used (Init: its start; a destination: when the maneuver starts; a condition: each time it is evaluated), as OpenSCENARIO's RelativeLanePosition."""
-    dLane = EAttribute(eType=EInt, unique=True, derived=False, changeable=True, default_value=0)
-    entity = EReference(ordered=True, unique=True, containment=False, derived=False)
-    ds = EReference(ordered=True, unique=True, containment=True, derived=False)
-    offset = EReference(ordered=True, unique=True, containment=True, derived=False)
+    dLane = _attribute(eType=EInt, unique=True, derived=False, changeable=True, default_value=0)
+    entity = _reference(ordered=True, unique=True, containment=False, derived=False)
+    ds = _reference(ordered=True, unique=True, containment=True, derived=False)
+    offset = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, entity=None, dLane=None, ds=None, offset=None, **kwargs):
 
@@ -602,9 +603,9 @@ class RelativeLanePosition(Position):
 
 class RelativeRoadPosition(Position):
     """ds along and dt across the road (positive to the left) from the entity's road coordinate, relative to where the entity is when the position is used (Init: its start; a destination: when the maneuver starts; a condition: each time it is evaluated), as OpenSCENARIO's RelativeRoadPosition."""
-    entity = EReference(ordered=True, unique=True, containment=False, derived=False)
-    ds = EReference(ordered=True, unique=True, containment=True, derived=False)
-    dt = EReference(ordered=True, unique=True, containment=True, derived=False)
+    entity = _reference(ordered=True, unique=True, containment=False, derived=False)
+    ds = _reference(ordered=True, unique=True, containment=True, derived=False)
+    dt = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, entity=None, ds=None, dt=None, **kwargs):
 
@@ -622,11 +623,11 @@ class RelativeRoadPosition(Position):
 
 class RelativeObjectPosition(Position):
     """dx ahead, dy to the left and dz above the entity, in its own frame; h, when given, the heading relative to the entity's; relative to where the entity is when the position is used (Init: its start; a destination: when the maneuver starts; a condition: each time it is evaluated), as OpenSCENARIO's RelativeObjectPosition."""
-    entity = EReference(ordered=True, unique=True, containment=False, derived=False)
-    dx = EReference(ordered=True, unique=True, containment=True, derived=False)
-    dy = EReference(ordered=True, unique=True, containment=True, derived=False)
-    dz = EReference(ordered=True, unique=True, containment=True, derived=False)
-    h = EReference(ordered=True, unique=True, containment=True, derived=False)
+    entity = _reference(ordered=True, unique=True, containment=False, derived=False)
+    dx = _reference(ordered=True, unique=True, containment=True, derived=False)
+    dy = _reference(ordered=True, unique=True, containment=True, derived=False)
+    dz = _reference(ordered=True, unique=True, containment=True, derived=False)
+    h = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, entity=None, dx=None, dy=None, dz=None, h=None, **kwargs):
 
@@ -650,10 +651,10 @@ class RelativeObjectPosition(Position):
 
 class RelativeWorldPosition(Position):
     """dx, dy, dz in world axes from the entity, heading the entity's, relative to where the entity is when the position is used (Init: its start; a destination: when the maneuver starts; a condition: each time it is evaluated), as OpenSCENARIO's RelativeWorldPosition."""
-    entity = EReference(ordered=True, unique=True, containment=False, derived=False)
-    dx = EReference(ordered=True, unique=True, containment=True, derived=False)
-    dy = EReference(ordered=True, unique=True, containment=True, derived=False)
-    dz = EReference(ordered=True, unique=True, containment=True, derived=False)
+    entity = _reference(ordered=True, unique=True, containment=False, derived=False)
+    dx = _reference(ordered=True, unique=True, containment=True, derived=False)
+    dy = _reference(ordered=True, unique=True, containment=True, derived=False)
+    dz = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, entity=None, dx=None, dy=None, dz=None, **kwargs):
 
@@ -674,14 +675,14 @@ class RelativeWorldPosition(Position):
 
 class RoutePosition(Position):
     """A place on a route, as OpenSCENARIO's RoutePosition: the route through its waypoints (two or more, each a position and the strategy that reaches it), then pathS along the route from its first waypoint, in the direction of traffic of that waypoint's lane; with laneId set, laneOffset from the centre of that lane (FromLaneCoordinates), else t from the road's reference line (FromRoadCoordinates)."""
-    routeName = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    closed = EAttribute(eType=EBoolean, unique=True, derived=False,
+    routeName = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    closed = _attribute(eType=EBoolean, unique=True, derived=False,
                         changeable=True, default_value=False)
-    laneId = EAttribute(eType=EIntegerObject, unique=True, derived=False, changeable=True)
-    waypoints = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
-    pathS = EReference(ordered=True, unique=True, containment=True, derived=False)
-    laneOffset = EReference(ordered=True, unique=True, containment=True, derived=False)
-    t = EReference(ordered=True, unique=True, containment=True, derived=False)
+    laneId = _attribute(eType=EIntegerObject, unique=True, derived=False, changeable=True)
+    waypoints = _reference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+    pathS = _reference(ordered=True, unique=True, containment=True, derived=False)
+    laneOffset = _reference(ordered=True, unique=True, containment=True, derived=False)
+    t = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, routeName=None, closed=None, waypoints=None, pathS=None, laneId=None, laneOffset=None, t=None, **kwargs):
 
@@ -711,7 +712,7 @@ class RoutePosition(Position):
 
 class Value(ParameterValue):
 
-    value = EAttribute(eType=EDouble, unique=True, derived=False, changeable=True)
+    value = _attribute(eType=EDouble, unique=True, derived=False, changeable=True)
 
     def __init__(self, *, value=None, **kwargs):
 
@@ -723,9 +724,9 @@ class Value(ParameterValue):
 
 class Range(ParameterValue):
 
-    min = EAttribute(eType=EDouble, unique=True, derived=False, changeable=True)
-    max = EAttribute(eType=EDouble, unique=True, derived=False, changeable=True)
-    step = EAttribute(eType=EDoubleObject, unique=True, derived=False, changeable=True)
+    min = _attribute(eType=EDouble, unique=True, derived=False, changeable=True)
+    max = _attribute(eType=EDouble, unique=True, derived=False, changeable=True)
+    step = _attribute(eType=EDoubleObject, unique=True, derived=False, changeable=True)
 
     def __init__(self, *, min=None, max=None, step=None, **kwargs):
 
@@ -751,7 +752,7 @@ class Distribution(ParameterValue):
 
 class ParameterRef(ParameterValue):
     """Inside a module definition: take the value of one of the module's parameters (its override, or else its default)."""
-    parameter = EReference(ordered=True, unique=True, containment=False, derived=False)
+    parameter = _reference(ordered=True, unique=True, containment=False, derived=False)
 
     def __init__(self, *, parameter=None, **kwargs):
 
@@ -763,18 +764,18 @@ class ParameterRef(ParameterValue):
 
 class RootNode(GraphElement):
     """Where the scenario starts: its name, map, environment, abstraction level, maximum duration and actors."""
-    scenarioName = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    description = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    author = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    date = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    map = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    vehicleCatalog = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    level = EAttribute(eType=AbstractionLevel, unique=True, derived=False,
+    scenarioName = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    description = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    author = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    date = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    map = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    vehicleCatalog = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    level = _attribute(eType=AbstractionLevel, unique=True, derived=False,
                        changeable=True, default_value=AbstractionLevel.functional)
-    maxDuration = EReference(ordered=True, unique=True, containment=True, derived=False)
-    environment = EReference(ordered=True, unique=True, containment=True, derived=False)
-    actors = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
-    declarations = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+    maxDuration = _reference(ordered=True, unique=True, containment=True, derived=False)
+    environment = _reference(ordered=True, unique=True, containment=True, derived=False)
+    actors = _reference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+    declarations = _reference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
 
     def __init__(self, *, scenarioName=None, description=None, author=None, date=None, map=None, vehicleCatalog=None, level=None, maxDuration=None, environment=None, actors=None, declarations=None, **kwargs):
 
@@ -816,7 +817,7 @@ class RootNode(GraphElement):
 
 class EndNode(GraphElement):
     """Where all paths end. It finishes when all (joinAll) or the first (joinOne) of its predecessors have finished, and then the scenario stops."""
-    policy = EAttribute(eType=JoinPolicy, unique=True, derived=False,
+    policy = _attribute(eType=JoinPolicy, unique=True, derived=False,
                         changeable=True, default_value=JoinPolicy.joinAll)
 
     def __init__(self, *, policy=None, **kwargs):
@@ -853,9 +854,9 @@ class OutPort(GraphElement):
 
 class ModuleUse(GraphElement):
     """One use of a module definition inside a scenario or another module. It refers to the definition, usually in a library file, binds each role to an actor of its context and may override parameters."""
-    definition = EReference(ordered=True, unique=True, containment=False, derived=False)
-    bindings = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
-    overrides = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+    definition = _reference(ordered=True, unique=True, containment=False, derived=False)
+    bindings = _reference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+    overrides = _reference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
 
     def __init__(self, *, definition=None, bindings=None, overrides=None, **kwargs):
 
@@ -873,7 +874,7 @@ class ModuleUse(GraphElement):
 
 class ActorRole(Participant):
 
-    allowedKinds = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+    allowedKinds = _reference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
 
     def __init__(self, *, allowedKinds=None, **kwargs):
 
@@ -886,24 +887,24 @@ class ActorRole(Participant):
 @abstract
 class Actor(Participant):
 
-    isEgo = EAttribute(eType=EBoolean, unique=True, derived=False,
+    isEgo = _attribute(eType=EBoolean, unique=True, derived=False,
                        changeable=True, default_value=False)
-    model = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    catalogEntry = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    startPosition = EReference(ordered=True, unique=True, containment=True, derived=False)
-    initialSpeed = EReference(ordered=True, unique=True, containment=True, derived=False)
-    length = EReference(ordered=True, unique=True, containment=True, derived=False)
-    width = EReference(ordered=True, unique=True, containment=True, derived=False)
-    height = EReference(ordered=True, unique=True, containment=True, derived=False)
-    boxCenterX = EReference(ordered=True, unique=True, containment=True, derived=False)
-    trailer = EReference(ordered=True, unique=True, containment=False, derived=False)
-    hitchX = EReference(ordered=True, unique=True, containment=True, derived=False)
-    couplerX = EReference(ordered=True, unique=True, containment=True, derived=False)
-    maxSpeed = EReference(ordered=True, unique=True, containment=True, derived=False)
-    maxAcceleration = EReference(ordered=True, unique=True, containment=True, derived=False)
-    maxDeceleration = EReference(ordered=True, unique=True, containment=True, derived=False)
-    controller = EReference(ordered=True, unique=True, containment=True, derived=False)
-    controllerActivation = EReference(ordered=True, unique=True, containment=True, derived=False)
+    model = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    catalogEntry = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    startPosition = _reference(ordered=True, unique=True, containment=True, derived=False)
+    initialSpeed = _reference(ordered=True, unique=True, containment=True, derived=False)
+    length = _reference(ordered=True, unique=True, containment=True, derived=False)
+    width = _reference(ordered=True, unique=True, containment=True, derived=False)
+    height = _reference(ordered=True, unique=True, containment=True, derived=False)
+    boxCenterX = _reference(ordered=True, unique=True, containment=True, derived=False)
+    trailer = _reference(ordered=True, unique=True, containment=False, derived=False)
+    hitchX = _reference(ordered=True, unique=True, containment=True, derived=False)
+    couplerX = _reference(ordered=True, unique=True, containment=True, derived=False)
+    maxSpeed = _reference(ordered=True, unique=True, containment=True, derived=False)
+    maxAcceleration = _reference(ordered=True, unique=True, containment=True, derived=False)
+    maxDeceleration = _reference(ordered=True, unique=True, containment=True, derived=False)
+    controller = _reference(ordered=True, unique=True, containment=True, derived=False)
+    controllerActivation = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, isEgo=None, model=None, catalogEntry=None, startPosition=None, initialSpeed=None, length=None, width=None, height=None, boxCenterX=None, trailer=None, hitchX=None, couplerX=None, maxSpeed=None, maxAcceleration=None, maxDeceleration=None, controller=None, controllerActivation=None, **kwargs):
 
@@ -963,8 +964,8 @@ class Actor(Participant):
 
 class UniformDistribution(Distribution):
 
-    min = EAttribute(eType=EDouble, unique=True, derived=False, changeable=True)
-    max = EAttribute(eType=EDouble, unique=True, derived=False, changeable=True)
+    min = _attribute(eType=EDouble, unique=True, derived=False, changeable=True)
+    max = _attribute(eType=EDouble, unique=True, derived=False, changeable=True)
 
     def __init__(self, *, min=None, max=None, **kwargs):
 
@@ -979,10 +980,10 @@ class UniformDistribution(Distribution):
 
 class NormalDistribution(Distribution):
 
-    mean = EAttribute(eType=EDouble, unique=True, derived=False, changeable=True)
-    standardDeviation = EAttribute(eType=EDouble, unique=True, derived=False, changeable=True)
-    lowerBound = EAttribute(eType=EDoubleObject, unique=True, derived=False, changeable=True)
-    upperBound = EAttribute(eType=EDoubleObject, unique=True, derived=False, changeable=True)
+    mean = _attribute(eType=EDouble, unique=True, derived=False, changeable=True)
+    standardDeviation = _attribute(eType=EDouble, unique=True, derived=False, changeable=True)
+    lowerBound = _attribute(eType=EDoubleObject, unique=True, derived=False, changeable=True)
+    upperBound = _attribute(eType=EDoubleObject, unique=True, derived=False, changeable=True)
 
     def __init__(self, *, mean=None, standardDeviation=None, lowerBound=None, upperBound=None, **kwargs):
 
@@ -1003,7 +1004,7 @@ class NormalDistribution(Distribution):
 
 class DiscreteDistribution(Distribution):
 
-    options = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+    options = _reference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
 
     def __init__(self, *, options=None, **kwargs):
 
@@ -1016,9 +1017,9 @@ class DiscreteDistribution(Distribution):
 @abstract
 class ActionNode(ModuleElement):
     """A maneuver or condition. The reference actor performs the maneuver or must fulfil the condition; some kinds also need a target actor."""
-    maxRuns = EAttribute(eType=EInt, unique=True, derived=False, changeable=True, default_value=1)
-    referenceActor = EReference(ordered=True, unique=True, containment=False, derived=False)
-    targetActor = EReference(ordered=True, unique=True, containment=False, derived=False)
+    maxRuns = _attribute(eType=EInt, unique=True, derived=False, changeable=True, default_value=1)
+    referenceActor = _reference(ordered=True, unique=True, containment=False, derived=False)
+    targetActor = _reference(ordered=True, unique=True, containment=False, derived=False)
 
     def __init__(self, *, referenceActor=None, targetActor=None, maxRuns=None, **kwargs):
 
@@ -1068,7 +1069,7 @@ class FourWheeler(Actor):
 @abstract
 class Maneuver(ActionNode):
 
-    interrupts = EAttribute(eType=EBoolean, unique=True, derived=False,
+    interrupts = _attribute(eType=EBoolean, unique=True, derived=False,
                             changeable=True, default_value=False)
 
     def __init__(self, *, interrupts=None, **kwargs):
@@ -1082,7 +1083,7 @@ class Maneuver(ActionNode):
 @abstract
 class Condition(ActionNode):
 
-    edge = EAttribute(eType=ConditionEdge, unique=True, derived=False,
+    edge = _attribute(eType=ConditionEdge, unique=True, derived=False,
                       changeable=True, default_value=ConditionEdge.none)
 
     def __init__(self, *, edge=None, **kwargs):
@@ -1095,9 +1096,9 @@ class Condition(ActionNode):
 
 class OpaqueAction(ActionNode):
     """An OpenSCENARIO action or condition that no SceML kind expresses, kept verbatim by sceml import so that nothing is lost: it is drawn, validated as a node and exported back as it was read. The reference actor is the entity it acts on or that triggers it (the ego for a global action)."""
-    xml = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    sourceLine = EAttribute(eType=EIntegerObject, unique=True, derived=False, changeable=True)
-    sourceVersion = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    xml = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    sourceLine = _attribute(eType=EIntegerObject, unique=True, derived=False, changeable=True)
+    sourceVersion = _attribute(eType=EString, unique=True, derived=False, changeable=True)
 
     def __init__(self, *, xml=None, sourceLine=None, sourceVersion=None, **kwargs):
 
@@ -1206,8 +1207,8 @@ class CompositeManeuver(Maneuver):
 
 class InLocationRadius(Condition):
 
-    position = EReference(ordered=True, unique=True, containment=True, derived=False)
-    radius = EReference(ordered=True, unique=True, containment=True, derived=False)
+    position = _reference(ordered=True, unique=True, containment=True, derived=False)
+    radius = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, position=None, radius=None, **kwargs):
 
@@ -1222,15 +1223,15 @@ class InLocationRadius(Condition):
 
 class InVehicleRadius(Condition):
 
-    freespace = EAttribute(eType=EBoolean, unique=True, derived=False,
+    freespace = _attribute(eType=EBoolean, unique=True, derived=False,
                            changeable=True, default_value=False)
-    relativeDistanceType = EAttribute(eType=RelativeDistanceType, unique=True,
+    relativeDistanceType = _attribute(eType=RelativeDistanceType, unique=True,
                                       derived=False, changeable=True, default_value=RelativeDistanceType.euclidean)
-    coordinateSystem = EAttribute(eType=CoordinateSystem, unique=True,
+    coordinateSystem = _attribute(eType=CoordinateSystem, unique=True,
                                   derived=False, changeable=True, default_value=CoordinateSystem.entity)
-    rule = EAttribute(eType=ComparisonRule, unique=True, derived=False,
+    rule = _attribute(eType=ComparisonRule, unique=True, derived=False,
                       changeable=True, default_value=ComparisonRule.lessThan)
-    radius = EReference(ordered=True, unique=True, containment=True, derived=False)
+    radius = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, radius=None, freespace=None, relativeDistanceType=None, coordinateSystem=None, rule=None, **kwargs):
 
@@ -1254,7 +1255,7 @@ class InVehicleRadius(Condition):
 
 class TimeElapsed(Condition):
 
-    duration = EReference(ordered=True, unique=True, containment=True, derived=False)
+    duration = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, duration=None, **kwargs):
 
@@ -1266,9 +1267,9 @@ class TimeElapsed(Condition):
 
 class SpeedCondition(Condition):
 
-    rule = EAttribute(eType=ComparisonRule, unique=True, derived=False,
+    rule = _attribute(eType=ComparisonRule, unique=True, derived=False,
                       changeable=True, default_value=ComparisonRule.greaterThan)
-    speed = EReference(ordered=True, unique=True, containment=True, derived=False)
+    speed = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, rule=None, speed=None, **kwargs):
 
@@ -1283,15 +1284,15 @@ class SpeedCondition(Condition):
 
 class TimeToCollision(Condition):
 
-    rule = EAttribute(eType=ComparisonRule, unique=True, derived=False,
+    rule = _attribute(eType=ComparisonRule, unique=True, derived=False,
                       changeable=True, default_value=ComparisonRule.lessThan)
-    freespace = EAttribute(eType=EBoolean, unique=True, derived=False,
+    freespace = _attribute(eType=EBoolean, unique=True, derived=False,
                            changeable=True, default_value=True)
-    relativeDistanceType = EAttribute(eType=RelativeDistanceType, unique=True,
+    relativeDistanceType = _attribute(eType=RelativeDistanceType, unique=True,
                                       derived=False, changeable=True, default_value=RelativeDistanceType.euclidean)
-    coordinateSystem = EAttribute(eType=CoordinateSystem, unique=True,
+    coordinateSystem = _attribute(eType=CoordinateSystem, unique=True,
                                   derived=False, changeable=True, default_value=CoordinateSystem.entity)
-    time = EReference(ordered=True, unique=True, containment=True, derived=False)
+    time = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, rule=None, time=None, freespace=None, relativeDistanceType=None, coordinateSystem=None, **kwargs):
 
@@ -1324,10 +1325,10 @@ class ControllerManeuver(Maneuver):
 
 class ParameterCondition(Condition):
     """Holds once the scenario's parameter compares by rule with value (OpenSCENARIO's ParameterCondition). A global condition: no actor fulfils it."""
-    parameter = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    rule = EAttribute(eType=ComparisonRule, unique=True, derived=False,
+    parameter = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    rule = _attribute(eType=ComparisonRule, unique=True, derived=False,
                       changeable=True, default_value=ComparisonRule.equalTo)
-    value = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    value = _attribute(eType=EString, unique=True, derived=False, changeable=True)
 
     def __init__(self, *, parameter=None, rule=None, value=None, **kwargs):
 
@@ -1345,10 +1346,10 @@ class ParameterCondition(Condition):
 
 class VariableCondition(Condition):
     """Holds once the scenario's variable compares by rule with value (OpenSCENARIO 1.2+'s VariableCondition). A global condition: no actor fulfils it."""
-    variable = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    rule = EAttribute(eType=ComparisonRule, unique=True, derived=False,
+    variable = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    rule = _attribute(eType=ComparisonRule, unique=True, derived=False,
                       changeable=True, default_value=ComparisonRule.equalTo)
-    value = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    value = _attribute(eType=EString, unique=True, derived=False, changeable=True)
 
     def __init__(self, *, variable=None, rule=None, value=None, **kwargs):
 
@@ -1366,9 +1367,9 @@ class VariableCondition(Condition):
 
 class SetParameter(GlobalAction):
     """Sets the scenario's parameter to value, or adds value to it, or multiplies it by value (OpenSCENARIO's ParameterAction)."""
-    parameter = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    value = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    modify = EAttribute(eType=ModifyRule, unique=True, derived=False,
+    parameter = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    value = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    modify = _attribute(eType=ModifyRule, unique=True, derived=False,
                         changeable=True, default_value=ModifyRule.set)
 
     def __init__(self, *, parameter=None, value=None, modify=None, **kwargs):
@@ -1387,9 +1388,9 @@ class SetParameter(GlobalAction):
 
 class SetVariable(GlobalAction):
     """Sets the scenario's variable to value, or adds value to it, or multiplies it by value (OpenSCENARIO 1.2+'s VariableAction)."""
-    variable = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    value = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    modify = EAttribute(eType=ModifyRule, unique=True, derived=False,
+    variable = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    value = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    modify = _attribute(eType=ModifyRule, unique=True, derived=False,
                         changeable=True, default_value=ModifyRule.set)
 
     def __init__(self, *, variable=None, value=None, modify=None, **kwargs):
@@ -1408,8 +1409,8 @@ class SetVariable(GlobalAction):
 
 class TrafficSignalState(GlobalAction):
     """Switches a traffic signal of the map to a state (OpenSCENARIO's TrafficSignalStateAction)."""
-    signalId = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    state = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    signalId = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    state = _attribute(eType=EString, unique=True, derived=False, changeable=True)
 
     def __init__(self, *, signalId=None, state=None, **kwargs):
 
@@ -1424,8 +1425,8 @@ class TrafficSignalState(GlobalAction):
 
 class TrafficSignalCondition(Condition):
     """Holds once a traffic signal of the map shows the state (OpenSCENARIO's TrafficSignalCondition). A global condition: no actor fulfils it."""
-    signalId = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
-    state = EAttribute(eType=EString, unique=True, derived=False, changeable=True)
+    signalId = _attribute(eType=EString, unique=True, derived=False, changeable=True)
+    state = _attribute(eType=EString, unique=True, derived=False, changeable=True)
 
     def __init__(self, *, signalId=None, state=None, **kwargs):
 
@@ -1440,7 +1441,7 @@ class TrafficSignalCondition(Condition):
 
 class TraveledDistance(Condition):
     """Holds once the reference actor's odometer reaches the distance: every metre it has moved since the simulation started, whichever way (OpenSCENARIO's TraveledDistanceCondition), not since the node's activation."""
-    distance = EReference(ordered=True, unique=True, containment=True, derived=False)
+    distance = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, distance=None, **kwargs):
 
@@ -1452,15 +1453,15 @@ class TraveledDistance(Condition):
 
 class TimeHeadway(Condition):
     """Compares by rule the time headway to the target actor with time: the distance to the target over the reference actor's own speed (OpenSCENARIO's TimeHeadwayCondition); undefined, so never holding, while the target is behind or the actor stands."""
-    rule = EAttribute(eType=ComparisonRule, unique=True, derived=False,
+    rule = _attribute(eType=ComparisonRule, unique=True, derived=False,
                       changeable=True, default_value=ComparisonRule.lessThan)
-    freespace = EAttribute(eType=EBoolean, unique=True, derived=False,
+    freespace = _attribute(eType=EBoolean, unique=True, derived=False,
                            changeable=True, default_value=True)
-    relativeDistanceType = EAttribute(eType=RelativeDistanceType, unique=True,
+    relativeDistanceType = _attribute(eType=RelativeDistanceType, unique=True,
                                       derived=False, changeable=True, default_value=RelativeDistanceType.euclidean)
-    coordinateSystem = EAttribute(eType=CoordinateSystem, unique=True,
+    coordinateSystem = _attribute(eType=CoordinateSystem, unique=True,
                                   derived=False, changeable=True, default_value=CoordinateSystem.entity)
-    time = EReference(ordered=True, unique=True, containment=True, derived=False)
+    time = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, rule=None, time=None, freespace=None, relativeDistanceType=None, coordinateSystem=None, **kwargs):
 
@@ -1493,7 +1494,7 @@ class AppearanceManeuver(Maneuver):
 
 class StandStill(Condition):
     """Holds once the reference actor has stood still for longer than duration, counted from when it stopped, also before the node's activation (OpenSCENARIO's StandStillCondition, as esmini measures it)."""
-    duration = EReference(ordered=True, unique=True, containment=True, derived=False)
+    duration = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, duration=None, **kwargs):
 
@@ -1505,11 +1506,11 @@ class StandStill(Condition):
 
 class AccelerationCondition(Condition):
     """Compares by rule the reference actor's acceleration (negative: braking, for a component) with acceleration (OpenSCENARIO's AccelerationCondition)."""
-    rule = EAttribute(eType=ComparisonRule, unique=True, derived=False,
+    rule = _attribute(eType=ComparisonRule, unique=True, derived=False,
                       changeable=True, default_value=ComparisonRule.greaterThan)
-    direction = EAttribute(eType=AccelerationDirection, unique=True, derived=False,
+    direction = _attribute(eType=AccelerationDirection, unique=True, derived=False,
                            changeable=True, default_value=AccelerationDirection.total)
-    acceleration = EReference(ordered=True, unique=True, containment=True, derived=False)
+    acceleration = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, rule=None, acceleration=None, direction=None, **kwargs):
 
@@ -1536,10 +1537,10 @@ class CouplingManeuver(Maneuver):
 
 class Accelerate(LongitudinalManeuver):
 
-    shape = EAttribute(eType=SpeedShape, unique=True, derived=False,
+    shape = _attribute(eType=SpeedShape, unique=True, derived=False,
                        changeable=True, default_value=SpeedShape.linear)
-    targetSpeed = EReference(ordered=True, unique=True, containment=True, derived=False)
-    rate = EReference(ordered=True, unique=True, containment=True, derived=False)
+    targetSpeed = _reference(ordered=True, unique=True, containment=True, derived=False)
+    rate = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, targetSpeed=None, rate=None, shape=None, **kwargs):
 
@@ -1557,10 +1558,10 @@ class Accelerate(LongitudinalManeuver):
 
 class Decelerate(LongitudinalManeuver):
 
-    shape = EAttribute(eType=SpeedShape, unique=True, derived=False,
+    shape = _attribute(eType=SpeedShape, unique=True, derived=False,
                        changeable=True, default_value=SpeedShape.linear)
-    targetSpeed = EReference(ordered=True, unique=True, containment=True, derived=False)
-    rate = EReference(ordered=True, unique=True, containment=True, derived=False)
+    targetSpeed = _reference(ordered=True, unique=True, containment=True, derived=False)
+    rate = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, targetSpeed=None, rate=None, shape=None, **kwargs):
 
@@ -1578,9 +1579,9 @@ class Decelerate(LongitudinalManeuver):
 
 class Stop(LongitudinalManeuver):
 
-    shape = EAttribute(eType=SpeedShape, unique=True, derived=False,
+    shape = _attribute(eType=SpeedShape, unique=True, derived=False,
                        changeable=True, default_value=SpeedShape.linear)
-    rate = EReference(ordered=True, unique=True, containment=True, derived=False)
+    rate = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, rate=None, shape=None, **kwargs):
 
@@ -1595,7 +1596,7 @@ class Stop(LongitudinalManeuver):
 
 class KeepVelocity(LongitudinalManeuver):
 
-    duration = EReference(ordered=True, unique=True, containment=True, derived=False)
+    duration = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, duration=None, **kwargs):
 
@@ -1607,8 +1608,8 @@ class KeepVelocity(LongitudinalManeuver):
 
 class DriveDistance(LongitudinalManeuver):
 
-    distance = EReference(ordered=True, unique=True, containment=True, derived=False)
-    speed = EReference(ordered=True, unique=True, containment=True, derived=False)
+    distance = _reference(ordered=True, unique=True, containment=True, derived=False)
+    speed = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, distance=None, speed=None, **kwargs):
 
@@ -1624,16 +1625,16 @@ class DriveDistance(LongitudinalManeuver):
 @abstract
 class DistanceKeeping(LongitudinalManeuver):
     """What Follow and Approach share (release 1.5): how they measure the gap and the limits they drive within, as OpenSCENARIO's LongitudinalDistanceAction and its DynamicConstraints say them. An unset limit is the actor's own performance, taken down to the language's gap-keeping limits (3 m/s2 speeding up, 6 m/s2 slowing down), what the export wrote before release 1.5; a set one is held to the actor's performance, as players do."""
-    freespace = EAttribute(eType=EBoolean, unique=True, derived=False,
+    freespace = _attribute(eType=EBoolean, unique=True, derived=False,
                            changeable=True, default_value=False)
-    displacement = EAttribute(eType=LongitudinalDisplacement, unique=True, derived=False,
+    displacement = _attribute(eType=LongitudinalDisplacement, unique=True, derived=False,
                               changeable=True, default_value=LongitudinalDisplacement.trailing)
-    maxAcceleration = EReference(ordered=True, unique=True, containment=True, derived=False)
-    maxDeceleration = EReference(ordered=True, unique=True, containment=True, derived=False)
-    maxSpeed = EReference(ordered=True, unique=True, containment=True, derived=False)
-    maxAccelerationRate = EReference(ordered=True, unique=True, containment=True, derived=False)
-    maxDecelerationRate = EReference(ordered=True, unique=True, containment=True, derived=False)
-    timeGap = EReference(ordered=True, unique=True, containment=True, derived=False)
+    maxAcceleration = _reference(ordered=True, unique=True, containment=True, derived=False)
+    maxDeceleration = _reference(ordered=True, unique=True, containment=True, derived=False)
+    maxSpeed = _reference(ordered=True, unique=True, containment=True, derived=False)
+    maxAccelerationRate = _reference(ordered=True, unique=True, containment=True, derived=False)
+    maxDecelerationRate = _reference(ordered=True, unique=True, containment=True, derived=False)
+    timeGap = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, maxAcceleration=None, maxDeceleration=None, maxSpeed=None, maxAccelerationRate=None, maxDecelerationRate=None, timeGap=None, freespace=None, displacement=None, **kwargs):
 
@@ -1666,15 +1667,15 @@ class DistanceKeeping(LongitudinalManeuver):
 
 class LaneChange(LateralManeuver):
 
-    direction = EAttribute(eType=LaneChangeDirection, unique=True, derived=False,
+    direction = _attribute(eType=LaneChangeDirection, unique=True, derived=False,
                            changeable=True, default_value=LaneChangeDirection.left)
-    lanes = EAttribute(eType=EInt, unique=True, derived=False, changeable=True, default_value=1)
-    targetLane = EAttribute(eType=EIntegerObject, unique=True, derived=False, changeable=True)
-    shape = EAttribute(eType=LaneChangeShape, unique=True, derived=False,
+    lanes = _attribute(eType=EInt, unique=True, derived=False, changeable=True, default_value=1)
+    targetLane = _attribute(eType=EIntegerObject, unique=True, derived=False, changeable=True)
+    shape = _attribute(eType=LaneChangeShape, unique=True, derived=False,
                        changeable=True, default_value=LaneChangeShape.sinusoidal)
-    distance = EReference(ordered=True, unique=True, containment=True, derived=False)
-    duration = EReference(ordered=True, unique=True, containment=True, derived=False)
-    targetOffset = EReference(ordered=True, unique=True, containment=True, derived=False)
+    distance = _reference(ordered=True, unique=True, containment=True, derived=False)
+    duration = _reference(ordered=True, unique=True, containment=True, derived=False)
+    targetOffset = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, direction=None, distance=None, duration=None, lanes=None, targetLane=None, targetOffset=None, shape=None, **kwargs):
 
@@ -1705,8 +1706,8 @@ class LaneChange(LateralManeuver):
 @abstract
 class RoutedManeuver(LateralManeuver):
     """A lateral maneuver whose goal is a destination; it finishes when the actor is within the arrival tolerance of it."""
-    destination = EReference(ordered=True, unique=True, containment=True, derived=False)
-    tolerance = EReference(ordered=True, unique=True, containment=True, derived=False)
+    destination = _reference(ordered=True, unique=True, containment=True, derived=False)
+    tolerance = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, destination=None, tolerance=None, **kwargs):
 
@@ -1721,12 +1722,12 @@ class RoutedManeuver(LateralManeuver):
 
 class FollowTrajectory(CompositeManeuver):
 
-    followingMode = EAttribute(eType=TrajectoryFollowingMode, unique=True, derived=False,
+    followingMode = _attribute(eType=TrajectoryFollowingMode, unique=True, derived=False,
                                changeable=True, default_value=TrajectoryFollowingMode.position)
-    fromFirstWaypoint = EAttribute(eType=EBoolean, unique=True,
+    fromFirstWaypoint = _attribute(eType=EBoolean, unique=True,
                                    derived=False, changeable=True, default_value=False)
-    waypoints = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
-    tolerance = EReference(ordered=True, unique=True, containment=True, derived=False)
+    waypoints = _reference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+    tolerance = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, waypoints=None, tolerance=None, followingMode=None, fromFirstWaypoint=None, **kwargs):
 
@@ -1747,11 +1748,11 @@ class FollowTrajectory(CompositeManeuver):
 
 class Overtake(CompositeManeuver):
 
-    side = EAttribute(eType=LaneChangeDirection, unique=True, derived=False,
+    side = _attribute(eType=LaneChangeDirection, unique=True, derived=False,
                       changeable=True, default_value=LaneChangeDirection.left)
-    speed = EReference(ordered=True, unique=True, containment=True, derived=False)
-    gap = EReference(ordered=True, unique=True, containment=True, derived=False)
-    laneChangeDistance = EReference(ordered=True, unique=True, containment=True, derived=False)
+    speed = _reference(ordered=True, unique=True, containment=True, derived=False)
+    gap = _reference(ordered=True, unique=True, containment=True, derived=False)
+    laneChangeDistance = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, side=None, speed=None, gap=None, laneChangeDistance=None, **kwargs):
 
@@ -1772,10 +1773,10 @@ class Overtake(CompositeManeuver):
 
 class ActivateController(ControllerManeuver):
     """Switches the domains of the actor's controller on or off (OpenSCENARIO's ActivateControllerAction); unset leaves a domain as it is."""
-    lateral = EAttribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
-    longitudinal = EAttribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
-    lighting = EAttribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
-    animation = EAttribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
+    lateral = _attribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
+    longitudinal = _attribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
+    lighting = _attribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
+    animation = _attribute(eType=EBooleanObject, unique=True, derived=False, changeable=True)
 
     def __init__(self, *, lateral=None, longitudinal=None, lighting=None, animation=None, **kwargs):
 
@@ -1796,8 +1797,8 @@ class ActivateController(ControllerManeuver):
 
 class AssignController(ControllerManeuver):
     """Gives the actor another controller (OpenSCENARIO's AssignControllerAction); activation, when set, also switches its domains (1.1+)."""
-    controller = EReference(ordered=True, unique=True, containment=True, derived=False)
-    activation = EReference(ordered=True, unique=True, containment=True, derived=False)
+    controller = _reference(ordered=True, unique=True, containment=True, derived=False)
+    activation = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, controller=None, activation=None, **kwargs):
 
@@ -1812,7 +1813,7 @@ class AssignController(ControllerManeuver):
 
 class OverrideController(ControllerManeuver):
     """Overrides driver inputs of the actor's controller (OpenSCENARIO's OverrideControllerValueAction): throttle, brake, clutch, parking brake, steering wheel or gear, each at most once."""
-    overrides = EReference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
+    overrides = _reference(ordered=True, unique=True, containment=True, derived=False, upper=-1)
 
     def __init__(self, *, overrides=None, **kwargs):
 
@@ -1824,12 +1825,12 @@ class OverrideController(ControllerManeuver):
 
 class LaneOffset(LateralManeuver):
     """Moves the reference actor sideways within its lane to offset m left of the lane's centre (or, with a target actor, offset m left of that actor's lateral position), its lateral acceleration peaking at maxLateralAcc along shape (OpenSCENARIO's LaneOffsetAction). Finished when the offset is reached, as esmini ends the action then (continuous or not)."""
-    shape = EAttribute(eType=LaneChangeShape, unique=True, derived=False,
+    shape = _attribute(eType=LaneChangeShape, unique=True, derived=False,
                        changeable=True, default_value=LaneChangeShape.sinusoidal)
-    continuous = EAttribute(eType=EBoolean, unique=True, derived=False,
+    continuous = _attribute(eType=EBoolean, unique=True, derived=False,
                             changeable=True, default_value=False)
-    offset = EReference(ordered=True, unique=True, containment=True, derived=False)
-    maxLateralAcc = EReference(ordered=True, unique=True, containment=True, derived=False)
+    offset = _reference(ordered=True, unique=True, containment=True, derived=False)
+    maxLateralAcc = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, offset=None, maxLateralAcc=None, shape=None, continuous=None, **kwargs):
 
@@ -1850,14 +1851,14 @@ class LaneOffset(LateralManeuver):
 
 class LightState(AppearanceManeuver):
     """Switches one of the reference actor's lights on, off or to flashing over transitionTime (OpenSCENARIO 1.2's LightStateAction). Finished when the transition is over for on and off; a flashing light never finishes, as players keep its action running until another overrides it."""
-    lightType = EAttribute(eType=VehicleLightType, unique=True, derived=False,
+    lightType = _attribute(eType=VehicleLightType, unique=True, derived=False,
                            changeable=True, default_value=VehicleLightType.lowBeam)
-    mode = EAttribute(eType=LightMode, unique=True, derived=False,
+    mode = _attribute(eType=LightMode, unique=True, derived=False,
                       changeable=True, default_value=LightMode.on)
-    transitionTime = EReference(ordered=True, unique=True, containment=True, derived=False)
-    luminousIntensity = EReference(ordered=True, unique=True, containment=True, derived=False)
-    flashingOnDuration = EReference(ordered=True, unique=True, containment=True, derived=False)
-    flashingOffDuration = EReference(ordered=True, unique=True, containment=True, derived=False)
+    transitionTime = _reference(ordered=True, unique=True, containment=True, derived=False)
+    luminousIntensity = _reference(ordered=True, unique=True, containment=True, derived=False)
+    flashingOnDuration = _reference(ordered=True, unique=True, containment=True, derived=False)
+    flashingOffDuration = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, lightType=None, mode=None, transitionTime=None, luminousIntensity=None, flashingOnDuration=None, flashingOffDuration=None, **kwargs):
 
@@ -1884,13 +1885,13 @@ class LightState(AppearanceManeuver):
 
 class MatchSpeed(LongitudinalManeuver):
     """Brings the reference actor's speed to the target actor's speed plus speedDelta, or times speedFactor (relation), at rate (unset: at once, a step), as OpenSCENARIO's SpeedAction with a RelativeTargetSpeed. It follows the target's speed as it changes and is finished when the speed is first reached; a continuous one keeps the relation afterwards (as Follow keeps its gap) until another maneuver of the actor's speed takes over, as a later speed action overrides a continuous one in players (release 1.4)."""
-    relation = EAttribute(eType=SpeedRelation, unique=True, derived=False,
+    relation = _attribute(eType=SpeedRelation, unique=True, derived=False,
                           changeable=True, default_value=SpeedRelation.delta)
-    continuous = EAttribute(eType=EBoolean, unique=True, derived=False,
+    continuous = _attribute(eType=EBoolean, unique=True, derived=False,
                             changeable=True, default_value=False)
-    speedDelta = EReference(ordered=True, unique=True, containment=True, derived=False)
-    speedFactor = EReference(ordered=True, unique=True, containment=True, derived=False)
-    rate = EReference(ordered=True, unique=True, containment=True, derived=False)
+    speedDelta = _reference(ordered=True, unique=True, containment=True, derived=False)
+    speedFactor = _reference(ordered=True, unique=True, containment=True, derived=False)
+    rate = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, relation=None, speedDelta=None, speedFactor=None, rate=None, continuous=None, **kwargs):
 
@@ -1930,7 +1931,7 @@ class DisconnectTrailer(CouplingManeuver):
 
 class Follow(DistanceKeeping):
 
-    distance = EReference(ordered=True, unique=True, containment=True, derived=False)
+    distance = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, distance=None, **kwargs):
 
@@ -1942,7 +1943,7 @@ class Follow(DistanceKeeping):
 
 class Approach(DistanceKeeping):
 
-    distance = EReference(ordered=True, unique=True, containment=True, derived=False)
+    distance = _reference(ordered=True, unique=True, containment=True, derived=False)
 
     def __init__(self, *, distance=None, **kwargs):
 

@@ -1,5 +1,6 @@
 """The console script's start-up: `sceml --help` imports no model, and `urllib.request` (which
-pyecore imports for http:// URIs) runs only when something uses it (issue 31).
+pyecore imports for http:// URIs) and RestrictedPython (for EOperation bodies) run only when
+something uses them (issue 31).
 
 Each case runs a fresh interpreter, as the `sceml` console script runs (`sceml.cli.main`).
 """
@@ -94,6 +95,41 @@ def test_a_deferred_module_runs_at_a_from_import() -> None:
 def test_a_missing_dunder_name_does_not_run_it() -> None:
     use = "assert not hasattr(urllib.request, '__path__')\nassert 'http.client' not in sys.modules"
     assert _uses(use) == "ok"
+
+
+def test_validate_does_not_run_restricted_python(tmp_path: Path) -> None:
+    # pyecore.ecore takes compile_restricted and safe_builtins from it by name: stand-ins.
+    uis1 = ROOT / "examples" / "uis1-concrete.xmi"
+    watched = ("RestrictedPython", "RestrictedPython.compile", "RestrictedPython.Guards")
+    shown, imported = _run_main(tmp_path, "validate", str(uis1), watched=watched)
+    assert imported == ["RestrictedPython"]
+    assert "0 error(s)" in shown
+
+
+OPERATION = """
+import sys
+from sceml.cli.deferred import defer_unused_imports
+defer_unused_imports()
+import pyecore.ecore as ecore
+assert "RestrictedPython.Guards" not in sys.modules
+Shape = ecore.EClass("Shape")
+Shape.eOperations.append(ecore.EOperation("area"))  # pyecore compiles a body for it
+import RestrictedPython
+assert "RestrictedPython.Guards" in sys.modules
+assert ecore.compile_restricted is not RestrictedPython.compile_restricted
+assert set(ecore.safe_builtins) - {"__builtins__"} == set(RestrictedPython.safe_builtins)
+try:
+    Shape().area()
+except NotImplementedError as raised:
+    print(raised)
+"""
+
+
+def test_an_operation_of_a_dynamic_class_still_gets_its_restricted_body() -> None:
+    ran = subprocess.run(
+        [sys.executable, "-c", OPERATION], capture_output=True, text=True, check=True
+    )
+    assert ran.stdout.strip() == "Method area(self) is not yet implemented"
 
 
 def test_a_library_import_of_sceml_defers_nothing() -> None:

@@ -8,6 +8,7 @@ drawing) is imported only when that command runs, or when `--help` lists them al
 from __future__ import annotations
 
 import atexit
+import gc
 import os
 import sys
 import threading
@@ -62,11 +63,13 @@ def main() -> None:
     """Console-script entry point: run the command, then end the process without teardown."""
     from ..model.collector import ending_with_command
     from .blas_threads import one_blas_thread
+    from .common import freezing_imports_before_the_command
     from .deferred import defer_unused_imports
 
     defer_unused_imports()
     one_blas_thread()
     ending_with_command()
+    freezing_imports_before_the_command()
     try:
         cli()
     except SystemExit as done:
@@ -74,6 +77,11 @@ def main() -> None:
         if done.code is None or isinstance(done.code, int):
             end_now(done.code or 0)
         raise
+    finally:
+        # Reached only on the way to the ordinary exit (end_now does not return when it ends
+        # the process): every object back in the collector's reach, as Python's exit expects,
+        # so that its last collection frees what it always did.
+        gc.unfreeze()
 
 
 def end_now(code: int) -> None:
@@ -85,19 +93,24 @@ def end_now(code: int) -> None:
     what is skipped is only the freeing, which the operating system does at once. A thread or
     child process still running gets the ordinary exit, which waits for it.
     """
-    if any(t.is_alive() and not t.daemon for t in threading.enumerate() if t is not _MAIN):
+    if not _can_end_now():
         return
-    multiprocessing = sys.modules.get("multiprocessing")
-    if multiprocessing is not None and multiprocessing.active_children():
-        return
-    if not _flushed():
-        return  # a closed pipe or stream: the ordinary exit reports it
     atexit._run_exitfuncs()  # what the interpreter's exit would run, in the same order
     _flushed()
     os._exit(code)
 
 
 _MAIN = threading.main_thread()
+
+
+def _can_end_now() -> bool:
+    """No thread or child process still running, and the output flushed."""
+    if any(t.is_alive() and not t.daemon for t in threading.enumerate() if t is not _MAIN):
+        return False
+    multiprocessing = sys.modules.get("multiprocessing")
+    if multiprocessing is not None and multiprocessing.active_children():
+        return False
+    return _flushed()  # False: a closed pipe or stream, which the ordinary exit reports
 
 
 def _flushed() -> bool:

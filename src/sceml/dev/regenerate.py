@@ -1,4 +1,4 @@
-"""Regenerate `generated/` from `metamodel/*.ecore` with the pinned pyecoregen."""
+"""Regenerate `generated/` from `metamodel/*.ecore` with the pinned pyecoregen (sceml.dev.generator)."""
 
 from __future__ import annotations
 
@@ -21,10 +21,11 @@ def project_root() -> Path:
 
 def _generate_into(ecore: Path, out: Path) -> None:
     from pyecore.resources import URI, ResourceSet
-    from pyecoregen.ecore import EcoreGenerator
+
+    from .generator import StaticFeaturesGenerator
 
     package = ResourceSet().get_resource(URI(str(ecore))).contents[0]
-    EcoreGenerator(auto_register_package=False).generate(package, str(out))
+    StaticFeaturesGenerator(auto_register_package=False).generate(package, str(out))
 
 
 def generate(root: Path, *, check: bool = False) -> list[str]:

@@ -7,8 +7,9 @@
     [1]
 
 Why SceML reads OpenDRIVE this way (and not with one of the PyPI readers): docs/map-reader.md.
-`RoadMap` and `load_map` are imported when first used: they bring numpy and pyclothoids, which
-validating a scenario without a map, or starting the CLI, should not pay for.
+`RoadMap` and `load_map` are imported when first used: they bring pyclothoids (and numpy for
+maps with cubic roads, the road index and drawings), which validating a scenario without a map,
+or starting the CLI, should not pay for.
 """
 
 from __future__ import annotations

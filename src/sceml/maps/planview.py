@@ -4,15 +4,21 @@ Lines, arcs and spirals are clothoids (curvature linear in s) and are evaluated 
 the Python binding of Bertolazzi's Clothoids library that scenariogeneration also uses to build
 maps. The cubic shapes (poly3, paramPoly3) are given in their own parameter, not in s, so they are
 tabulated once and looked up by arc length.
+
+Roads of lines, arcs and spirals (every road of the bundled map) are sampled and projected onto
+in plain Python floats, without numpy: reading such a map for `sceml validate` should not cost
+numpy's import, which takes longer than the work. The arithmetic is numpy's, operation by
+operation (`linspace`, `clip`, `unwrap`, the nearest segment), so the answers are the same to the
+last bit as they were with arrays (tests/maps/test_planview_floats.py holds them to numpy's).
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from itertools import accumulate, pairwise
 
-import numpy as np
 import pyclothoids
 
 from .model import Geometry
@@ -35,15 +41,20 @@ def _clothoid(piece: Geometry) -> Callable[[float], Pose]:
         k1 = float(piece.params.get("curvEnd", 0.0))
         dk = (k1 - k0) / piece.length if piece.length > 0 else 0.0
     curve = pyclothoids.Clothoid.StandardParams(piece.x, piece.y, piece.hdg, k0, dk, piece.length)
+    # The compiled curve's own methods, taken once: the wrapper finds them by __getattr__ at
+    # every call, and a road is evaluated at every sample.
+    x_at, y_at, heading_at = curve.X, curve.Y, curve.Theta
 
     def pose(ds: float) -> Pose:
-        return float(curve.X(ds)), float(curve.Y(ds)), float(curve.Theta(ds))
+        return float(x_at(ds)), float(y_at(ds)), float(heading_at(ds))
 
     return pose
 
 
 def _cubic(piece: Geometry) -> Callable[[float], Pose]:
     """poly3 (v over u) and paramPoly3 (u and v over p), parametrised by arc length."""
+    import numpy as np  # only maps with cubic roads pay for it
+
     p = piece.params
 
     def coefficients(prefix: str) -> tuple[float, float, float, float]:
@@ -90,7 +101,10 @@ class Projection:
 
 
 class ReferenceLine:
-    """The plan view of one road: pose at s, sampled polyline and projection."""
+    """The plan view of one road: pose at s, sampled polyline and projection.
+
+    `s`, `xy` and `heading` are the samples (lists of floats, xy as (x, y) pairs).
+    """
 
     def __init__(self, geometries: tuple[Geometry, ...], length: float) -> None:
         self.length = length
@@ -103,15 +117,24 @@ class ReferenceLine:
         samples: list[float] = []
         for start, piece_length in zip(self._starts, self._lengths, strict=True):
             count = max(2, math.ceil(piece_length / SAMPLE_STEP) + 1)
-            samples.extend(np.linspace(start, start + piece_length, count)[:-1].tolist())
+            samples.extend(linspace(start, start + piece_length, count)[:-1])
         samples.append(length)
-        self.s = np.clip(np.array(samples), 0.0, length)
-        poses = np.array([self.pose(float(s)) for s in self.s])
-        self.xy = poses[:, :2]
-        self.heading = poses[:, 2]
+        self.s = [clip(value, 0.0, length) for value in samples]
+        poses = [self.pose(s) for s in self.s]
+        self.xy = [(x, y) for x, y, _ in poses]
+        self.heading = [heading for _, _, heading in poses]
         # Mean curvature of each polyline segment: the Newton step of `project` needs it.
-        spans = np.maximum(np.diff(self.s), 1e-12)
-        self._curvature = np.diff(np.unwrap(self.heading)) / spans
+        turns = unwrap(self.heading)
+        self._curvature = [
+            (h1 - h0) / max(s1 - s0, 1e-12)
+            for (s0, s1), (h0, h1) in zip(pairwise(self.s), pairwise(turns), strict=True)
+        ]
+        # Each polyline segment as its start and its step, with the step's squared length
+        # (1 for a segment of no length, as the projection divides by it).
+        self._segments = [
+            (ax, ay, bx - ax, by - ay, (bx - ax) * (bx - ax) + (by - ay) * (by - ay) or 1.0)
+            for (ax, ay), (bx, by) in pairwise(self.xy)
+        ]
 
     def pose(self, s: float) -> Pose:
         """Point and heading of the reference line at `s` (clamped to the road)."""
@@ -124,19 +147,12 @@ class ReferenceLine:
 
     def project(self, x: float, y: float) -> Projection:
         """The nearest point of the reference line to (x, y), as s and signed t (left positive)."""
-        point = np.array([x, y])
-        a, b = self.xy[:-1], self.xy[1:]
-        d = b - a
-        squared = np.einsum("ij,ij->i", d, d)
-        squared[squared == 0.0] = 1.0
-        u = np.clip(np.einsum("ij,ij->i", point - a, d) / squared, 0.0, 1.0)
-        nearest = a + u[:, None] * d
-        index = int(np.argmin(np.einsum("ij,ij->i", nearest - point, nearest - point)))
-        s = float(self.s[index] + u[index] * (self.s[index + 1] - self.s[index]))
+        index, fraction = self._nearest_segment(x, y)
+        s = self.s[index] + fraction * (self.s[index + 1] - self.s[index])
         # Newton on the along-track residual. Its derivative is -(1 - k*t): a point t off a line
         # of curvature k moves 1/(1 - k*t) metres of s per metre along, so a plain `s += along`
         # converges only by a factor k*t per step (up to 0.8 on the junction's tight lanes).
-        curvature = float(self._curvature[index])
+        curvature = self._curvature[index]
         for _ in range(_NEWTON_STEPS):
             px, py, h = self.pose(s)
             along = (x - px) * math.cos(h) + (y - py) * math.sin(h)
@@ -151,3 +167,52 @@ class ReferenceLine:
         along = (x - px) * math.cos(h) + (y - py) * math.sin(h)
         t = -(x - px) * math.sin(h) + (y - py) * math.cos(h)
         return Projection(s, t, abs(along))
+
+    def _nearest_segment(self, x: float, y: float) -> tuple[int, float]:
+        """The polyline segment nearest to (x, y), the first of equals, and where along it
+        (0 to 1) the nearest point lies."""
+        best, index, fraction = math.inf, 0, 0.0
+        for i, (ax, ay, dx, dy, squared) in enumerate(self._segments):
+            u = ((x - ax) * dx + (y - ay) * dy) / squared
+            u = 0.0 if u < 0.0 else 1.0 if u > 1.0 else u  # clip(u, 0.0, 1.0), inline: the hot loop
+            nx = ax + u * dx - x
+            ny = ay + u * dy - y
+            distance = nx * nx + ny * ny
+            if distance < best:
+                best, index, fraction = distance, i, u
+        return index, fraction
+
+
+def clip(value: float, low: float, high: float) -> float:
+    """`value` held between `low` and `high` as numpy.clip does it: a value equal to a bound is
+    kept (-0.0 stays -0.0 against a bound of 0.0)."""
+    return low if value < low else high if value > high else value
+
+
+def linspace(start: float, stop: float, count: int) -> list[float]:
+    """`count` (>= 2) evenly spaced values from `start` to `stop`, as numpy.linspace gives them:
+    i * step + start, the last one `stop` itself."""
+    div = count - 1
+    delta = stop - start
+    step = delta / div
+    if step == 0:  # numpy's order for a step too small to be a float (gh-5437)
+        values = [i / div * delta + start for i in range(count)]
+    else:
+        values = [i * step + start for i in range(count)]
+    values[-1] = stop
+    return values
+
+
+def unwrap(angles: Sequence[float]) -> list[float]:
+    """The angles with every jump of more than pi between neighbours taken the short way round,
+    as numpy.unwrap computes them (its remainder is Python's % for floats)."""
+    if not angles:
+        return []
+    corrections = []
+    for before, after in pairwise(angles):
+        jump = after - before
+        wrapped = (jump + math.pi) % (2 * math.pi) - math.pi
+        if wrapped == -math.pi and jump > 0:
+            wrapped = math.pi
+        corrections.append(0.0 if abs(jump) < math.pi else wrapped - jump)
+    return [angles[0]] + [a + c for a, c in zip(angles[1:], accumulate(corrections), strict=True)]

@@ -15,9 +15,7 @@ import os
 from collections.abc import Iterable
 from functools import cached_property
 from pathlib import Path
-from typing import Any
-
-import numpy as np
+from typing import TYPE_CHECKING, Any
 
 from ..files.safefiles import check_inside
 from .model import (
@@ -33,6 +31,9 @@ from .model import (
 )
 from .planview import SAMPLE_STEP, ReferenceLine
 from .reader import MapError, parse_opendrive
+
+if TYPE_CHECKING:
+    import numpy as np
 
 #: Slack of the road index (m) beyond a road's reach and twice the tolerance: half the sample
 #: step between the sampled polyline and the curve, and lanes that widen between two samples.
@@ -205,6 +206,7 @@ class RoadMap:
         those lines without projecting onto each road. The margin covers the half sample step
         between the polyline and the curve and lanes that widen between two samples.
         """
+        import numpy as np
         import shapely  # about 10 ms, and only for maps that are asked about points
 
         roads, tree, reach = self._index
@@ -222,6 +224,7 @@ class RoadMap:
     @cached_property
     def _index(self) -> tuple[list[Road], Any, np.ndarray]:
         """The roads, an STRtree of their sampled reference lines and each road's reach."""
+        import numpy as np
         import shapely
 
         roads = list(self.roads.values())
@@ -258,6 +261,8 @@ class RoadMap:
         A whole road drawn lane by lane evaluated the reference line and every lane's width
         once per lane at each sample; here each sample is evaluated once for all the lanes.
         """
+        import numpy as np  # the drawings' arrays; reading a map and its positions need none
+
         wanted = [lane.id for lane in section.lanes()] if lane_ids is None else list(lane_ids)
         end = _section_end(road, section)
         count = max(2, math.ceil((end - section.s) / SAMPLE_STEP) + 1)
@@ -278,6 +283,8 @@ class RoadMap:
 
     def lane_centre_line(self, road: Road, section: LaneSection, lane_id: int) -> np.ndarray:
         """The lane's centre line (N x 2) in the direction of increasing s."""
+        import numpy as np
+
         end = _section_end(road, section)
         count = max(2, math.ceil((end - section.s) / SAMPLE_STEP) + 1)
         points = []
@@ -312,9 +319,9 @@ class RoadMap:
         for road in self.roads.values():
             line = self.reference_line(road.id)
             reach = self._reach[road.id]
-            low = line.xy.min(axis=0) - reach
-            high = line.xy.max(axis=0) + reach
-            boxes[road.id] = (float(low[0]), float(low[1]), float(high[0]), float(high[1]))
+            xs = [x for x, _ in line.xy]
+            ys = [y for _, y in line.xy]
+            boxes[road.id] = (min(xs) - reach, min(ys) - reach, max(xs) + reach, max(ys) + reach)
         return boxes
 
     def bounds(self) -> tuple[float, float, float, float]:
