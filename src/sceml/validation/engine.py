@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator
+from collections.abc import Hashable, Iterable, Iterator
 
-from pyecore.ecore import EObject
+from pyecore.ecore import EClass, EObject
 
 import scemlmodel as scm
 
@@ -13,7 +13,9 @@ from ..model.collector import collector_paused
 from ..model.documents import Document
 from ..model.locating import model_path, uri_fragment
 from ..model.traversal import all_contents
+from ..modules.bindings import binding_key
 from .context import Context
+from .edits import Aspect
 from .limits import Limits
 from .registry import REGISTRY, Finding, Registry, Rule
 
@@ -56,24 +58,78 @@ def iter_diagnostics(
 
 
 def through_modules(
-    context: Context, document: Document | None, registry: Registry = REGISTRY
+    context: Context,
+    document: Document | None,
+    registry: Registry = REGISTRY,
+    *,
+    share: bool = True,
 ) -> Iterator[Diagnostic]:
     """The `through_modules` rules on the nodes the scenario's module uses expand to.
 
     Values a module use gives its internals exist only once expanded; they are checked there and
     reported at the use, where an engineer can change them. Nothing for a model without uses.
+
+    Uses of a definition with the same binding (the same actors, equal values: `binding_key`)
+    expand to copies that differ only in their names and places in the graph, so a rule that
+    reads neither (`shares_clean_runs`) and found nothing on one use's copy of a node finds
+    nothing on another's: it runs once per distinct binding. Where it found something it runs
+    on every use, whose findings name that use's copies. `share=False` runs every rule on every
+    use (what the tests compare against).
     """
     flat = context.flat()
     if flat is None:
         return
+    by_class: dict[EClass, tuple[tuple[Rule, bool], ...]] = {}
+    keys: dict[tuple[scm.ModuleUse, ...], Hashable] = {}
+    clean: set[tuple[str, EObject, int, Hashable]] = set()
     for node in flat.nodes:
-        if not flat.from_module(node):
-            continue
-        origin = flat.origin(node)
-        for obj in (node, *all_contents(node)):
-            for rule in registry.rules_for(obj.eClass):
-                if rule.through_modules:
-                    yield from run_rule(rule, obj, context, document, at=origin)
+        origin = flat.origins.get(node)
+        if origin is None or not origin.uses:
+            continue  # a node of the scenario's own graph: checked where it is
+        at = origin.in_scenario
+        binding = _binding(origin.uses, keys) if share else None
+        for index, obj in enumerate((node, *all_contents(node))):
+            rules = by_class.get(obj.eClass)
+            if rules is None:
+                rules = by_class[obj.eClass] = tuple(
+                    (rule, shares_clean_runs(rule))
+                    for rule in registry.rules_for(obj.eClass)
+                    if rule.through_modules
+                )
+            for rule, shared in rules:
+                if binding is None or not shared:
+                    yield from run_rule(rule, obj, context, document, at=at)
+                    continue
+                key = (rule.code, origin.element, index, binding)
+                if key in clean:
+                    continue
+                found = run_rule(rule, obj, context, document, at=at)
+                if found:
+                    yield from found
+                else:
+                    clean.add(key)
+
+
+#: What a rule must not read for its clean run on one use's copies to hold for another use of
+#: the same binding: the graph around the node (the expanded flows) and names.
+_PER_USE = Aspect.STRUCTURE | Aspect.NAMES
+
+
+def shares_clean_runs(rule: Rule) -> bool:
+    """Whether a rule's finding nothing on a copy holds for every use of the same binding: it
+    declares what it reads, and that is neither the graph's shape nor names."""
+    return rule.reads is not None and not rule.reads.aspects & _PER_USE
+
+
+def _binding(
+    uses: tuple[scm.ModuleUse, ...], keys: dict[tuple[scm.ModuleUse, ...], Hashable]
+) -> Hashable | None:
+    if uses not in keys:
+        try:
+            keys[uses] = binding_key(uses)
+        except Exception:  # a use the key cannot read: its copies are checked on their own
+            keys[uses] = None
+    return keys[uses]
 
 
 def validate(model: EObject, **options: object) -> list[Diagnostic]:
