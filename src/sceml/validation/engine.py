@@ -82,12 +82,18 @@ def through_modules(
     by_class: dict[EClass, tuple[tuple[Rule, bool], ...]] = {}
     keys: dict[tuple[scm.ModuleUse, ...], Hashable] = {}
     clean: set[tuple[str, EObject, int, Hashable]] = set()
+    # Copies of a definition's node on which every rule that ran was shared and found nothing:
+    # another use of the same binding need not walk its copy at all.
+    clean_nodes: set[tuple[EObject, Hashable]] = set()
     for node in flat.nodes:
         origin = flat.origins.get(node)
         if origin is None or not origin.uses:
             continue  # a node of the scenario's own graph: checked where it is
         at = origin.in_scenario
         binding = _binding(origin.uses, keys) if share else None
+        if binding is not None and (origin.element, binding) in clean_nodes:
+            continue
+        all_clean = binding is not None
         for index, obj in enumerate((node, *all_contents(node))):
             rules = by_class.get(obj.eClass)
             if rules is None:
@@ -98,6 +104,7 @@ def through_modules(
                 )
             for rule, shared in rules:
                 if binding is None or not shared:
+                    all_clean = False
                     yield from run_rule(rule, obj, context, document, at=at)
                     continue
                 key = (rule.code, origin.element, index, binding)
@@ -105,9 +112,12 @@ def through_modules(
                     continue
                 found = run_rule(rule, obj, context, document, at=at)
                 if found:
+                    all_clean = False
                     yield from found
                 else:
                     clean.add(key)
+        if all_clean:
+            clean_nodes.add((origin.element, binding))
 
 
 #: What a rule must not read for its clean run on one use's copies to hold for another use of
