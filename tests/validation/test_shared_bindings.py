@@ -17,7 +17,7 @@ import tempfile
 from pathlib import Path
 
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 import scemlmodel as scm
@@ -84,6 +84,10 @@ VARIANTS = (
     (1, 0, 4.0, PLACES[1]),
     (0, 0, 1.5, PLACES[1]),
     (2, 2, -3.0, PLACES[0]),
+    # The same values for actors of other kinds (a bicycle, a truck): limits differ by kind.
+    (3, 0, 6.0, PLACES[0]),
+    (0, 0, 6.0, PLACES[0]),
+    (3, 3, 40.0, PLACES[0]),
 )
 
 # One use: which module, which variant, and whether to break it (a role left unbound, a
@@ -105,10 +109,12 @@ def _scenario(
     walkers = [
         b.actor("Pedestrian", f"walker{i}", start=lane(4, 2, 2.0 + i), speed=1.0) for i in range(3)
     ]
+    walkers.append(b.actor("Bicycle", "bike", start=lane(4, 2, 6.0), speed=1.0))
     cars = [
         b.actor("Car", f"car{i}", ego=i == 0, start=lane(3, 1, 20.0 + 10 * i), speed=5.0)
         for i in range(3)
     ]
+    cars.append(b.actor("Truck", "truck", start=lane(3, 1, 60.0), speed=5.0))
     previous: scm.GraphElement = b.root
     for kind, first, second, speed, (x, y), broken in drawn:
         if kind == "Crossing":
@@ -150,8 +156,13 @@ def _same(root: object, document: object = None) -> list[Diagnostic]:
     return shared
 
 
-@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=100, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(st.lists(uses, min_size=1, max_size=8))
+# Always tried besides the random draws: one binding's values on a bicycle, then on a pedestrian
+# (over its limit); one binding used twice in a row (the second crossing starts where the first
+# left the walker: R007 differs).
+@example([("Crossing", *VARIANTS[5], ""), ("Crossing", *VARIANTS[6], "")])
+@example([("Crossing", *VARIANTS[0], ""), ("Crossing", *VARIANTS[0], "")])
 def test_shared_runs_report_what_every_use_reports(drawn: list) -> None:
     b, _ = _scenario(drawn)
     _same(b.scenario)

@@ -3,9 +3,9 @@ copies that hold the same values and name the same actors, and differ only in th
 in where they sit in the scenario's graph.
 
 Validation uses it to check a definition's nodes once per distinct binding rather than once per
-use (`sceml.validation.engine.through_modules`). The key is conservative: whatever it cannot
-compare exactly (a proxy, an object it does not know) makes it unique, so two uses share a key
-only when their copies are certainly alike.
+use (`sceml.validation.engine.through_modules`). The key is conservative: actors and the objects
+values refer to count by identity, and a value that is a proxy makes its use's key unique, so
+two uses share a key only when their copies are certainly alike.
 """
 
 from __future__ import annotations

@@ -80,44 +80,62 @@ def through_modules(
     if flat is None:
         return
     by_class: dict[EClass, tuple[tuple[Rule, bool], ...]] = {}
-    keys: dict[tuple[scm.ModuleUse, ...], Hashable] = {}
-    clean: set[tuple[str, EObject, int, Hashable]] = set()
-    # Copies of a definition's node on which every rule that ran was shared and found nothing:
-    # another use of the same binding need not walk its copy at all.
-    clean_nodes: set[tuple[EObject, Hashable]] = set()
+    bindings = _Bindings()
+    # For each definition's node and binding, the rule runs on its copy (numbered in the order
+    # they are made: the same for every use of that binding) that found nothing, as bits.
+    clean: dict[tuple[EObject, int], int] = {}
+    # Those on which every rule that ran was shared and found nothing: another use of the same
+    # binding need not walk its copy at all.
+    clean_nodes: set[tuple[EObject, int]] = set()
     for node in flat.nodes:
         origin = flat.origins.get(node)
         if origin is None or not origin.uses:
             continue  # a node of the scenario's own graph: checked where it is
         at = origin.in_scenario
-        binding = _binding(origin.uses, keys) if share else None
-        if binding is not None and (origin.element, binding) in clean_nodes:
+        binding = bindings.number(origin.uses) if share else None
+        if binding is None:
+            for obj in (node, *all_contents(node)):
+                for rule, _ in _through_rules(obj.eClass, registry, by_class):
+                    yield from run_rule(rule, obj, context, document, at=at)
             continue
-        all_clean = binding is not None
-        for index, obj in enumerate((node, *all_contents(node))):
-            rules = by_class.get(obj.eClass)
-            if rules is None:
-                rules = by_class[obj.eClass] = tuple(
-                    (rule, shares_clean_runs(rule))
-                    for rule in registry.rules_for(obj.eClass)
-                    if rule.through_modules
-                )
-            for rule, shared in rules:
-                if binding is None or not shared:
+        copy_of = (origin.element, binding)
+        if copy_of in clean_nodes:
+            continue
+        known = clean.get(copy_of, 0)
+        found_clean = 0
+        all_clean = True
+        run = 0
+        for obj in (node, *all_contents(node)):
+            for rule, shared in _through_rules(obj.eClass, registry, by_class):
+                bit = 1 << run
+                run += 1
+                if not shared:
                     all_clean = False
                     yield from run_rule(rule, obj, context, document, at=at)
-                    continue
-                key = (rule.code, origin.element, index, binding)
-                if key in clean:
-                    continue
-                found = run_rule(rule, obj, context, document, at=at)
-                if found:
+                elif known & bit:
+                    found_clean |= bit
+                elif found := run_rule(rule, obj, context, document, at=at):
                     all_clean = False
                     yield from found
                 else:
-                    clean.add(key)
+                    found_clean |= bit
+        clean[copy_of] = known | found_clean
         if all_clean:
-            clean_nodes.add((origin.element, binding))
+            clean_nodes.add(copy_of)
+
+
+def _through_rules(
+    eclass: EClass, registry: Registry, by_class: dict[EClass, tuple[tuple[Rule, bool], ...]]
+) -> tuple[tuple[Rule, bool], ...]:
+    """The `through_modules` rules of a metaclass, each with whether it shares clean runs."""
+    rules = by_class.get(eclass)
+    if rules is None:
+        rules = by_class[eclass] = tuple(
+            (rule, shares_clean_runs(rule))
+            for rule in registry.rules_for(eclass)
+            if rule.through_modules
+        )
+    return rules
 
 
 #: What a rule must not read for its clean run on one use's copies to hold for another use of
@@ -131,15 +149,24 @@ def shares_clean_runs(rule: Rule) -> bool:
     return rule.reads is not None and not rule.reads.aspects & _PER_USE
 
 
-def _binding(
-    uses: tuple[scm.ModuleUse, ...], keys: dict[tuple[scm.ModuleUse, ...], Hashable]
-) -> Hashable | None:
-    if uses not in keys:
-        try:
-            keys[uses] = binding_key(uses)
-        except Exception:  # a use the key cannot read: its copies are checked on their own
-            keys[uses] = None
-    return keys[uses]
+class _Bindings:
+    """Each chain of uses numbered by its binding (`binding_key`): uses with the same key get the
+    same number; only the distinct keys are kept, not one per use."""
+
+    def __init__(self) -> None:
+        self._by_uses: dict[tuple[scm.ModuleUse, ...], int | None] = {}
+        self._by_key: dict[Hashable, int] = {}
+
+    def number(self, uses: tuple[scm.ModuleUse, ...]) -> int | None:
+        """The binding's number; None for a use the key cannot read (checked on its own)."""
+        if uses not in self._by_uses:
+            try:
+                key = binding_key(uses)
+            except Exception:  # e.g. a broken model pyecore refuses to read
+                self._by_uses[uses] = None
+            else:
+                self._by_uses[uses] = self._by_key.setdefault(key, len(self._by_key))
+        return self._by_uses[uses]
 
 
 def validate(model: EObject, **options: object) -> list[Diagnostic]:
