@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator
+from collections.abc import Hashable, Iterable, Iterator
 
-from pyecore.ecore import EObject
+from pyecore.ecore import EClass, EObject
 
 import scemlmodel as scm
 
@@ -13,7 +13,9 @@ from ..model.collector import collector_paused
 from ..model.documents import Document
 from ..model.locating import model_path, uri_fragment
 from ..model.traversal import all_contents
+from ..modules.bindings import binding_key
 from .context import Context
+from .edits import Aspect
 from .limits import Limits
 from .registry import REGISTRY, Finding, Registry, Rule
 
@@ -56,24 +58,115 @@ def iter_diagnostics(
 
 
 def through_modules(
-    context: Context, document: Document | None, registry: Registry = REGISTRY
+    context: Context,
+    document: Document | None,
+    registry: Registry = REGISTRY,
+    *,
+    share: bool = True,
 ) -> Iterator[Diagnostic]:
     """The `through_modules` rules on the nodes the scenario's module uses expand to.
 
     Values a module use gives its internals exist only once expanded; they are checked there and
     reported at the use, where an engineer can change them. Nothing for a model without uses.
+
+    Uses of a definition with the same binding (the same actors, equal values: `binding_key`)
+    expand to copies that differ only in their names and places in the graph, so a rule that
+    reads neither (`shares_clean_runs`) and found nothing on one use's copy of a node finds
+    nothing on another's: it runs once per distinct binding. Where it found something it runs
+    on every use, whose findings name that use's copies. `share=False` runs every rule on every
+    use (what the tests compare against).
     """
     flat = context.flat()
     if flat is None:
         return
+    by_class: dict[EClass, tuple[tuple[Rule, bool], ...]] = {}
+    bindings = _Bindings()
+    # For each definition's node and binding, the rule runs on its copy (numbered in the order
+    # they are made: the same for every use of that binding) that found nothing, as bits.
+    clean: dict[tuple[EObject, int], int] = {}
+    # Those on which every rule that ran was shared and found nothing: another use of the same
+    # binding need not walk its copy at all.
+    clean_nodes: set[tuple[EObject, int]] = set()
     for node in flat.nodes:
-        if not flat.from_module(node):
+        origin = flat.origins.get(node)
+        if origin is None or not origin.uses:
+            continue  # a node of the scenario's own graph: checked where it is
+        at = origin.in_scenario
+        binding = bindings.number(origin.uses) if share else None
+        if binding is None:
+            for obj in (node, *all_contents(node)):
+                for rule, _ in _through_rules(obj.eClass, registry, by_class):
+                    yield from run_rule(rule, obj, context, document, at=at)
             continue
-        origin = flat.origin(node)
+        copy_of = (origin.element, binding)
+        if copy_of in clean_nodes:
+            continue
+        known = clean.get(copy_of, 0)
+        found_clean = 0
+        all_clean = True
+        run = 0
         for obj in (node, *all_contents(node)):
-            for rule in registry.rules_for(obj.eClass):
-                if rule.through_modules:
-                    yield from run_rule(rule, obj, context, document, at=origin)
+            for rule, shared in _through_rules(obj.eClass, registry, by_class):
+                bit = 1 << run
+                run += 1
+                if not shared:
+                    all_clean = False
+                    yield from run_rule(rule, obj, context, document, at=at)
+                elif known & bit:
+                    found_clean |= bit
+                elif found := run_rule(rule, obj, context, document, at=at):
+                    all_clean = False
+                    yield from found
+                else:
+                    found_clean |= bit
+        clean[copy_of] = known | found_clean
+        if all_clean:
+            clean_nodes.add(copy_of)
+
+
+def _through_rules(
+    eclass: EClass, registry: Registry, by_class: dict[EClass, tuple[tuple[Rule, bool], ...]]
+) -> tuple[tuple[Rule, bool], ...]:
+    """The `through_modules` rules of a metaclass, each with whether it shares clean runs."""
+    rules = by_class.get(eclass)
+    if rules is None:
+        rules = by_class[eclass] = tuple(
+            (rule, shares_clean_runs(rule))
+            for rule in registry.rules_for(eclass)
+            if rule.through_modules
+        )
+    return rules
+
+
+#: What a rule must not read for its clean run on one use's copies to hold for another use of
+#: the same binding: the graph around the node (the expanded flows) and names.
+_PER_USE = Aspect.STRUCTURE | Aspect.NAMES
+
+
+def shares_clean_runs(rule: Rule) -> bool:
+    """Whether a rule's finding nothing on a copy holds for every use of the same binding: it
+    declares what it reads, and that is neither the graph's shape nor names."""
+    return rule.reads is not None and not rule.reads.aspects & _PER_USE
+
+
+class _Bindings:
+    """Each chain of uses numbered by its binding (`binding_key`): uses with the same key get the
+    same number; only the distinct keys are kept, not one per use."""
+
+    def __init__(self) -> None:
+        self._by_uses: dict[tuple[scm.ModuleUse, ...], int | None] = {}
+        self._by_key: dict[Hashable, int] = {}
+
+    def number(self, uses: tuple[scm.ModuleUse, ...]) -> int | None:
+        """The binding's number; None for a use the key cannot read (checked on its own)."""
+        if uses not in self._by_uses:
+            try:
+                key = binding_key(uses)
+            except Exception:  # e.g. a broken model pyecore refuses to read
+                self._by_uses[uses] = None
+            else:
+                self._by_uses[uses] = self._by_key.setdefault(key, len(self._by_key))
+        return self._by_uses[uses]
 
 
 def validate(model: EObject, **options: object) -> list[Diagnostic]:
