@@ -541,3 +541,28 @@ def test_changes_are_classified_by_feature_and_place() -> None:
     # A value holding a parameter reference: expanding module uses checks every reference.
     reference = scm.ParameterRef(parameter=scm.ModuleParameter(name="p"))
     assert Aspect.ROLES in aspects_of(Change(node, "targetSpeed", None, reference))
+
+
+def test_an_actors_own_limit_reaches_the_module_uses_it_performs() -> None:
+    """Lowering an actor's own maxSpeed is a change to no aspect; the walker's CrossingManeuver
+    uses must still be checked again (L005 through the modules), as a full run finds."""
+    with copied_examples() as folder:
+        session = EditorSession()
+        session.open(generated(folder))
+        walker = next(a for a in session.view()["actors"] if a.get("name") == "walker")
+        session.apply(
+            [
+                {
+                    "op": "set_actor_parameter",
+                    "actor": walker["id"],
+                    "field": "maxSpeed",
+                    "value": {"type": "value", "value": 0.0},
+                }
+            ]
+        )
+        found = keyed(session.diagnostics())
+        assert found == full_run(session)
+        assert any(
+            d[0] == "SCEML-L005" and "walker.CrossingManeuver_1.Accelerate_1.targetSpeed" in d[2]
+            for d in found
+        )

@@ -119,6 +119,12 @@ class IncrementalValidator:
         self._through_always = any(
             rule.through_modules and rule.reads is None for rule in registry.rules()
         )
+        # A rule of the pass that reads its node's actors (L005 reads their own limits) sees a
+        # change to an actor's own values, which no aspect names, through the bound copies.
+        self._through_actors = any(
+            rule.through_modules and rule.reads is not None and rule.reads.scope & Scope.ACTORS
+            for rule in registry.rules()
+        )
         self._all_classified = all(rule.reads is not None for rule in registry.rules())
         self._results: dict[EObject, _Entry] = {}
         self._through: Findings = ()
@@ -193,7 +199,12 @@ class IncrementalValidator:
             for findings in entry[1] or ():
                 found.extend(unique(findings, seen))
         self._results = results
-        if full or self._through_always or impact.aspects & self._through_reads:
+        if (
+            full
+            or self._through_always
+            or impact.aspects & self._through_reads
+            or (self._through_actors and impact.participants)
+        ):
             self._through = tuple(through_modules(context, self.document, self.registry))
         else:
             self._through = run.relocated(self._through)
