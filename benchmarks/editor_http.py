@@ -129,14 +129,12 @@ class InProcess:
         return time.perf_counter() - started
 
 
-def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--runs", type=int, default=40)
-    parser.add_argument("--model", type=Path, default=ROOT / "examples" / "uis1-concrete.xmi")
-    args = parser.parse_args()
+def measure(model: Path, runs: int) -> tuple[list[float], list[float]]:
+    """Seconds of each op over HTTP and of the same op in-process, `runs` of each in turns, on
+    copies of `model` (and the maps folder beside its folder) in a temporary folder."""
     with tempfile.TemporaryDirectory() as folder:
         # The model's map is named relative to it: copy the examples' folder layout.
-        source = args.model.resolve()
+        source = model.resolve()
         work = Path(folder) / "examples"
         shutil.copytree(source.parent, work)
         if (source.parent.parent / "maps").is_dir():
@@ -152,13 +150,22 @@ def main() -> None:
                 page.op(warm)
                 local.op(warm)
             http_times, local_times = [], []
-            for run in range(args.runs):
+            for run in range(runs):
                 dx = 1 if run % 2 == 0 else -1
                 http_times.append(page.op(dx))
                 local_times.append(local.op(dx))
         finally:
             server.terminate()
             server.wait(timeout=30)
+    return http_times, local_times
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--runs", type=int, default=40)
+    parser.add_argument("--model", type=Path, default=ROOT / "examples" / "uis1-concrete.xmi")
+    args = parser.parse_args()
+    http_times, local_times = measure(args.model, args.runs)
     over_http = statistics.median(http_times) * 1000
     in_process = statistics.median(local_times) * 1000
     print(f"{args.model.name}: a move op, {args.runs} runs in turns, medians")

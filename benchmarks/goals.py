@@ -340,29 +340,10 @@ def sample(folder: Path, rounds: int) -> list[Row]:
 
 def editor(runs: int) -> list[Row]:
     """One move op over HTTP against the real server, in turns with the in-process anchor."""
-    from editor_http import InProcess, OverHttp, start_server
+    from editor_http import measure
 
     before = load_average()
-    with tempfile.TemporaryDirectory() as folder:
-        work = Path(folder) / "examples"
-        shutil.copytree(UIS1.parent, work)
-        shutil.copytree(REPO / "maps", Path(folder) / "maps")
-        over_http_model, in_process_model = work / UIS1.name, work / f"in-process-{UIS1.name}"
-        shutil.copy(over_http_model, in_process_model)
-        server, host, port = start_server(over_http_model)
-        try:
-            page, local = OverHttp(host, port), InProcess(in_process_model)
-            for warm in (1, -1):
-                page.op(warm)
-                local.op(warm)
-            over_http, in_process = [], []
-            for number in range(runs):
-                dx = 1 if number % 2 == 0 else -1
-                over_http.append(page.op(dx))
-                in_process.append(local.op(dx))
-        finally:
-            server.terminate()
-            server.wait(timeout=30)
+    over_http, in_process = measure(UIS1, runs)
     ours, anchor = statistics.median(over_http) * 1000, statistics.median(in_process) * 1000
     return [
         Row(
