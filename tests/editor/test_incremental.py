@@ -13,12 +13,12 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from editor.helpers import node_id
+from editor.helpers import actor_id, node_id
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import scemlmodel as scm
-from sceml.diagnostics import Diagnostic
+from sceml.diagnostics import Diagnostic, Severity
 from sceml.editor import EditorSession, OperationError
 from sceml.model.build import ScenarioBuilder, lane, world
 from sceml.model.loading import load_library
@@ -473,6 +473,40 @@ def test_a_binding_reruns_the_expansion(uis2: EditorSession) -> None:
     uis2.apply([{"op": "bind_role", "node": use, "role": "trigger", "actor": "pedestrian"}])
     stats = uis2.validator.stats
     assert not stats.full and stats.through_modules_run
+    assert keyed(uis2.diagnostics()) == full_run(uis2)
+
+
+def own_max_speed(session: EditorSession, actor: str, speed: float | None) -> None:
+    value = None if speed is None else {"type": "value", "value": speed}
+    field = {"actor": actor_id(session.view(), actor), "field": "maxSpeed", "value": value}
+    session.apply([{"op": "set_actor_parameter", **field}])
+
+
+def test_a_bound_actors_own_limit_reruns_the_expansion(uis2: EditorSession) -> None:
+    # The copy of CrossingManeuver's Accelerate_1 performs as 'pedestrian' (bound as crosser,
+    # crossingSpeed 1.5 m/s): an own maxSpeed of 1 m/s holds it below that, which SCEML-L005
+    # says of the copy as of the pedestrian's own nodes. Found by hypothesis (generated
+    # scenario, walker's maxSpeed set to 0): the through-modules pass kept its old findings.
+    copy = (
+        "pedestrian.CrossingManeuver_1.Accelerate_1.targetSpeed is 1.5 m/s, above "
+        "pedestrian's own limit of 1 m/s (3.6 km/h): the players hold it to that"
+    )
+    assert copy not in [d.message for d in uis2.diagnostics()]
+    own_max_speed(uis2, "pedestrian", 1.0)
+    stats = uis2.validator.stats
+    assert not stats.full and stats.through_modules_run
+    found = keyed(uis2.diagnostics())
+    assert ("SCEML-L005", Severity.WARNING, copy) in [d[:3] for d in found]
+    assert found == full_run(uis2)
+    uis2.undo()
+    assert copy not in [d[2] for d in keyed(uis2.diagnostics())]
+    assert keyed(uis2.diagnostics()) == full_run(uis2)
+
+
+def test_an_unbound_actors_own_limit_keeps_the_expansion(uis2: EditorSession) -> None:
+    own_max_speed(uis2, "ego", 1.0)  # ego is bound by no use: the copies do not read it
+    stats = uis2.validator.stats
+    assert not stats.full and not stats.through_modules_run
     assert keyed(uis2.diagnostics()) == full_run(uis2)
 
 

@@ -20,6 +20,10 @@ model's root changed (fragments, paths and lines depend on them). The findings a
 in the full run's order and passed through `unique`, so the result is the same list, in the same
 order, that `validate` gives. A rule that declares no reads re-runs everywhere, every time.
 
+The through-modules pass (rules on the expanded copies of module uses) runs again as a whole when
+an aspect it reads changed, or, for its rules reading ACTORS, when an actor or role a use binds was
+touched: the copies perform as that actor (its own maxSpeed bounds their speeds, SCEML-L005).
+
 A node dropped alone (`edits.placed_alone`: no flows, not a use) changes no aspect: its own rules
 and every rule of its scenario run (`Impact.graphs`), and the expansion of the module uses kept
 from the last run is patched rather than made again (sceml.validation.kept), unless the node's
@@ -119,13 +123,14 @@ class IncrementalValidator:
         self._through_always = any(
             rule.through_modules and rule.reads is None for rule in registry.rules()
         )
-        # A rule of the pass that reads its node's actors (L005 reads their own limits) sees a
-        # change to an actor's own values, which no aspect names, through the bound copies.
+        self._all_classified = all(rule.reads is not None for rule in registry.rules())
+        # Expanded copies perform as the actors their uses bind: a through-modules rule reading
+        # ACTORS (L001..L005: the performer's own limits) is stale when a bound actor changed,
+        # which no aspect says (an actor's maxSpeed is a parameter value like any other).
         self._through_actors = any(
             rule.through_modules and rule.reads is not None and rule.reads.scope & Scope.ACTORS
             for rule in registry.rules()
         )
-        self._all_classified = all(rule.reads is not None for rule in registry.rules())
         self._results: dict[EObject, _Entry] = {}
         self._through: Findings = ()
         self._pending: list[Change] = []
@@ -188,10 +193,13 @@ class IncrementalValidator:
         seen: set[Key] = set()
         found: list[Diagnostic] = []
         self._unresolved = False
+        binds_touched = False  # a use binds an actor or role this edit touched
         for obj in objects(self.model, context):
             rules = self.registry.rules_for(obj.eClass)
             if isinstance(obj, scm.ModuleUse):
                 self._note_unresolved(obj, context)
+                if impact.participants and not binds_touched:
+                    binds_touched = refers_to(obj, impact.participants)
             if not rules:
                 continue
             entry = run.check(obj, rules, previous.get(obj))
@@ -199,12 +207,8 @@ class IncrementalValidator:
             for findings in entry[1] or ():
                 found.extend(unique(findings, seen))
         self._results = results
-        if (
-            full
-            or self._through_always
-            or impact.aspects & self._through_reads
-            or (self._through_actors and impact.participants)
-        ):
+        stale_actors = self._through_actors and binds_touched
+        if full or self._through_always or impact.aspects & self._through_reads or stale_actors:
             self._through = tuple(through_modules(context, self.document, self.registry))
         else:
             self._through = run.relocated(self._through)
