@@ -223,6 +223,25 @@ def test_a_drop_into_a_scenario_without_uses(uis1: EditorSession) -> None:
     same_as_full(validator)
 
 
+def test_a_drop_undone_and_redone_elsewhere_takes_its_new_place(uis2: EditorSession) -> None:
+    """A node whose insertion is undone and then made again at the end of the list: the kept
+    expansion must list it where it is now, or C001 names the pair the other way round
+    (hypothesis found it: two Accelerates of ego, both dropped at the second place)."""
+    validator, scenario = validator_of(uis2)
+    first = scm.Accelerate(name="CrossingManeuver_1", referenceActor=ego(scenario))
+    second = scm.Accelerate(name="CrossingManeuver_2", referenceActor=ego(scenario))
+    for node in (first, second):
+        scenario.nodes.insert(1, node)
+        validator.note([Change(scenario, "nodes", None, node)])
+    same_as_full(validator)
+    scenario.nodes.remove(second)
+    validator.note([Change(scenario, "nodes", None, second)])
+    scenario.nodes.append(second)
+    validator.note([Change(scenario, "nodes", None, second)])
+    found = same_as_full(validator)
+    assert any(code == "SCEML-C001" for code, *_ in found), found
+
+
 # --- random drops, adversarial names and places -------------------------------------------------
 
 DROP_KINDS = ["Accelerate", "Stop", "Cross", "TimeElapsed", "JoinAllFinished"]

@@ -83,9 +83,8 @@ def _place_alone(flat: Expansion, alone: Mapping[EObject, EObject]) -> None:
     The expansion lists the scenario's nodes in order, each use replaced by what it expands to
     (all of it together, where the use is); a node placed alone has no flow to wire.
     """
-    present = set(flat.nodes)
-    if all(node in present for node in alone):
-        return  # already placed: the same insertion noted again (undone, then redone)
+    # Always in the scenario's order now, even for a node the expansion already holds: an
+    # insertion undone and redone may put the node back elsewhere (the end of the list).
     expanded: dict[EObject, list[scm.GraphElement]] = {}
     for node in flat.nodes:
         expanded.setdefault(flat.origin(node), []).append(node)
