@@ -30,6 +30,7 @@ Nothing here is timed by the test suite.
 from __future__ import annotations
 
 import argparse
+import itertools
 import os
 import shutil
 import statistics
@@ -40,6 +41,7 @@ import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TypeVar
 
 from process_cpu import interleaved, load_average, median_cpu, median_wall
 
@@ -54,6 +56,8 @@ HOLD = (
     "import os, sys; held = bytearray(int(sys.argv[1])); held[::4096] = b'x' * len(held[::4096]);"
     " print('1 file(s): held', flush=True); os._exit(0)"
 )
+#: What a command of `_in_turns` gives back.
+R = TypeVar("R")
 GROUPS = ("startup", "player", "scale", "emf", "sample", "editor")
 
 
@@ -187,10 +191,10 @@ def timed(command: Sequence[str], folder: Path, summary: bool = False) -> Timed:
     )
 
 
-def _in_turns(commands: dict[str, Callable[[], Timed]], rounds: int) -> dict[str, list[Timed]]:
+def _in_turns(commands: dict[str, Callable[[], R]], rounds: int) -> dict[str, list[R]]:
     """Each command once per round, the order rotating from round to round."""
     names = list(commands)
-    runs: dict[str, list[Timed]] = {name: [] for name in names}
+    runs: dict[str, list[R]] = {name: [] for name in names}
     for number in range(rounds):
         shift = number % len(names)
         for name in names[shift:] + names[:shift]:
@@ -199,7 +203,7 @@ def _in_turns(commands: dict[str, Callable[[], Timed]], rounds: int) -> dict[str
 
 
 def _median(runs: list[Timed], field: str) -> float:
-    return statistics.median(getattr(run, field) for run in runs)
+    return float(statistics.median(getattr(run, field) for run in runs))
 
 
 def validation_rows(label: str, path: Path, rounds: int, wall_goal: float) -> list[Row]:
@@ -303,15 +307,20 @@ def sample(folder: Path, rounds: int) -> list[Row]:
         "serial": lambda out: run_scenariogeneration(2000, out),
         "parallel": lambda out: run_scenariogeneration(2000, out, writers=workers),
     }
-    runs: dict[str, list[Run]] = {name: [] for name in makers}
+    made = itertools.count()
+
+    def in_fresh_folder(make: Callable[[Path], Run]) -> Callable[[], Run]:
+        def run() -> Run:
+            out = folder / f"run-{next(made)}"
+            try:
+                return make(out)
+            finally:
+                shutil.rmtree(out, ignore_errors=True)
+
+        return run
+
     before = load_average()
-    for number in range(rounds):
-        names = list(makers)
-        shift = number % len(names)
-        for name in names[shift:] + names[:shift]:
-            out = folder / f"{name}-{number}"
-            runs[name].append(makers[name](out))
-            shutil.rmtree(out)
+    runs = _in_turns({name: in_fresh_folder(make) for name, make in makers.items()}, rounds)
     load = f"{before}-{load_average()}"
     rate = {name: statistics.median(run.rate for run in done) for name, done in runs.items()}
     first = statistics.median(run.before_first for run in runs["ours"])
