@@ -67,6 +67,69 @@ def test_write_staged_that_fails_keeps_the_old_file(
     assert target.read_bytes() == b"old" and list(staging.iterdir()) == []
 
 
+@pytest.mark.skipif(not hasattr(os, "O_TMPFILE"), reason="Linux's unnamed files")
+def test_a_new_file_is_named_only_once_complete_and_never_staged(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    staging = tmp_path / ".staging"
+    staging.mkdir()
+    target = tmp_path / "a.xosc"
+    seen: list[tuple[str, bool]] = []
+    real_link = os.link
+
+    def link(source: str, destination: Path, **options: object) -> None:
+        # What a reader of the folder sees just before the file gets its name.
+        seen.append((sorted(p.name for p in tmp_path.rglob("*")).__repr__(), target.exists()))
+        real_link(source, destination, **options)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(os, "link", link)
+    previous = os.umask(0o077)
+    try:
+        write_staged(target, b"x" * 100_000, staging)
+    finally:
+        os.umask(previous)
+    assert seen == [("['.staging']", False)]  # no temporary name, in the folder or staged
+    assert target.read_bytes() == b"x" * 100_000
+    assert stat.S_IMODE(target.stat().st_mode) == 0o644
+    assert list(staging.iterdir()) == []
+
+
+def test_without_unnamed_files_a_new_file_goes_through_staging(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr("sceml.files.writing._unnamed_files", False)
+    staging = tmp_path / ".staging"
+    staging.mkdir()
+    renamed: list[str] = []
+    real_replace = os.replace
+
+    def replace(source: Path, destination: Path) -> None:
+        renamed.append(Path(source).parent.name)
+        real_replace(source, destination)
+
+    monkeypatch.setattr(os, "replace", replace)
+    write_staged(tmp_path / "a.xosc", b"new", staging)
+    assert renamed == [".staging"]
+    assert (tmp_path / "a.xosc").read_bytes() == b"new" and list(staging.iterdir()) == []
+
+
+def test_a_file_that_cannot_be_named_is_left_nowhere_and_reported(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    staging = tmp_path / ".staging"
+    staging.mkdir()
+
+    def refuse(*args: object, **options: object) -> None:
+        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+
+    monkeypatch.setattr(os, "link", refuse)
+    monkeypatch.setattr(os, "replace", refuse)
+    with pytest.raises(SaveError) as raised:
+        write_staged(tmp_path / "a.xosc", b"new", staging)
+    assert raised.value.message == "cannot write: No space left on device"
+    assert _everything(tmp_path) == {".staging"}
+
+
 @pytest.mark.parametrize("kind", ["local", "processes"])
 def test_deferred_items_are_made_once_and_all_run(kind: str) -> None:
     made = []
@@ -92,10 +155,12 @@ def test_no_deferred_items_is_no_outcome(kind: str) -> None:
 def test_a_worker_that_cannot_write_makes_the_command_fail_cleanly(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    def read_only(*args: object) -> None:
+    def read_only(*args: object, **options: object) -> None:
         raise OSError(errno.EROFS, os.strerror(errno.EROFS))
 
-    # The worker processes are forked from this one, so they inherit the refusal.
+    # The worker processes are forked from this one, so they inherit the refusal: no file can be
+    # named, neither an unnamed one linked (`os.link`) nor a staged one renamed.
+    monkeypatch.setattr(os, "link", read_only)
     monkeypatch.setattr(os, "replace", read_only)
     out = tmp_path / "out"
     arguments = [str(UIS2), "--strategy", "random", "--n", "20", "--workers", "2", "-o", str(out)]

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import contextlib
+import errno
 import os
 import tempfile
 from pathlib import Path
@@ -79,20 +80,67 @@ def write_atomically(path: str | Path, data: bytes) -> None:
         raise
 
 
-def write_staged(path: str | Path, data: bytes, staging: str | Path) -> None:
-    """Write bytes to `path` through a file of the same name in `staging` and an atomic rename.
+#: Whether this system makes unnamed files (Linux's O_TMPFILE) in the output folders; cleared at the
+#: first refusal (another system, an old kernel, a file system without it).
+_unnamed_files = hasattr(os, "O_TMPFILE") and os.path.isdir("/proc/self/fd")
 
-    For writers of many files at once (the batch's worker processes): `staging` is a private
-    folder on the same file system as `path` (e.g. inside the output folder) that its owner
-    creates beforehand and removes as a whole afterwards, so no temporary name has to be made
-    up: one file creation and one rename. `path`'s folder must exist. What is replaced follows
-    the writing rule of `write_atomically`.
+
+def _write_unnamed(target: Path, data: bytes) -> bool:
+    """Write a new `target` as an unnamed file in its folder, then give it its name; False when
+    the target exists or the system makes no unnamed files (the caller writes another way).
+
+    The file gets a name only once complete, so no reader ever sees it half-written and a killed
+    process leaves nothing behind; and it touches the folder once, where a temporary name and a
+    rename touch it (and, for a rename from another folder, the file system's rename lock) three
+    times. That matters for the batch's workers, which create thousands of files in one folder at
+    once: with names and renames, they queue on the folder's lock.
+    """
+    global _unnamed_files
+    if not _unnamed_files:
+        return False
+    # Any failure here leaves nothing (an unnamed file vanishes with its handle) and hands the
+    # file to the caller's other way, which reports a real problem (a full disk, a folder it may
+    # not write) in the same words as everywhere else.
+    try:
+        handle = os.open(target.parent, os.O_TMPFILE | os.O_WRONLY, 0o644)
+    except OSError as error:
+        if error.errno in (errno.EOPNOTSUPP, errno.EISDIR, errno.EINVAL):
+            _unnamed_files = False
+        return False
+    try:
+        view = memoryview(data)
+        while view:  # No fsync, as in write_atomically.
+            view = view[os.write(handle, view) :]
+        os.fchmod(handle, 0o644)  # as write_atomically leaves a file, whatever the umask
+        # linkat(AT_SYMLINK_FOLLOW) names the file the descriptor's /proc entry stands for; os.link
+        # calls it only when given a folder descriptor (ignored for an absolute path), and calls
+        # plain link(), which links the /proc entry itself and fails, when not.
+        # Refused (EEXIST) if `target` exists.
+        os.link(f"/proc/self/fd/{handle}", target, src_dir_fd=handle, follow_symlinks=True)
+    except OSError:
+        return False
+    finally:
+        os.close(handle)
+    return True
+
+
+def write_staged(path: str | Path, data: bytes, staging: str | Path) -> None:
+    """Write bytes to `path` atomically, for writers of many files at once (the batch's workers).
+
+    A new file is written unnamed in its folder and named once complete (`_write_unnamed`). An
+    existing one, or any file where the system makes no unnamed files, goes through a file of
+    the same name in `staging` and an atomic rename: `staging` is a private folder on the same
+    file system as `path` (e.g. inside the output folder) that its owner creates beforehand and
+    removes as a whole afterwards, so no temporary name has to be made up. `path`'s folder must
+    exist. What is replaced follows the writing rule of `write_atomically`.
     Any failure is a SaveError naming `path` (`cannot write: reason`); the previous file, if
     any, stays as it was and the staged file is removed. A process killed midway can leave a
     staged file, never a half-written `path`; removing `staging` removes that too.
     """
     path = Path(path)
     target = output_target(path)
+    if _write_unnamed(target, data):
+        return
     staged = Path(staging) / path.name
     flags = os.O_WRONLY | os.O_CREAT | os.O_TRUNC | getattr(os, "O_BINARY", 0)  # (Windows)
     try:

@@ -22,8 +22,9 @@ exports every sample in full.
 
 Who writes depends on the executor. Worker processes on the caller's machine
 (`Executor.shares_files`) write their samples' files themselves, so that writing, which costs
-about as much as producing a file, runs on every core: each file is written under its own name
-into a staging folder inside the output folder and renamed into place (`write_staged`), and
+about as much as producing a file, runs on every core: each new file is written unnamed in the
+output folder and named once complete, and a file that exists already is written under its own
+name into a staging folder inside the output folder and renamed into place (`write_staged`);
 the task returns only the records. Otherwise (in-process, Dask) workers return file contents
 and the caller writes each file atomically (`write_atomically`). Either way a sample's record
 is kept only once all its files are written, and a sample the run did not finish (its chunk
