@@ -6,9 +6,10 @@ which stays the single source of truth.
 
 from __future__ import annotations
 
-import importlib.resources
+import importlib.util
 from dataclasses import dataclass
 from functools import cache
+from pathlib import Path
 
 from lxml import etree
 from pyecore.ecore import EClass, EObject
@@ -90,6 +91,14 @@ class _Class:
     features: tuple[_Feature, ...]
 
 
+def _shipped_ecore() -> Path:
+    """The .ecore installed with the package sceml.metamodel (a plain folder: the package ships
+    as files, not zipped; importlib.resources would cost every command's start about 8 ms)."""
+    spec = importlib.util.find_spec("sceml.metamodel")
+    assert spec is not None and spec.origin is not None  # part of this package
+    return Path(spec.origin).with_name("scemlmodel.ecore")
+
+
 @cache
 def _ecore_classes() -> dict[str, _Class]:
     """The EClasses of the shipped .ecore, by name, in file order, with their annotations.
@@ -97,7 +106,7 @@ def _ecore_classes() -> dict[str, _Class]:
     Read with lxml: building pyecore's dynamic metamodel from the file cost about 20 ms of every
     command's start-up, and the catalog needs only names, supertypes and annotations.
     """
-    data = (importlib.resources.files("sceml.metamodel") / "scemlmodel.ecore").read_bytes()
+    data = _shipped_ecore().read_bytes()
     package = etree.fromstring(data, parser=hardened_parser(drop_comments=True))
     classes: dict[str, _Class] = {}
     for classifier in package.iterfind("eClassifiers"):

@@ -24,7 +24,6 @@ Library code here never prints or logs.
 from __future__ import annotations
 
 import functools
-import importlib.resources
 import importlib.util
 import os
 from dataclasses import dataclass
@@ -151,8 +150,11 @@ def _xsd_bytes(version: str) -> bytes:
         path = Path(folder) / "schema" / _XSD_FOLDERS[version] / _XSD_NAME
         if path.is_file():
             return path.read_bytes()
-    # An install layout without plain folders (a zip): ask the package itself.
-    resource = importlib.resources.files(_XSD_PACKAGE) / _XSD_FOLDERS[version] / _XSD_NAME
+    # An install layout without plain folders (a zip): ask the package itself. (Imported here:
+    # importlib.resources costs every command's start about 8 ms.)
+    from importlib import resources
+
+    resource = resources.files(_XSD_PACKAGE) / _XSD_FOLDERS[version] / _XSD_NAME
     return resource.read_bytes()
 
 
