@@ -41,6 +41,16 @@ from .common import ReportsMigrations, allow_option, emit_report, file_progress,
     "export profile (carla: what CARLA scenario_runner runs), at --osc-version or the "
     "profile's default version.",
 )
+@click.option(
+    "-j",
+    "--jobs",
+    type=click.IntRange(1, 2),
+    default=2,
+    show_default=True,
+    help="Processes to check a large scenario with (2000 nodes or more): 2 splits its checks "
+    "over two processes where the machine has two processors, with the same report; 1 keeps "
+    "them in this one.",
+)
 @allow_option
 def validate(
     files: tuple[Path, ...],
@@ -51,6 +61,7 @@ def validate(
     output: Path | None,
     allow: tuple[Path, ...],
     osc_profile: str | None,
+    jobs: int,
 ) -> None:
     """Validate scenario and library FILES (.xmi) against the SceML rules.
 
@@ -60,6 +71,8 @@ def validate(
     """
     limits = load_limits(limits_file) if limits_file is not None else Limits()
     with file_progress(files, "validating") as todo, collector_off_for_command():
-        reports = [validate_file(path, limits, osc_version, allow, osc_profile) for path in todo]
+        reports = [
+            validate_file(path, limits, osc_version, allow, osc_profile, jobs=jobs) for path in todo
+        ]
     emit_report(render(reports, output_format, strict), output)
     sys.exit(exit_code(reports, strict))

@@ -41,20 +41,31 @@ def iter_diagnostics(
     context = Context(model, document, limits or Limits(), osc_version, osc_profile)
     seen: set[Key] = set()
     try:
-        for obj in objects(model, context):
-            for rule in registry.rules_for(obj.eClass):
-                # `run_rule` inlined: this loop makes about 16 rule runs per node, most of
-                # which find nothing, and the call was a tenth of a large scenario's validation.
-                try:
-                    found = list(rule.check(obj, context))
-                except Exception as error:  # a broken model must not stop the run
-                    yield from unique([crashed(rule, error, obj, document)], seen)
-                    continue
-                if found:
-                    yield from unique(located(rule, found, document), seen)
+        yield from unique(each_object(objects(model, context), context, document, registry), seen)
         yield from unique(through_modules(context, document, registry), seen)
     finally:
         context.release()
+
+
+def each_object(
+    found_objects: Iterable[EObject],
+    context: Context,
+    document: Document | None,
+    registry: Registry = REGISTRY,
+) -> Iterator[Diagnostic]:
+    """The diagnostics of each object's own rules, in order, repeats included (`unique` drops
+    them)."""
+    for obj in found_objects:
+        for rule in registry.rules_for(obj.eClass):
+            # `run_rule` inlined: this loop makes about 16 rule runs per node, most of which
+            # find nothing, and the call was a tenth of a large scenario's validation.
+            try:
+                found = list(rule.check(obj, context))
+            except Exception as error:  # a broken model must not stop the run
+                yield crashed(rule, error, obj, document)
+                continue
+            if found:
+                yield from located(rule, found, document)
 
 
 def through_modules(
@@ -169,9 +180,18 @@ class _Bindings:
         return self._by_uses[uses]
 
 
-def validate(model: EObject, **options: object) -> list[Diagnostic]:
-    """The list of every diagnostic (see `iter_diagnostics`)."""
+def validate(model: EObject, *, jobs: int = 1, **options: object) -> list[Diagnostic]:
+    """The list of every diagnostic (see `iter_diagnostics`).
+
+    With `jobs` > 1, a large scenario is checked in two processes where the system allows it
+    (`sceml.validation.split`), with the same diagnostics in the same order.
+    """
     with collector_paused():
+        if jobs > 1:
+            from .split import validate_split, worth_splitting
+
+            if worth_splitting(model):
+                return validate_split(model, **options)  # type: ignore[arg-type]
         return list(iter_diagnostics(model, **options))  # type: ignore[arg-type]
 
 

@@ -26,10 +26,12 @@ def validate_file(
     osc_profile: str | None = None,
     *,
     read_only: bool = True,
+    jobs: int = 1,
 ) -> FileReport:
     """Load and validate one file; an unreadable one is reported, not raised.
 
     Validation only reads the model, so it is loaded `read_only` (lighter objects) unless told.
+    With `jobs` > 1 a large scenario is checked in two processes (`sceml.validation.split`).
     """
     try:
         document = load(path, allow=allow, read_only=read_only)
@@ -42,6 +44,7 @@ def validate_file(
         limits=limits,
         osc_version=osc_version,
         osc_profile=osc_profile,
+        jobs=jobs,
     )
     return FileReport(str(path), [*older_releases(document), *diagnostics])
 

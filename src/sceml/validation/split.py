@@ -1,0 +1,184 @@
+"""Validating a large scenario in two processes, with the same diagnostics in the same order.
+
+A scenario's checks fall into two shares of about equal cost at scale: the rules of the scenario
+object itself (the simultaneity check C001, the graph rules, module expansion) followed by the
+through-modules pass, and the rules of every other object (nodes, actors, values, positions), each
+of which reads only its own corner of the model. After the model is loaded, the process forks:
+the child runs the second share on its copy of the model (the same objects at the same
+addresses, shared until written) and sends back what it found, while the parent runs the first.
+The parent then puts them in the order one process would have produced them (scenario,
+objects, through-modules) and drops repeats, as `iter_diagnostics` does.
+
+It is worth it only for a large scenario (`SPLIT_FROM` nodes): a fork and a pipe cost a few
+milliseconds, and for a small scenario so does the whole validation. Where there is no `fork`
+(Windows, macOS's default is unsafe with threads but fork exists) or only one processor, or the
+child fails for any reason (killed, out of memory), the parent runs the second share itself:
+the result is always that of one process.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import pickle
+import signal
+from collections.abc import Iterable
+
+from pyecore.ecore import EObject
+
+import scemlmodel as scm
+
+from ..diagnostics import Diagnostic, Severity
+from ..model.documents import Document
+from .context import Context
+from .engine import Key, each_object, objects, through_modules, unique
+from .limits import Limits
+from .registry import REGISTRY, Registry
+
+#: The number of scenario nodes from which validation is split in two.
+SPLIT_FROM = 2000
+
+#: A diagnostic as the child sends it: its fields, and the address of its element (the same
+#: object in both processes, since the child is a fork of the parent).
+_Sent = tuple[Severity, str, str, str | None, str | None, str | None, int | None, int | None]
+
+
+def processors() -> int:
+    """The processors this process may run on."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except AttributeError:  # not on Linux
+        return os.cpu_count() or 1
+
+
+def worth_splitting(model: EObject) -> bool:
+    """Whether `validate_split` would run `model` in two processes."""
+    return (
+        hasattr(os, "fork")
+        and processors() > 1
+        and isinstance(model, scm.Scenario)
+        and len(model.nodes) >= SPLIT_FROM
+    )
+
+
+def validate_split(
+    model: EObject,
+    *,
+    document: Document | None = None,
+    limits: Limits | None = None,
+    osc_version: str | None = None,
+    osc_profile: str | None = None,
+    registry: Registry = REGISTRY,
+) -> list[Diagnostic]:
+    """Every diagnostic of `model`, as `iter_diagnostics` gives them, the objects' own rules run
+    in a forked child (see the module's docstring)."""
+    context = Context(model, document, limits or Limits(), osc_version, osc_profile)
+    try:
+        everything = list(objects(model, context))
+        first, rest = everything[:1], everything[1:]
+        theirs = _in_child(rest, context, document, registry, everything)
+        try:
+            mine = list(each_object(first, context, document, registry))
+            through = list(through_modules(context, document, registry))
+            found = theirs.result() if theirs is not None else None
+        except BaseException:  # Ctrl-C, say: the child must not outlive the run
+            if theirs is not None:
+                theirs.stop()
+            raise
+        if found is None:  # no child, or it failed: its share is done here
+            found = list(each_object(rest, context, document, registry))
+        seen: set[Key] = set()
+        return list(unique([*mine, *found, *through], seen))
+    finally:
+        context.release()
+
+
+class _Child:
+    """A forked child's pipe and process id: `result` reads what it found and reaps it."""
+
+    def __init__(self, pid: int, reader: int, everything: list[EObject]) -> None:
+        self.pid = pid
+        self.reader = reader
+        self.everything = everything
+
+    def result(self) -> list[Diagnostic] | None:
+        """The child's diagnostics, or None if it failed."""
+        try:
+            with os.fdopen(self.reader, "rb") as stream:
+                data = stream.read()
+        finally:
+            _, status = os.waitpid(self.pid, 0)
+        if status != 0 or not data:
+            return None
+        sent: list[_Sent] = pickle.loads(data)
+        by_address = {id(obj): obj for obj in self.everything}
+        return [
+            Diagnostic(
+                severity,
+                code,
+                message,
+                fragment,
+                path,
+                file,
+                line,
+                by_address.get(element) if element is not None else None,
+            )
+            for severity, code, message, fragment, path, file, line, element in sent
+        ]
+
+    def stop(self) -> None:
+        """End the child early (the parent's own share failed or was interrupted)."""
+        with contextlib.suppress(OSError):
+            os.kill(self.pid, signal.SIGKILL)
+        with contextlib.suppress(OSError):
+            os.close(self.reader)
+        with contextlib.suppress(OSError):
+            os.waitpid(self.pid, 0)
+
+
+def _in_child(
+    rest: Iterable[EObject],
+    context: Context,
+    document: Document | None,
+    registry: Registry,
+    everything: list[EObject],
+) -> _Child | None:
+    """Fork a child that runs `rest`'s rules and writes what it found into a pipe; None where
+    that cannot be done (the caller then runs them itself)."""
+    try:
+        reader, writer = os.pipe()
+    except OSError:
+        return None
+    try:
+        pid = os.fork()
+    except OSError:
+        os.close(reader)
+        os.close(writer)
+        return None
+    if pid == 0:  # the child: never returns
+        os.close(reader)
+        status = 1
+        try:
+            sent: list[_Sent] = [
+                (
+                    d.severity,
+                    d.code,
+                    d.message,
+                    d.fragment,
+                    d.path,
+                    d.file,
+                    d.line,
+                    id(d.element) if d.element is not None else None,
+                )
+                for d in each_object(rest, context, document, registry)
+            ]
+            data = pickle.dumps(sent, protocol=pickle.HIGHEST_PROTOCOL)
+            with os.fdopen(writer, "wb") as stream:
+                stream.write(data)
+            status = 0
+        finally:
+            # Ends the child here, whatever happened: no exit handlers, no buffers of the
+            # parent's written twice, nothing freed.
+            os._exit(status)
+    os.close(writer)
+    return _Child(pid, reader, everything)
