@@ -17,6 +17,11 @@ wall and the CPU ratio meet it; a goal in seconds is judged on wall time, what a
   every node kind, valid) beside an lxml parse of the same file, with GNU time's CPU and peak
   memory; and how long the process lives after its summary has reached the reader. `--large`
   adds the 208k-node file of `xmi_load.py`'s generator (valid; its build takes a minute).
+  `sceml validate` runs as a user runs it: from 2,000 nodes on it splits its checks over two
+  processes (`--jobs 2`, its default). Its CPU time is the two processes' together (GNU time
+  counts the children a process waited for); the 208k memory row is the process's resident
+  set plus its child's private pages at their largest, sampled in a run of its own
+  (`tree_peak_mb`), since GNU time gives the larger of the two, not their sum.
 - `emf`: loading the 50k-node file of `xmi_load.py`'s generator in a fresh process, Python's
   whole process against a fresh JVM's (EmfLoad.java; needs javac and the EMF jars).
 - `sample`: `sceml sample` UIS2, N=2000, random, whole process, beside scenariogeneration's
@@ -191,6 +196,39 @@ def timed(command: Sequence[str], folder: Path, summary: bool = False) -> Timed:
     )
 
 
+def _kb(path: Path, fields: tuple[str, ...]) -> int:
+    """The sum of `fields` (kB lines of a /proc status or smaps_rollup file); 0 once it is gone."""
+    try:
+        lines = path.read_text().splitlines()
+    except OSError:
+        return 0
+    return sum(int(line.split()[1]) for line in lines if line.split(":")[0] in fields)
+
+
+def tree_peak_mb(command: Sequence[str], folder: Path) -> float:
+    """The most memory `command`'s process and its children held at once (Linux /proc, sampled
+    every 20 ms): the process's resident set plus each child's private pages.
+
+    GNU time's peak is the largest of the processes, not their sum: for `sceml validate` split
+    over two processes (`--jobs 2`), the child's copies of the pages it writes (a forked child
+    shares the rest with its parent) would be left out.
+    """
+    process = subprocess.Popen(
+        command, cwd=folder, env=_env(), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL
+    )
+    peak = 0
+    proc = Path("/proc") / str(process.pid)
+    while process.poll() is None:
+        held = _kb(proc / "status", ("VmRSS",))
+        for task in proc.glob("task/*/children"):
+            for child in task.read_text().split() if task.exists() else ():
+                rollup = Path("/proc") / child / "smaps_rollup"
+                held += _kb(rollup, ("Private_Clean", "Private_Dirty"))
+        peak = max(peak, held)
+        time.sleep(0.02)
+    return peak / 1024
+
+
 def _in_turns(commands: dict[str, Callable[[], R]], rounds: int) -> dict[str, list[R]]:
     """Each command once per round, the order rotating from round to round."""
     names = list(commands)
@@ -246,13 +284,15 @@ def validation_rows(label: str, path: Path, rounds: int, wall_goal: float) -> li
         ),
     ]
     if label.startswith("208k"):
+        # A run of its own: the sampling costs CPU, which the timed runs must not carry.
+        tree = tree_peak_mb([SCEML, "validate", path.name], folder)
         rows.append(
             Row(
-                f"{label}, peak memory",
-                f"{ours_peak:,.0f} MB ({ours_peak / lxml_peak:.2f}x)",
+                f"{label}, peak memory of the process and its child",
+                f"{tree:,.0f} MB ({tree / lxml_peak:.2f}x); the process alone {ours_peak:,.0f} MB",
                 f"lxml parse {lxml_peak:,.0f} MB",
                 "<= 2x lxml's",
-                ours_peak <= 2 * lxml_peak,
+                tree <= 2 * lxml_peak,
                 load,
             )
         )
