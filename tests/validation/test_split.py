@@ -136,3 +136,20 @@ def test_the_command_reports_the_same_with_one_or_two_jobs(always_split: list[in
 def _a_faulty_scenario() -> str:
     """A corpus scenario with findings of several rules (checked by the tests using it)."""
     return "multi-levels.xmi"  # C001, M004, M006, P002, P003, P005, P006: root and node rules
+
+
+@pytest.mark.skipif(not Path("/proc/self/status").exists(), reason="reads Linux's /proc")
+def test_no_child_where_the_memory_could_not_hold_one(monkeypatch: pytest.MonkeyPatch) -> None:
+    size = split._kilobytes(Path("/proc/self/status"), "VmRSS")
+    monkeypatch.setattr(split, "_memory_groups", lambda: [])
+    assert split.room_for_a_child()  # this machine has room for a test process's copy
+    # A control group whose room left is smaller than this process: no child.
+    monkeypatch.setattr(split, "_memory_groups", lambda: [(2 * size, size + size // 2)])
+    assert not split.room_for_a_child()
+    monkeypatch.setattr(split, "_memory_groups", lambda: [(4 * size, size)])
+    assert split.room_for_a_child()
+    monkeypatch.setattr(split, "processors", lambda: 2)
+    monkeypatch.setattr(split, "room_for_a_child", lambda: False)
+    scenario = scm.Scenario()
+    scenario.nodes.extend(scm.EndNode(name=f"n{i}") for i in range(split.SPLIT_FROM))
+    assert not split.worth_splitting(scenario)
