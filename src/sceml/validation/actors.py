@@ -96,10 +96,12 @@ def has_reference_actor(node: scm.ActionNode, context: Context) -> Iterator[Find
 def actors_declared_here(node: scm.ActionNode, context: Context) -> Iterator[Finding]:
     graph = node.eContainer()
     declared = declared_participants(graph, context)
-    where = "module roles" if isinstance(graph, scm.ModuleDefinition) else "scenario's actors"
     for feature in ("referenceActor", "targetActor"):
         participant = single_value(node, feature)
         if participant is not None and participant not in declared:
+            where = (
+                "module roles" if isinstance(graph, scm.ModuleDefinition) else "scenario's actors"
+            )
             yield node, f"{feature} {label(participant)} of {node.name!r} is not one of the {where}"
 
 
