@@ -74,6 +74,8 @@ class _Stream:
         self.reader: _Reader | None = None
         self.prefixes: tuple[tuple[str | None, str], ...] = ()
         self.ids: set[str] = set()
+        # The xsi:type texts found fine: a file repeats a few dozen of them thousands of times.
+        self.fine_types: set[str] = set()
 
     def run(self) -> EObject:
         events = hardened_iterparse(
@@ -141,10 +143,13 @@ class _Stream:
         prefixes = self.prefixes
         type_problem = self.type_problem
         ids = self.ids
+        fine_types = self.fine_types
         for element in top.iter(etree.Element) if deep else (top,):
             value = element.get(XSI_TYPE)
-            if value is not None and type_problem(value, prefixes) is not None:
-                raise _Declined
+            if value is not None and value not in fine_types:
+                if type_problem(value, prefixes) is not None:
+                    raise _Declined
+                fine_types.add(value)
             identifier = element.get(xmiid)
             if identifier is not None:
                 if identifier in ids:

@@ -4,8 +4,10 @@ from __future__ import annotations
 
 from collections import Counter
 from collections.abc import Iterator
+from functools import cache
+from typing import NamedTuple
 
-from pyecore.ecore import EObject, EProxy
+from pyecore.ecore import EClass, EObject, EProxy
 
 import scemlmodel as scm
 
@@ -36,6 +38,24 @@ def declared_participants(graph: EObject | None, context: Context) -> set[EObjec
     return context.memo(("participants", graph), collect)
 
 
+class _KindActors(NamedTuple):
+    """What the catalog says of a node kind's actors."""
+
+    performed_by_actor: bool
+    needs_target: bool
+    allows_target: bool
+
+
+@cache
+def _kind(eclass: EClass) -> _KindActors:
+    """The catalog's answers for a node kind, once per metaclass: SCEML-A001, A003 and A004
+    ask them of every node."""
+    name = str(eclass.name)
+    return _KindActors(
+        catalog.performed_by_actor(name), catalog.needs_target(name), catalog.allows_target(name)
+    )
+
+
 def label(participant: EObject) -> str:
     """A participant's name for messages, without resolving a proxy (which may be broken)."""
     if isinstance(participant, EProxy):
@@ -53,14 +73,15 @@ def label(participant: EObject) -> str:
     export=True,
 )
 def has_reference_actor(node: scm.ActionNode, context: Context) -> Iterator[Finding]:
-    global_kind = not catalog.performed_by_actor(node.eClass.name)
-    if node.referenceActor is None and not global_kind:
+    global_kind = not _kind(node.eClass).performed_by_actor
+    actor = single_value(node, "referenceActor")
+    if actor is None and not global_kind:
         yield node, f"{node.eClass.name} {node.name!r} has no reference actor"
-    if node.referenceActor is not None and global_kind:
+    if actor is not None and global_kind:
         yield (
             node,
             f"{node.eClass.name} {node.name!r} is performed by no actor; "
-            f"its reference actor {label(node.referenceActor)} has no meaning",
+            f"its reference actor {label(actor)} has no meaning",
         )
 
 
@@ -75,10 +96,12 @@ def has_reference_actor(node: scm.ActionNode, context: Context) -> Iterator[Find
 def actors_declared_here(node: scm.ActionNode, context: Context) -> Iterator[Finding]:
     graph = node.eContainer()
     declared = declared_participants(graph, context)
-    where = "module roles" if isinstance(graph, scm.ModuleDefinition) else "scenario's actors"
     for feature in ("referenceActor", "targetActor"):
         participant = single_value(node, feature)
         if participant is not None and participant not in declared:
+            where = (
+                "module roles" if isinstance(graph, scm.ModuleDefinition) else "scenario's actors"
+            )
             yield node, f"{feature} {label(participant)} of {node.name!r} is not one of the {where}"
 
 
@@ -93,7 +116,7 @@ def actors_declared_here(node: scm.ActionNode, context: Context) -> Iterator[Fin
     export=True,
 )
 def target_actor_where_needed(node: scm.ActionNode, context: Context) -> Iterator[Finding]:
-    if catalog.needs_target(node.eClass.name) and node.targetActor is None:
+    if _kind(node.eClass).needs_target and single_value(node, "targetActor") is None:
         yield node, f"{node.eClass.name} {node.name!r} needs a target actor"
 
 
@@ -107,11 +130,14 @@ def target_actor_where_needed(node: scm.ActionNode, context: Context) -> Iterato
     reads=Reads(SELF | ACTORS),
 )
 def target_actor_only_where_used(node: scm.ActionNode, context: Context) -> Iterator[Finding]:
-    if not catalog.allows_target(node.eClass.name) and node.targetActor is not None:
+    if _kind(node.eClass).allows_target:
+        return
+    target = single_value(node, "targetActor")
+    if target is not None:
         yield (
             node,
             f"{node.eClass.name} {node.name!r} does not use a target actor; "
-            f"{label(node.targetActor)} is ignored",
+            f"{label(target)} is ignored",
         )
 
 
@@ -123,8 +149,9 @@ def target_actor_only_where_used(node: scm.ActionNode, context: Context) -> Iter
     reads=Reads(SELF | ACTORS),
 )
 def target_differs_from_reference(node: scm.ActionNode, context: Context) -> Iterator[Finding]:
-    if node.targetActor is not None and node.targetActor is node.referenceActor:
-        yield node, f"{node.name!r} targets its own reference actor {label(node.targetActor)}"
+    target = single_value(node, "targetActor")
+    if target is not None and target is single_value(node, "referenceActor"):
+        yield node, f"{node.name!r} targets its own reference actor {label(target)}"
 
 
 @constraint(

@@ -9,8 +9,9 @@ to go beyond them raises them in a limits file (`sceml validate --limits FILE`).
 from __future__ import annotations
 
 from collections.abc import Iterator
+from functools import cache
 
-from pyecore.ecore import EObject
+from pyecore.ecore import EClass, EObject
 
 import scemlmodel as scm
 
@@ -35,6 +36,11 @@ def highest(value: EObject | None) -> float | None:
     Sizes, not signed numbers: a speed below zero is driving backwards (release 1.4), and
     reversing at 40 m/s is as far beyond a car's limit as driving forwards at 40 m/s.
     """
+    if type(value) is scm.Value:
+        # Most values are single: read without the descriptor (`single_value` reads both kinds
+        # of object as `value.value` does).
+        number = single_value(value, "value")
+        return None if number is None else abs(number)
     bounds: list[float | None] = []
     if isinstance(value, scm.Value):
         bounds = [value.value]
@@ -85,12 +91,18 @@ def _actor_limit(actor: EObject, context: Context, key: str) -> tuple[float | No
     return kind, f"the {actor.eClass.name}"
 
 
+@cache
+def _limited(eclass: EClass, key: str) -> tuple[str, ...]:
+    """`catalog.limited` once per metaclass and limit: L001..L003 and L005 ask for every node."""
+    return catalog.limited(eclass.name, key)
+
+
 def _over(
     owner: EObject, key: str, unit: str, limit: float | None, whose: str
 ) -> Iterator[Finding]:
     if limit is None:
         return
-    for name in catalog.limited(owner.eClass.name, key):
+    for name in _limited(owner.eClass, key):
         value = single_value(owner, name)
         top = highest(value)
         if top is not None and top > limit:
@@ -199,9 +211,27 @@ def within_own_performance(owner: EObject, context: Context) -> Iterator[Finding
     actor = performer(owner)
     if actor is None:
         return
-    for key, unit in LIMIT_UNITS.items():
-        own, (ceiling, _) = own_limit(actor, key), actor_limit(actor, context, key)
-        if own is None or (ceiling is not None and own >= ceiling):
-            continue  # no own limit, or it is the ceiling L001..L003 judge by
+    for key, unit, own in own_limits_below_ceiling(actor, context):
         for value, message in _over(owner, key, unit, own, f"{actor.name}'s own"):
             yield value, f"{message}: the players hold it to that"
+
+
+def own_limits_below_ceiling(
+    actor: EObject, context: Context
+) -> tuple[tuple[str, str, float], ...]:
+    """The limits an actor states itself below the ceilings L001..L003 judge by, as (key, unit,
+    own limit), in LIMIT_UNITS' order: what SCEML-L005 holds each of its nodes to.
+
+    Once per run and actor (each of an actor's nodes asks); most actors state none.
+    """
+
+    def compute() -> tuple[tuple[str, str, float], ...]:
+        found = []
+        for key, unit in LIMIT_UNITS.items():
+            own, (ceiling, _) = own_limit(actor, key), actor_limit(actor, context, key)
+            if own is None or (ceiling is not None and own >= ceiling):
+                continue  # no own limit, or it is the ceiling L001..L003 judge by
+            found.append((key, unit, own))
+        return tuple(found)
+
+    return context.memo(("own limits below ceiling", actor), compute)

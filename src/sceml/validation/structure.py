@@ -179,7 +179,10 @@ def no_cycles(graph: scm.Graph, context: Context) -> Iterator[Finding]:
     reads=Reads(SELF),
 )
 def merges_only_at_joins(node: scm.GraphElement, context: Context) -> Iterator[Finding]:
-    count = sum(1 for flow in node.incoming if flow.source is not None)
+    incoming = node.incoming
+    if len(incoming) < 2:
+        return  # most nodes: no flows to count
+    count = sum(1 for flow in incoming if flow.source is not None)
     if count > 1:
         yield (
             node,
@@ -261,6 +264,14 @@ def node_names_unique(graph: scm.Graph, context: Context) -> Iterator[Finding]:
             yield node, f"{counts[node.name]} nodes are named {node.name!r}"
 
 
+def _repeatable(kind_name: str) -> bool:
+    # Imported here, where a node repeats, not with the rules: the export's planners agree on
+    # which kinds can.
+    from ..xosc.support import repeatable
+
+    return repeatable(kind_name)
+
+
 @constraint(
     "SCEML-S014",
     ERROR,
@@ -270,9 +281,9 @@ def node_names_unique(graph: scm.Graph, context: Context) -> Iterator[Finding]:
     reads=Reads(SELF),
 )
 def runs_are_possible(node: scm.ActionNode, context: Context) -> Iterator[Finding]:
-    from ..xosc.support import repeatable  # the export's planners agree on which kinds can
-
     runs = single_value(node, "maxRuns")
+    if runs == 1:
+        return  # nearly every node: the checks below are for the other counts
     if runs < 1:
         yield node, f"{node.name!r} may run {runs} times: a node runs at least once (maxRuns 1)"
     elif runs > 1 and isinstance(node, scm.Condition):
@@ -284,7 +295,7 @@ def runs_are_possible(node: scm.ActionNode, context: Context) -> Iterator[Findin
                 "holds; repeat the maneuver after it instead"
             ),
         )
-    elif runs > 1 and not repeatable(node.eClass.name):
+    elif runs > 1 and not _repeatable(node.eClass.name):
         yield (
             node,
             (
