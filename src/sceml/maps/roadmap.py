@@ -61,6 +61,7 @@ class RoadMap:
         self._lines: dict[str, ReferenceLine] = {}
         self._answers: dict[tuple[float, float, float], tuple[LaneCoordinate, ...]] = {}
         self._poses: dict[tuple[str, int, float, float], WorldPose] = {}
+        self._bands: dict[tuple[str, int, float], LaneBand] = {}
 
     # --- lanes -------------------------------------------------------------------------------
 
@@ -99,6 +100,17 @@ class RoadMap:
 
     def band(self, road_id: str, lane_id: int, s: float) -> LaneBand:
         """The lane `lane_id` of road `road_id` at `s`, or PositionError naming what is wrong."""
+        # Kept like `lane_to_world`'s answers: the map rules ask for the type of the lane each
+        # start position and destination lies on, once per rule and node naming it.
+        key = (road_id, lane_id, s)
+        known = self._bands.get(key)
+        if known is None:
+            known = self._bands[key] = self._band(road_id, lane_id, s)
+            if len(self._bands) > _ANSWERS_KEPT:
+                self._bands.pop(next(iter(self._bands)), None)
+        return known
+
+    def _band(self, road_id: str, lane_id: int, s: float) -> LaneBand:
         road = self.road(road_id)
         if not -1e-6 <= s <= road.length + 1e-6:
             raise PositionError(
@@ -168,8 +180,8 @@ class RoadMap:
 
     def _lanes_at(self, x: float, y: float, tolerance: float) -> list[LaneCoordinate]:
         found = []
-        # A few questions are answered sooner by trying every road than by importing shapely
-        # and building the index (UIS1's validation asks a few dozen).
+        # A few questions are answered sooner by trying every road than by building the index
+        # (UIS1's validation asks a few dozen).
         roads = (
             self._near(x, y, tolerance) if len(self._answers) > _UNINDEXED else self.roads.values()
         )
