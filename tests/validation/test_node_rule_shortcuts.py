@@ -14,8 +14,6 @@ import scemlmodel as scm
 from sceml.model import catalog
 from sceml.model.params import describe
 from sceml.validation import actors, parameters, plausibility
-from sceml.validation.context import Context
-from sceml.validation.limits import Limits
 from sceml.validation.parameters import parameter_path, values_physically_meaningful
 
 # The metamodel's classes, as the generated package exposes them.
@@ -129,39 +127,3 @@ def test_highest_of_a_single_value_is_the_size_the_descriptor_reads(number: floa
         assert found is not None and math.isnan(found)
     else:
         assert found == abs(stated)
-
-
-own_limits = st.one_of(st.none(), st.floats(0.0, 200.0), st.just(0.0))
-
-
-@given(
-    st.sampled_from(["Car", "Truck", "Bus", "Pedestrian", "Bicycle"]),
-    own_limits,
-    own_limits,
-    own_limits,
-)
-def test_own_limits_below_ceiling_are_what_each_node_would_work_out(
-    kind: str, speed: float | None, acceleration: float | None, deceleration: float | None
-) -> None:
-    actor = getattr(scm, kind)(name="a")
-    for feature, number in (
-        ("maxSpeed", speed),
-        ("maxAcceleration", acceleration),
-        ("maxDeceleration", deceleration),
-    ):
-        if number is not None:
-            actor.eSet(feature, scm.Value(value=number))
-    context = Context(actor, None, Limits())
-    # Straightforward: each limit's own value and the kind's, compared where they are needed.
-    expected = []
-    for key, unit in plausibility.LIMIT_UNITS.items():
-        own = plausibility.own_limit(actor, key)
-        kind_limit = Limits().limit(kind, key)
-        ceiling = (
-            own if own is not None and (kind_limit is None or own > kind_limit) else kind_limit
-        )
-        if own is not None and (ceiling is None or own < ceiling):
-            expected.append((key, unit, own))
-    assert plausibility.own_limits_below_ceiling(actor, context) == tuple(expected)
-    # Asked again (the next node of the same actor), the same answer.
-    assert plausibility.own_limits_below_ceiling(actor, context) == tuple(expected)

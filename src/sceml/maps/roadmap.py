@@ -15,7 +15,7 @@ import os
 from collections.abc import Iterable
 from functools import cached_property
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from ..files.safefiles import check_inside
 from .model import (
@@ -31,6 +31,7 @@ from .model import (
 )
 from .planview import SAMPLE_STEP, ReferenceLine
 from .reader import MapError, parse_opendrive
+from .roadindex import RoadIndex
 
 if TYPE_CHECKING:
     import numpy as np
@@ -60,6 +61,7 @@ class RoadMap:
         self._lines: dict[str, ReferenceLine] = {}
         self._answers: dict[tuple[float, float, float], tuple[LaneCoordinate, ...]] = {}
         self._poses: dict[tuple[str, int, float, float], WorldPose] = {}
+        self._bands: dict[tuple[str, int, float], LaneBand] = {}
 
     # --- lanes -------------------------------------------------------------------------------
 
@@ -98,6 +100,17 @@ class RoadMap:
 
     def band(self, road_id: str, lane_id: int, s: float) -> LaneBand:
         """The lane `lane_id` of road `road_id` at `s`, or PositionError naming what is wrong."""
+        # Kept like `lane_to_world`'s answers: the map rules ask for the type of the lane each
+        # start position and destination lies on, once per rule and node naming it.
+        key = (road_id, lane_id, s)
+        known = self._bands.get(key)
+        if known is None:
+            known = self._bands[key] = self._band(road_id, lane_id, s)
+            if len(self._bands) > _ANSWERS_KEPT:
+                self._bands.pop(next(iter(self._bands)), None)
+        return known
+
+    def _band(self, road_id: str, lane_id: int, s: float) -> LaneBand:
         road = self.road(road_id)
         if not -1e-6 <= s <= road.length + 1e-6:
             raise PositionError(
@@ -167,8 +180,8 @@ class RoadMap:
 
     def _lanes_at(self, x: float, y: float, tolerance: float) -> list[LaneCoordinate]:
         found = []
-        # A few questions are answered sooner by trying every road than by importing shapely
-        # and building the index (UIS1's validation asks a few dozen).
+        # A few questions are answered sooner by trying every road than by building the index
+        # (UIS1's validation asks a few dozen).
         roads = (
             self._near(x, y, tolerance) if len(self._answers) > _UNINDEXED else self.roads.values()
         )
@@ -201,36 +214,22 @@ class RoadMap:
     def _near(self, x: float, y: float, tolerance: float) -> list[Road]:
         """The roads that may have a lane within `tolerance` m of (x, y), in the map's order.
 
-        A road qualifies only when its reference line passes within its lanes' reach plus the
+        A road qualifies when its reference line may pass within its lanes' reach plus the
         tolerance (twice: across and beyond either end) of the point; the index below finds
         those lines without projecting onto each road. The margin covers the half sample step
         between the polyline and the curve and lanes that widen between two samples.
         """
-        import numpy as np
-        import shapely  # about 10 ms, and only for maps that are asked about points
-
-        roads, tree, reach = self._index
-        if not roads:
-            return []
-        point = shapely.Point(x, y)
-        margin = 2 * tolerance + _INDEX_MARGIN
-        hits = tree.query(point, predicate="dwithin", distance=float(reach.max()) + margin)
-        if len(hits) == 0:
-            return []
-        hits = np.sort(hits)
-        close = shapely.distance(tree.geometries[hits], point) <= reach[hits] + margin
-        return [roads[i] for i in hits[close]]
+        if not (math.isfinite(x) and math.isfinite(y)):
+            return []  # no road's box holds such a point
+        roads, index = self._index
+        return [roads[i] for i in index.near(x, y, 2 * tolerance + _INDEX_MARGIN)]
 
     @cached_property
-    def _index(self) -> tuple[list[Road], Any, np.ndarray]:
-        """The roads, an STRtree of their sampled reference lines and each road's reach."""
-        import numpy as np
-        import shapely
-
+    def _index(self) -> tuple[list[Road], RoadIndex]:
+        """The roads, and a grid of the cells their reference lines (and lanes) reach."""
         roads = list(self.roads.values())
-        lines = [shapely.LineString(self.reference_line(road.id).xy) for road in roads]
-        reach = np.array([self._farthest_edge(road) for road in roads], dtype=float)
-        return roads, shapely.STRtree(lines), reach
+        lines = [self.reference_line(road.id).xy for road in roads]
+        return roads, RoadIndex(lines, [self._farthest_edge(road) for road in roads])
 
     def _farthest_edge(self, road: Road) -> float:
         """How far the road's farthest lane edge lies from its reference line, at the sampled

@@ -193,12 +193,11 @@ def lane_position_exists(position: scm.LanePosition, context: Context) -> Iterat
     road_map = map_of(position, context)
     if road_map is None or position.roadId is None or position.laneId is None:
         return
-    what = _what(position)
     for s in spread(position.s) or []:
         for offset in spread(position.offset, 0.0) or []:
             problem = road_map.lane_problem(str(position.roadId), int(position.laneId), s, offset)
             if problem is not None:
-                yield position, f"{what}: {problem}"
+                yield position, f"{_what(position)}: {problem}"
                 return
 
 
@@ -264,8 +263,15 @@ class _Ground:
         )
 
 
-def _grounds(position: EObject, road_map: RoadMap, context: Context) -> Iterator[_Ground]:
-    """The ground under each point of a position (a relative start where the starts put it)."""
+def _grounds(position: EObject, road_map: RoadMap, context: Context) -> list[_Ground]:
+    """The ground under each point of a position (a relative start where the starts put it);
+    once per run and position, for SCEML-R004 and R009 alike."""
+    return context.memo(
+        ("grounds", position), lambda: list(_find_grounds(position, road_map, context))
+    )
+
+
+def _find_grounds(position: EObject, road_map: RoadMap, context: Context) -> Iterator[_Ground]:
     try:
         points = _relative_start(position, road_map, context) or locate(position, road_map)
     except PositionError:
@@ -305,15 +311,18 @@ def position_fits_actor(position: EObject, context: Context) -> Iterator[Finding
     usable, needs = usable_lanes(actor)
     if _is_vehicle(actor):
         usable = usable | VEHICLE_EDGE_LANE_TYPES  # SCEML-R009 warns there
-    what = _what(position)
     for ground in _grounds(position, road_map, context):
         if not ground.types:
-            yield position, f"{what}: {ground.place} is off the road network{ground.off_road}"
+            yield (
+                position,
+                f"{_what(position)}: {ground.place} is off the road network{ground.off_road}",
+            )
             return
         if not any(lane_type in usable for lane_type in ground.types):
             yield (
                 position,
-                f"{what}: {ground.words(ground.types[0])}; a {_kind(actor)} needs {needs}",
+                f"{_what(position)}: {ground.words(ground.types[0])}; a {_kind(actor)} needs "
+                f"{needs}",
             )
             return
 

@@ -76,21 +76,42 @@ def _actions_by_actor(flows: Flows, context: Context) -> dict[object, list[scm.A
     return context.memo(("actions by actor", id(flows)), group)
 
 
-def _departure(node: scm.ActionNode, context: Context) -> tuple[EObject | None, bool]:
+def _history(
+    node: scm.ActionNode, context: Context
+) -> tuple[Flows, list[scm.ActionNode], list[EObject]]:
+    """The graph `node` is read in, its actor's action nodes before it (in the graph's order,
+    so that of two parallel latest maneuvers the same one counts) and the latest of those that
+    place the actor (`model.departure`); once per run and node, for its departure and for
+    R006's lane change since."""
+
+    def read() -> tuple[Flows, list[scm.ActionNode], list[EObject]]:
+        flows = _flows_of(node, context)
+        earlier = _ancestors(node, flows, context)
+        actions = _actions_by_actor(flows, context).get(node.referenceActor, ())
+        mine = [n for n in actions if n in earlier]
+        return flows, mine, latest_placing(mine, lambda other: _ancestors(other, flows, context))
+
+    return context.memo(("history", node), read)
+
+
+def _departure(node: scm.ActionNode, context: Context) -> EObject | None:
     """Where the actor is when `node` starts (`model.departure`: the place of its latest earlier
-    routed maneuver, trajectory or InLocationRadius, else its start), and whether a lane change
-    or overtake of the actor since then leaves its lane open."""
-    actor = node.referenceActor
-    flows = _flows_of(node, context)
-    earlier = _ancestors(node, flows, context)
-    # In the graph's own order, so that of two parallel latest maneuvers the same one counts.
-    mine = [n for n in _actions_by_actor(flows, context).get(actor, ()) if n in earlier]
-    latest = latest_placing(mine, lambda other: _ancestors(other, flows, context))
-    since = reachable(latest, backwards=False, flows=flows) if latest else set(earlier)
-    lane_open = any(isinstance(n, scm.LaneChange | scm.Overtake) for n in mine if n in since)
+    routed maneuver, trajectory or InLocationRadius, else its start)."""
+    _, _, latest = _history(node, context)
     if latest:
-        return place_after(latest[0]), lane_open
-    return (actor.startPosition if actor is not None else None), lane_open
+        return place_after(latest[0])
+    actor = node.referenceActor
+    return actor.startPosition if actor is not None else None
+
+
+def _lane_open(node: scm.ActionNode, context: Context) -> bool:
+    """Whether a lane change or overtake of the actor since its departure leaves its lane open
+    (R006 only: R007's crossing does not ask which lane the walker is on)."""
+    flows, mine, latest = _history(node, context)
+    if latest:
+        since = reachable(latest, backwards=False, flows=flows)
+        return any(isinstance(n, scm.LaneChange | scm.Overtake) for n in mine if n in since)
+    return any(isinstance(n, scm.LaneChange | scm.Overtake) for n in mine)
 
 
 def _lanes_at(road_map: RoadMap, point: Located, usable: frozenset[str]) -> list[LaneCoordinate]:
@@ -125,7 +146,7 @@ def turn_follows_junction(node: scm.RoutedManeuver, context: Context) -> Iterato
     ):
         return
     usable, _ = usable_lanes(actor)
-    departure, lane_open = _departure(node, context)
+    departure, lane_open = _departure(node, context), _lane_open(node, context)
     try:
         start = centre(departure, road_map)
         goal = centre(node.destination, road_map)
@@ -257,7 +278,7 @@ def cross_crosses_the_road(node: scm.Cross, context: Context) -> Iterator[Findin
     road_map = map_of(node, context)
     if road_map is None or node.referenceActor is None:
         return
-    departure, _ = _departure(node, context)
+    departure = _departure(node, context)
     try:
         start = centre(departure, road_map)
         goal = centre(node.destination, road_map)

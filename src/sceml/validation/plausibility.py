@@ -68,7 +68,8 @@ LIMIT_UNITS = {"max_speed": "m/s", "max_acceleration": "m/s2", "max_deceleration
 
 def own_limit(actor: EObject, key: str) -> float | None:
     """The limit `key` the actor states itself (release 1.4's Actor.maxSpeed, ...), or None."""
-    own = actor.eGet(OWN_LIMITS[key]) if isinstance(actor, scm.Actor) else None
+    # Read past eGet: SCEML-L005 asks for each of the three limits of every node's performer.
+    own = single_value(actor, OWN_LIMITS[key]) if isinstance(actor, scm.Actor) else None
     return highest(own)
 
 
@@ -183,7 +184,7 @@ def performance_plausible(actor: scm.Actor, context: Context) -> Iterator[Findin
     # A warning, not an error: real catalogs state generous limits (esmini's bus: 70 m/s) that
     # only cap the motion; the speeds the scenario asks for are still judged (L001..L003).
     for key, feature in OWN_LIMITS.items():
-        value = actor.eGet(feature)
+        value = single_value(actor, feature)  # most actors state none: no holder made for it
         top = highest(value)
         limit = context.limits.limit(actor.eClass.name, key)
         if top is not None and limit is not None and top > limit:
@@ -211,27 +212,14 @@ def within_own_performance(owner: EObject, context: Context) -> Iterator[Finding
     actor = performer(owner)
     if actor is None:
         return
-    for key, unit, own in own_limits_below_ceiling(actor, context):
+    # Not kept per actor: sampling (levels/checks.py) checks every sample in one context, and
+    # an actor's own limits may be sampled values.
+    for key, unit in LIMIT_UNITS.items():
+        own = own_limit(actor, key)
+        if own is None:
+            continue  # no own limit
+        ceiling, _ = actor_limit(actor, context, key)
+        if ceiling is not None and own >= ceiling:
+            continue  # it is the ceiling L001..L003 judge by
         for value, message in _over(owner, key, unit, own, f"{actor.name}'s own"):
             yield value, f"{message}: the players hold it to that"
-
-
-def own_limits_below_ceiling(
-    actor: EObject, context: Context
-) -> tuple[tuple[str, str, float], ...]:
-    """The limits an actor states itself below the ceilings L001..L003 judge by, as (key, unit,
-    own limit), in LIMIT_UNITS' order: what SCEML-L005 holds each of its nodes to.
-
-    Once per run and actor (each of an actor's nodes asks); most actors state none.
-    """
-
-    def compute() -> tuple[tuple[str, str, float], ...]:
-        found = []
-        for key, unit in LIMIT_UNITS.items():
-            own, (ceiling, _) = own_limit(actor, key), actor_limit(actor, context, key)
-            if own is None or (ceiling is not None and own >= ceiling):
-                continue  # no own limit, or it is the ceiling L001..L003 judge by
-            found.append((key, unit, own))
-        return tuple(found)
-
-    return context.memo(("own limits below ceiling", actor), compute)
