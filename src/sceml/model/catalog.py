@@ -98,9 +98,7 @@ def _ecore_classes() -> dict[str, _Class]:
     from scemlmodel._catalog_facts import CLASSES
 
     return {
-        name: _Class(
-            name, abstract, supertypes, annotations, tuple(_Feature(*f) for f in features)
-        )
+        name: _Class(name, abstract, supertypes, annotations, tuple(_Feature(*f) for f in features))
         for name, (abstract, supertypes, annotations, features) in CLASSES.items()
     }
 
