@@ -1,4 +1,5 @@
-"""Regenerate `generated/` from `metamodel/*.ecore` with the pinned pyecoregen (sceml.dev.generator)."""
+"""Regenerate `generated/` from `metamodel/*.ecore` with the pinned pyecoregen (sceml.dev.generator),
+and the catalog's facts beside it (sceml.model.ecore_facts)."""
 
 from __future__ import annotations
 
