@@ -5,6 +5,7 @@ fails or a parent that is interrupted leaves no process behind."""
 from __future__ import annotations
 
 import os
+import pickle
 from pathlib import Path
 
 import pytest
@@ -89,7 +90,7 @@ def test_a_child_that_fails_leaves_its_share_to_the_parent(
     def broken(*args: object, **options: object) -> bytes:
         raise MemoryError  # in the child, which inherits this patch
 
-    monkeypatch.setattr(split.pickle, "dumps", broken)
+    monkeypatch.setattr(pickle, "dumps", broken)  # split imports it on use, before the fork
     together = validate(document.root, document=document, jobs=2)
     assert _said(together) == _said(alone)
     assert len(always_split) == 1 and _reaped(always_split[0])

@@ -1,4 +1,5 @@
-"""Regenerate `generated/` from `metamodel/*.ecore` with the pinned pyecoregen (sceml.dev.generator)."""
+"""Regenerate `generated/` from `metamodel/*.ecore` with the pinned pyecoregen (sceml.dev.generator),
+and the catalog's facts beside it (sceml.model.ecore_facts)."""
 
 from __future__ import annotations
 
@@ -22,10 +23,14 @@ def project_root() -> Path:
 def _generate_into(ecore: Path, out: Path) -> None:
     from pyecore.resources import URI, ResourceSet
 
+    from ..model.ecore_facts import MODULE_FILE, facts_module, read_facts
     from .generator import StaticFeaturesGenerator
 
     package = ResourceSet().get_resource(URI(str(ecore))).contents[0]
     StaticFeaturesGenerator(auto_register_package=False).generate(package, str(out))
+    # What the catalog reads of the .ecore, as literals it loads without parsing the file.
+    facts = facts_module(read_facts(ecore.read_bytes()))
+    (out / str(package.name) / MODULE_FILE).write_text(facts, encoding="utf-8")
 
 
 def generate(root: Path, *, check: bool = False) -> list[str]:

@@ -1,22 +1,18 @@
 """What the metamodel says about each kind: categories, parameters, units and language defaults.
 
-The generated classes carry no EAnnotations, so these facts are read from the shipped `.ecore`,
-which stays the single source of truth.
+The generated classes carry no EAnnotations, so these facts come from the `.ecore`, which stays
+the single source of truth: `sceml dev generate` writes what the catalog reads of it beside the
+generated classes (`sceml.model.ecore_facts`).
 """
 
 from __future__ import annotations
 
-import importlib.util
 from dataclasses import dataclass
 from functools import cache
-from pathlib import Path
 
-from lxml import etree
 from pyecore.ecore import EClass, EObject
 
 import scemlmodel as scm
-
-from ..files.safexml import hardened_parser
 
 NODE_ANNOTATION = "http://sceml.org/node"
 PARAMETER_ANNOTATION = "http://sceml.org/parameter"
@@ -91,62 +87,19 @@ class _Class:
     features: tuple[_Feature, ...]
 
 
-def _shipped_ecore() -> Path:
-    """The .ecore installed with the package sceml.metamodel (a plain folder: the package ships
-    as files, not zipped; importlib.resources would cost every command's start about 8 ms)."""
-    spec = importlib.util.find_spec("sceml.metamodel")
-    assert spec is not None and spec.origin is not None  # part of this package
-    return Path(spec.origin).with_name("scemlmodel.ecore")
-
-
 @cache
 def _ecore_classes() -> dict[str, _Class]:
     """The EClasses of the shipped .ecore, by name, in file order, with their annotations.
 
-    Read with lxml: building pyecore's dynamic metamodel from the file cost about 20 ms of every
-    command's start-up, and the catalog needs only names, supertypes and annotations.
+    Read from the module `sceml dev generate` writes beside the generated classes
+    (`sceml.model.ecore_facts`; CI checks it against the .ecore): parsing the .ecore itself cost
+    every command's start 5-10 ms, and building pyecore's dynamic metamodel from it about 20.
     """
-    data = _shipped_ecore().read_bytes()
-    package = etree.fromstring(data, parser=hardened_parser(drop_comments=True))
-    classes: dict[str, _Class] = {}
-    for classifier in package.iterfind("eClassifiers"):
-        if classifier.get(_XSI_TYPE) != "ecore:EClass":
-            continue
-        features = tuple(
-            _Feature(
-                str(feature.get("name")),
-                _local_type(feature.get("eType"))
-                if feature.get(_XSI_TYPE) == "ecore:EReference"
-                else "",
-                _annotations_of(feature),
-            )
-            for feature in classifier.iterfind("eStructuralFeatures")
-        )
-        classes[str(classifier.get("name"))] = _Class(
-            str(classifier.get("name")),
-            classifier.get("abstract") == "true",
-            tuple(_local_type(t) for t in (classifier.get("eSuperTypes") or "").split()),
-            _annotations_of(classifier),
-            features,
-        )
-    return classes
+    from scemlmodel._catalog_facts import CLASSES
 
-
-_XSI_TYPE = "{http://www.w3.org/2001/XMLSchema-instance}type"
-
-
-def _local_type(reference: str | None) -> str:
-    """`#//ParameterValue` -> `ParameterValue`: the .ecore names its own classes this way."""
-    return (reference or "").rpartition("/")[2]
-
-
-def _annotations_of(element: object) -> dict[str, dict[str, str]]:
     return {
-        str(annotation.get("source")): {
-            str(detail.get("key")): str(detail.get("value", ""))
-            for detail in annotation.iterfind("details")
-        }
-        for annotation in element.iterfind("eAnnotations")  # type: ignore[attr-defined]
+        name: _Class(name, abstract, supertypes, annotations, tuple(_Feature(*f) for f in features))
+        for name, (abstract, supertypes, annotations, features) in CLASSES.items()
     }
 
 

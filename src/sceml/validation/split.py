@@ -22,7 +22,6 @@ from __future__ import annotations
 
 import contextlib
 import os
-import pickle
 import signal
 from collections.abc import Iterable
 from pathlib import Path
@@ -153,6 +152,8 @@ class _Child:
             _, status = os.waitpid(self.pid, 0)
         if status != 0 or not data:
             return None
+        import pickle  # already imported by _in_child, before the fork
+
         sent: list[_Sent] = pickle.loads(data)
         by_address = {id(obj): obj for obj in self.everything}
         return [
@@ -188,6 +189,10 @@ def _in_child(
 ) -> _Child | None:
     """Fork a child that runs `rest`'s rules and writes what it found into a pipe; None where
     that cannot be done (the caller then runs them itself)."""
+    # Imported here, before the fork, for both processes: every `sceml validate` imports this
+    # module, and only a split run (2,000 nodes or more) needs pickle (about 1 ms to import).
+    import pickle
+
     try:
         reader, writer = os.pipe()
     except OSError:
