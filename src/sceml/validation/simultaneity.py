@@ -116,7 +116,9 @@ def conflicts(
     found: list[Conflict] = []
     seen: set[tuple[EObject, EObject]] = set()
     for node in order:
-        bits = _combine(node, [after[source] for source in sources[node]])
+        inputs = sources[node]
+        # Most nodes have one predecessor, whose set they take as it is (what `_combine` gives).
+        bits = after[inputs[0]] if len(inputs) == 1 else _combine(node, [after[s] for s in inputs])
         if node in bit:
             bits |= 1 << bit[node]
         for earlier, category in previous.get(node, ()):
