@@ -42,8 +42,12 @@ EDGE_ENDS = """() => {
     if (!handle) continue;
     const path = edge.querySelector('.react-flow__edge-path');
     const end = path.getPointAtLength(path.getTotalLength()).matrixTransform(path.getScreenCTM());
+    // How far the end lies outside the handle's drawn box (0: on it). React Flow ends an edge
+    // a few pixels into its target handle, where rounding at a zoom near 1 moves it by a pixel.
     const r = handle.getBoundingClientRect();
-    misses.push(Math.hypot(end.x - (r.left + r.width / 2), end.y - r.top));
+    const dx = Math.max(r.left - end.x, end.x - r.right, 0);
+    const dy = Math.max(r.top - end.y, end.y - r.bottom, 0);
+    misses.push(Math.hypot(dx, dy));
   }
   return misses;
 }"""
@@ -88,4 +92,4 @@ def test_a_large_scenario_fits_light_when_far_and_its_edges_meet_the_handles(
     expect(node(page, target).locator(".react-flow__handle")).to_have_count(2)
     misses = page.evaluate(EDGE_ENDS)
     assert len(misses) >= 3, misses
-    assert max(misses) < 3, misses
+    assert max(misses) < 1, misses  # every end on its handle (a pixel of rounding allowed)
