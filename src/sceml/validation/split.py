@@ -155,6 +155,8 @@ class _Child:
         import pickle  # already imported by _in_child, before the fork
 
         sent: list[_Sent] = pickle.loads(data)
+        if not sent:
+            return []  # a valid scenario: no table of a million objects' addresses to build
         by_address = {id(obj): obj for obj in self.everything}
         return [
             Diagnostic(
