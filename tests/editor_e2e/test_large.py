@@ -42,12 +42,11 @@ EDGE_ENDS = """() => {
     if (!handle) continue;
     const path = edge.querySelector('.react-flow__edge-path');
     const end = path.getPointAtLength(path.getTotalLength()).matrixTransform(path.getScreenCTM());
-    // How far the end lies outside the handle's drawn box (0: on it). React Flow ends an edge
-    // a few pixels into its target handle, where rounding at a zoom near 1 moves it by a pixel.
+    // How far the end lies from the middle of the handle's top edge, where React Flow ends an
+    // edge into a top handle: 3 px in every run (the handle's border), 4 where rounding at a
+    // zoom near 1 moves it by a pixel; a node drawn without handles ends its edges far off.
     const r = handle.getBoundingClientRect();
-    const dx = Math.max(r.left - end.x, end.x - r.right, 0);
-    const dy = Math.max(r.top - end.y, end.y - r.bottom, 0);
-    misses.push(Math.hypot(dx, dy));
+    misses.push(Math.hypot(end.x - (r.left + r.width / 2), end.y - r.top));
   }
   return misses;
 }"""
@@ -92,4 +91,4 @@ def test_a_large_scenario_fits_light_when_far_and_its_edges_meet_the_handles(
     expect(node(page, target).locator(".react-flow__handle")).to_have_count(2)
     misses = page.evaluate(EDGE_ENDS)
     assert len(misses) >= 3, misses
-    assert max(misses) < 1, misses  # every end on its handle (a pixel of rounding allowed)
+    assert max(misses) < 5, misses  # every end on its handle (a pixel of rounding allowed)
