@@ -80,6 +80,14 @@ def write_atomically(path: str | Path, data: bytes) -> None:
         raise
 
 
+def _write_all(handle: int, data: bytes) -> None:
+    """Every byte of `data` into the open file `handle` (os.write may take only part of it).
+    No fsync, as in write_atomically: the name given last is the guarantee."""
+    view = memoryview(data)
+    while view:
+        view = view[os.write(handle, view) :]
+
+
 #: Whether this system makes unnamed files (Linux's O_TMPFILE) in the output folders; cleared at the
 #: first refusal (another system, an old kernel, a file system without it).
 _unnamed_files = hasattr(os, "O_TMPFILE") and os.path.isdir("/proc/self/fd")
@@ -108,9 +116,7 @@ def _write_unnamed(target: Path, data: bytes) -> bool:
             _unnamed_files = False
         return False
     try:
-        view = memoryview(data)
-        while view:  # No fsync, as in write_atomically.
-            view = view[os.write(handle, view) :]
+        _write_all(handle, data)
         os.fchmod(handle, 0o644)  # as write_atomically leaves a file, whatever the umask
         # linkat(AT_SYMLINK_FOLLOW) names the file the descriptor's /proc entry stands for; os.link
         # calls it only when given a folder descriptor (ignored for an absolute path), and calls
@@ -149,9 +155,7 @@ def write_staged(path: str | Path, data: bytes, staging: str | Path) -> None:
         raise SaveError(f"cannot write: {_reason(error)}", file=path) from None
     try:
         try:
-            view = memoryview(data)
-            while view:  # No fsync, as in write_atomically: the rename is the guarantee.
-                view = view[os.write(handle, view) :]
+            _write_all(handle, data)
         finally:
             os.close(handle)
         os.chmod(staged, 0o644)  # as write_atomically leaves a file, whatever the umask
