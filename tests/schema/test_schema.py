@@ -223,7 +223,7 @@ def test_schemas_are_loaded_once_per_version() -> None:
 
 def test_xsd_comes_from_the_qc_package() -> None:
     assert schema._XSD_FOLDERS == {"1.0": "1.0.0", "1.1": "1.1.1", "1.2": "1.2.0", "1.3": "1.3.0"}
-    assert b"ASAM OpenSCENARIO V1.1.1" in schema._xsd_bytes("1.1")
+    assert b"ASAM OpenSCENARIO V1.1.1" in schema.xsd_bytes("1.1")
 
 
 def test_validating_a_tree_does_not_serialise(monkeypatch: pytest.MonkeyPatch) -> None:
@@ -274,4 +274,4 @@ def test_validating_a_tree_reuses_the_compiled_schema_and_never_reparses(
 def test_the_xsd_is_found_without_importing_the_checker_package(version: str) -> None:
     # The same bytes as the package's own resource lookup gives (which imports pydantic).
     via_package = importlib.resources.files("qc_openscenario.schema") / schema._XSD_FOLDERS[version]
-    assert schema._xsd_bytes(version) == (via_package / schema._XSD_NAME).read_bytes()
+    assert schema.xsd_bytes(version) == (via_package / schema._XSD_NAME).read_bytes()

@@ -136,7 +136,8 @@ class SchemaIssue:
         )
 
 
-def _xsd_bytes(version: str) -> bytes:
+def xsd_bytes(version: str) -> bytes:
+    """The official XSD of an OpenSCENARIO version, as the asam-qc-openscenarioxml package holds it."""
     if version not in _XSD_FOLDERS:
         raise UnsupportedVersionError(
             f"OpenSCENARIO version {version!r} is not supported; "
@@ -165,7 +166,7 @@ def compiled_schema(version: str) -> etree.XMLSchema:
 
 @functools.cache
 def _lxml_schema(version: str) -> etree.XMLSchema:
-    return etree.XMLSchema(etree.fromstring(_xsd_bytes(version), hardened_parser()))
+    return etree.XMLSchema(etree.fromstring(xsd_bytes(version), hardened_parser()))
 
 
 @functools.cache
@@ -174,7 +175,7 @@ def _xmlschema_schema(version: str) -> xmlschema.XMLSchema10:
 
     # XSD 1.0 semantics, like libxml2, so both validators judge by the same rules.
     return xmlschema.XMLSchema10(
-        _xsd_bytes(version).decode("utf-8-sig"), defuse="always", allow="none"
+        xsd_bytes(version).decode("utf-8-sig"), defuse="always", allow="none"
     )
 
 
