@@ -19,10 +19,13 @@ from pyecore.ecore import EObject
 import scemlmodel as scm
 
 from ..diagnostics import Diagnostic, Severity
+from ..model.traversal import all_contents
 from ..validation import REGISTRY, Registry, validate
 from ..validation.context import Context
+from ..validation.edits import Change, Impact
 from ..validation.limits import Limits
-from ..validation.registry import findings
+from ..validation.reads import stale
+from ..validation.registry import Check
 from .apply import FlatTemplate
 
 #: The rule families whose outcome depends on parameter values: parameters and plausibility.
@@ -61,51 +64,63 @@ def _validation_hook(template: FlatTemplate) -> Validator:
 
     Sampling changes numbers, never the graph, actors or modules, so structure, actor, module,
     simultaneity and readiness rules are checked once on the logical scenario (by the caller).
-    Per sample only the parameter and plausibility families run, and only on the objects that
-    hold a sampled value and their containers up to the scenario: every other object's values
-    are the logical scenario's and were checked with it. Walking the whole model with pyecore's
-    eAllContents for every sample cost more than the export itself.
+    Per sample only the parameter and plausibility families run, and of those only the rules
+    that read a sampled value, where they read it: each rule declares what it reads
+    (`sceml.validation.reads`), and a sample is to these rules what an edit of each sampled
+    value is to incremental validation (`edits.Impact`), an edit of numbers alone. So a rule
+    runs on the objects that hold a sampled value and their containers, and, when the value
+    lies in an actor (its own maxSpeed), the rules reading ACTOR_VALUES run on every node that
+    actor performs: that node's speeds are held to the actor's limit. Every other object's
+    values are the logical scenario's and were checked with it.
+    Walking the whole model with every rule for every sample cost more than the export itself.
+
+    Each sample is a validation run of its own, with a Context of its own: a memo of one
+    sample (an actor's limit) must not answer for the next.
     """
-    context = Context(template.scenario, None, Limits(), None)
+    limits = Limits()
     paths = {
         target: path
         for path, targets in zip(template.paths, template.targets, strict=True)
         for target in targets
     }
-    plan = []
-    for obj in _holders(template):
-        rules = value_rules().rules_for(obj.eClass)
-        if rules:
-            plan.append((obj, rules))
+    plan = _plan(template)
 
     def reasons(scenario: scm.Scenario) -> list[str]:
+        context = Context(template.scenario, None, limits, None)
         found = []
-        for obj, rules in plan:
-            for rule in rules:
+        for obj, checks in plan:
+            for code, check in checks:
                 try:
-                    first = next(iter(findings(rule.check, obj, context)), None)
+                    # Only whether the rule finds anything, and its first finding, matter here.
+                    first = next(iter(check(obj, context)), None)
                 except Exception:  # a rule that breaks on odd values skips the sample, loudly
                     found.append("SCEML-X000")
                     continue
                 if first is not None:
-                    found.append(_reason(rule.code, first[0], paths))
+                    found.append(_reason(code, first[0], paths))
         return found
 
     return reasons
 
 
+def _plan(template: FlatTemplate) -> list[tuple[EObject, tuple[tuple[str, Check], ...]]]:
+    """Each object of the template with the value rules (code, check) that read one of its
+    sampled values."""
+    impact = Impact(
+        [Change(target, "value") for targets in template.targets for target in targets],
+        alone=False,
+    )
+    plan = []
+    for obj in (template.scenario, *all_contents(template.scenario)):
+        rules = value_rules().rules_for(obj.eClass)
+        checks = tuple(
+            (r.code, r.check) for r in rules if stale(r.reads, obj, impact, values_only=True)
+        )
+        if checks:
+            plan.append((obj, checks))
+    return plan
+
+
 def _reason(code: str, element: EObject, paths: dict[Any, str]) -> str:
     path = paths.get(element)
     return f"{code} at {path}" if path is not None else code
-
-
-def _holders(template: FlatTemplate) -> list[Any]:
-    """Each sampled Value and all of its containers, each once, innermost first."""
-    seen: dict[int, Any] = {}
-    for targets in template.targets:
-        for target in targets:
-            obj = target
-            while obj is not None and id(obj) not in seen:
-                seen[id(obj)] = obj
-                obj = obj.eContainer()
-    return list(seen.values())

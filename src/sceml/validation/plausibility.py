@@ -21,7 +21,7 @@ from ..model.params import describe
 from ..model.traversal import single_value
 from .context import Context, performer
 from .parameters import parameter_path
-from .reads import SELF, VALUE, Reads
+from .reads import ACTOR_VALUES, SELF, VALUE, Reads
 from .registry import Finding, constraint
 
 ERROR = Severity.ERROR
@@ -130,7 +130,7 @@ def _over_limit(owner: EObject, context: Context, key: str, unit: str) -> Iterat
     paper_rule="5",
     through_modules=True,
     # the performer's kind
-    reads=Reads(VALUE),
+    reads=Reads(VALUE | ACTOR_VALUES),
     judges_stated_values=True,
 )
 def speed_fits_actor(owner: EObject, context: Context) -> Iterator[Finding]:
@@ -146,7 +146,7 @@ def speed_fits_actor(owner: EObject, context: Context) -> Iterator[Finding]:
     paper_rule="5",
     through_modules=True,
     # the performer's kind
-    reads=Reads(VALUE),
+    reads=Reads(VALUE | ACTOR_VALUES),
     judges_stated_values=True,
 )
 def acceleration_fits_actor(owner: EObject, context: Context) -> Iterator[Finding]:
@@ -162,7 +162,7 @@ def acceleration_fits_actor(owner: EObject, context: Context) -> Iterator[Findin
     paper_rule="5",
     through_modules=True,
     # the performer's kind
-    reads=Reads(VALUE),
+    reads=Reads(VALUE | ACTOR_VALUES),
     judges_stated_values=True,
 )
 def deceleration_fits_actor(owner: EObject, context: Context) -> Iterator[Finding]:
@@ -205,15 +205,15 @@ def performance_plausible(actor: scm.Actor, context: Context) -> Iterator[Findin
     paper_rule="5",
     through_modules=True,
     # the performer's own limits
-    reads=Reads(VALUE),
+    reads=Reads(VALUE | ACTOR_VALUES),
     judges_stated_values=True,
 )
 def within_own_performance(owner: EObject, context: Context) -> Iterator[Finding]:
     actor = performer(owner)
     if actor is None:
         return
-    # Not kept per actor: sampling (levels/checks.py) checks every sample in one context, and
-    # an actor's own limits may be sampled values.
+    # Not kept per actor: read through actor_limit's memo, which lasts one run (in sampling,
+    # one sample: levels/checks.py), it would be one more table to keep right.
     for key, unit in LIMIT_UNITS.items():
         own = own_limit(actor, key)
         if own is None:

@@ -12,11 +12,14 @@ from __future__ import annotations
 from dataclasses import dataclass
 from enum import Flag, auto
 
-from .edits import Aspect
+from pyecore.ecore import EObject
+
+from .edits import Aspect, Impact, refers_to
 
 __all__ = [
     "ABOVE",
     "ACTORS",
+    "ACTOR_VALUES",
     "EXPANSION",
     "LEVEL",
     "MODULES",
@@ -27,6 +30,7 @@ __all__ = [
     "Aspect",
     "Reads",
     "Scope",
+    "stale",
 ]
 
 
@@ -41,7 +45,12 @@ class Scope(Flag):
     #: (`ego.Accelerate_1.targetSpeed`) and "start of actor 'ego'" name them.
     ABOVE = auto()
     #: The actors or roles it, its node or its use refers to: their names, kinds, whether declared.
+    #: (Incremental validation re-runs these rules also when something an actor holds changed.)
     ACTORS = auto()
+    #: Values those actors hold that judge this object's values: their own limits (maxSpeed,
+    #: maxAcceleration, maxDeceleration). Declared beside ACTORS; what tells a change of values
+    #: alone (a sample's, `stale(values_only=True)`) from one of names or kinds.
+    ACTOR_VALUES = auto()
 
 
 @dataclass(frozen=True)
@@ -53,7 +62,7 @@ class Reads:
 
 
 # Shorthands the rule modules use in their declarations.
-SELF, ABOVE, ACTORS = Scope.SELF, Scope.ABOVE, Scope.ACTORS
+SELF, ABOVE, ACTORS, ACTOR_VALUES = Scope.SELF, Scope.ABOVE, Scope.ACTORS, Scope.ACTOR_VALUES
 #: A rule on a value or a position: its parameter path names its containers, node and actor.
 VALUE = SELF | ABOVE | ACTORS
 #: The graph's shape: its nodes and flows, and their names.
@@ -66,3 +75,22 @@ ROUTE = Aspect.STRUCTURE | Aspect.ROLES | Aspect.CAST | Aspect.POSITIONS | Aspec
 #: The scenario's level and map (held by the root node).
 LEVEL = Aspect.SETTINGS
 MODULES = Aspect.MODULES
+
+
+def stale(reads: Reads | None, obj: EObject, impact: Impact, *, values_only: bool = False) -> bool:
+    """Whether a rule that reads `reads` (None: it declares nothing) reads, on `obj`, something
+    the changes of `impact` changed. (Incremental validation's `_Pass.check` decides the same
+    per rule with its tables worked out once per run.)
+
+    With `values_only`, the changes only set the numbers of values (a sample): an actor that
+    holds one kept its name, kind and declaration, so through it only rules reading
+    ACTOR_VALUES are stale."""
+    if reads is None or reads.aspects & impact.aspects:
+        return True
+    scope = reads.scope
+    through_actors = ACTOR_VALUES if values_only else ACTORS
+    return bool(
+        (scope & Scope.SELF and obj in impact.around)
+        or (scope & Scope.ABOVE and obj in impact.inside)
+        or (scope & through_actors and refers_to(obj, impact.participants))
+    )
