@@ -18,7 +18,7 @@ from click.testing import CliRunner
 from sceml.cli.sample import sample
 from sceml.errors import SaveError
 from sceml.executors import Deferred, open_executor
-from sceml.files.writing import write_staged
+from sceml.files.writing import open_folder, write_staged
 from sceml.levels import batch
 from sceml.levels.batch import BatchConfig, run_batch
 from sceml.levels.sampling import Plan, values_at
@@ -91,6 +91,31 @@ def test_a_new_file_is_named_only_once_complete_and_never_staged(
     assert seen == [("['.staging']", False)]  # no temporary name, in the folder or staged
     assert target.read_bytes() == b"x" * 100_000
     assert stat.S_IMODE(target.stat().st_mode) == 0o644
+    assert list(staging.iterdir()) == []
+
+
+def test_through_an_open_folder_the_writing_rule_holds(tmp_path: Path) -> None:
+    """The workers write through a descriptor of the output folder (`open_folder`): new files,
+    replaced files, links and what is never replaced fare as through the folder's path."""
+    staging = tmp_path / ".staging"
+    staging.mkdir()
+    (tmp_path / "old.xosc").write_bytes(b"old")
+    (tmp_path / "real.xosc").write_bytes(b"real")
+    (tmp_path / "link.xosc").symlink_to(tmp_path / "real.xosc")
+    os.mkfifo(tmp_path / "fifo.xosc")
+    with open_folder(tmp_path) as handle:
+        assert isinstance(handle, int)
+        write_staged(tmp_path / "new.xosc", b"new", staging, handle)
+        write_staged(tmp_path / "old.xosc", b"replaced", staging, handle)
+        write_staged(tmp_path / "link.xosc", b"through the link", staging, handle)
+        with pytest.raises(SaveError, match="FIFO"):
+            write_staged(tmp_path / "fifo.xosc", b"never", staging, handle)
+    assert (tmp_path / "new.xosc").read_bytes() == b"new"
+    assert stat.S_IMODE((tmp_path / "new.xosc").stat().st_mode) == 0o644
+    assert (tmp_path / "old.xosc").read_bytes() == b"replaced"
+    assert (tmp_path / "link.xosc").is_symlink()  # the link stays a link
+    assert (tmp_path / "real.xosc").read_bytes() == b"through the link"
+    assert stat.S_ISFIFO(os.lstat(tmp_path / "fifo.xosc").st_mode)
     assert list(staging.iterdir()) == []
 
 

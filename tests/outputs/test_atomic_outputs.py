@@ -15,6 +15,7 @@ from lxml import etree
 from sceml.cli import cli
 from sceml.files.writing import write_atomically
 from sceml.xosc import schema
+from sceml.xosc.attribute_types import ValueCheck
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 GOOD = b"<good>previous output</good>\n"
@@ -138,6 +139,9 @@ def test_a_sample_refused_by_the_xsd_writes_nothing_and_the_others_are_complete(
 
     monkeypatch.setattr(schema, "is_valid_tree", third_is_invalid)
     monkeypatch.setattr(schema, "validate_tree", issues)
+    # Every sample is checked as a whole document, not by its sampled values alone (which
+    # would pass), so that the third check refuses one.
+    monkeypatch.setattr(ValueCheck, "valid", lambda self, values: False)
     result = _sample(out)
     assert result.exit_code == 0 and "3 written, 1 skipped (xsd: forced by the test: 1)" in (
         result.output

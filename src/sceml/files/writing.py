@@ -6,6 +6,7 @@ import contextlib
 import errno
 import os
 import tempfile
+from collections.abc import Iterator
 from pathlib import Path
 
 from ..errors import SaveError
@@ -93,9 +94,25 @@ def _write_all(handle: int, data: bytes) -> None:
 _unnamed_files = hasattr(os, "O_TMPFILE") and os.path.isdir("/proc/self/fd")
 
 
-def _write_unnamed(target: Path, data: bytes) -> bool:
-    """Write a new `target` as an unnamed file in its folder, then give it its name; False when
-    the target exists or the system makes no unnamed files (the caller writes another way).
+@contextlib.contextmanager
+def open_folder(folder: str | Path) -> Iterator[int | None]:
+    """An open descriptor of `folder` for `write_staged`, closed afterwards; None where folders
+    cannot be opened so (the writes then look the folder up by its path)."""
+    try:
+        handle = os.open(folder, os.O_RDONLY | getattr(os, "O_DIRECTORY", 0))
+    except OSError:
+        yield None
+        return
+    try:
+        yield handle
+    finally:
+        os.close(handle)
+
+
+def _write_unnamed(path: Path, data: bytes, folder: int | None = None) -> bool:
+    """Write a new file `path` as an unnamed file in its folder, then give it its name; False
+    when the name exists or the system makes no unnamed files (the caller writes another way).
+    `folder`: an open descriptor of `path`'s folder, which saves looking the folder up per file.
 
     The file gets a name only once complete, so no reader ever sees it half-written and a killed
     process leaves nothing behind; and it touches the folder once, where a temporary name and a
@@ -110,7 +127,10 @@ def _write_unnamed(target: Path, data: bytes) -> bool:
     # file to the caller's other way, which reports a real problem (a full disk, a folder it may
     # not write) in the same words as everywhere else.
     try:
-        handle = os.open(target.parent, os.O_TMPFILE | os.O_WRONLY, 0o644)
+        if folder is None:
+            handle = os.open(path.parent, os.O_TMPFILE | os.O_WRONLY, 0o644)
+        else:
+            handle = os.open(".", os.O_TMPFILE | os.O_WRONLY, 0o644, dir_fd=folder)
     except OSError as error:
         if error.errno in (errno.EOPNOTSUPP, errno.EISDIR, errno.EINVAL):
             _unnamed_files = False
@@ -121,8 +141,14 @@ def _write_unnamed(target: Path, data: bytes) -> bool:
         # linkat(AT_SYMLINK_FOLLOW) names the file the descriptor's /proc entry stands for; os.link
         # calls it only when given a folder descriptor (ignored for an absolute path), and calls
         # plain link(), which links the /proc entry itself and fails, when not.
-        # Refused (EEXIST) if `target` exists.
-        os.link(f"/proc/self/fd/{handle}", target, src_dir_fd=handle, follow_symlinks=True)
+        # Refused (EEXIST) if the name exists, whatever it names: a file, a link, a folder.
+        os.link(
+            f"/proc/self/fd/{handle}",
+            path if folder is None else path.name,
+            src_dir_fd=handle,
+            dst_dir_fd=folder,
+            follow_symlinks=True,
+        )
     except OSError:
         return False
     finally:
@@ -130,7 +156,9 @@ def _write_unnamed(target: Path, data: bytes) -> bool:
     return True
 
 
-def write_staged(path: str | Path, data: bytes, staging: str | Path) -> None:
+def write_staged(
+    path: str | Path, data: bytes, staging: str | Path, folder: int | None = None
+) -> None:
     """Write bytes to `path` atomically, for writers of many files at once (the batch's workers).
 
     A new file is written unnamed in its folder and named once complete (`_write_unnamed`). An
@@ -138,15 +166,18 @@ def write_staged(path: str | Path, data: bytes, staging: str | Path) -> None:
     the same name in `staging` and an atomic rename: `staging` is a private folder on the same
     file system as `path` (e.g. inside the output folder) that its owner creates beforehand and
     removes as a whole afterwards, so no temporary name has to be made up. `path`'s folder must
-    exist. What is replaced follows the writing rule of `write_atomically`.
+    exist; `folder` may be an open descriptor of it (see `open_folder`). What is replaced
+    follows the writing rule of `write_atomically`.
     Any failure is a SaveError naming `path` (`cannot write: reason`); the previous file, if
     any, stays as it was and the staged file is removed. A process killed midway can leave a
     staged file, never a half-written `path`; removing `staging` removes that too.
     """
     path = Path(path)
-    target = output_target(path)
-    if _write_unnamed(target, data):
+    # Tried first: naming the file refuses any existing name, which then goes the staged way
+    # under the writing rule (`output_target`); a new file, the usual case, needs no lookup.
+    if _write_unnamed(path, data, folder):
         return
+    target = output_target(path)
     staged = Path(staging) / path.name
     flags = os.O_WRONLY | os.O_CREAT | os.O_TRUNC | getattr(os, "O_BINARY", 0)  # (Windows)
     try:

@@ -53,7 +53,13 @@ import scemlmodel as scm
 from ..errors import SaveError, SceMLError
 from ..executors import Deferred, Executor, open_executor
 from ..files.safefiles import read_input
-from ..files.writing import make_folder, remove_folders, write_atomically, write_staged
+from ..files.writing import (
+    make_folder,
+    open_folder,
+    remove_folders,
+    write_atomically,
+    write_staged,
+)
 from ..model.documents import Document
 from ..model.loading import load_scenario, unresolved_references
 from ..model.saving import save
@@ -176,9 +182,12 @@ class Worker:
             target.unlink()
 
 
-def write_sample(folder: Path, produced: Produced, staging: Path | None = None) -> SampleRecord:
+def write_sample(
+    folder: Path, produced: Produced, staging: Path | None = None, handle: int | None = None
+) -> SampleRecord:
     """Write one sample's files atomically (through `staging`, if given, else each through a
-    temporary file); if that is cut short, none of them stays."""
+    temporary file); if that is cut short, none of them stays. `handle`: an open descriptor of
+    `folder` (`open_folder`), for the staged writes."""
     written: list[Path] = []
     try:
         for name, data in produced.files:
@@ -186,7 +195,7 @@ def write_sample(folder: Path, produced: Produced, staging: Path | None = None) 
             if staging is None:
                 write_atomically(path, data)
             else:
-                write_staged(path, data, staging)
+                write_staged(path, data, staging, handle)
             written.append(path)
     except BaseException:
         for path in written:
@@ -360,11 +369,12 @@ def write_chunk(state: WorkerState, chunk: Chunk) -> Written:
     assert state.payload is not None and state.payload.staging is not None
     folder, staging = state.payload.config.out_dir, state.payload.staging
     records = []
-    for produced in produced_samples(state, chunk):
-        try:
-            records.append(write_sample(folder, produced, staging))
-        except SaveError as error:  # sent back as data: the caller reports it as its own
-            return Written(tuple(records), (error.message, error.file))
+    with open_folder(folder) as handle:
+        for produced in produced_samples(state, chunk):
+            try:
+                records.append(write_sample(folder, produced, staging, handle))
+            except SaveError as error:  # sent back as data: the caller reports it as its own
+                return Written(tuple(records), (error.message, error.file))
     return Written(tuple(records))
 
 
