@@ -8,7 +8,9 @@ turn (the order rotates every round), because this machine is shared and its dis
 
 1. ours: `sceml sample examples/uis2-logical.xmi --strategy random --n N --format xosc
    --workers W`: N concrete UIS2 scenarios, each flattened, checked (parameter and plausibility
-   rules), exported, XSD validated and written so that no half-written file can be seen. The
+   rules), exported, XSD validated (its sampled values against their XSD types, which under
+   XSD 1.0 decides the document's validity: docs/levels.md) and written so that no
+   half-written file can be seen. The
    whole command as a subprocess (`sceml.cli.main`, as the `sceml` script runs it), timed from
    outside: Python's start-up and imports, loading and validating the logical scenario, drawing
    the values, starting W worker processes, and writing manifest.csv and manifest.json at the
