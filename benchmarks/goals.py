@@ -337,6 +337,24 @@ def emf(folder: Path, rounds: int) -> list[Row]:
     ]
 
 
+def creation_cost(folder: Path, count: int = 200) -> float:
+    """Milliseconds to make one new 27 KB file in `folder`, the median of `count`.
+
+    Printed with the sample row because it sets that row: on this VM's ext4 (no journal) a new
+    file costs 0.03-0.05 ms when no files were removed in the last minutes and up to 1 ms after
+    tens of thousands were (`recently_deleted`), which is most of our time per file and little
+    of the anchor's. The files stay until the group ends, like the runs'.
+    """
+    folder.mkdir(parents=True, exist_ok=True)
+    data = b"x" * 27_000
+    times = []
+    for number in range(count):
+        started = time.perf_counter()
+        (folder / f"probe-{number}").write_bytes(data)
+        times.append(time.perf_counter() - started)
+    return statistics.median(times) * 1000
+
+
 def sample(folder: Path, rounds: int) -> list[Row]:
     """`sceml sample` N=2000 beside scenariogeneration, in turns (batch_export.py's runs)."""
     from batch_export import Run, run_sceml, run_scenariogeneration
@@ -365,6 +383,7 @@ def sample(folder: Path, rounds: int) -> list[Row]:
         return run
 
     before = load_average()
+    creating = creation_cost(folder / "probe")
     try:
         runs = _in_turns({name: in_fresh_folder(make) for name, make in makers.items()}, rounds)
     finally:
@@ -388,7 +407,7 @@ def sample(folder: Path, rounds: int) -> list[Row]:
             "`sceml sample` UIS2 N=2000, whole process",
             f"{rate['ours']:,.0f} files/s ({rate['ours'] / faster:.2f}x)",
             f"scenariogeneration serial {rate['serial']:,.0f} files/s, "
-            f"parallel {rate['parallel']:,.0f}",
+            f"parallel {rate['parallel']:,.0f}; making a file here {creating:.3f} ms",
             ">= 5x the faster",
             rate["ours"] >= 5 * faster,
             load,
