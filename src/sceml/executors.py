@@ -23,7 +23,6 @@ import gc
 import importlib
 import multiprocessing
 import multiprocessing.util
-import os
 import signal
 import threading
 import uuid
@@ -35,6 +34,7 @@ from types import TracebackType
 from typing import Any, Generic, TypeVar
 
 from .errors import ArgumentError, SceMLError
+from .processors import processors
 
 EXECUTORS = ("local", "processes", "dask")
 INSTALL_HINT = "pip install 'sceml[dask]'"
@@ -152,7 +152,7 @@ def open_executor(
     check(kind, scheduler)
     if kind == "dask":
         return DaskExecutor(scheduler=scheduler, workers=workers)
-    count = workers or os.cpu_count() or 1
+    count = workers or processors()
     if kind == "local" or count == 1:
         return LocalExecutor()
     return ProcessExecutor(count)
@@ -332,7 +332,7 @@ class DaskExecutor(Executor):
         self.cluster: Any = None
         try:
             if scheduler is None:
-                self.cluster = _local_cluster(distributed, workers or os.cpu_count() or 1)
+                self.cluster = _local_cluster(distributed, workers or processors())
                 self.client: Any = distributed.Client(self.cluster)
             else:
                 self.client = distributed.Client(scheduler, timeout="10s")

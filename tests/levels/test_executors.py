@@ -20,7 +20,7 @@ from click.testing import CliRunner
 from distributed import Client, LocalCluster
 
 from sceml.cli.sample import sample
-from sceml.executors import EXECUTORS, Outcome, open_executor
+from sceml.executors import EXECUTORS, LocalExecutor, Outcome, ProcessExecutor, open_executor
 from sceml.files.writing import write_atomically
 from sceml.levels import batch
 from sceml.levels.batch import BatchConfig, run_batch
@@ -287,3 +287,16 @@ def test_a_worker_killed_mid_run_loses_no_sample_silently(
             assert record.status == "written"
             assert all(on_disk[name] == reference[name] for name in record.files)
     assert set(on_disk) == {name for r in result.records for name in r.files}
+
+
+@pytest.mark.skipif(not hasattr(os, "sched_getaffinity"), reason="Linux's CPU affinity")
+def test_the_default_pool_has_a_worker_per_processor_this_process_may_use(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # A container's cpuset or `taskset` leaves fewer processors than the machine has.
+    monkeypatch.setattr(os, "sched_getaffinity", lambda pid: {3})
+    assert isinstance(open_executor("processes"), LocalExecutor)
+    monkeypatch.setattr(os, "sched_getaffinity", lambda pid: {0, 2, 5})
+    pool = open_executor("processes")
+    assert isinstance(pool, ProcessExecutor) and pool.parallelism == 3
+    assert open_executor("processes", workers=2).parallelism == 2  # asked for: as asked

@@ -281,7 +281,7 @@ workers_option = click.option(
     type=click.IntRange(min=1),
     default=None,
     help="Worker processes of the processes executor, or of the dask executor's LocalCluster "
-    "[default: the number of CPUs].",
+    "[default: the processors this process may use].",
 )
 
 

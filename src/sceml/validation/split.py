@@ -32,6 +32,7 @@ import scemlmodel as scm
 
 from ..diagnostics import Diagnostic, Severity
 from ..model.documents import Document
+from ..processors import processors
 from .context import Context
 from .engine import Key, each_object, objects, through_modules, unique
 from .limits import Limits
@@ -43,14 +44,6 @@ SPLIT_FROM = 2000
 #: A diagnostic as the child sends it: its fields, and the address of its element (the same
 #: object in both processes, since the child is a fork of the parent).
 _Sent = tuple[Severity, str, str, str | None, str | None, str | None, int | None, int | None]
-
-
-def processors() -> int:
-    """The processors this process may run on."""
-    try:
-        return len(os.sched_getaffinity(0))
-    except AttributeError:  # not on Linux
-        return os.cpu_count() or 1
 
 
 def worth_splitting(model: EObject) -> bool:
