@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import os
 import pickle
+import time
 from pathlib import Path
 
 import pytest
@@ -30,8 +31,10 @@ def _said(found: list[Diagnostic]) -> list[tuple[object, ...]]:
 
 @pytest.fixture
 def always_split(monkeypatch: pytest.MonkeyPatch) -> list[int]:
-    """Split every scenario, however small, and record the children forked."""
+    """Split every scenario, however small, into parts of one object each (so that both
+    processes take some), and record the children forked."""
     monkeypatch.setattr(split, "SPLIT_FROM", 0)
+    monkeypatch.setattr(split.Parts, "FEWEST", 1)
     monkeypatch.setattr(split, "processors", lambda: 2)
     children: list[int] = []
     real_fork = os.fork
@@ -94,6 +97,37 @@ def test_a_child_that_fails_leaves_its_share_to_the_parent(
     together = validate(document.root, document=document, jobs=2)
     assert _said(together) == _said(alone)
     assert len(always_split) == 1 and _reaped(always_split[0])
+
+
+@needs_fork
+def test_the_parts_both_processes_took_are_put_back_in_order(
+    always_split: list[int], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    document = load(REPO / "tests/validation/corpus" / _a_faulty_scenario(), read_only=True)
+    alone = validate(document.root, document=document)
+    parent = os.getpid()
+    real_each, real_take = split.each_object, split.Parts.take
+
+    def paced(*args: object, **options: object) -> object:
+        # A part costs the child ten times what it costs the parent: both take some.
+        time.sleep(0.01 if os.getpid() != parent else 0.001)
+        return real_each(*args, **options)  # type: ignore[arg-type]
+
+    taken: list[tuple[int, int]] = []
+
+    def take(parts: split.Parts, *args: object) -> split.ByPart:
+        done = real_take(parts, *args)  # type: ignore[arg-type]
+        if os.getpid() == parent:
+            taken.append((len(done), len(parts)))
+        return done
+
+    monkeypatch.setattr(split, "each_object", paced)
+    monkeypatch.setattr(split.Parts, "take", take)
+    together = validate(document.root, document=document, jobs=2)
+    assert _said(together) == _said(alone)
+    assert all(a.element is b.element for a, b in zip(together, alone, strict=True))
+    ((mine, count),) = taken
+    assert count > 50 and 0 < mine < count  # the parent took some parts, the child others
 
 
 @needs_fork
