@@ -90,3 +90,13 @@ def test_a_schema_with_identity_constraints_is_refused() -> None:
 @pytest.mark.parametrize("version", ["1.0", "1.1", "1.2", "1.3"])
 def test_the_official_xsds_allow_the_values_only_check(version: str) -> None:
     assert ValueCheck.of(attribute_types(version), ["Double"]) is not None
+
+
+def test_a_fixed_attribute_or_an_unknown_type_is_not_checked_alone() -> None:
+    types = _types(
+        """<xsd:complexType name="A"><xsd:attribute name="v" type="xsd:double" fixed="1"/>
+        <xsd:attribute name="w" type="xsd:double"/></xsd:complexType>"""
+    )
+    assert types.of(["R", "A"], "v") is None  # any other number would break the document
+    assert types.of(["R", "A"], "w") == "xsd:double"
+    assert ValueCheck.of(types, ["Nowhere"]) is None

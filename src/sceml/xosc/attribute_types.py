@@ -67,7 +67,8 @@ class AttributeTypes:
         # The XSDs' complex types are all named and flat: every attribute under one is its own.
         for declared in self.complex_types[type_name].iter(f"{_X}attribute"):
             if declared.get("name") == attribute:
-                return _type_of(declared)
+                # A fixed value is a rule of the declaration, not of the type: not checked alone.
+                return None if declared.get("fixed") is not None else _type_of(declared)
         return None
 
     def _child_type(self, type_name: str, tag: str) -> str | None:
@@ -121,7 +122,10 @@ class ValueCheck:
         xsd = schema.xsd
         if any(True for tag in _DOCUMENT_WIDE for _ in xsd.iter(tag)) or _names_id_types(xsd):
             return None
-        return cls(etree.XMLSchema(_values_schema(xsd, types)), len(types))
+        try:
+            return cls(etree.XMLSchema(_values_schema(xsd, types)), len(types))
+        except etree.XMLSchemaParseError:  # a type the XSD's simple types do not define
+            return None
 
     def valid(self, values: Sequence[str]) -> bool:
         """Whether every value is valid for its type (values in the order of the types)."""
