@@ -53,7 +53,7 @@ from .edits import EVERYTHING, Aspect, Change, Impact, refers_to
 from .engine import Key, locate, objects, run_rule, through_modules, unique
 from .kept import Kept
 from .limits import Limits
-from .reads import EXPANSION, Scope
+from .reads import EXPANSION, Scope, stale_where
 from .registry import REGISTRY, Registry, Rule
 
 __all__ = [
@@ -235,16 +235,7 @@ class _Pass:
         # Per rule code: (re-run everywhere, on SELF hits, on ABOVE hits, on ACTORS hits).
         self.plan: dict[str, tuple[bool, bool, bool, bool]] = {}
         for rule in validator.registry.rules():
-            reads = rule.reads
-            if reads is None:
-                self.plan[rule.code] = (True, False, False, False)
-                continue
-            self.plan[rule.code] = (
-                bool(reads.aspects & impact.aspects),
-                bool(reads.scope & Scope.SELF),
-                bool(reads.scope & Scope.ABOVE),
-                bool(reads.scope & Scope.ACTORS) and bool(impact.participants),
-            )
+            self.plan[rule.code] = stale_where(rule.reads, impact)
         # Per tuple of rules (by id; the registry hands out the same tuple per class): whether
         # any of them re-runs everywhere or on ACTORS hits this time.
         self._loud: dict[int, bool] = {}

@@ -31,6 +31,7 @@ __all__ = [
     "Reads",
     "Scope",
     "stale",
+    "stale_where",
 ]
 
 
@@ -77,20 +78,36 @@ LEVEL = Aspect.SETTINGS
 MODULES = Aspect.MODULES
 
 
-def stale(reads: Reads | None, obj: EObject, impact: Impact, *, values_only: bool = False) -> bool:
-    """Whether a rule that reads `reads` (None: it declares nothing) reads, on `obj`, something
-    the changes of `impact` changed. (Incremental validation's `_Pass.check` decides the same
-    per rule with its tables worked out once per run.)
+def stale_where(
+    reads: Reads | None, impact: Impact, *, values_only: bool = False
+) -> tuple[bool, bool, bool, bool]:
+    """Where the changes of `impact` make a rule that reads `reads` (None: it declares nothing)
+    stale: (everywhere, on the objects they touched or that hold one, on the objects a touched
+    one holds, on the objects referring to a touched actor or role).
 
     With `values_only`, the changes only set the numbers of values (a sample): an actor that
     holds one kept its name, kind and declaration, so through it only rules reading
     ACTOR_VALUES are stale."""
-    if reads is None or reads.aspects & impact.aspects:
-        return True
+    if reads is None:
+        return True, False, False, False
     scope = reads.scope
     through_actors = ACTOR_VALUES if values_only else ACTORS
-    return bool(
-        (scope & Scope.SELF and obj in impact.around)
-        or (scope & Scope.ABOVE and obj in impact.inside)
-        or (scope & through_actors and refers_to(obj, impact.participants))
+    return (
+        bool(reads.aspects & impact.aspects),
+        bool(scope & Scope.SELF),
+        bool(scope & Scope.ABOVE),
+        bool(scope & through_actors) and bool(impact.participants),
+    )
+
+
+def stale(reads: Reads | None, obj: EObject, impact: Impact, *, values_only: bool = False) -> bool:
+    """Whether a rule that reads `reads` reads, on `obj`, something the changes of `impact`
+    changed (`stale_where`; incremental validation's `_Pass` works it out per rule once a run
+    and decides per object the same way)."""
+    everywhere, on_self, on_above, on_actors = stale_where(reads, impact, values_only=values_only)
+    return (
+        everywhere
+        or (on_self and obj in impact.around)
+        or (on_above and obj in impact.inside)
+        or (on_actors and refers_to(obj, impact.participants))
     )
