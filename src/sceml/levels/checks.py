@@ -27,6 +27,7 @@ from ..validation.limits import Limits
 from ..validation.reads import stale
 from ..validation.registry import Check
 from .apply import FlatTemplate
+from .paths import slots
 
 #: The rule families whose outcome depends on parameter values: parameters and plausibility.
 VALUE_RULE_PREFIXES = ("SCEML-P", "SCEML-L")
@@ -78,11 +79,18 @@ def _validation_hook(template: FlatTemplate) -> Validator:
     sample (an actor's limit) must not answer for the next.
     """
     limits = Limits()
-    paths = {
-        target: path
+    # What a reason names: a sampled value by its sampled path, any other value (one a sampled
+    # number is judged against, say an initial speed over the sample's own limit) by its own.
+    paths: dict[Any, str] = {
+        held: path
+        for path, slot in slots(template.scenario).items()
+        if (held := slot.held()) is not None
+    }
+    paths.update(
+        (target, path)
         for path, targets in zip(template.paths, template.targets, strict=True)
         for target in targets
-    }
+    )
     plan = _plan(template)
 
     def reasons(scenario: scm.Scenario) -> list[str]:
